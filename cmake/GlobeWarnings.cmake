@@ -1,0 +1,30 @@
+# Compiler warnings and sanitizers, applied to every globe target through globe_warnings.
+add_library(globe_warnings INTERFACE)
+target_compile_options(globe_warnings INTERFACE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
+  -Wno-sign-conversion)
+if(GLOBE_WERROR)
+  target_compile_options(globe_warnings INTERFACE -Werror)
+endif()
+if(GLOBE_SANITIZE)
+  add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+  add_link_options(-fsanitize=address,undefined)
+endif()
+
+# globe_module(NAME SOURCES... DEPENDS targets...): one static library per src/<module>.
+function(globe_module name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
+  add_library(${name} STATIC ${ARG_SOURCES})
+  target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR}/src)
+  target_link_libraries(${name} PUBLIC ${ARG_DEPENDS} PRIVATE globe_warnings)
+endfunction()
+
+# globe_test(NAME SOURCES... DEPENDS targets...): a GoogleTest executable registered with CTest.
+function(globe_test name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} GTest::gtest_main GTest::gmock globe_warnings)
+  target_compile_definitions(${name} PRIVATE
+    GLOBE_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    GLOBE_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared")
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 600)
+endfunction()
