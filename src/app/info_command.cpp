@@ -1,0 +1,103 @@
+#include "app/info_command.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+namespace globe::app {
+namespace {
+
+io::BoundsDegrees overallBounds(const io::PyramidManifest& m) {
+  // Level 0 always spans the globe; the finest level shows where the detail is.
+  return m.levels.empty() ? io::BoundsDegrees{} : m.levels.back().bounds;
+}
+
+terrain::HeightRange overallRange(const io::PyramidManifest& m) {
+  terrain::HeightRange range{INT16_MAX, INT16_MIN};
+  for (const io::LevelInfo& level : m.levels) range.include(level.heightRange);
+  return range;
+}
+
+std::string boundsText(const io::BoundsDegrees& b) {
+  char text[128];
+  std::snprintf(text, sizeof text, "lon %.6f..%.6f, lat %.6f..%.6f", b.west, b.east, b.south,
+                b.north);
+  return text;
+}
+
+}  // namespace
+
+std::string formatPyramidInfoText(const io::PyramidManifest& m, const std::string& path) {
+  std::string out;
+  char line[1024];
+  const auto range = overallRange(m);
+  std::snprintf(
+      line, sizeof line,
+      "pyramid     %s\nscheme      geographic lat/long quadtree, level 0 = 2x1 tiles of "
+      "180 deg\nblocks      %ux%u vertices, GTOPO30 int16 big-endian, -9999 = no data\n"
+      "globe       %s\nlevels      0..%u\ntiles       %llu\nheights     %d..%d m (sea = 0)\n"
+      "finest      %s\n",
+      path.c_str(), m.verticesPerSide, m.verticesPerSide,
+      std::string(geo::toString(m.globeModel)).c_str(), m.maxLevel(),
+      static_cast<unsigned long long>(m.tileCount()), range.minimumMeters, range.maximumMeters,
+      boundsText(overallBounds(m)).c_str());
+  out += line;
+  out += "\nlevel      tiles  packs  heights (m)     bounds (deg)\n";
+  for (const io::LevelInfo& level : m.levels) {
+    std::snprintf(line, sizeof line, "%5u %10llu %6zu  %6d..%-6d  %s\n", level.level,
+                  static_cast<unsigned long long>(level.tileCount), level.packs.size(),
+                  level.heightRange.minimumMeters, level.heightRange.maximumMeters,
+                  boundsText(level.bounds).c_str());
+    out += line;
+  }
+  out += "\nsources (finest first)\n";
+  for (const io::SourceInfo& s : m.sources) {
+    std::snprintf(line, sizeof line,
+                  "  %s  %s %lldx%lld, %.6g deg (%.1f arcsec), finest level %u, %s\n",
+                  s.path.c_str(), s.format.c_str(), static_cast<long long>(s.columns),
+                  static_cast<long long>(s.rows), s.stepDegrees, s.stepDegrees * 3600.0,
+                  s.finestLevel, boundsText(s.bounds).c_str());
+    out += line;
+  }
+  return out;
+}
+
+std::string formatPyramidInfoJson(const io::PyramidManifest& m, const std::string& path) {
+  using nlohmann::json;
+  auto boundsJson = [](const io::BoundsDegrees& b) {
+    return json{{"west", b.west}, {"south", b.south}, {"east", b.east}, {"north", b.north}};
+  };
+  const auto range = overallRange(m);
+  json levels = json::array();
+  for (const io::LevelInfo& level : m.levels) {
+    levels.push_back(
+        {{"level", level.level},
+         {"tiles", level.tileCount},
+         {"packs", level.packs.size()},
+         {"heightRangeMeters", {level.heightRange.minimumMeters, level.heightRange.maximumMeters}},
+         {"boundsDegrees", boundsJson(level.bounds)}});
+  }
+  json sources = json::array();
+  for (const io::SourceInfo& s : m.sources) {
+    sources.push_back({{"path", s.path},
+                       {"format", s.format},
+                       {"columns", s.columns},
+                       {"rows", s.rows},
+                       {"stepDegrees", s.stepDegrees},
+                       {"finestLevel", s.finestLevel},
+                       {"boundsDegrees", boundsJson(s.bounds)}});
+  }
+  const json j = {{"pyramid", path},
+                  {"blockSize", m.verticesPerSide},
+                  {"globeModel", std::string(geo::toString(m.globeModel))},
+                  {"minLevel", 0},
+                  {"maxLevel", m.maxLevel()},
+                  {"tiles", m.tileCount()},
+                  {"heightRangeMeters", {range.minimumMeters, range.maximumMeters}},
+                  {"finestBoundsDegrees", boundsJson(overallBounds(m))},
+                  {"levels", levels},
+                  {"sources", sources}};
+  return j.dump(2) + "\n";
+}
+
+}  // namespace globe::app

@@ -1,0 +1,185 @@
+#include "io/pack_format.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <string>
+
+#include "io/big_endian.hpp"
+#include "io/crc32.hpp"
+
+namespace globe::io {
+namespace {
+
+constexpr char kMagic[8] = {'G', 'L', 'O', 'B', 'E', 'P', 'K', '1'};
+
+Error packError(const std::filesystem::path& path, const std::string& problem) {
+  return makeError(path.string() + ": " + problem);
+}
+
+void storeEntry(std::byte* out, const PackEntry& entry) {
+  storeBigEndian64(out, entry.blockOffset);
+  storeBigEndian16(out + 8, static_cast<uint16_t>(entry.vertexRange.minimumMeters));
+  storeBigEndian16(out + 10, static_cast<uint16_t>(entry.vertexRange.maximumMeters));
+  storeBigEndian16(out + 12, static_cast<uint16_t>(entry.subtreeRange.minimumMeters));
+  storeBigEndian16(out + 14, static_cast<uint16_t>(entry.subtreeRange.maximumMeters));
+}
+
+PackEntry loadEntry(const std::byte* in) {
+  PackEntry entry;
+  entry.blockOffset = loadBigEndian64(in);
+  entry.vertexRange = {static_cast<int16_t>(loadBigEndian16(in + 8)),
+                       static_cast<int16_t>(loadBigEndian16(in + 10))};
+  entry.subtreeRange = {static_cast<int16_t>(loadBigEndian16(in + 12)),
+                        static_cast<int16_t>(loadBigEndian16(in + 14))};
+  return entry;
+}
+
+}  // namespace
+
+PackId packOf(const geo::TileId& tile, uint32_t tilesPerSide) {
+  return {tile.level, tile.x / tilesPerSide, tile.y / tilesPerSide};
+}
+
+size_t slotOf(const geo::TileId& tile, uint32_t tilesPerSide) {
+  return size_t{tile.y % tilesPerSide} * tilesPerSide + tile.x % tilesPerSide;
+}
+
+geo::TileId tileOfSlot(const PackId& pack, size_t slot, uint32_t tilesPerSide) {
+  const auto localX = static_cast<uint32_t>(slot % tilesPerSide);
+  const auto localY = static_cast<uint32_t>(slot / tilesPerSide);
+  return {pack.level, pack.x * tilesPerSide + localX, pack.y * tilesPerSide + localY};
+}
+
+std::filesystem::path packPath(const std::filesystem::path& pyramidDir, const PackId& pack) {
+  return pyramidDir / ("L" + std::to_string(pack.level)) /
+         (std::to_string(pack.x) + "_" + std::to_string(pack.y) + ".pack");
+}
+
+Pack Pack::empty(const PackId& id, const PackLayout& layout) {
+  Pack pack{id, layout, {}, {}};
+  pack.entries.resize(layout.slotCount());
+  pack.heights.assign(layout.slotCount() * layout.verticesPerSide * layout.verticesPerSide,
+                      terrain::kNoDataHeight);
+  return pack;
+}
+
+std::span<int16_t> Pack::block(size_t slot) {
+  const size_t n = size_t{layout.verticesPerSide} * layout.verticesPerSide;
+  return {heights.data() + slot * n, n};
+}
+
+std::span<const int16_t> Pack::block(size_t slot) const {
+  const size_t n = size_t{layout.verticesPerSide} * layout.verticesPerSide;
+  return {heights.data() + slot * n, n};
+}
+
+size_t Pack::presentCount() const {
+  size_t count = 0;
+  for (const PackEntry& entry : entries) count += entry.present() ? 1 : 0;
+  return count;
+}
+
+std::vector<std::byte> encodePack(const Pack& pack) {
+  const PackLayout& layout = pack.layout;
+  const size_t present = pack.presentCount();
+  std::vector<std::byte> bytes(layout.fileBytes(present));
+  std::memcpy(bytes.data(), kMagic, sizeof kMagic);
+  const uint32_t header[] = {kPackFormatVersion,
+                             pack.id.level,
+                             pack.id.x,
+                             pack.id.y,
+                             layout.tilesPerSide,
+                             layout.verticesPerSide,
+                             static_cast<uint32_t>(present),
+                             0};
+  for (size_t i = 0; i < std::size(header); ++i) storeBigEndian32(&bytes[8 + 4 * i], header[i]);
+
+  uint64_t offset = layout.indexEndOffset();
+  for (size_t slot = 0; slot < layout.slotCount(); ++slot) {
+    PackEntry entry = pack.entries[slot];
+    if (entry.present()) {
+      entry.blockOffset = offset;
+      std::byte* out = &bytes[offset];
+      for (int16_t sample : pack.block(slot)) {
+        storeBigEndian16(out, static_cast<uint16_t>(sample));
+        out += 2;
+      }
+      offset += layout.blockBytes();
+    }
+    storeEntry(&bytes[kPackHeaderBytes + slot * kPackEntryBytes], entry);
+  }
+  const size_t body = bytes.size() - 4;
+  storeBigEndian32(&bytes[body], crc32(std::span(bytes).first(body)));
+  return bytes;
+}
+
+Result<PackIndex> decodePackIndex(std::span<const std::byte> headAndIndex, uint64_t fileBytes,
+                                  const std::filesystem::path& path) {
+  if (headAndIndex.size() < kPackHeaderBytes || std::memcmp(headAndIndex.data(), kMagic, 8) != 0) {
+    return packError(path, "not a globe pack file (bad magic or shorter than its header)");
+  }
+  uint32_t h[8];
+  for (size_t i = 0; i < 8; ++i) h[i] = loadBigEndian32(&headAndIndex[8 + 4 * i]);
+  if (h[0] != kPackFormatVersion) {
+    return packError(path, "pack format version " + std::to_string(h[0]) + " is not supported");
+  }
+  PackIndex index{{h[1], h[2], h[3]}, {h[4], h[5]}, {}};
+  const PackLayout& layout = index.layout;
+  if (layout.tilesPerSide == 0 || layout.tilesPerSide > 1024 ||
+      !terrain::isValidBlockSize(layout.verticesPerSide)) {
+    return packError(path, "pack header has an invalid tiles-per-side or block size");
+  }
+  const uint32_t present = h[6];
+  if (present > layout.slotCount() || fileBytes != layout.fileBytes(present)) {
+    return packError(
+        path, "file is " + std::to_string(fileBytes) + " bytes but its header says " +
+                  std::to_string(layout.fileBytes(std::min<size_t>(present, layout.slotCount()))) +
+                  " (truncated or corrupt)");
+  }
+  if (headAndIndex.size() < layout.indexEndOffset()) {
+    return packError(path, "pack index is truncated");
+  }
+  index.entries.resize(layout.slotCount());
+  uint32_t seen = 0;
+  for (size_t slot = 0; slot < layout.slotCount(); ++slot) {
+    PackEntry entry = loadEntry(&headAndIndex[kPackHeaderBytes + slot * kPackEntryBytes]);
+    if (entry.present()) {
+      const uint64_t relative = entry.blockOffset - layout.indexEndOffset();
+      if (entry.blockOffset < layout.indexEndOffset() || relative % layout.blockBytes() != 0 ||
+          relative / layout.blockBytes() >= present) {
+        return packError(path,
+                         "pack index entry " + std::to_string(slot) + " points outside the blocks");
+      }
+      ++seen;
+    }
+    index.entries[slot] = entry;
+  }
+  if (seen != present) return packError(path, "pack index disagrees with its tile count");
+  return index;
+}
+
+void decodeBlock(std::span<const std::byte> bytes, std::span<int16_t> heights) {
+  for (size_t i = 0; i < heights.size(); ++i) {
+    heights[i] = static_cast<int16_t>(loadBigEndian16(&bytes[2 * i]));
+  }
+}
+
+Result<Pack> decodePack(std::span<const std::byte> bytes, const std::filesystem::path& path) {
+  auto index = decodePackIndex(bytes, bytes.size(), path);
+  if (!index) return Error{index.error()};
+  const size_t body = bytes.size() - 4;
+  if (crc32(bytes.first(body)) != loadBigEndian32(&bytes[body])) {
+    return packError(path, "CRC mismatch (corrupt pack)");
+  }
+  Pack pack = Pack::empty(index->id, index->layout);
+  pack.entries = std::move(index->entries);
+  for (size_t slot = 0; slot < pack.layout.slotCount(); ++slot) {
+    const PackEntry& entry = pack.entries[slot];
+    if (entry.present()) {
+      decodeBlock(bytes.subspan(entry.blockOffset, pack.layout.blockBytes()), pack.block(slot));
+    }
+  }
+  return pack;
+}
+
+}  // namespace globe::io

@@ -1,0 +1,140 @@
+#include "io/pyramid_manifest.hpp"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace globe::io {
+namespace {
+
+using nlohmann::json;
+
+json boundsToJson(const BoundsDegrees& b) {
+  return {{"west", b.west}, {"south", b.south}, {"east", b.east}, {"north", b.north}};
+}
+
+BoundsDegrees boundsFromJson(const json& j) {
+  return {j.at("west").get<double>(), j.at("south").get<double>(), j.at("east").get<double>(),
+          j.at("north").get<double>()};
+}
+
+json rangeToJson(const terrain::HeightRange& r) {
+  return json::array({r.minimumMeters, r.maximumMeters});
+}
+
+terrain::HeightRange rangeFromJson(const json& j) {
+  return {j.at(0).get<int16_t>(), j.at(1).get<int16_t>()};
+}
+
+}  // namespace
+
+uint64_t PyramidManifest::tileCount() const {
+  uint64_t count = 0;
+  for (const LevelInfo& level : levels) count += level.tileCount;
+  return count;
+}
+
+std::string manifestToJson(const PyramidManifest& manifest) {
+  json levels = json::array();
+  for (const LevelInfo& level : manifest.levels) {
+    json packs = json::array();
+    for (const PackId& pack : level.packs) packs.push_back({pack.x, pack.y});
+    levels.push_back({{"level", level.level},
+                      {"tiles", level.tileCount},
+                      {"boundsDegrees", boundsToJson(level.bounds)},
+                      {"heightRangeMeters", rangeToJson(level.heightRange)},
+                      {"packs", packs}});
+  }
+  json sources = json::array();
+  for (const SourceInfo& source : manifest.sources) {
+    sources.push_back({{"path", source.path},
+                       {"format", source.format},
+                       {"columns", source.columns},
+                       {"rows", source.rows},
+                       {"stepDegrees", source.stepDegrees},
+                       {"boundsDegrees", boundsToJson(source.bounds)},
+                       {"finestLevel", source.finestLevel}});
+  }
+  const json j = {
+      {"format", "globe-pyramid"},
+      {"formatVersion", 1},
+      {"tilingScheme",
+       {{"name", "geographic"},
+        {"level0", "2x1 tiles of 180x180 degrees; x eastwards from -180, y southwards from +90"},
+        {"vertexConvention",
+         "vertex (i,j): lon = west + j*width/(N-1), lat = north - i*height/(N-1)"}}},
+      {"blockSize", manifest.verticesPerSide},
+      {"packTilesPerSide", manifest.packTilesPerSide},
+      {"encoding", "GTOPO30 int16 big-endian metres, -9999 = no data (sea)"},
+      {"noData", -9999},
+      {"globeModel", std::string(geo::toString(manifest.globeModel))},
+      {"maxLevel", manifest.maxLevel()},
+      {"levels", levels},
+      {"sources", sources}};
+  return j.dump(1) + "\n";
+}
+
+Result<PyramidManifest> manifestFromJson(std::string_view text, const std::filesystem::path& path) {
+  const json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (j.is_discarded()) return makeError(path.string() + ": not valid JSON");
+  try {
+    if (j.at("format").get<std::string>() != "globe-pyramid" ||
+        j.at("formatVersion").get<int>() != 1) {
+      return makeError(path.string() + ": not a globe pyramid manifest of format version 1");
+    }
+    PyramidManifest m;
+    m.verticesPerSide = j.at("blockSize").get<uint32_t>();
+    m.packTilesPerSide = j.at("packTilesPerSide").get<uint32_t>();
+    if (!terrain::isValidBlockSize(m.verticesPerSide)) {
+      return makeError(path.string() + ": blockSize " + std::to_string(m.verticesPerSide) +
+                       " is not 2^k+1 (3..1025)");
+    }
+    if (m.packTilesPerSide == 0 || m.packTilesPerSide > 1024) {
+      return makeError(path.string() + ": packTilesPerSide out of range");
+    }
+    const auto model = geo::parseGlobeModel(j.at("globeModel").get<std::string>());
+    if (!model) return makeError(path.string() + ": unknown globeModel");
+    m.globeModel = *model;
+    for (const json& level : j.at("levels")) {
+      LevelInfo info;
+      info.level = level.at("level").get<uint32_t>();
+      if (info.level != m.levels.size()) {
+        return makeError(path.string() + ": levels must be listed 0, 1, 2, ... without gaps");
+      }
+      info.tileCount = level.at("tiles").get<uint64_t>();
+      info.bounds = boundsFromJson(level.at("boundsDegrees"));
+      info.heightRange = rangeFromJson(level.at("heightRangeMeters"));
+      for (const json& pack : level.at("packs")) {
+        info.packs.push_back({info.level, pack.at(0).get<uint32_t>(), pack.at(1).get<uint32_t>()});
+      }
+      m.levels.push_back(std::move(info));
+    }
+    if (m.levels.empty() || m.levels.size() > 31) {
+      return makeError(path.string() + ": a pyramid needs between 1 and 31 levels");
+    }
+    for (const json& source : j.at("sources")) {
+      m.sources.push_back(
+          {source.at("path").get<std::string>(), source.at("format").get<std::string>(),
+           source.at("columns").get<int64_t>(), source.at("rows").get<int64_t>(),
+           source.at("stepDegrees").get<double>(), boundsFromJson(source.at("boundsDegrees")),
+           source.at("finestLevel").get<uint32_t>()});
+    }
+    return m;
+  } catch (const json::exception& e) {
+    return makeError(path.string() + ": missing or malformed field (" + e.what() + ")");
+  }
+}
+
+Result<PyramidManifest> readManifest(const std::filesystem::path& pyramidDir) {
+  const std::filesystem::path path = pyramidDir / kManifestFileName;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    return makeError(path.string() + ": cannot open (is " + pyramidDir.string() +
+                     " a pyramid made by globe-tiler?)");
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return manifestFromJson(text.str(), path);
+}
+
+}  // namespace globe::io

@@ -1,0 +1,122 @@
+#include "io/tile_store.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+
+namespace globe::io {
+namespace {
+
+// Bounded so that a long flight over many packs never runs out of file descriptors.
+constexpr size_t kMaxOpenPacks = 256;
+
+struct FdCloser {
+  int fd;
+  ~FdCloser() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+Result<void> preadFully(int fd, std::byte* out, size_t bytes, uint64_t offset,
+                        const std::filesystem::path& path) {
+  size_t done = 0;
+  while (done < bytes) {
+    const ssize_t n = ::pread(fd, out + done, bytes - done, static_cast<off_t>(offset + done));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      return makeError(
+          path.string() + ": read failed at byte " + std::to_string(offset + done) +
+          (n < 0 ? std::string(": ") + std::strerror(errno) : ": unexpected end of file"));
+    }
+    done += static_cast<size_t>(n);
+  }
+  return {};
+}
+
+}  // namespace
+
+TileStore::TileStore(std::filesystem::path dir, PyramidManifest manifest)
+    : dir_(std::move(dir)), manifest_(std::move(manifest)) {}
+
+TileStore::OpenPack::~OpenPack() {
+  if (fd >= 0) ::close(fd);
+}
+
+Result<std::unique_ptr<TileStore>> TileStore::open(const std::filesystem::path& pyramidDir) {
+  auto manifest = readManifest(pyramidDir);
+  if (!manifest) return Error{manifest.error()};
+  for (LevelInfo& level : manifest->levels) std::sort(level.packs.begin(), level.packs.end());
+  return std::unique_ptr<TileStore>(new TileStore(pyramidDir, std::move(*manifest)));
+}
+
+Result<std::shared_ptr<const TileStore::OpenPack>> TileStore::pack(const PackId& id) {
+  std::lock_guard lock(mutex_);
+  if (auto it = openPacks_.find(id); it != openPacks_.end()) return it->second;
+  if (id.level >= manifest_.levels.size()) return std::shared_ptr<const OpenPack>();
+  const auto& packs = manifest_.levels[id.level].packs;
+  if (!std::binary_search(packs.begin(), packs.end(), id)) return std::shared_ptr<const OpenPack>();
+
+  const std::filesystem::path path = packPath(dir_, id);
+  FdCloser file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
+  if (file.fd < 0) return makeError(path.string() + ": cannot open: " + std::strerror(errno));
+  struct stat info {};
+  if (::fstat(file.fd, &info) != 0) return makeError(path.string() + ": cannot stat");
+  const PackLayout layout = manifest_.packLayout();
+  std::vector<std::byte> head(layout.indexEndOffset());
+  if (static_cast<uint64_t>(info.st_size) < head.size()) {
+    return makeError(path.string() + ": truncated pack (" + std::to_string(info.st_size) +
+                     " bytes)");
+  }
+  if (auto read = preadFully(file.fd, head.data(), head.size(), 0, path); !read) {
+    return Error{read.error()};
+  }
+  auto index = decodePackIndex(head, static_cast<uint64_t>(info.st_size), path);
+  if (!index) return Error{index.error()};
+  if (index->id != id || index->layout.tilesPerSide != layout.tilesPerSide ||
+      index->layout.verticesPerSide != layout.verticesPerSide) {
+    return makeError(path.string() + ": pack header disagrees with the manifest");
+  }
+  ++packIndexReads_;
+  if (openPacks_.size() >= kMaxOpenPacks) openPacks_.clear();
+  auto opened = std::make_shared<OpenPack>(file.fd, std::move(*index));
+  file.fd = -1;
+  openPacks_.emplace(id, opened);
+  return std::shared_ptr<const OpenPack>(opened);
+}
+
+Result<std::optional<PackEntry>> TileStore::entry(const geo::TileId& tile) {
+  auto opened = pack(packOf(tile, manifest_.packTilesPerSide));
+  if (!opened) return Error{opened.error()};
+  if (!*opened) return std::optional<PackEntry>();
+  const PackEntry& e = (*opened)->index.entries[slotOf(tile, manifest_.packTilesPerSide)];
+  return e.present() ? std::optional<PackEntry>(e) : std::nullopt;
+}
+
+Result<terrain::HeightBlock> TileStore::loadBlock(const geo::TileId& tile) {
+  auto opened = pack(packOf(tile, manifest_.packTilesPerSide));
+  if (!opened) return Error{opened.error()};
+  const std::string name = "tile " + std::to_string(tile.level) + "/" + std::to_string(tile.x) +
+                           "/" + std::to_string(tile.y);
+  if (!*opened) return makeError(dir_.string() + ": the pyramid has no " + name);
+  const OpenPack& p = **opened;
+  const PackEntry& e = p.index.entries[slotOf(tile, manifest_.packTilesPerSide)];
+  if (!e.present()) return makeError(dir_.string() + ": the pyramid has no " + name);
+
+  std::vector<std::byte> bytes(p.index.layout.blockBytes());
+  if (auto read =
+          preadFully(p.fd, bytes.data(), bytes.size(), e.blockOffset, packPath(dir_, p.index.id));
+      !read) {
+    return Error{read.error()};
+  }
+  ++blockReads_;
+  terrain::HeightBlock block{manifest_.verticesPerSide, {}};
+  block.heights.resize(bytes.size() / 2);
+  decodeBlock(bytes, block.heights);
+  return block;
+}
+
+}  // namespace globe::io

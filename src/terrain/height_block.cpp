@@ -1,0 +1,29 @@
+#include "terrain/height_block.hpp"
+
+#include <algorithm>
+
+namespace globe::terrain {
+
+bool isValidBlockSize(uint32_t verticesPerSide) {
+  if (verticesPerSide < 3 || verticesPerSide > 1025) return false;
+  const uint32_t cells = verticesPerSide - 1;
+  return (cells & (cells - 1)) == 0;
+}
+
+void HeightRange::include(const HeightRange& other) {
+  minimumMeters = std::min(minimumMeters, other.minimumMeters);
+  maximumMeters = std::max(maximumMeters, other.maximumMeters);
+}
+
+HeightRange surfaceHeightRange(const HeightBlock& block) {
+  HeightRange range{INT16_MAX, INT16_MIN};
+  for (int16_t sample : block.heights) {
+    const int16_t h = sample == kNoDataHeight ? int16_t{0} : sample;
+    range.minimumMeters = std::min(range.minimumMeters, h);
+    range.maximumMeters = std::max(range.maximumMeters, h);
+  }
+  if (block.heights.empty()) range = HeightRange{};
+  return range;
+}
+
+}  // namespace globe::terrain

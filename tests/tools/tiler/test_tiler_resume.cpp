@@ -1,0 +1,158 @@
+// Resumability and atomicity: a tiler killed at random moments and re-run yields a pyramid
+// identical to an uninterrupted run; damaged or foreign outputs are handled with clear errors.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fcntl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <map>
+#include <random>
+#include <thread>
+
+#include "io/atomic_file.hpp"
+#include "io/crc32.hpp"
+#include "io/pyramid_manifest.hpp"
+#include "tests/tools/tiler/tiler_test_fixture.hpp"
+#include "tools/tiler/tiler.hpp"
+
+namespace globe::tiler {
+namespace {
+
+namespace fs = std::filesystem;
+
+// relative path -> CRC-32 and size of every file below dir
+std::map<std::string, std::pair<uint32_t, size_t>> checksums(const fs::path& dir) {
+  std::map<std::string, std::pair<uint32_t, size_t>> sums;
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+    if (!entry.is_regular_file()) continue;
+    auto bytes = io::readWholeFile(entry.path(), 1ULL << 32);
+    EXPECT_TRUE(bytes) << bytes.error();
+    if (bytes) sums[fs::relative(entry.path(), dir).string()] = {io::crc32(*bytes), bytes->size()};
+  }
+  return sums;
+}
+
+// Runs the real globe-tiler executable; returns its pid.
+pid_t spawnTiler(const fs::path& out, const std::vector<std::string>& inputs) {
+  std::vector<std::string> args = {GLOBE_TILER_EXE, "-q", "-o", out.string()};
+  args.insert(args.end(), inputs.begin(), inputs.end());
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    const int devnull = ::open("/dev/null", O_WRONLY);
+    ::dup2(devnull, STDOUT_FILENO);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  return pid;
+}
+
+int waitExit(pid_t pid) {
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+TEST(TilerResume, KilledAtRandomMomentsThenRerunGivesAnIdenticalPyramid) {
+  const auto reference = checksums(testing::bundledPyramid());
+  ASSERT_GT(reference.size(), 20u);
+  const fs::path out = testing::freshTempDir("killed") / "pyramid";
+
+  // How long an uninterrupted run takes, to spread the kills across it.
+  const auto t0 = std::chrono::steady_clock::now();
+  ASSERT_EQ(waitExit(spawnTiler(testing::freshTempDir("timing") / "p", testing::bundledInputs())),
+            0);
+  const double fullMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+
+  std::mt19937 random(20261120);
+  int killedMidway = 0;
+  for (int attempt = 0; attempt < 6; ++attempt) {
+    const pid_t pid = spawnTiler(out, testing::bundledInputs());
+    const double fraction = std::uniform_real_distribution<double>(0.05, 0.9)(random);
+    std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(fraction * fullMs));
+    ::kill(pid, SIGKILL);
+    killedMidway += waitExit(pid) == 128 + SIGKILL ? 1 : 0;
+  }
+  EXPECT_GE(killedMidway, 3) << "the kills should land while the tiler runs";
+  ASSERT_EQ(waitExit(spawnTiler(out, testing::bundledInputs())), 0);
+  EXPECT_EQ(checksums(out), reference);
+}
+
+TEST(TilerResume, DamagedPacksAndStaleTemporariesAreRepaired) {
+  const fs::path out = testing::freshTempDir("damaged") / "pyramid";
+  fs::copy(testing::bundledPyramid(), out, fs::copy_options::recursive);
+  const auto reference = checksums(out);
+  const auto finest = std::find_if(reference.begin(), reference.end(),
+                                   [](const auto& file) { return file.first.starts_with("L14/"); });
+  ASSERT_NE(finest, reference.end());
+  ASSERT_TRUE(fs::remove(out / finest->first));  // a finest-level pack
+  fs::remove(out / "manifest.json");
+  fs::resize_file(out / "L3" / "0_0.pack", 1000);  // truncated by a crash of the disk
+  { std::ofstream(out / "L5" / "0_0.pack.tmp-1-1") << "half a pack"; }
+  TilerOptions options;
+  options.inputs = testing::bundledInputs();
+  options.outputDir = out;
+  options.progress = false;
+  auto report = runTiler(options);
+  ASSERT_TRUE(report) << report.error();
+  EXPECT_EQ(report->packsBuilt, 2u);
+  EXPECT_EQ(checksums(out), reference);
+}
+
+TEST(TilerResume, RefusesADirectoryMadeFromOtherInputs) {
+  const fs::path out = testing::freshTempDir("foreign") / "pyramid";
+  fs::copy(testing::bundledPyramid(), out, fs::copy_options::recursive);
+  TilerOptions options;
+  options.inputs = {testing::bundledInputs()[0]};
+  options.outputDir = out;
+  options.progress = false;
+  auto report = runTiler(options);
+  ASSERT_FALSE(report);
+  EXPECT_NE(report.error().find("other inputs or options"), std::string::npos) << report.error();
+}
+
+TEST(TilerErrors, MissingAndBadInputsNameTheFile) {
+  const fs::path dir = testing::freshTempDir("bad-inputs");
+  TilerOptions options;
+  options.outputDir = dir / "pyramid";
+  options.progress = false;
+  options.inputs = {(dir / "nope.DEM").string()};
+  auto report = runTiler(options);
+  ASSERT_FALSE(report);
+  EXPECT_NE(report.error().find("nope.DEM"), std::string::npos) << report.error();
+  EXPECT_FALSE(fs::exists(dir / "pyramid" / "manifest.json"));
+
+  options.inputs = testing::bundledInputs();
+  options.verticesPerSide = 16;
+  report = runTiler(options);
+  ASSERT_FALSE(report);
+  EXPECT_NE(report.error().find("2^k+1"), std::string::npos) << report.error();
+}
+
+TEST(TilerOptions, OtherBlockSizesAndLevelCaps) {
+  const fs::path out = testing::freshTempDir("n33") / "pyramid";
+  TilerOptions options;
+  options.inputs = testing::bundledInputs();
+  options.outputDir = out;
+  options.progress = false;
+  options.verticesPerSide = 33;
+  options.maxLevel = 9;
+  auto report = runTiler(options);
+  ASSERT_TRUE(report) << report.error();
+  auto manifest = io::readManifest(out);
+  ASSERT_TRUE(manifest) << manifest.error();
+  EXPECT_EQ(manifest->verticesPerSide, 33u);
+  EXPECT_EQ(manifest->maxLevel(), 9u);
+  EXPECT_EQ(manifest->levels[5].tileCount, 64u * 32u);  // ETOPO20 with N = 33 stops at level 5
+}
+
+}  // namespace
+}  // namespace globe::tiler

@@ -1,0 +1,109 @@
+#include "tests/tools/tiler/tiler_test_fixture.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "tools/tiler/tiler.hpp"
+
+namespace globe::tiler::testing {
+
+std::vector<std::string> bundledInputs() {
+  const std::string dir = std::string(GLOBE_SOURCE_DIR) + "/data/dem/";
+  return {dir + "ETOPO20.DEM", dir + "W002N52.DEM", dir + "E138N35_FUJI.DEM"};
+}
+
+std::filesystem::path freshTempDir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("globe-test-" + name + "-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+const std::filesystem::path& bundledPyramid() {
+  static const std::filesystem::path dir = [] {
+    auto out = freshTempDir("bundled-pyramid") / "pyramid";
+    TilerOptions options;
+    options.inputs = bundledInputs();
+    options.outputDir = out;
+    options.progress = false;
+    auto report = runTiler(options);
+    if (!report) ADD_FAILURE() << report.error();
+    return out;
+  }();
+  return dir;
+}
+
+int16_t Oracle::Raster::sample(int64_t row, int64_t column) const {
+  if (grid.wrapsLongitude) column = ((column % grid.cols) + grid.cols) % grid.cols;
+  return samples[static_cast<size_t>(row * grid.cols + column)];
+}
+
+Oracle::Oracle(const std::vector<std::string>& inputs) {
+  for (const std::string& input : inputs) {
+    auto source = io::openRasterSource(input);
+    if (!source) {
+      ADD_FAILURE() << source.error();
+      continue;
+    }
+    Raster r{(*source)->grid(), {}, 0};
+    r.step = std::min(r.grid.columnStepDegrees, r.grid.rowStepDegrees);
+    r.samples.resize(static_cast<size_t>(r.grid.cols * r.grid.rows));
+    for (int64_t row = 0; row < r.grid.rows; ++row) {
+      auto read = (*source)->readRow(row, 0, r.grid.cols,
+                                     &r.samples[static_cast<size_t>(row * r.grid.cols)]);
+      if (!read) ADD_FAILURE() << read.error();
+    }
+    rasters_.push_back(std::move(r));
+  }
+  std::stable_sort(rasters_.begin(), rasters_.end(),
+                   [](const Raster& a, const Raster& b) { return a.step < b.step; });
+}
+
+int16_t Oracle::height(double lon, double lat) const {
+  for (const Raster& r : rasters_) {
+    const io::SampleGrid& g = r.grid;
+    const double south = g.southDegrees() < -90.0 + 1e-9 ? -90.0 : g.southDegrees();
+    const double north = g.northDegrees() > 90.0 - 1e-9 ? 90.0 : g.northDegrees();
+    if (lat < south || lat > north) continue;
+    if (!g.wrapsLongitude && (lon < g.westDegrees() || lon > g.eastDegrees())) continue;
+    if (std::abs(lat) == 90.0) {  // the pole: highest sample of the polar row
+      const int64_t row = lat > 0 ? 0 : g.rows - 1;
+      int16_t best = -9999;
+      bool any = false;
+      for (int64_t c = 0; c < g.cols; ++c) {
+        const int16_t s = r.sample(row, c);
+        if (s != -9999) best = any ? std::max(best, s) : s, any = true;
+      }
+      return best;
+    }
+    // The same arithmetic as the tiler: a vertex halfway between samples is a rounding tie.
+    double offset = lon - g.firstColumnLongitudeDegrees;
+    if (g.wrapsLongitude) offset -= 360.0 * std::floor(offset / 360.0);
+    double u = offset / g.columnStepDegrees;
+    if (!g.wrapsLongitude) u = std::clamp(u, 0.0, static_cast<double>(g.cols - 1));
+    const double v = std::clamp((g.firstRowLatitudeDegrees - lat) / g.rowStepDegrees, 0.0,
+                                static_cast<double>(g.rows - 1));
+    const auto c0 = static_cast<int64_t>(std::floor(u));
+    const auto r0 = static_cast<int64_t>(std::floor(v));
+    const int64_t c1 = g.wrapsLongitude ? c0 + 1 : std::min(c0 + 1, g.cols - 1);
+    const int64_t r1 = std::min(r0 + 1, g.rows - 1);
+    const double tu = u - static_cast<double>(c0), tv = v - static_cast<double>(r0);
+    const int16_t nearest = r.sample(tv < 0.5 ? r0 : r1, tu < 0.5 ? c0 : c1);
+    if (nearest == -9999) return -9999;
+    auto h = [&](int64_t row, int64_t col) {
+      const int16_t s = r.sample(row, col);
+      return s == -9999 ? 0.0 : static_cast<double>(s);
+    };
+    const double value = (1 - tv) * ((1 - tu) * h(r0, c0) + tu * h(r0, c1)) +
+                         tv * ((1 - tu) * h(r1, c0) + tu * h(r1, c1));
+    const auto rounded = static_cast<int16_t>(std::lround(value));
+    return rounded == -9999 ? int16_t{-10000} : rounded;
+  }
+  return -9999;
+}
+
+}  // namespace globe::tiler::testing

@@ -1,0 +1,34 @@
+// Shared fixture for tiler tests: the bundled real data tiled once per test run, and an
+// independent oracle that evaluates the "finest source wins, bilinear" rule on whole rasters.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "io/raster_source.hpp"
+
+namespace globe::tiler::testing {
+
+std::vector<std::string> bundledInputs();  // ETOPO20, W002N52, E138N35_FUJI from data/dem
+// Tiles the bundled inputs (once) and returns the pyramid directory.
+const std::filesystem::path& bundledPyramid();
+std::filesystem::path freshTempDir(const std::string& name);
+
+// Whole-raster reference sampler, written separately from the tiler's strip sampler.
+class Oracle {
+ public:
+  explicit Oracle(const std::vector<std::string>& inputs);
+  int16_t height(double longitudeDegrees, double latitudeDegrees) const;
+
+ private:
+  struct Raster {
+    io::SampleGrid grid;
+    std::vector<int16_t> samples;
+    double step;
+    int16_t sample(int64_t row, int64_t column) const;
+  };
+  std::vector<Raster> rasters_;  // finest first
+};
+
+}  // namespace globe::tiler::testing

@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Installs the Debian packages globe needs to build, test and run (needs root or sudo).
+set -euo pipefail
+SUDO=""
+if [ "$(id -u)" != 0 ]; then SUDO=sudo; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends \
+  build-essential cmake pkg-config git ca-certificates \
+  libosmesa6-dev libgl-dev libgl1-mesa-dri libegl-dev libglfw3-dev libglew-dev libglm-dev \
+  libstb-dev libgdal-dev gdal-bin nlohmann-json3-dev libcli11-dev libfmt-dev \
+  libgtest-dev libgmock-dev libbenchmark-dev \
+  python3-glad xvfb xdotool x11-apps imagemagick gnuplot-nox python3-matplotlib mesa-utils \
+  >/dev/null

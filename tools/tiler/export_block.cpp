@@ -1,0 +1,29 @@
+#include "tools/tiler/export_block.hpp"
+
+#include "io/gtopo30.hpp"
+#include "io/tile_store.hpp"
+#include "terrain/block_grid.hpp"
+
+namespace globe::tiler {
+
+Result<void> exportBlock(const std::filesystem::path& pyramidDir, const geo::TileId& tile,
+                         const std::filesystem::path& outputStem) {
+  auto store = io::TileStore::open(pyramidDir);
+  if (!store) return Error{store.error()};
+  auto block = (*store)->loadBlock(tile);
+  if (!block) return Error{block.error()};
+  const uint32_t n = block->verticesPerSide;
+  const terrain::BlockGrid grid{tile, n};
+  io::Gtopo30Raster raster;
+  io::Gtopo30Header& h = raster.header;
+  h.rows = h.cols = n;
+  h.bandRowBytes = h.totalRowBytes = int64_t{n} * 2;
+  // The block's vertices are GTOPO30 samples: ULXMAP/ULYMAP name the centre of vertex (0, 0).
+  h.ulxMapDegrees = grid.longitudeDegrees(0);
+  h.ulyMapDegrees = grid.latitudeDegrees(0);
+  h.xDimDegrees = h.yDimDegrees = terrain::vertexSpacingDegrees(tile.level, n);
+  raster.heights = std::move(block->heights);
+  return io::writeGtopo30(outputStem, raster);
+}
+
+}  // namespace globe::tiler

@@ -1,0 +1,31 @@
+// A one-line progress bar with rate and ETA, redrawn in place on a terminal.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+
+namespace globe::tiler {
+
+class ProgressBar {
+ public:
+  ProgressBar(uint64_t total, bool enabled, std::FILE* out = stderr);
+  // Redraws at most a few times a second; call as often as you like.
+  void update(uint64_t done, const std::string& label);
+  void finish(uint64_t done, const std::string& label);
+
+ private:
+  void draw(uint64_t done, const std::string& label);
+
+  uint64_t total_;
+  bool enabled_;
+  std::FILE* out_;
+  std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::time_point lastDraw_;
+};
+
+// "1:02:03" / "02:03"
+std::string formatDuration(double seconds);
+
+}  // namespace globe::tiler

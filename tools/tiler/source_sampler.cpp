@@ -1,0 +1,130 @@
+#include "tools/tiler/source_sampler.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "terrain/height_block.hpp"
+
+namespace globe::tiler {
+namespace {
+
+int64_t floorToInt(double value) { return static_cast<int64_t>(std::floor(value)); }
+
+int64_t wrapColumn(int64_t column, int64_t columns) {
+  const int64_t wrapped = column % columns;
+  return wrapped < 0 ? wrapped + columns : wrapped;
+}
+
+// Fractional column of a longitude, clamped (or wrapped) into the grid.
+double columnOf(const io::SampleGrid& grid, double longitudeDegrees) {
+  double offset = longitudeDegrees - grid.firstColumnLongitudeDegrees;
+  if (grid.wrapsLongitude) {
+    offset -= 360.0 * std::floor(offset / 360.0);
+    return offset / grid.columnStepDegrees;
+  }
+  return std::clamp(offset / grid.columnStepDegrees, 0.0, static_cast<double>(grid.cols - 1));
+}
+
+double rowOf(const io::SampleGrid& grid, double latitudeDegrees) {
+  const double offset = grid.firstRowLatitudeDegrees - latitudeDegrees;
+  return std::clamp(offset / grid.rowStepDegrees, 0.0, static_cast<double>(grid.rows - 1));
+}
+
+}  // namespace
+
+SourceSampler::SourceSampler(const std::vector<TilerSource>& sources, uint32_t maxFinestLevel,
+                             double stripWestDegrees, double stripEastDegrees) {
+  for (const TilerSource& source : sources) {
+    if (source.finestLevel > maxFinestLevel) continue;
+    const io::SampleGrid& grid = source.grid;
+    if (!grid.wrapsLongitude &&
+        (source.extent.east < stripWestDegrees || source.extent.west > stripEastDegrees)) {
+      continue;
+    }
+    // Columns needed for every longitude of the strip, one sample of margin each side.
+    const int64_t first = floorToInt(columnOf(grid, stripWestDegrees)) - 1;
+    const double spanColumns = (stripEastDegrees - stripWestDegrees) / grid.columnStepDegrees;
+    int64_t count = static_cast<int64_t>(std::ceil(spanColumns)) + 3;
+    Candidate candidate{&source, 0, grid.cols};
+    if (grid.wrapsLongitude) {
+      if (count < grid.cols) candidate = {&source, wrapColumn(first, grid.cols), count};
+    } else {
+      const int64_t begin = std::clamp<int64_t>(first, 0, grid.cols - 1);
+      const int64_t end = std::clamp<int64_t>(first + count, begin + 1, grid.cols);
+      candidate = {&source, begin, end - begin};
+    }
+    candidates_.push_back(candidate);
+  }
+}
+
+Result<const std::vector<int16_t>*> SourceSampler::row(size_t candidateIndex, int64_t rowIndex) {
+  auto [it, inserted] = rows_.try_emplace({candidateIndex, rowIndex});
+  if (inserted) {
+    const Candidate& c = candidates_[candidateIndex];
+    it->second.samples.resize(static_cast<size_t>(c.columnCount));
+    auto read = c.source->raster->readRow(rowIndex, c.firstColumn, c.columnCount,
+                                          it->second.samples.data());
+    if (!read) {
+      rows_.erase(it);
+      return Error{read.error()};
+    }
+    ++rowReads_;
+  }
+  return &it->second.samples;
+}
+
+int16_t SourceSampler::at(const Candidate& c, const std::vector<int16_t>& rowSamples,
+                          int64_t column) const {
+  int64_t offset = column - c.firstColumn;
+  if (c.source->grid.wrapsLongitude) {
+    offset = wrapColumn(column, c.source->grid.cols) - c.firstColumn;
+    if (offset < 0) offset += c.source->grid.cols;
+  }
+  return rowSamples[static_cast<size_t>(std::clamp<int64_t>(offset, 0, c.columnCount - 1))];
+}
+
+Result<int16_t> SourceSampler::sampleSource(const Candidate& c, double longitudeDegrees,
+                                            double latitudeDegrees) {
+  const TilerSource& source = *c.source;
+  if (latitudeDegrees >= 90.0 && source.northPoleHeight) return *source.northPoleHeight;
+  if (latitudeDegrees <= -90.0 && source.southPoleHeight) return *source.southPoleHeight;
+  const io::SampleGrid& grid = source.grid;
+  const double u = columnOf(grid, longitudeDegrees);
+  const double v = rowOf(grid, latitudeDegrees);
+  const int64_t column0 = floorToInt(u);
+  const int64_t row0 = floorToInt(v);
+  const int64_t column1 = grid.wrapsLongitude ? column0 + 1 : std::min(column0 + 1, grid.cols - 1);
+  const int64_t row1 = std::min(row0 + 1, grid.rows - 1);
+  const double tu = u - static_cast<double>(column0);
+  const double tv = v - static_cast<double>(row0);
+
+  const size_t index = static_cast<size_t>(&c - candidates_.data());
+  auto top = row(index, row0);
+  if (!top) return Error{top.error()};
+  auto bottom = row(index, row1);
+  if (!bottom) return Error{bottom.error()};
+  const int16_t s00 = at(c, **top, column0), s01 = at(c, **top, column1);
+  const int16_t s10 = at(c, **bottom, column0), s11 = at(c, **bottom, column1);
+
+  const int16_t nearest = tv < 0.5 ? (tu < 0.5 ? s00 : s01) : (tu < 0.5 ? s10 : s11);
+  if (nearest == terrain::kNoDataHeight) return terrain::kNoDataHeight;
+  // Sea next to land blends towards sea level, as the surface does.
+  const double h =
+      (1 - tv) *
+          ((1 - tu) * terrain::surfaceHeightMeters(s00) + tu * terrain::surfaceHeightMeters(s01)) +
+      tv * ((1 - tu) * terrain::surfaceHeightMeters(s10) + tu * terrain::surfaceHeightMeters(s11));
+  auto rounded = static_cast<int16_t>(std::clamp(std::lround(h), -32767L, 32767L));
+  // -9999 is the no-data marker: a real height that rounds to it moves a metre deeper.
+  return rounded == terrain::kNoDataHeight ? static_cast<int16_t>(-10000) : rounded;
+}
+
+Result<int16_t> SourceSampler::sample(double longitudeDegrees, double latitudeDegrees) {
+  for (const Candidate& c : candidates_) {
+    if (c.source->covers(longitudeDegrees, latitudeDegrees)) {
+      return sampleSource(c, longitudeDegrees, latitudeDegrees);
+    }
+  }
+  return terrain::kNoDataHeight;
+}
+
+}  // namespace globe::tiler

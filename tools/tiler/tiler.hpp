@@ -1,0 +1,38 @@
+// globe-tiler's job: builds a tile pyramid from rasters, level by level from the finest, packs
+// in parallel, every file written atomically, resumable after a kill.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geo/ellipsoid.hpp"
+#include "geo/result.hpp"
+
+namespace globe::tiler {
+
+struct TilerOptions {
+  std::vector<std::string> inputs;
+  std::filesystem::path outputDir;
+  uint32_t verticesPerSide = 17;
+  uint32_t packTilesPerSide = 64;
+  std::optional<uint32_t> maxLevel;
+  geo::GlobeModel globeModel = geo::GlobeModel::Wgs84;
+  unsigned threads = 0;  // 0 = every core
+  bool progress = true;  // drawn only when stderr is a terminal
+};
+
+struct TilerReport {
+  uint64_t tiles = 0;
+  uint64_t packsBuilt = 0;
+  uint64_t packsReused = 0;  // complete packs found from an earlier, interrupted run
+  uint64_t sourceBytes = 0;
+  uint64_t sampledVertices = 0;
+  double seconds = 0;
+};
+
+Result<TilerReport> runTiler(const TilerOptions& options);
+
+}  // namespace globe::tiler
