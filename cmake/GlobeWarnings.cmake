@@ -26,5 +26,5 @@ function(globe_test name)
   target_compile_definitions(${name} PRIVATE
     GLOBE_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     GLOBE_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared")
-  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 600)
+  gtest_discover_tests(${name} TEST_PREFIX "${name}." DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 600)
 endfunction()
