@@ -27,7 +27,7 @@ std::vector<TileSpec> gtopo30Layout() {
 }
 
 std::string tileName(const TileSpec& t) {
-  char name[16];
+  char name[32];
   std::snprintf(name, sizeof name, "%c%03d%c%02d", t.westDegrees < 0 ? 'W' : 'E',
                 std::abs(t.westDegrees), t.northDegrees < 0 ? 'S' : 'N', std::abs(t.northDegrees));
   return name;

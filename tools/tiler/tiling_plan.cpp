@@ -38,7 +38,13 @@ TilingPlan::TilingPlan(const std::vector<io::BoundsDegrees>& extents,
   for (uint32_t level = maxLevel + 1; level-- > 0;) {
     Level& current = levels_[level];
     for (size_t i = 0; i < extents.size(); ++i) {
-      if (finestLevels[i] >= level) current.ranges.push_back(tilesTouching(extents[i], level));
+      if (finestLevels[i] < level) continue;
+      TileRange r = tilesTouching(extents[i], level);
+      if (level > 0) {
+        // Whole families of four: a viewer refines a tile only when all its children exist.
+        r = {r.x0 & ~1U, r.x1 | 1U, r.y0 & ~1U, r.y1 | 1U};
+      }
+      current.ranges.push_back(r);
     }
     if (level < maxLevel) {  // parents of every finer tile
       for (const TileRange& r : levels_[level + 1].ranges) {

@@ -1,5 +1,6 @@
 // Which tiles the pyramid holds at each level: every tile that touches a source fine enough for
-// that level, plus the parents of every such tile, so levels deepen only where finer data exists.
+// that level, with its three siblings, plus the parents of every such tile, so levels deepen only
+// where finer data exists and a tile has either no children or all four.
 #pragma once
 
 #include <cstdint>

@@ -47,7 +47,7 @@ TEST(TilingPlan, LevelsDeepenOnlyWhereFinerDataExists) {
   for (uint32_t level = 7; level <= 14; ++level) {
     const double tileDegrees = 180.0 / (1u << level);
     const uint64_t expectedMax =
-        static_cast<uint64_t>((1 / tileDegrees + 2) * (1 / tileDegrees + 2));
+        static_cast<uint64_t>((1 / tileDegrees + 4) * (1 / tileDegrees + 4));
     EXPECT_LE(plan.tileCount(level), expectedMax) << "level " << level;
     EXPECT_GT(plan.tileCount(level), 0u);
     // Nothing far from Fuji exists at a deep level.
@@ -69,6 +69,20 @@ TEST(TilingPlan, EveryTileHasItsParent) {
     for (const io::PackId& pack : plan.packs(level)) {
       for (const geo::TileId& tile : plan.tilesInPack(pack)) {
         ASSERT_TRUE(plan.exists(tile.parent())) << level << "/" << tile.x << "/" << tile.y;
+      }
+    }
+  }
+}
+
+TEST(TilingPlan, TilesComeInFamiliesOfFour) {
+  const TilingPlan plan({{-180, -90, 180, 90}, {-2, 52, 0, 54}, {137.9995, 34.9995, 139.0005, 36.0005}},
+                        {6, 11, 14}, 16);
+  for (uint32_t level = 1; level <= plan.maxLevel(); ++level) {
+    for (const io::PackId& pack : plan.packs(level)) {
+      for (const geo::TileId& tile : plan.tilesInPack(pack)) {
+        for (const geo::TileId& sibling : tile.parent().children()) {
+          ASSERT_TRUE(plan.exists(sibling)) << level << "/" << sibling.x << "/" << sibling.y;
+        }
       }
     }
   }
