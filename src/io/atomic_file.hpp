@@ -1,0 +1,24 @@
+// Whole-file reads with a size cap, and writes that never leave a half-written file behind.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "geo/result.hpp"
+
+namespace globe::io {
+
+// Writes `path` + ".tmp-<pid>-<counter>", fsyncs it and renames it over `path`; on any failure the
+// temporary is removed and `path` is untouched.
+Result<void> writeFileAtomically(const std::filesystem::path& path,
+                                 std::span<const std::byte> bytes);
+Result<void> writeFileAtomically(const std::filesystem::path& path, std::string_view text);
+
+// Reads a regular file whole; refuses files larger than maxBytes before allocating.
+Result<std::vector<std::byte>> readWholeFile(const std::filesystem::path& path, uint64_t maxBytes);
+
+}  // namespace globe::io

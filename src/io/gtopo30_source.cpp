@@ -1,0 +1,55 @@
+// The native GTOPO30 RasterSource: rows come straight from the .DEM with pread, nothing is cached.
+#include <cstdint>
+#include <memory>
+
+#include "io/gtopo30.hpp"
+#include "io/raster_source.hpp"
+
+namespace globe::io {
+namespace {
+
+SampleGrid nativeGrid(const Gtopo30Header& h) {
+  SampleGrid g;
+  g.cols = h.cols;
+  g.rows = h.rows;
+  g.firstColumnLongitudeDegrees = h.ulxMapDegrees;
+  g.firstRowLatitudeDegrees = h.ulyMapDegrees;
+  g.columnStepDegrees = h.xDimDegrees;
+  g.rowStepDegrees = h.yDimDegrees;
+  return g;
+}
+
+class Gtopo30Source final : public detail::ColumnMappedSource {
+ public:
+  explicit Gtopo30Source(Gtopo30File file)
+      : ColumnMappedSource(file.paths().data.string(), nativeGrid(file.header())),
+        file_(std::move(file)) {}
+
+  std::string_view formatName() const override { return "GTOPO30"; }
+
+ private:
+  Result<void> readSourceColumns(int64_t row, int64_t sourceColumn, int64_t count,
+                                 int16_t* out) const override {
+    if (auto r = file_.readSamples(row, sourceColumn, count, out); !r) return r;
+    // A header may declare another no-data value (SRTM's -32768); globe uses -9999 throughout.
+    const int32_t noData = file_.header().noData;
+    if (noData != kNoDataHeight && noData >= INT16_MIN && noData <= INT16_MAX) {
+      for (int64_t i = 0; i < count; ++i) {
+        if (out[i] == noData) out[i] = kNoDataHeight;
+      }
+    }
+    return {};
+  }
+
+  Gtopo30File file_;
+};
+
+}  // namespace
+
+Result<std::unique_ptr<RasterSource>> openGtopo30Source(const std::filesystem::path& path) {
+  auto file = Gtopo30File::open(path);
+  if (!file) return Error{file.error()};
+  return std::unique_ptr<RasterSource>(std::make_unique<Gtopo30Source>(std::move(*file)));
+}
+
+}  // namespace globe::io
