@@ -1,0 +1,66 @@
+// `globe info`: the real program on the bundled pyramid, text and JSON, and its bad-input errors.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tests/tools/tiler/tiler_test_fixture.hpp"
+
+namespace {
+
+struct ProcessResult {
+  int exitCode;
+  std::string output;
+};
+
+ProcessResult runGlobe(const std::string& arguments) {
+  const std::string command = std::string(GLOBE_EXE) + " " + arguments + " 2>&1";
+  FILE* pipe = ::popen(command.c_str(), "r");
+  std::string output;
+  std::array<char, 4096> buffer{};
+  while (pipe != nullptr && std::fgets(buffer.data(), buffer.size(), pipe) != nullptr)
+    output += buffer.data();
+  const int status = pipe != nullptr ? ::pclose(pipe) : -1;
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+TEST(GlobeInfo, JsonListsLevelsTilesBoundsAndHeights) {
+  const auto pyramid = globe::tiler::testing::bundledPyramid();
+  const ProcessResult run = runGlobe("info --json " + pyramid.string());
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const auto j = nlohmann::json::parse(run.output);
+  EXPECT_EQ(j["blockSize"], 17);
+  EXPECT_EQ(j["minLevel"], 0);
+  EXPECT_EQ(j["maxLevel"], 14);
+  ASSERT_EQ(j["levels"].size(), 15u);
+  EXPECT_EQ(j["levels"][0]["tiles"], 2);
+  uint64_t sum = 0;
+  for (const auto& level : j["levels"]) sum += level["tiles"].get<uint64_t>();
+  EXPECT_EQ(j["tiles"].get<uint64_t>(), sum);
+  EXPECT_LT(j["heightRangeMeters"][0].get<int>(), -5000);  // ETOPO20 sea floor
+  EXPECT_GT(j["heightRangeMeters"][1].get<int>(), 3700);   // Fuji
+  // The finest level sits over Mount Fuji.
+  EXPECT_NEAR(j["finestBoundsDegrees"]["west"].get<double>(), 138.0, 0.05);
+  EXPECT_NEAR(j["finestBoundsDegrees"]["north"].get<double>(), 36.0, 0.05);
+  EXPECT_EQ(j["sources"].size(), 3u);
+}
+
+TEST(GlobeInfo, TextHasOneLinePerLevel) {
+  const ProcessResult run = runGlobe("info " + globe::tiler::testing::bundledPyramid().string());
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("levels      0..14"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("E138N35_FUJI.DEM"), std::string::npos);
+}
+
+TEST(GlobeInfo, NotAPyramidIsAClearError) {
+  const auto dir = globe::tiler::testing::freshTempDir("not-a-pyramid");
+  const ProcessResult run = runGlobe("info " + dir.string());
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_NE(run.output.find("manifest.json"), std::string::npos) << run.output;
+  const ProcessResult badGlobe = runGlobe("info --globe mars " + dir.string());
+  EXPECT_EQ(badGlobe.exitCode, 2) << badGlobe.output;
+}
+
+}  // namespace
