@@ -63,8 +63,8 @@ int waitExit(pid_t pid) {
 size_t countPacks(const fs::path& dir) {
   size_t count = 0;
   std::error_code error;
-  for (auto it = fs::recursive_directory_iterator(dir, error); !error && it != fs::recursive_directory_iterator();
-       it.increment(error)) {
+  for (auto it = fs::recursive_directory_iterator(dir, error);
+       !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
     count += it->path().extension() == ".pack" ? 1 : 0;
   }
   return count;

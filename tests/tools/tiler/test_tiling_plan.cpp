@@ -75,8 +75,9 @@ TEST(TilingPlan, EveryTileHasItsParent) {
 }
 
 TEST(TilingPlan, TilesComeInFamiliesOfFour) {
-  const TilingPlan plan({{-180, -90, 180, 90}, {-2, 52, 0, 54}, {137.9995, 34.9995, 139.0005, 36.0005}},
-                        {6, 11, 14}, 16);
+  const TilingPlan plan(
+      {{-180, -90, 180, 90}, {-2, 52, 0, 54}, {137.9995, 34.9995, 139.0005, 36.0005}}, {6, 11, 14},
+      16);
   for (uint32_t level = 1; level <= plan.maxLevel(); ++level) {
     for (const io::PackId& pack : plan.packs(level)) {
       for (const geo::TileId& tile : plan.tilesInPack(pack)) {
