@@ -15,11 +15,29 @@ std::vector<std::string> bundledInputs() {
   return {dir + "ETOPO20.DEM", dir + "W002N52.DEM", dir + "E138N35_FUJI.DEM"};
 }
 
+namespace {
+
+// Every temporary directory a test process makes is removed when it exits.
+struct TempDirs {
+  std::vector<std::filesystem::path> dirs;
+  ~TempDirs() {
+    std::error_code ignored;
+    for (const auto& dir : dirs) std::filesystem::remove_all(dir, ignored);
+  }
+};
+TempDirs& tempDirs() {
+  static TempDirs instance;
+  return instance;
+}
+
+}  // namespace
+
 std::filesystem::path freshTempDir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() /
                    ("globe-test-" + name + "-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
+  tempDirs().dirs.push_back(dir);
   return dir;
 }
 

@@ -1,0 +1,49 @@
+// Vertex buffer upload and attribute setup for one tile.
+#include "render/gpu_tile.hpp"
+
+#include <cstddef>
+#include <numbers>
+
+#include "geo/tiling_scheme.hpp"
+
+namespace globe::render {
+namespace {
+
+void floatAttribute(GLuint location, GLint components, uint32_t offsetFloats) {
+  constexpr auto stride = static_cast<GLsizei>(terrain::kTileVertexFloats * sizeof(float));
+  glEnableVertexAttribArray(location);
+  glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, stride,
+                        reinterpret_cast<const void*>(size_t{offsetFloats} * sizeof(float)));
+}
+
+}  // namespace
+
+GpuTile uploadGpuTile(const geo::TileId& tile, const terrain::TileMesh& mesh, GLuint indexBuffer) {
+  GpuTile gpu;
+  gpu.centerEcefMeters = mesh.centerEcefMeters;
+  const geo::GlobeRectangle rect = geo::GeographicTilingScheme::tileRectangle(tile);
+  constexpr double pi = std::numbers::pi;
+  gpu.imageryRect = glm::vec4(static_cast<float>((rect.westRadians + pi) / (2.0 * pi)),
+                              static_cast<float>((pi / 2.0 - rect.northRadians) / pi),
+                              static_cast<float>(rect.widthRadians() / (2.0 * pi)),
+                              static_cast<float>(rect.heightRadians() / pi));
+  gpu.vertexBytes = mesh.vertices.size() * sizeof(float);
+
+  gpu.vertexArray = makeGlVertexArray();
+  gpu.vertexBuffer = makeGlBuffer();
+  glBindVertexArray(gpu.vertexArray.get());
+  glBindBuffer(GL_ARRAY_BUFFER, gpu.vertexBuffer.get());
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(gpu.vertexBytes), mesh.vertices.data(),
+               GL_STATIC_DRAW);
+  floatAttribute(kAttributeOffset, 3, terrain::kTileVertexPositionOffset);
+  floatAttribute(kAttributeNormal, 3, terrain::kTileVertexNormalOffset);
+  floatAttribute(kAttributeHeight, 1, terrain::kTileVertexHeightOffset);
+  floatAttribute(kAttributeSea, 1, terrain::kTileVertexSeaOffset);
+  floatAttribute(kAttributeUv, 2, terrain::kTileVertexUvOffset);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer);  // recorded in the vertex array
+  glBindVertexArray(0);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  return gpu;
+}
+
+}  // namespace globe::render

@@ -1,0 +1,34 @@
+// One tile's GPU copy: its vertex buffer, and a vertex array binding it with the shared index
+// buffer in the attribute layout of shaders/terrain.vert.
+#pragma once
+
+#include <cstdint>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "geo/tile_id.hpp"
+#include "render/gl_object.hpp"
+#include "terrain/tile_mesh.hpp"
+
+namespace globe::render {
+
+// Attribute locations of shaders/terrain.vert.
+inline constexpr GLuint kAttributeOffset = 0;
+inline constexpr GLuint kAttributeNormal = 1;
+inline constexpr GLuint kAttributeHeight = 2;
+inline constexpr GLuint kAttributeSea = 3;
+inline constexpr GLuint kAttributeUv = 4;
+
+struct GpuTile {
+  GlObject vertexArray;
+  GlObject vertexBuffer;
+  glm::dvec3 centerEcefMeters{0.0};
+  glm::vec4 imageryRect{0.0f};  // global equirectangular uv = xy + tile uv · zw
+  uint64_t vertexBytes = 0;
+};
+
+// Uploads the mesh's vertices (GL_STATIC_DRAW) and binds `indexBuffer` into the vertex array.
+GpuTile uploadGpuTile(const geo::TileId& tile, const terrain::TileMesh& mesh, GLuint indexBuffer);
+
+}  // namespace globe::render

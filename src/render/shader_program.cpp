@@ -1,0 +1,94 @@
+// Shader file reading, compilation and linking with info-log error reporting.
+#include "render/shader_program.hpp"
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace globe::render {
+namespace {
+
+constexpr std::streamoff kMaxShaderFileBytes = 1 << 20;
+
+Result<std::string> readTextFile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return makeError(path.string() + ": cannot read shader file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) return makeError(path.string() + ": cannot read shader file");
+  std::string result = std::move(text).str();
+  if (static_cast<std::streamoff>(result.size()) > kMaxShaderFileBytes) {
+    return makeError(path.string() + ": shader file larger than 1 MiB");
+  }
+  if (result.empty()) return makeError(path.string() + ": shader file is empty");
+  return result;
+}
+
+std::string shaderLog(GLuint shader) {
+  GLint length = 0;
+  glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+  std::string log(static_cast<size_t>(length > 0 ? length : 0), '\0');
+  if (length > 0) glGetShaderInfoLog(shader, length, nullptr, log.data());
+  while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
+  return log;
+}
+
+std::string programLog(GLuint program) {
+  GLint length = 0;
+  glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+  std::string log(static_cast<size_t>(length > 0 ? length : 0), '\0');
+  if (length > 0) glGetProgramInfoLog(program, length, nullptr, log.data());
+  while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
+  return log;
+}
+
+Result<GlObject> compileShader(GLenum type, std::string_view source, std::string_view name) {
+  GlObject shader = makeGlShader(type);
+  if (!shader) return makeError(std::string(name) + ": glCreateShader failed");
+  const char* text = source.data();
+  const auto length = static_cast<GLint>(source.size());
+  glShaderSource(shader.get(), 1, &text, &length);
+  glCompileShader(shader.get());
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    return makeError(std::string(name) + ": GLSL compile error:\n" + shaderLog(shader.get()));
+  }
+  return shader;
+}
+
+}  // namespace
+
+Result<ShaderProgram> buildShaderProgram(std::string_view vertexSource, std::string_view vertexName,
+                                         std::string_view fragmentSource,
+                                         std::string_view fragmentName) {
+  auto vertex = compileShader(GL_VERTEX_SHADER, vertexSource, vertexName);
+  if (!vertex) return makeError(vertex.error());
+  auto fragment = compileShader(GL_FRAGMENT_SHADER, fragmentSource, fragmentName);
+  if (!fragment) return makeError(fragment.error());
+  GlObject program = makeGlProgram();
+  glAttachShader(program.get(), vertex->get());
+  glAttachShader(program.get(), fragment->get());
+  glLinkProgram(program.get());
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
+  glDetachShader(program.get(), vertex->get());
+  glDetachShader(program.get(), fragment->get());
+  if (ok != GL_TRUE) {
+    return makeError(std::string(vertexName) + " + " + std::string(fragmentName) +
+                     ": GLSL link error:\n" + programLog(program.get()));
+  }
+  return ShaderProgram(std::move(program));
+}
+
+Result<ShaderProgram> loadShaderProgram(const std::filesystem::path& vertexPath,
+                                        const std::filesystem::path& fragmentPath) {
+  auto vertexSource = readTextFile(vertexPath);
+  if (!vertexSource) return makeError(vertexSource.error());
+  auto fragmentSource = readTextFile(fragmentPath);
+  if (!fragmentSource) return makeError(fragmentSource.error());
+  return buildShaderProgram(*vertexSource, vertexPath.string(), *fragmentSource,
+                            fragmentPath.string());
+}
+
+}  // namespace globe::render

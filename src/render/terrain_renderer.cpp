@@ -1,0 +1,270 @@
+// The terrain renderer: shared index buffer, per-tile GPU buffers, per-frame uniforms, draw loop.
+#include "render/terrain_renderer.hpp"
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <glm/ext/matrix_transform.hpp>
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "render/gl_object.hpp"
+#include "render/gpu_tile.hpp"
+#include "render/shader_directory.hpp"
+#include "render/shader_program.hpp"
+
+namespace globe::render {
+
+struct TerrainRenderer::Impl {
+  struct Uniforms {
+    GLint modelView = -1, projection = -1, tileCenter = -1, imageryRect = -1;
+    GLint sunDirection = -1, ambient = -1, hillShading = -1, useImagery = -1, imagery = -1;
+    GLint logDepthScale = -1;
+  };
+
+  TerrainRendererOptions options;
+  TerrainStyle style;
+  ShaderProgram program;
+  Uniforms uniforms;
+  GlObject indexBuffer;
+  GLenum indexType = GL_UNSIGNED_SHORT;
+  GLsizei indexCount = 0;
+  uint64_t indexBytes = 0;
+  GlObject imagery;
+  uint64_t imageryBytes = 0;
+  std::unordered_map<geo::TileId, GpuTile> tiles;
+  uint64_t tileBytes = 0;
+
+  uint64_t gpuBytes() const { return tileBytes + indexBytes + imageryBytes; }
+};
+
+TerrainRenderer::TerrainRenderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+TerrainRenderer::~TerrainRenderer() = default;
+
+Result<std::unique_ptr<TerrainRenderer>> TerrainRenderer::create(
+    const TerrainRendererOptions& options) {
+  if (!terrain::isValidBlockSize(options.verticesPerSide)) {
+    return makeError("terrain renderer: block size " + std::to_string(options.verticesPerSide) +
+                     " is not 2^k+1");
+  }
+  auto impl = std::make_unique<Impl>();
+  impl->options = options;
+  if (impl->options.shaderDirectory.empty())
+    impl->options.shaderDirectory = defaultShaderDirectory();
+  const auto& dir = impl->options.shaderDirectory;
+  auto program = loadShaderProgram(dir / "terrain.vert", dir / "terrain.frag");
+  if (!program) return makeError(program.error());
+  impl->program = std::move(*program);
+
+  const ShaderProgram& p = impl->program;
+  Impl::Uniforms& u = impl->uniforms;
+  u.modelView = p.uniformLocation("u_modelView");
+  u.projection = p.uniformLocation("u_projection");
+  u.tileCenter = p.uniformLocation("u_tileCenterEcef");
+  u.imageryRect = p.uniformLocation("u_imageryRect");
+  u.sunDirection = p.uniformLocation("u_sunDirection");
+  u.ambient = p.uniformLocation("u_ambient");
+  u.hillShading = p.uniformLocation("u_hillShading");
+  u.useImagery = p.uniformLocation("u_useImagery");
+  u.imagery = p.uniformLocation("u_imagery");
+  u.logDepthScale = p.uniformLocation("u_logDepthScale");
+  if (u.modelView < 0 || u.projection < 0 || u.logDepthScale < 0) {
+    return makeError((dir / "terrain.vert").string() +
+                     " + terrain.frag: the program lacks "
+                     "u_modelView, u_projection or u_logDepthScale");
+  }
+
+  const std::vector<uint32_t> indices =
+      terrain::buildGridIndices(options.verticesPerSide, options.skirts);
+  const uint32_t vertexCount = terrain::tileVertexCount(options.verticesPerSide, options.skirts);
+  impl->indexBuffer = makeGlBuffer();
+  glBindVertexArray(0);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, impl->indexBuffer.get());
+  if (vertexCount <= std::numeric_limits<uint16_t>::max() + 1u) {
+    const std::vector<uint16_t> shortIndices(indices.begin(), indices.end());
+    impl->indexType = GL_UNSIGNED_SHORT;
+    impl->indexBytes = shortIndices.size() * sizeof(uint16_t);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(impl->indexBytes),
+                 shortIndices.data(), GL_STATIC_DRAW);
+  } else {
+    impl->indexType = GL_UNSIGNED_INT;
+    impl->indexBytes = indices.size() * sizeof(uint32_t);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(impl->indexBytes), indices.data(),
+                 GL_STATIC_DRAW);
+  }
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+  impl->indexCount = static_cast<GLsizei>(indices.size());
+  if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
+    return makeError("terrain renderer: GL error " + std::to_string(error) + " during set-up");
+  }
+  return std::unique_ptr<TerrainRenderer>(new TerrainRenderer(std::move(impl)));
+}
+
+Result<void> TerrainRenderer::uploadTile(const geo::TileId& tile, const terrain::TileMesh& mesh) {
+  const auto& options = impl_->options;
+  if (mesh.verticesPerSide != options.verticesPerSide || mesh.hasSkirts != options.skirts) {
+    return makeError("terrain renderer: tile " + std::to_string(tile.level) + "/" +
+                     std::to_string(tile.x) + "/" + std::to_string(tile.y) + ": mesh has " +
+                     std::to_string(mesh.verticesPerSide) + " vertices per side" +
+                     (mesh.hasSkirts ? " with" : " without") + " skirts, renderer expects " +
+                     std::to_string(options.verticesPerSide) +
+                     (options.skirts ? " with" : " without"));
+  }
+  const size_t expected =
+      size_t{terrain::tileVertexCount(options.verticesPerSide, options.skirts)} *
+      terrain::kTileVertexFloats;
+  if (mesh.vertices.size() != expected) {
+    return makeError("terrain renderer: tile " + std::to_string(tile.level) + "/" +
+                     std::to_string(tile.x) + "/" + std::to_string(tile.y) + ": mesh has " +
+                     std::to_string(mesh.vertices.size()) + " floats, expected " +
+                     std::to_string(expected));
+  }
+  evictTile(tile);
+  GpuTile gpu = uploadGpuTile(tile, mesh, impl_->indexBuffer.get());
+  impl_->tileBytes += gpu.vertexBytes;
+  impl_->tiles.emplace(tile, std::move(gpu));
+  if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
+    evictTile(tile);
+    return makeError("terrain renderer: GL error " + std::to_string(error) + " uploading a tile");
+  }
+  return {};
+}
+
+bool TerrainRenderer::evictTile(const geo::TileId& tile) {
+  const auto found = impl_->tiles.find(tile);
+  if (found == impl_->tiles.end()) return false;
+  impl_->tileBytes -= found->second.vertexBytes;
+  impl_->tiles.erase(found);
+  return true;
+}
+
+bool TerrainRenderer::hasTile(const geo::TileId& tile) const { return impl_->tiles.contains(tile); }
+
+void TerrainRenderer::evictAllTiles() {
+  impl_->tiles.clear();
+  impl_->tileBytes = 0;
+}
+
+Result<void> TerrainRenderer::setImagery(std::span<const uint8_t> rgba, int widthPixels,
+                                         int heightPixels) {
+  GLint maxSize = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+  if (widthPixels < 1 || heightPixels < 1 || widthPixels > maxSize || heightPixels > maxSize) {
+    return makeError("terrain renderer: imagery size " + std::to_string(widthPixels) + "x" +
+                     std::to_string(heightPixels) + " out of range (GL_MAX_TEXTURE_SIZE " +
+                     std::to_string(maxSize) + ")");
+  }
+  const uint64_t bytes = uint64_t(widthPixels) * uint64_t(heightPixels) * 4;
+  if (rgba.size() != bytes) {
+    return makeError("terrain renderer: imagery has " + std::to_string(rgba.size()) + " bytes, a " +
+                     std::to_string(widthPixels) + "x" + std::to_string(heightPixels) +
+                     " RGBA image has " + std::to_string(bytes));
+  }
+  impl_->imagery = makeGlTexture();
+  glBindTexture(GL_TEXTURE_2D, impl_->imagery.get());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, widthPixels, heightPixels, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+               rgba.data());
+  glGenerateMipmap(GL_TEXTURE_2D);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  impl_->imageryBytes = bytes * 4 / 3;  // with the mipmap chain
+  if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
+    clearImagery();
+    return makeError("terrain renderer: GL error " + std::to_string(error) + " uploading imagery");
+  }
+  return {};
+}
+
+void TerrainRenderer::clearImagery() {
+  impl_->imagery.reset();
+  impl_->imageryBytes = 0;
+}
+
+bool TerrainRenderer::hasImagery() const { return static_cast<bool>(impl_->imagery); }
+
+void TerrainRenderer::setStyle(const TerrainStyle& style) { impl_->style = style; }
+const TerrainStyle& TerrainRenderer::style() const { return impl_->style; }
+
+FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::TileId> tiles) {
+  const Impl& impl = *impl_;
+  const Impl::Uniforms& u = impl.uniforms;
+  const TerrainStyle& style = impl.style;
+  FrameStats stats;
+  stats.tilesRequested = static_cast<uint32_t>(tiles.size());
+
+  glViewport(0, 0, view.widthPixels, view.heightPixels);
+  glClearColor(style.backgroundRgb.r, style.backgroundRgb.g, style.backgroundRgb.b, 1.0f);
+  glClearDepth(1.0);
+  glDepthMask(GL_TRUE);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  glFrontFace(GL_CCW);
+  glDisable(GL_BLEND);
+
+  glUseProgram(impl.program.id());
+  const glm::mat4 projection(view.projection);
+  glUniformMatrix4fv(u.projection, 1, GL_FALSE, glm::value_ptr(projection));
+  const double sunLength = glm::length(view.sunDirectionEcef);
+  const glm::vec3 sun = std::isfinite(sunLength) && sunLength > 0.0
+                            ? glm::vec3(view.sunDirectionEcef / sunLength)
+                            : glm::vec3(0.0f);
+  glUniform3fv(u.sunDirection, 1, glm::value_ptr(sun));
+  glUniform1f(u.ambient, style.ambient);
+  glUniform1i(u.hillShading, style.hillShading ? 1 : 0);
+  const bool useImagery = style.drapeImagery && impl.imagery;
+  glUniform1i(u.useImagery, useImagery ? 1 : 0);
+  glUniform1i(u.imagery, 0);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, useImagery ? impl.imagery.get() : 0);
+  const double farMeters = view.farMeters > 1.0 ? view.farMeters : kDefaultFarMeters;
+  glUniform1f(u.logDepthScale, static_cast<float>(1.0 / std::log2(1.0 + farMeters)));
+
+  for (const geo::TileId& tile : tiles) {
+    const auto found = impl.tiles.find(tile);
+    if (found == impl.tiles.end()) {
+      ++stats.tilesMissing;
+      continue;
+    }
+    const GpuTile& gpu = found->second;
+    // Camera-relative in double: the ~6.4e6 m translation cancels before the cast to float.
+    const glm::dmat4 modelViewDouble =
+        view.viewMatrix * glm::translate(glm::dmat4(1.0), gpu.centerEcefMeters);
+    const glm::mat4 modelView(modelViewDouble);
+    glUniformMatrix4fv(u.modelView, 1, GL_FALSE, glm::value_ptr(modelView));
+    const glm::vec3 center(gpu.centerEcefMeters);
+    glUniform3fv(u.tileCenter, 1, glm::value_ptr(center));
+    glUniform4fv(u.imageryRect, 1, glm::value_ptr(gpu.imageryRect));
+    glBindVertexArray(gpu.vertexArray.get());
+    glDrawElements(GL_TRIANGLES, impl.indexCount, impl.indexType, nullptr);
+    ++stats.drawCalls;
+    ++stats.tilesDrawn;
+    stats.triangles += static_cast<uint64_t>(impl.indexCount / 3);
+  }
+  glBindVertexArray(0);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glUseProgram(0);
+
+  stats.gpuBytesResident = impl.gpuBytes();
+  stats.tilesResident = static_cast<uint32_t>(impl.tiles.size());
+  return stats;
+}
+
+uint64_t TerrainRenderer::gpuBytesResident() const { return impl_->gpuBytes(); }
+uint32_t TerrainRenderer::tilesResident() const {
+  return static_cast<uint32_t>(impl_->tiles.size());
+}
+uint32_t TerrainRenderer::indicesPerTile() const {
+  return static_cast<uint32_t>(impl_->indexCount);
+}
+
+}  // namespace globe::render

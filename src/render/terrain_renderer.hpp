@@ -1,0 +1,96 @@
+// Draws terrain tiles: a GPU cache of tile meshes sharing one index buffer, camera-relative
+// transforms made in double, logarithmic depth, hypsometric + hill-shaded (or imagery) colour.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <span>
+
+#include <glm/vec3.hpp>
+
+#include "geo/result.hpp"
+#include "geo/tile_id.hpp"
+#include "render/frame_stats.hpp"
+#include "render/render_view.hpp"
+#include "terrain/tile_mesh.hpp"
+
+namespace globe::render {
+
+struct TerrainRendererOptions {
+  std::filesystem::path
+      shaderDirectory;            // holds terrain.vert/.frag; empty: defaultShaderDirectory()
+  uint32_t verticesPerSide = 17;  // every uploaded mesh must have this block size
+  bool skirts = true;             // every uploaded mesh must have skirts iff this is set
+};
+
+struct TerrainStyle {
+  bool drapeImagery = true;  // use the imagery set by setImagery (if any) instead of the ramp
+  bool hillShading = true;   // light land with the mesh normals; off: with the ellipsoid "up"
+  float ambient = 0.3f;      // light on faces turned away from the sun, 0..1
+  glm::vec3 backgroundRgb{0.0f, 0.0f, 0.0f};  // space
+};
+
+// Needs a current GL 3.3 core context (OsMesaContext or GlfwWindowContext) on the calling thread
+// for its whole life, and must be destroyed before that context.
+//
+// Precision: a mesh stores float offsets from a double tile centre; draw() forms
+// modelView = view · translate(centre) in double for each tile and only then casts it to float,
+// so the large ECEF translation cancels in double and the GPU sees camera-relative numbers: no
+// jitter 1 m above the ground at earth radius.
+//
+// Depth: logarithmic, written per fragment: gl_FragDepth = log2(1 + w) / log2(1 + farMeters), w
+// the eye distance along the view axis. With the 24-bit depth buffer OSMesa and most windows give,
+// the resolvable depth step is ~1.1e-6 · (1 + w): 2 µm at 1 m, 1 mm at 1 km, 44 m at 40,000 km,
+// so 5 cm to 40,000 km draws without z-fighting. Per-fragment (not per-vertex) because triangles
+// next to a low camera span a wide depth range. Costs early-z; reversed-Z would need a float
+// depth buffer and glClipControl, which OSMesa's default framebuffer does not give.
+//
+// Shading (shaders/terrain.frag): land takes a hypsometric ramp (0 m green, 300 m light green,
+// 800 m tan, 1500 m brown, 2500 m grey-brown, 3500 m grey, 4500 m+ snow white) or, with imagery
+// set and drapeImagery on, the image; it is lit by Lambert on the mesh normal, ambient +
+// (1 − ambient)·max(n·sun, 0), which is the hill-shading. Sea (the vertex sea flag, i.e. no data
+// or below 0 m) is blue, darker with depth down to 6 km, and lit with the geocentric "up" instead
+// of the normal, so water stays flat while the sea floor geometry keeps its real depth.
+// Back faces are culled (meshes are counter-clockwise from outside); draw() leaves depth test and
+// culling enabled.
+class TerrainRenderer {
+ public:
+  // Loads <shaderDirectory>/terrain.vert and terrain.frag and builds the shared index buffer.
+  static Result<std::unique_ptr<TerrainRenderer>> create(const TerrainRendererOptions& options);
+  ~TerrainRenderer();
+  TerrainRenderer(const TerrainRenderer&) = delete;
+  TerrainRenderer& operator=(const TerrainRenderer&) = delete;
+
+  // Uploads (or replaces) a tile's mesh. Fails when the mesh's block size or skirts do not match
+  // the options, or its vertex array is not the expected size.
+  Result<void> uploadTile(const geo::TileId& tile, const terrain::TileMesh& mesh);
+  // Frees a tile's GPU buffers; false when it was not resident.
+  bool evictTile(const geo::TileId& tile);
+  bool hasTile(const geo::TileId& tile) const;
+  void evictAllTiles();
+
+  // A global equirectangular RGBA8 image, rows top-down: column 0 at -180°, row 0 at +90°.
+  // Mipmapped, wraps in longitude.
+  Result<void> setImagery(std::span<const uint8_t> rgba, int widthPixels, int heightPixels);
+  void clearImagery();
+  bool hasImagery() const;
+
+  void setStyle(const TerrainStyle& style);
+  const TerrainStyle& style() const;
+
+  // Clears colour and depth and draws the listed tiles (missing ones are counted and skipped)
+  // into the current framebuffer's (0, 0, width, height) viewport.
+  FrameStats draw(const RenderView& view, std::span<const geo::TileId> tiles);
+
+  uint64_t gpuBytesResident() const;
+  uint32_t tilesResident() const;
+  uint32_t indicesPerTile() const;  // triangles per tile = indicesPerTile() / 3
+
+ private:
+  struct Impl;
+  explicit TerrainRenderer(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace globe::render

@@ -1,0 +1,47 @@
+// The level-of-detail metric of tile selection: a tile's geometric error, the camera's distance
+// to its bounding region, and the error's size on screen in pixels.
+#pragma once
+
+#include <cstdint>
+
+#include <glm/vec3.hpp>
+
+#include "geo/bounding_region.hpp"
+#include "geo/ellipsoid.hpp"
+#include "terrain/selection_view.hpp"
+
+namespace globe::terrain {
+
+// The fraction of a tile's vertex spacing taken as its geometric error, as cesium-native's
+// heightmap quadtrees do (calcQuadtreeMaxGeometricError: 25% of the sample spacing at the
+// equator): a regular grid misrepresents terrain between its vertices by about
+// slope x spacing / 2, and typical slopes (0.1 to 0.5) give about a quarter of the spacing.
+// With a 2-pixel threshold a tile is drawn when its vertices lie ~8 pixels apart.
+inline constexpr double kTerrainQuality = 0.25;
+
+// Distances below this count as this distance, so the screen-space error stays finite and a
+// camera inside (or touching) a tile's region refines it down to the pyramid's deepest level.
+inline constexpr double kMinimumDistanceMeters = 1.0;
+
+// kTerrainQuality x the vertex spacing of the level along the equator:
+// 0.25 x a x pi / (2^level x (verticesPerSide - 1)). The equator has the widest spacing, so the
+// error is an upper bound for the whole level (17 vertices on WGS84: 313 km at level 0, 19 m at
+// level 14). verticesPerSide below 2 counts as 2.
+double geometricErrorMeters(uint32_t level, uint32_t verticesPerSide,
+                            const geo::Ellipsoid& ellipsoid);
+
+// geometricError x viewportHeight / (2 x distance x tan(fovY / 2)): the error's size in pixels
+// at the centre of the screen. distanceMeters is clamped to at least kMinimumDistanceMeters (NaN
+// counts as that close); a geometric error of 0 gives 0.
+double screenSpaceErrorPixels(double geometricErrorMeters, double distanceMeters,
+                              const SelectionView& view);
+
+// A lower bound of the distance from the camera to the nearest point of the region, >= 0
+// (0 when the camera may be inside). The larger of two bounds: the camera's height above the
+// region's highest point (everything at heights <= H > 0 lies inside the solid ellipsoid grown
+// by H), and how far the volume's hull points (less the margin) lie beyond the camera along the
+// direction to the volume's centre. cameraHeightMeters is the camera's geodetic height.
+double distanceLowerBoundMeters(const glm::dvec3& cameraEcefMeters, double cameraHeightMeters,
+                                const geo::RegionVolume& volume);
+
+}  // namespace globe::terrain

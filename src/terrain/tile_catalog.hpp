@@ -1,0 +1,26 @@
+// What tile selection asks of the pyramid and the loader: which tiles exist (with the height
+// bounds of their subtrees) and which are loaded. The app implements it over io::TileStore.
+#pragma once
+
+#include <optional>
+
+#include "geo/tile_id.hpp"
+#include "terrain/height_block.hpp"
+
+namespace globe::terrain {
+
+struct TileSummary {
+  // Bounds of the tile's vertices and of all its descendants' (metres, sea = 0 m).
+  HeightRange subtreeHeightRange;
+};
+
+class TileCatalog {
+ public:
+  virtual ~TileCatalog() = default;
+  // nullopt: the pyramid has no such tile. A tile has either no children or all four.
+  virtual std::optional<TileSummary> find(const geo::TileId& tile) const = 0;
+  // The tile's block is loaded and drawable now.
+  virtual bool isResident(const geo::TileId& tile) const = 0;
+};
+
+}  // namespace globe::terrain

@@ -1,0 +1,199 @@
+// Builds tile meshes (double ECEF → float offsets, normals, skirts) and the shared index buffer.
+#include "terrain/tile_mesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+
+#include "geo/ecef.hpp"
+
+namespace globe::terrain {
+namespace {
+
+// ECEF of a grid vertex; latitude ±90° lands exactly on the polar axis.
+glm::dvec3 vertexEcef(const geo::Ellipsoid& ellipsoid, double longitudeDegrees,
+                      double latitudeDegrees, double heightMeters) {
+  if (std::abs(latitudeDegrees) == 90.0) {
+    const auto pole = geo::Cartographic::fromDegrees(0.0, latitudeDegrees, heightMeters);
+    return {0.0, 0.0, geo::cartographicToEcef(ellipsoid, pole).z};
+  }
+  return geo::cartographicToEcef(
+      ellipsoid, geo::Cartographic::fromDegrees(longitudeDegrees, latitudeDegrees, heightMeters));
+}
+
+glm::dvec3 ellipsoidNormal(const geo::Ellipsoid& ellipsoid, double longitudeDegrees,
+                           double latitudeDegrees) {
+  if (std::abs(latitudeDegrees) == 90.0) return {0.0, 0.0, latitudeDegrees > 0 ? 1.0 : -1.0};
+  return geo::geodeticSurfaceNormal(
+      ellipsoid, geo::Cartographic::fromDegrees(longitudeDegrees, latitudeDegrees, 0.0));
+}
+
+struct Vertex {
+  glm::dvec3 positionEcef;
+  glm::dvec3 normal;
+  double heightMeters;
+  float sea;
+  float u, v;
+};
+
+}  // namespace
+
+glm::dvec3 tileVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGrid& grid,
+                                uint32_t row, uint32_t column, double heightMeters) {
+  return vertexEcef(ellipsoid, grid.longitudeDegrees(column), grid.latitudeDegrees(row),
+                    heightMeters);
+}
+
+TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
+                       const geo::Ellipsoid& ellipsoid, double skirtDepthMeters) {
+  const uint32_t n = block.verticesPerSide;
+  TileMesh mesh;
+  mesh.verticesPerSide = n;
+  mesh.hasSkirts = skirtDepthMeters > 0.0;
+  if (!isValidBlockSize(n) || block.heights.size() != static_cast<size_t>(n) * n) return mesh;
+
+  const BlockGrid grid{tile, n};
+  std::vector<double> longitudes(n), latitudes(n);
+  for (uint32_t k = 0; k < n; ++k) {
+    longitudes[k] = grid.longitudeDegrees(k);
+    latitudes[k] = grid.latitudeDegrees(k);
+  }
+  const float cells = static_cast<float>(n - 1);
+
+  std::vector<Vertex> vertices(tileVertexCount(n, mesh.hasSkirts));
+  for (uint32_t i = 0; i < n; ++i) {
+    for (uint32_t j = 0; j < n; ++j) {
+      const int16_t sample = block.at(i, j);
+      Vertex& vertex = vertices[gridVertexIndex(i, j, n)];
+      vertex.heightMeters = surfaceHeightMeters(sample);
+      vertex.positionEcef = vertexEcef(ellipsoid, longitudes[j], latitudes[i], vertex.heightMeters);
+      vertex.sea = (sample == kNoDataHeight || sample < 0) ? 1.0f : 0.0f;
+      vertex.u = static_cast<float>(j) / cells;
+      vertex.v = static_cast<float>(i) / cells;
+    }
+  }
+
+  // Normals: central differences inside, one-sided on the edges.
+  for (uint32_t i = 0; i < n; ++i) {
+    for (uint32_t j = 0; j < n; ++j) {
+      auto at = [&](uint32_t row, uint32_t column) {
+        return vertices[gridVertexIndex(row, column, n)].positionEcef;
+      };
+      const glm::dvec3 towardsSouth = at(std::min(i + 1, n - 1), j) - at(i > 0 ? i - 1 : 0, j);
+      const glm::dvec3 towardsEast = at(i, std::min(j + 1, n - 1)) - at(i, j > 0 ? j - 1 : 0);
+      const glm::dvec3 cross = glm::cross(towardsSouth, towardsEast);
+      const glm::dvec3 up = ellipsoidNormal(ellipsoid, longitudes[j], latitudes[i]);
+      const double length = glm::length(cross);
+      const double scale = glm::length(towardsSouth) * glm::length(towardsEast);
+      glm::dvec3 normal = up;
+      if (std::isfinite(length) && length > 1e-12 * scale && length > 0.0) {
+        const glm::dvec3 candidate = cross / length;
+        if (glm::dot(candidate, up) > 0.0) normal = candidate;
+      }
+      vertices[gridVertexIndex(i, j, n)].normal = normal;
+    }
+  }
+
+  if (mesh.hasSkirts) {
+    for (uint32_t edge = 0; edge < 4; ++edge) {
+      for (uint32_t k = 0; k < n; ++k) {
+        uint32_t row = k, column = k;
+        switch (static_cast<TileEdge>(edge)) {
+          case TileEdge::North:
+            row = 0;
+            break;
+          case TileEdge::South:
+            row = n - 1;
+            break;
+          case TileEdge::West:
+            column = 0;
+            break;
+          case TileEdge::East:
+            column = n - 1;
+            break;
+        }
+        Vertex skirt = vertices[gridVertexIndex(row, column, n)];
+        skirt.positionEcef = vertexEcef(ellipsoid, longitudes[column], latitudes[row],
+                                        skirt.heightMeters - skirtDepthMeters);
+        vertices[skirtVertexIndex(static_cast<TileEdge>(edge), k, n)] = skirt;
+      }
+    }
+  }
+
+  glm::dvec3 lo(std::numeric_limits<double>::max());
+  glm::dvec3 hi(std::numeric_limits<double>::lowest());
+  for (const Vertex& vertex : vertices) {
+    lo = glm::min(lo, vertex.positionEcef);
+    hi = glm::max(hi, vertex.positionEcef);
+  }
+  mesh.centerEcefMeters = 0.5 * (lo + hi);
+
+  mesh.vertices.reserve(vertices.size() * kTileVertexFloats);
+  for (const Vertex& vertex : vertices) {
+    const glm::dvec3 offset = vertex.positionEcef - mesh.centerEcefMeters;
+    for (int c = 0; c < 3; ++c) mesh.vertices.push_back(static_cast<float>(offset[c]));
+    for (int c = 0; c < 3; ++c) mesh.vertices.push_back(static_cast<float>(vertex.normal[c]));
+    mesh.vertices.push_back(static_cast<float>(vertex.heightMeters));
+    mesh.vertices.push_back(vertex.sea);
+    mesh.vertices.push_back(vertex.u);
+    mesh.vertices.push_back(vertex.v);
+  }
+  return mesh;
+}
+
+double recommendedSkirtDepthMeters(uint32_t level, uint32_t verticesPerSide,
+                                   const geo::Ellipsoid& ellipsoid) {
+  const double a = ellipsoid.semiMajorAxisMeters;
+  const double spacingRadians = geo::degreesToRadians(vertexSpacingDegrees(level, verticesPerSide));
+  const double coarseSpacingMeters = 2.0 * spacingRadians * a;
+  return coarseSpacingMeters * coarseSpacingMeters / (8.0 * a) +
+         std::min(coarseSpacingMeters, 9000.0);
+}
+
+std::vector<uint32_t> buildGridIndices(uint32_t verticesPerSide, bool withSkirts) {
+  const uint32_t n = verticesPerSide;
+  std::vector<uint32_t> indices;
+  if (n < 2) return indices;
+  indices.reserve(static_cast<size_t>(n - 1) * (n - 1) * 6 + (withSkirts ? 24 * (n - 1) : 0));
+  for (uint32_t i = 0; i + 1 < n; ++i) {
+    for (uint32_t j = 0; j + 1 < n; ++j) {
+      const uint32_t a = gridVertexIndex(i, j, n), b = gridVertexIndex(i, j + 1, n);
+      const uint32_t c = gridVertexIndex(i + 1, j, n), d = gridVertexIndex(i + 1, j + 1, n);
+      indices.insert(indices.end(), {a, c, d, a, d, b});
+    }
+  }
+  if (!withSkirts) return indices;
+  for (uint32_t edge = 0; edge < 4; ++edge) {
+    const auto side = static_cast<TileEdge>(edge);
+    for (uint32_t k = 0; k + 1 < n; ++k) {
+      uint32_t e0 = 0, e1 = 0;
+      switch (side) {
+        case TileEdge::North:
+          e0 = gridVertexIndex(0, k, n), e1 = gridVertexIndex(0, k + 1, n);
+          break;
+        case TileEdge::South:
+          e0 = gridVertexIndex(n - 1, k, n), e1 = gridVertexIndex(n - 1, k + 1, n);
+          break;
+        case TileEdge::West:
+          e0 = gridVertexIndex(k, 0, n), e1 = gridVertexIndex(k + 1, 0, n);
+          break;
+        case TileEdge::East:
+          e0 = gridVertexIndex(k, n - 1, n), e1 = gridVertexIndex(k + 1, n - 1, n);
+          break;
+      }
+      const uint32_t s0 = skirtVertexIndex(side, k, n), s1 = skirtVertexIndex(side, k + 1, n);
+      // Seen from outside, k grows to the viewer's left on the north and east edges and to the
+      // right on the south and west edges; both orders below are counter-clockwise from outside.
+      if (side == TileEdge::North || side == TileEdge::East) {
+        indices.insert(indices.end(), {e0, s1, s0, e0, e1, s1});
+      } else {
+        indices.insert(indices.end(), {e0, s0, s1, e0, s1, e1});
+      }
+    }
+  }
+  return indices;
+}
+
+}  // namespace globe::terrain

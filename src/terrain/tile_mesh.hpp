@@ -1,0 +1,107 @@
+// CPU mesh of one terrain tile (no GL): float vertex offsets from a double ECEF centre, normals,
+// skirts, and the one triangle index buffer that every tile of a block size shares.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "geo/ellipsoid.hpp"
+#include "geo/tile_id.hpp"
+#include "terrain/block_grid.hpp"
+#include "terrain/height_block.hpp"
+
+namespace globe::terrain {
+
+// Interleaved vertex layout, kTileVertexFloats floats per vertex:
+//   [0..2] position: offset from TileMesh::centerEcefMeters, metres (ECEF axes)
+//   [3..5] normal: unit, ECEF axes, from the heights (see buildTileMesh)
+//   [6]    height: metres above the ellipsoid; no-data counts as 0 m (sea level)
+//   [7]    sea flag: 1 where the sample is no-data or below 0 m, else 0
+//   [8..9] imagery uv, TILE-LOCAL: u = column/(N-1) growing east, v = row/(N-1) growing south,
+//          so (0,0) is the tile's north-west corner and (1,1) its south-east corner. A global
+//          equirectangular image maps with u_global = (west+180°+u·width)/360°,
+//          v_global = (90°-north+v·height)/180°; the renderer does that per tile.
+inline constexpr uint32_t kTileVertexFloats = 10;
+inline constexpr uint32_t kTileVertexPositionOffset = 0;
+inline constexpr uint32_t kTileVertexNormalOffset = 3;
+inline constexpr uint32_t kTileVertexHeightOffset = 6;
+inline constexpr uint32_t kTileVertexSeaOffset = 7;
+inline constexpr uint32_t kTileVertexUvOffset = 8;
+
+// The four edges of a tile, in the order their skirt vertices are stored.
+enum class TileEdge : uint32_t { North = 0, South = 1, West = 2, East = 3 };
+
+// Vertex order: the N×N grid row-major first (row 0 = north edge, column 0 = west edge), then,
+// when the mesh has skirts, 4·N skirt vertices, edge by edge in TileEdge order, N per edge:
+// North and South run west→east (k = column), West and East run north→south (k = row). Each skirt
+// vertex sits straight below its edge vertex (along the ellipsoid normal) and copies its normal,
+// height, sea flag and uv.
+constexpr uint32_t gridVertexIndex(uint32_t row, uint32_t column, uint32_t verticesPerSide) {
+  return row * verticesPerSide + column;
+}
+constexpr uint32_t skirtVertexIndex(TileEdge edge, uint32_t k, uint32_t verticesPerSide) {
+  return verticesPerSide * verticesPerSide + static_cast<uint32_t>(edge) * verticesPerSide + k;
+}
+constexpr uint32_t tileVertexCount(uint32_t verticesPerSide, bool withSkirts) {
+  return verticesPerSide * verticesPerSide + (withSkirts ? 4 * verticesPerSide : 0);
+}
+
+struct TileMesh {
+  glm::dvec3 centerEcefMeters{0.0};  // midpoint of the vertices' bounding box (skirts included)
+  std::vector<float> vertices;       // tileVertexCount(...) · kTileVertexFloats floats
+  uint32_t verticesPerSide = 0;
+  bool hasSkirts = false;
+
+  uint32_t vertexCount() const {
+    return static_cast<uint32_t>(vertices.size() / kTileVertexFloats);
+  }
+};
+
+// The exact double ECEF position buildTileMesh gives grid vertex (row, column) of `grid` at
+// `heightMeters` (use surfaceHeightMeters of the sample): the BlockGrid longitude/latitude in
+// exact degrees; latitude ±90° lands exactly on the polar axis. Neighbouring tiles' shared
+// vertices are bit-identical (same degrees, same height). Collision can use it to match the mesh.
+glm::dvec3 tileVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGrid& grid,
+                                uint32_t row, uint32_t column, double heightMeters);
+
+// Builds the mesh of `tile` from its block. A block whose size is not 2^k+1 or whose height array
+// does not hold N² samples gives an empty mesh (no vertices).
+// - Positions: tileVertexEcefMeters of the surface height (no-data → 0 m), minus the double
+//   centre, stored as float. Shared edge vertices of neighbouring tiles are therefore bit-identical
+//   in double; the float offsets reconstruct them to about 2^-24 of the tile's extent (< 1 cm from
+//   level 8). Vertices at latitude ±90° are placed exactly on the polar axis (x = y = 0): a pole
+//   row collapses to one point wherever the row's heights are equal.
+// - Normals: central differences of the double ECEF positions, n = normalize((P[i+1][j] −
+//   P[i−1][j]) × (P[i][j+1] − P[i][j−1])), one-sided on the tile's edges (the block has no
+//   neighbour samples); the along-edge difference uses only shared edge vertices, so it agrees
+//   across the edge, the across-edge one cannot. Where that is degenerate (a collapsed pole row)
+//   or points below the horizon, the ellipsoid normal is used: never NaN.
+// - Skirts (skirtDepthMeters > 0): each edge vertex is repeated at height − skirtDepthMeters;
+//   recommendedSkirtDepthMeters gives a depth that closes cracks against coarser neighbours.
+TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
+                       const geo::Ellipsoid& ellipsoid, double skirtDepthMeters);
+
+// Skirt depth for a tile: deep enough to hide the crack against a neighbour up to one level
+// coarser. With s the tile's vertex spacing along a meridian in metres, the coarser neighbour's
+// edge is a chord of length 2s, sagging (2s)²/(8a) below the curved fine edge, and its linear
+// interpolation misses the fine heights by at most min(2s, 9000 m) (slopes ≤ 45°; 9000 m bounds
+// any relief on earth). depth = (2s)²/(8a) + min(2s, 9000 m): ~153 m at level 14, ~9 km at
+// level 6, ~131 km at level 0.
+double recommendedSkirtDepthMeters(uint32_t level, uint32_t verticesPerSide,
+                                   const geo::Ellipsoid& ellipsoid);
+
+// The triangle list shared by all tiles with this many vertices per side, as indices into the
+// vertex order above. Triangles are counter-clockwise seen from outside (above the surface for the
+// grid, from outside the tile for the skirts), so back-face culling may be enabled.
+// DIAGONAL RULE (collision must use the same): each quad (i, j) — vertices (i, j), (i, j+1),
+// (i+1, j), (i+1, j+1), row i growing south, column j growing east — is split along the diagonal
+// from (i, j) to (i+1, j+1), the north-west to south-east diagonal, into the triangles
+// {(i, j), (i+1, j), (i+1, j+1)} (south-west half) and {(i, j), (i+1, j+1), (i, j+1)}
+// (north-east half), emitted in that order, quads row-major: triangle 2·(i·(N−1)+j) is the
+// south-west half. Then, with skirts, 2·(N−1) triangles per edge in TileEdge order, each
+// segment k..k+1 joining edge vertices k, k+1 and their skirt vertices.
+std::vector<uint32_t> buildGridIndices(uint32_t verticesPerSide, bool withSkirts);
+
+}  // namespace globe::terrain

@@ -1,0 +1,219 @@
+// globe-bench-streaming: flies a scripted path over a real pyramid with a small cache budget
+// and a thread pool, and prints what the loader and cache did (a table, not a timed test).
+#include <unistd.h>
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "flight_path.hpp"
+#include "io/block_cache.hpp"
+#include "io/thread_pool_runner.hpp"
+#include "io/tile_loader.hpp"
+#include "io/tile_store.hpp"
+#include "tools/tiler/tiler.hpp"
+#include "wanted_tiles.hpp"
+
+namespace {
+
+using namespace globe;
+
+// Nearest-rank percentile in milliseconds; 0 for no samples.
+double percentileMs(std::vector<double> seconds, double p) {
+  if (seconds.empty()) return 0;
+  std::sort(seconds.begin(), seconds.end());
+  const auto rank = static_cast<size_t>(std::ceil(p / 100 * static_cast<double>(seconds.size())));
+  return 1e3 * seconds[std::clamp<size_t>(rank, 1, seconds.size()) - 1];
+}
+
+struct LegTotals {
+  size_t steps = 0;
+  uint64_t requests = 0;
+  uint64_t arrivals = 0;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Streams a scripted flight through a tile pyramid and reports the loader's work."};
+  std::string pyramid;
+  double budgetMegabytes = 2;
+  unsigned threads = 2;
+  size_t maxInFlight = io::TileLoader::kDefaultMaxInFlight;
+  size_t stepsPerLeg = 1500;
+  double frameMilliseconds = 1;
+  app.add_option("--pyramid", pyramid,
+                 "pyramid directory (default: tile the bundled data/dem into a temp dir)");
+  app.add_option("--budget-mb", budgetMegabytes, "cache budget in MiB")->capture_default_str();
+  app.add_option("--threads", threads, "loader threads")->capture_default_str();
+  app.add_option("--max-in-flight", maxInFlight, "loads at once")->capture_default_str();
+  app.add_option("--steps-per-leg", stepsPerLeg, "frames per leg of the flight")
+      ->capture_default_str();
+  app.add_option("--frame-ms", frameMilliseconds, "simulated frame time (the loop sleeps it)")
+      ->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+
+  std::filesystem::path scratch;
+  if (pyramid.empty()) {
+    scratch = std::filesystem::temp_directory_path() /
+              ("globe-bench-streaming-" + std::to_string(::getpid()));
+    std::filesystem::remove_all(scratch);
+    const std::string dem = std::string(GLOBE_SOURCE_DIR) + "/data/dem/";
+    tiler::TilerOptions options;
+    options.inputs = {dem + "ETOPO20.DEM", dem + "W002N52.DEM", dem + "E138N35_FUJI.DEM"};
+    options.outputDir = scratch / "pyramid";
+    options.progress = false;
+    auto report = tiler::runTiler(options);
+    if (!report) {
+      std::fprintf(stderr, "globe-bench-streaming: %s\n", report.error().c_str());
+      return 1;
+    }
+    pyramid = options.outputDir.string();
+  }
+  auto opened = io::TileStore::open(pyramid);
+  if (!opened) {
+    std::fprintf(stderr, "globe-bench-streaming: %s\n", opened.error().c_str());
+    return 1;
+  }
+  io::TileStore& store = **opened;
+
+  const auto budgetBytes = static_cast<size_t>(budgetMegabytes * 1024 * 1024);
+  io::BlockCache cache(budgetBytes);
+  io::ThreadPoolRunner pool(threads);
+  io::TileLoader loader(store, pool, cache);
+  loader.setMaxInFlight(maxInFlight);
+
+  const std::vector<bench::CameraSample> path = bench::scriptedFlight(stepsPerLeg);
+  const auto frame = std::chrono::duration<double, std::milli>(frameMilliseconds);
+  std::vector<double> workerSeconds, visibleSeconds;
+  std::set<geo::TileId> distinctTiles;
+  std::map<std::string, LegTotals> legs;
+  std::vector<std::string> legOrder;
+  uint64_t requests = 0, framesWithArrivals = 0, ruleViolations = 0;
+  size_t maxOverBudgetBytes = 0;
+  std::vector<geo::TileId> drawn;
+
+  auto collect = [&](const io::PollResult& result, LegTotals* leg) {
+    for (const auto& arrival : result.arrived) {
+      workerSeconds.push_back(arrival.workerLatencySeconds);
+      visibleSeconds.push_back(arrival.visibleLatencySeconds);
+    }
+    for (const io::LoadError& error : result.errors) {
+      std::fprintf(stderr, "load failed: %s\n", error.message.c_str());
+    }
+    if (!result.arrived.empty()) ++framesWithArrivals;
+    if (leg) leg->arrivals += result.arrived.size();
+    // The cache's rule: over budget only by the frame's pinned tiles.
+    const io::BlockCacheCounters& c = cache.counters();
+    if (c.residentBytes > std::max(budgetBytes, c.pinnedBytes)) ++ruleViolations;
+    if (c.residentBytes > budgetBytes) {
+      maxOverBudgetBytes = std::max(maxOverBudgetBytes, c.residentBytes - budgetBytes);
+    }
+  };
+
+  const auto started = std::chrono::steady_clock::now();
+  for (const bench::CameraSample& camera : path) {
+    if (!legs.contains(camera.leg)) legOrder.push_back(camera.leg);
+    LegTotals& leg = legs[camera.leg];
+    ++leg.steps;
+    cache.beginFrame();
+    const std::vector<io::LoadRequest> wanted = bench::wantedTiles(camera, store.manifest());
+    // The frame draws what is resident of what it wants (a real viewer draws parents for the
+    // rest); looking them up counts the cache's hits and misses.
+    drawn.clear();
+    for (const io::LoadRequest& r : wanted) {
+      distinctTiles.insert(r.tile);
+      const io::TileState state = loader.state(r.tile);
+      if (state == io::TileState::Absent || state == io::TileState::Failed) continue;
+      if (loader.get(r.tile)) drawn.push_back(r.tile);
+    }
+    cache.touch(drawn);
+    loader.request(wanted);
+    requests += wanted.size();
+    leg.requests += wanted.size();
+    collect(loader.poll(), &leg);
+    std::this_thread::sleep_for(frame);
+  }
+  // Let the last loads land, so that the counters add up.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (loader.counters().inFlight > 0 && std::chrono::steady_clock::now() < deadline) {
+    cache.beginFrame();
+    collect(loader.poll(), nullptr);
+    std::this_thread::sleep_for(frame);
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+
+  const io::LoaderCounters l = loader.counters();
+  const io::BlockCacheCounters& c = cache.counters();
+  size_t distinctBytes = 0;
+  for (const geo::TileId& tile : distinctTiles) {
+    if (cache.contains(tile) || loader.state(tile) != io::TileState::Absent) {
+      distinctBytes +=
+          size_t{store.manifest().verticesPerSide} * store.manifest().verticesPerSide * 2 +
+          io::BlockCache::kEntryOverheadBytes;
+    }
+  }
+
+  auto row = [](const char* name, const std::string& value) {
+    std::printf("| %-44s | %22s |\n", name, value.c_str());
+  };
+  auto num = [](uint64_t v) { return std::to_string(v); };
+  auto ms = [](double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3f ms", v);
+    return std::string(text);
+  };
+  auto kib = [](size_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f KiB", static_cast<double>(bytes) / 1024);
+    return std::string(text);
+  };
+
+  std::printf("globe-bench-streaming: %s\n", pyramid.c_str());
+  std::printf("%zu frames of %.2f ms, %zu threads, at most %zu loads in flight, budget %s\n\n",
+              path.size(), frameMilliseconds, pool.threadCount(), loader.maxInFlight(),
+              kib(budgetBytes).c_str());
+  std::printf("| %-44s | %22s |\n|%s|%s|\n", "metric", "value", std::string(46, '-').c_str(),
+              std::string(24, '-').c_str());
+  for (const std::string& name : legOrder) {
+    const LegTotals& leg = legs[name];
+    row(("steps: " + name).c_str(), num(leg.steps) + " (" + num(leg.arrivals) + " arrived)");
+  }
+  row("steps", num(path.size()));
+  row("requests (wanted tiles, summed over frames)", num(requests));
+  row("distinct tiles wanted", num(distinctTiles.size()));
+  row("their blocks' bytes (present tiles)", kib(distinctBytes));
+  row("tiles queued (loader: requested)", num(l.requested));
+  row("loads started", num(l.started));
+  row("loads completed (cache: loads)", num(l.completed) + " (" + num(c.loads) + ")");
+  row("loads cancelled", num(l.cancelled));
+  row("absent / failed", num(l.absent) + " / " + num(l.failed));
+  row("cache hits", num(c.hits));
+  row("cache misses", num(c.misses));
+  row("evictions", num(c.evictions));
+  row("budget", kib(budgetBytes));
+  row("peak resident bytes", kib(c.peakResidentBytes));
+  row("peak pinned bytes (one frame's tiles)", kib(c.peakPinnedBytes));
+  row("most over budget (all pinned)", kib(maxOverBudgetBytes));
+  row("resident <= max(budget, pinned) every frame",
+      ruleViolations == 0 ? "yes" : "NO: " + num(ruleViolations) + " frames");
+  row("frames with arrivals", num(framesWithArrivals));
+  row("load latency median (post -> done)", ms(percentileMs(workerSeconds, 50)));
+  row("load latency p99 (post -> done)", ms(percentileMs(workerSeconds, 99)));
+  row("visible latency median (post -> poll)", ms(percentileMs(visibleSeconds, 50)));
+  row("visible latency p99 (post -> poll)", ms(percentileMs(visibleSeconds, 99)));
+  row("store block reads", num(store.blockReads()));
+  row("wall time", ms(seconds * 1e3));
+
+  if (!scratch.empty()) std::filesystem::remove_all(scratch);
+  const bool withinBudget =
+      ruleViolations == 0 && c.peakResidentBytes <= std::max(budgetBytes, c.peakPinnedBytes);
+  return withinBudget && l.inFlight == 0 ? 0 : 1;
+}
