@@ -3,7 +3,9 @@
 #include <cstdio>
 #include <string>
 
+#include "app/camera_argument.hpp"
 #include "app/info_command.hpp"
+#include "app/snapshot_command.hpp"
 #include "geo/ellipsoid.hpp"
 #include "io/pyramid_manifest.hpp"
 
@@ -27,10 +29,61 @@ int main(int argc, char** argv) {
   info->add_flag("--json", json, "machine-readable output");
   addGlobe(info);
 
+  CLI::App* snapshot = app.add_subcommand(
+      "snapshot", "render one view headless (OSMesa) once every tile it needs is loaded");
+  std::string cameraText, sizeText = "1280x720", output, imagery;
+  bool aboveTerrain = false;
+  double sse = 2.0;
+  uint32_t maxLoadLevel = globe::geo::kMaxLevel;
+  snapshot->add_option("PYRAMID", pyramid, "pyramid directory made by globe-tiler")->required();
+  snapshot
+      ->add_option("--camera", cameraText,
+                   "LON,LAT,HEIGHT[,HEADING,PITCH,ROLL]: degrees, metres above the ellipsoid; "
+                   "heading 0 = north, pitch -90 = straight down (default)")
+      ->required();
+  snapshot->add_option("--size", sizeText, "WxH pixels")->capture_default_str();
+  snapshot->add_option("-o,--output", output, "PNG file to write")->required();
+  snapshot->add_flag("--above-terrain", aboveTerrain,
+                     "HEIGHT is above the terrain, not the ellipsoid");
+  snapshot->add_option("--imagery", imagery, "equirectangular world image to drape (JPEG/PNG)");
+  snapshot->add_option("--sse", sse, "maximum screen-space error in pixels")->capture_default_str();
+  snapshot->add_option("--max-load-level", maxLoadLevel,
+                       "never load tiles deeper than this (shows a view mid-refinement)");
+  addGlobe(snapshot);
+
   CLI11_PARSE(app, argc, argv);
-  if (!globe::geo::parseGlobeModel(globeName)) {
+  const auto globeModel = globe::geo::parseGlobeModel(globeName);
+  if (!globeModel) {
     std::fprintf(stderr, "globe: --globe must be wgs84 or sphere, not '%s'\n", globeName.c_str());
     return 2;
+  }
+
+  if (snapshot->parsed()) {
+    auto pose = globe::app::parseCameraArgument(cameraText);
+    auto size = globe::app::parseSizeArgument(sizeText);
+    if (!pose || !size) {
+      std::fprintf(stderr, "globe snapshot: %s\n", (!pose ? pose.error() : size.error()).c_str());
+      return 2;
+    }
+    globe::app::SnapshotOptions options;
+    options.pyramid = pyramid;
+    options.pose = *pose;
+    options.heightAboveTerrain = aboveTerrain;
+    options.widthPixels = size->first;
+    options.heightPixels = size->second;
+    options.output = output;
+    if (!imagery.empty()) options.imagery = imagery;
+    options.scene.globeModel = *globeModel;
+    options.scene.maximumScreenSpaceErrorPixels = sse;
+    options.scene.maximumLoadLevel = maxLoadLevel;
+    auto report = globe::app::runSnapshot(options);
+    if (!report) {
+      std::fprintf(stderr, "globe snapshot: %s\n", report.error().c_str());
+      return 1;
+    }
+    std::printf("%s: %u tiles drawn, %llu triangles, %llu tile loads, %.2f s\n", output.c_str(),
+                report->tilesDrawn, static_cast<unsigned long long>(report->triangles),
+                static_cast<unsigned long long>(report->tileLoads), report->seconds);
   }
 
   if (info->parsed()) {

@@ -11,6 +11,12 @@ bool CompletionQueue::begin() {
   return true;
 }
 
+bool CompletionQueue::waitForFinished(std::chrono::milliseconds timeout) {
+  std::unique_lock lock(mutex_);
+  return idle_.wait_for(lock, timeout, [&] { return !finished_.empty() || closed_; }) &&
+         !finished_.empty();
+}
+
 void CompletionQueue::finish(FinishedLoad load) {
   {
     std::lock_guard lock(mutex_);

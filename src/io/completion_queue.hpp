@@ -35,6 +35,8 @@ class CompletionQueue {
 
   // Main-thread side: everything finished since the last call, in finishing order.
   std::vector<FinishedLoad> takeAll();
+  // Blocks until a finished load waits to be taken or the timeout passes; true if one waits.
+  bool waitForFinished(std::chrono::milliseconds timeout);
   // Refuses tasks that have not begun and waits for those that have to finish, so that no
   // task touches the loader's store after this returns.
   void close();

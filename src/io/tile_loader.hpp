@@ -2,6 +2,7 @@
 // prioritised, cancellable, at most K loads at once, failures reported once.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -104,6 +105,10 @@ class TileLoader {
   void forgetFailures() { failed_.clear(); }
 
   LoaderCounters counters() const;
+  // Blocks until a load has finished on its worker (ready for poll()) or the timeout passes.
+  bool waitForCompletion(std::chrono::milliseconds timeout) const {
+    return completions_->waitForFinished(timeout);
+  }
 
  private:
   void startLoads();

@@ -1,0 +1,58 @@
+#include "app/snapshot_command.hpp"
+
+#include <chrono>
+
+#include "io/image_io.hpp"
+#include "render/osmesa_context.hpp"
+#include "render/read_pixels.hpp"
+
+namespace globe::app {
+
+Result<SnapshotReport> runSnapshot(const SnapshotOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  SceneOptions sceneOptions = options.scene;
+  sceneOptions.hysteresis = false;  // the image depends on the view only, not on the load order
+  auto scene = TerrainScene::open(options.pyramid, sceneOptions);
+  if (!scene) return Error{scene.error()};
+  camera::CameraPose pose = options.pose;
+  if (!pose.isFinite()) return makeError("the camera pose is not finite");
+  if (options.heightAboveTerrain) {
+    auto ground = (*scene)->terrainHeightMeters(pose.position.longitudeRadians,
+                                                pose.position.latitudeRadians);
+    if (!ground) return Error{ground.error()};
+    pose.position.heightMeters += *ground;
+  }
+  auto context = render::OsMesaContext::create(options.widthPixels, options.heightPixels);
+  if (!context) return Error{context.error()};
+  auto renderer = render::TerrainRenderer::create({});
+  if (!renderer) return Error{renderer.error()};
+  if (options.imagery) {
+    auto image = io::loadImageRgba(*options.imagery);
+    if (!image) return Error{image.error()};
+    if (auto set = (*renderer)->setImagery(image->pixels, image->widthPixels, image->heightPixels);
+        !set) {
+      return Error{set.error()};
+    }
+  }
+  auto frame =
+      (*scene)->updateUntilComplete(pose, options.widthPixels, options.heightPixels, **renderer,
+                                    std::chrono::seconds(options.timeoutSeconds));
+  if (!frame) return Error{frame.error()};
+  const render::FrameStats stats = (*scene)->draw(**renderer);
+  const std::vector<uint8_t> pixels =
+      render::readPixelsRgba(options.widthPixels, options.heightPixels);
+  if (auto written =
+          io::writePngAtomically(options.output, pixels, options.widthPixels, options.heightPixels);
+      !written) {
+    return Error{written.error()};
+  }
+  SnapshotReport report;
+  report.frame = *frame;
+  report.tilesDrawn = stats.tilesDrawn;
+  report.triangles = stats.triangles;
+  report.tileLoads = (*scene)->loader().counters().completed;
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+}  // namespace globe::app

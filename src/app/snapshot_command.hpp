@@ -1,0 +1,34 @@
+// `globe snapshot`: renders one view headless through OSMesa once every tile it needs is loaded.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "app/terrain_scene.hpp"
+#include "camera/camera_pose.hpp"
+
+namespace globe::app {
+
+struct SnapshotOptions {
+  std::filesystem::path pyramid;
+  camera::CameraPose pose;
+  bool heightAboveTerrain = false;  // the pose's height is above the terrain, not the ellipsoid
+  int widthPixels = 1280, heightPixels = 720;
+  std::filesystem::path output;
+  std::optional<std::filesystem::path> imagery;  // equirectangular world image to drape
+  SceneOptions scene;
+  int timeoutSeconds = 300;
+};
+
+struct SnapshotReport {
+  FrameInfo frame;
+  uint32_t tilesDrawn = 0;
+  uint64_t triangles = 0;
+  uint64_t tileLoads = 0;
+  double seconds = 0;
+};
+
+Result<SnapshotReport> runSnapshot(const SnapshotOptions& options);
+
+}  // namespace globe::app

@@ -1,0 +1,213 @@
+#include "app/terrain_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geo/ecef.hpp"
+#include "geo/frustum.hpp"
+#include "geo/tiling_scheme.hpp"
+#include "terrain/block_grid.hpp"
+#include "terrain/tile_mesh.hpp"
+
+namespace globe::app {
+namespace {
+
+// The pyramid index says what exists; the loader's cache says what is drawable.
+class SceneCatalog final : public terrain::TileCatalog {
+ public:
+  SceneCatalog(io::TileStore& store, const io::TileLoader& loader)
+      : store_(store), loader_(loader) {}
+  std::optional<terrain::TileSummary> find(const geo::TileId& tile) const override {
+    auto entry = store_.entry(tile);
+    if (!entry || !*entry) return std::nullopt;  // an unreadable pack draws its parent instead
+    return terrain::TileSummary{(*entry)->subtreeRange};
+  }
+  bool isResident(const geo::TileId& tile) const override { return loader_.isResident(tile); }
+
+ private:
+  io::TileStore& store_;
+  const io::TileLoader& loader_;
+};
+
+// Bilinear height inside a block at a position of its tile (sea = 0 m).
+double blockHeightMeters(const terrain::HeightBlock& block, const geo::TileId& tile,
+                         double longitudeRadians, double latitudeRadians) {
+  const auto rect = geo::GeographicTilingScheme::tileRectangle(tile);
+  const double n = block.verticesPerSide - 1;
+  const double u =
+      std::clamp((longitudeRadians - rect.westRadians) / rect.widthRadians(), 0.0, 1.0) * n;
+  const double v =
+      std::clamp((rect.northRadians - latitudeRadians) / rect.heightRadians(), 0.0, 1.0) * n;
+  const auto j = static_cast<uint32_t>(std::min(std::floor(u), n - 1));
+  const auto i = static_cast<uint32_t>(std::min(std::floor(v), n - 1));
+  const double tu = u - j, tv = v - i;
+  return (1 - tv) * ((1 - tu) * block.surfaceHeightMetersAt(i, j) +
+                     tu * block.surfaceHeightMetersAt(i, j + 1)) +
+         tv * ((1 - tu) * block.surfaceHeightMetersAt(i + 1, j) +
+               tu * block.surfaceHeightMetersAt(i + 1, j + 1));
+}
+
+glm::dvec3 sunDirectionFor(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& pose) {
+  // Light from the north-west and high, the cartographers' convention for readable relief.
+  const auto enu = camera::eastNorthUp(ellipsoid, pose.position);
+  return glm::normalize(enu.up * 1.2 - enu.east * 0.6 + enu.north * 0.6);
+}
+
+}  // namespace
+
+TerrainScene::TerrainScene(std::unique_ptr<io::TileStore> store, const SceneOptions& options)
+    : options_(options),
+      ellipsoid_(geo::ellipsoidFor(options.globeModel)),
+      store_(std::move(store)),
+      cache_(options.cacheBudgetBytes),
+      runner_(options.loaderThreads),
+      loader_(std::make_unique<io::TileLoader>(*store_, runner_, cache_)) {}
+
+TerrainScene::~TerrainScene() {
+  loader_.reset();  // waits for running loads before the runner goes
+  runner_.shutdown();
+}
+
+Result<std::unique_ptr<TerrainScene>> TerrainScene::open(const std::filesystem::path& pyramidDir,
+                                                         const SceneOptions& options) {
+  auto store = io::TileStore::open(pyramidDir);
+  if (!store) return Error{store.error()};
+  return std::unique_ptr<TerrainScene>(new TerrainScene(std::move(*store), options));
+}
+
+Result<void> TerrainScene::uploadIfNeeded(const geo::TileId& tile,
+                                          render::TerrainRenderer& renderer) {
+  gpuLastUsedFrame_[tile] = frame_;
+  if (renderer.hasTile(tile)) return {};
+  auto block = loader_->get(tile);
+  if (!block) return makeError("internal: selected tile is not resident");
+  const uint32_t n = store_->manifest().verticesPerSide;
+  const auto mesh = terrain::buildTileMesh(
+      tile, *block, ellipsoid_, terrain::recommendedSkirtDepthMeters(tile.level, n, ellipsoid_));
+  return renderer.uploadTile(tile, mesh);
+}
+
+FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, int heightPixels,
+                               render::TerrainRenderer& renderer) {
+  ++frame_;
+  FrameInfo info;
+  cache_.beginFrame();
+  const io::PollResult polled = loader_->poll();
+  info.arrived = polled.arrived.size();
+
+  // Clearance above the terrain sets the near plane: from the finest resident block under us.
+  info.terrainHeightMeters = 0;
+  for (uint32_t level = store_->manifest().maxLevel() + 1; level-- > 0;) {
+    const auto tile = geo::GeographicTilingScheme::positionToTile(
+        pose.position.longitudeRadians, pose.position.latitudeRadians, level);
+    if (!tile || !loader_->isResident(*tile)) continue;
+    if (auto block = loader_->get(*tile)) {
+      info.terrainHeightMeters = blockHeightMeters(*block, *tile, pose.position.longitudeRadians,
+                                                   pose.position.latitudeRadians);
+      break;
+    }
+  }
+  const camera::CameraFrame frame = camera::cameraFrame(ellipsoid_, pose);
+  const double aspect = static_cast<double>(widthPixels) / std::max(heightPixels, 1);
+  const auto projection = camera::projectionForHeight(
+      pose.position.heightMeters,
+      std::max(pose.position.heightMeters - info.terrainHeightMeters, 0.0), options_.fovYRadians,
+      aspect, ellipsoid_);
+  view_.cameraEcefMeters = frame.positionEcefMeters;
+  view_.viewMatrix = camera::viewMatrix(frame);
+  view_.projection = camera::projectionMatrix(projection);
+  view_.farMeters = projection.farMeters;
+  view_.widthPixels = widthPixels;
+  view_.heightPixels = heightPixels;
+  view_.sunDirectionEcef = sunDirectionFor(ellipsoid_, pose);
+
+  terrain::SelectionView selectionView;
+  selectionView.cameraEcefMeters = frame.positionEcefMeters;
+  selectionView.frustum = geo::Frustum::fromViewProjection(view_.projection * view_.viewMatrix);
+  selectionView.viewportHeightPixels = heightPixels;
+  selectionView.fovYRadians = options_.fovYRadians;
+  selectionView.ellipsoid = ellipsoid_;
+  terrain::SelectionOptions selectionOptions;
+  selectionOptions.maximumScreenSpaceErrorPixels = options_.maximumScreenSpaceErrorPixels;
+  selectionOptions.verticesPerSide = store_->manifest().verticesPerSide;
+  if (!options_.hysteresis) selectionOptions.hysteresisFraction = 0;
+  const SceneCatalog catalog(*store_, *loader_);
+  terrain::SelectionResult selection =
+      terrain::selectTiles(selectionView, catalog, selectionOptions,
+                           options_.hysteresis ? tiles_ : std::vector<geo::TileId>{});
+
+  cache_.touch(selection.tiles);
+  std::vector<io::LoadRequest> requests;
+  for (const terrain::TileRequest& r : selection.requests) {
+    if (r.tile.level <= options_.maximumLoadLevel &&
+        loader_->state(r.tile) != io::TileState::Failed) {
+      requests.push_back({r.tile, r.priority});
+    }
+  }
+  loader_->request(requests);
+
+  tiles_.clear();
+  for (const geo::TileId& tile : selection.tiles) {
+    const bool onGpu = renderer.hasTile(tile);
+    if (uploadIfNeeded(tile, renderer)) {
+      tiles_.push_back(tile);
+      info.uploaded += onGpu ? 0 : 1;
+    }
+  }
+  // Free GPU memory of tiles not drawn for a while, oldest first, once over the budget.
+  if (gpuLastUsedFrame_.size() > options_.gpuTileBudget) {
+    std::vector<std::pair<uint64_t, geo::TileId>> byAge;
+    for (const auto& [tile, last] : gpuLastUsedFrame_) byAge.push_back({last, tile});
+    std::sort(byAge.begin(), byAge.end());
+    for (size_t k = 0; k < byAge.size() - options_.gpuTileBudget && byAge[k].first < frame_; ++k) {
+      renderer.evictTile(byAge[k].second);
+      gpuLastUsedFrame_.erase(byAge[k].second);
+    }
+  }
+  info.selection = selection.counters;
+  info.tilesSelected = tiles_.size();
+  info.requests = requests.size();
+  info.complete = requests.empty() && loader_->counters().inFlight == 0;
+  return info;
+}
+
+render::FrameStats TerrainScene::draw(render::TerrainRenderer& renderer) const {
+  return renderer.draw(view_, tiles_);
+}
+
+void TerrainScene::waitForLoads(std::chrono::milliseconds timeout) const {
+  if (loader_->counters().inFlight > 0) loader_->waitForCompletion(timeout);
+}
+
+Result<FrameInfo> TerrainScene::updateUntilComplete(const camera::CameraPose& pose, int widthPixels,
+                                                    int heightPixels,
+                                                    render::TerrainRenderer& renderer,
+                                                    std::chrono::seconds timeout) {
+  const auto until = std::chrono::steady_clock::now() + timeout;
+  for (;;) {
+    FrameInfo info = update(pose, widthPixels, heightPixels, renderer);
+    if (info.complete) return info;
+    if (std::chrono::steady_clock::now() > until) {
+      return makeError("the view was not complete after " + std::to_string(timeout.count()) +
+                       " s (" + std::to_string(info.requests) + " tiles still wanted)");
+    }
+    waitForLoads(std::chrono::milliseconds(50));
+  }
+}
+
+Result<double> TerrainScene::terrainHeightMeters(double longitudeRadians, double latitudeRadians) {
+  for (uint32_t level = store_->manifest().maxLevel() + 1; level-- > 0;) {
+    const auto tile =
+        geo::GeographicTilingScheme::positionToTile(longitudeRadians, latitudeRadians, level);
+    if (!tile) return makeError("invalid position");
+    auto entry = store_->entry(*tile);
+    if (!entry) return Error{entry.error()};
+    if (!*entry) continue;
+    auto block = store_->loadBlock(*tile);
+    if (!block) return Error{block.error()};
+    return blockHeightMeters(*block, *tile, longitudeRadians, latitudeRadians);
+  }
+  return 0.0;
+}
+
+}  // namespace globe::app

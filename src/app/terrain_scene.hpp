@@ -1,0 +1,89 @@
+// One viewer frame's wiring: camera pose → view → tile selection → loads → meshes on the GPU →
+// draw. Shared by `globe snapshot`, `globe view` and the benchmarks.
+#pragma once
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+#include "camera/camera_pose.hpp"
+#include "geo/ellipsoid.hpp"
+#include "geo/result.hpp"
+#include "io/block_cache.hpp"
+#include "io/thread_pool_runner.hpp"
+#include "io/tile_loader.hpp"
+#include "io/tile_store.hpp"
+#include "render/render_view.hpp"
+#include "render/terrain_renderer.hpp"
+#include "terrain/tile_selection.hpp"
+
+namespace globe::app {
+
+struct SceneOptions {
+  geo::GlobeModel globeModel = geo::GlobeModel::Wgs84;
+  double maximumScreenSpaceErrorPixels = 2.0;
+  bool hysteresis = true;  // off for snapshots: the final view must not depend on history
+  size_t cacheBudgetBytes = 256u << 20;
+  unsigned loaderThreads = 2;
+  uint32_t maximumLoadLevel = geo::kMaxLevel;  // tiles deeper than this are never loaded
+  double fovYRadians = 0.7853981633974483;     // 45°
+  size_t gpuTileBudget = 4000;  // tiles kept on the GPU, least recently drawn go first
+};
+
+struct FrameInfo {
+  terrain::SelectionCounters selection;
+  size_t tilesSelected = 0;
+  size_t requests = 0;             // wanted and loadable
+  size_t arrived = 0;              // blocks that arrived this frame
+  size_t uploaded = 0;             // meshes built and uploaded this frame
+  bool complete = false;           // nothing loadable is missing: the image is final
+  double terrainHeightMeters = 0;  // under the camera, from the finest resident block
+};
+
+class TerrainScene {
+ public:
+  static Result<std::unique_ptr<TerrainScene>> open(const std::filesystem::path& pyramidDir,
+                                                    const SceneOptions& options);
+  ~TerrainScene();
+
+  const geo::Ellipsoid& ellipsoid() const { return ellipsoid_; }
+  io::TileStore& store() { return *store_; }
+  const io::TileLoader& loader() const { return *loader_; }
+  const SceneOptions& options() const { return options_; }
+
+  // Selects and streams the tiles for this pose; uploads what arrived to the renderer.
+  FrameInfo update(const camera::CameraPose& pose, int widthPixels, int heightPixels,
+                   render::TerrainRenderer& renderer);
+  render::FrameStats draw(render::TerrainRenderer& renderer) const;
+  const render::RenderView& view() const { return view_; }
+  const std::vector<geo::TileId>& tiles() const { return tiles_; }
+  // Blocks until a load completes or the timeout passes (loads run on worker threads).
+  void waitForLoads(std::chrono::milliseconds timeout) const;
+  // Surface height at a position from the finest tile the pyramid has there (loads it if needed).
+  Result<double> terrainHeightMeters(double longitudeRadians, double latitudeRadians);
+
+  // Runs update() until the view is complete (or the timeout), for deterministic images.
+  Result<FrameInfo> updateUntilComplete(const camera::CameraPose& pose, int widthPixels,
+                                        int heightPixels, render::TerrainRenderer& renderer,
+                                        std::chrono::seconds timeout);
+
+ private:
+  TerrainScene(std::unique_ptr<io::TileStore> store, const SceneOptions& options);
+  Result<void> uploadIfNeeded(const geo::TileId& tile, render::TerrainRenderer& renderer);
+
+  SceneOptions options_;
+  geo::Ellipsoid ellipsoid_;
+  std::unique_ptr<io::TileStore> store_;
+  io::BlockCache cache_;
+  io::ThreadPoolRunner runner_;
+  std::unique_ptr<io::TileLoader> loader_;
+  std::vector<geo::TileId> tiles_;
+  render::RenderView view_;
+  uint64_t frame_ = 0;
+  std::unordered_map<geo::TileId, uint64_t> gpuLastUsedFrame_;
+};
+
+}  // namespace globe::app

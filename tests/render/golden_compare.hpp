@@ -1,0 +1,21 @@
+// Image comparison for screenshot regression: per-pixel tolerance, a budget of differing pixels,
+// and a diff image that shows where they differ.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "io/image_io.hpp"
+
+namespace globe::testing {
+
+struct ImageDifference {
+  double differingFraction = 1;  // pixels whose largest channel difference exceeds the tolerance
+  int largestChannelDifference = 255;
+  std::vector<uint8_t> diffRgba;  // differing pixels red over a dimmed copy of the expected image
+};
+
+ImageDifference compareImages(const io::ImageRgba& expected, const io::ImageRgba& actual,
+                              int channelTolerance);
+
+}  // namespace globe::testing

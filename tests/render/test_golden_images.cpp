@@ -1,0 +1,99 @@
+// Screenshot regression: eight views of the bundled real data rendered by the real `globe
+// snapshot` program through OSMesa, compared with the committed goldens in tests/render/golden.
+// Tolerance: a pixel differs when a channel is off by more than 24 (of 255); at most 0.5% of the
+// pixels may differ. On failure the actual image and a diff image are written next to the test
+// output. Regenerate the goldens (then look at them!) with:
+//   GLOBE_UPDATE_GOLDENS=1 ctest --test-dir build -R globe_golden_tests
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+
+#include "io/image_io.hpp"
+#include "tests/render/golden_compare.hpp"
+#include "tests/tools/tiler/tiler_test_fixture.hpp"
+
+namespace globe {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr int kChannelTolerance = 24;
+constexpr double kMaxDifferingFraction = 0.005;
+
+struct GoldenView {
+  const char* name;
+  const char* arguments;  // after `globe snapshot PYRAMID`
+};
+
+const GoldenView kViews[] = {
+    {"globe_from_space", "--camera 138,30,20000000"},
+    {"fuji_oblique", "--camera 138.60,35.20,6000,30,-15,0"},
+    {"ground_2m_horizon", "--camera 138.70,35.30,2,0,0,0 --above-terrain"},
+    {"north_pole", "--camera 0,90,3000000"},
+    {"south_pole", "--camera 0,-90,3000000"},
+    {"antimeridian_bering", "--camera 180,58,1800000,0,-45,0"},
+    {"coast_suruga_bay", "--camera 138.62,34.85,9000,10,-25,0"},
+    {"mid_refinement", "--camera 138.60,35.20,6000,30,-15,0 --max-load-level 9"},
+};
+
+// Names the parameter in test output instead of dumping its bytes.
+void PrintTo(const GoldenView& view, std::ostream* out) { *out << view.name; }
+
+class GoldenImages : public ::testing::TestWithParam<GoldenView> {};
+
+TEST_P(GoldenImages, MatchesTheCommittedGolden) {
+  const GoldenView& view = GetParam();
+  const fs::path outDir = GLOBE_TEST_OUTPUT_DIR;
+  fs::create_directories(outDir);
+  const fs::path actualPath = outDir / (std::string(view.name) + ".actual.png");
+  const std::string command = std::string(GLOBE_EXE) + " snapshot " +
+                              tiler::testing::bundledPyramid().string() + " " + view.arguments +
+                              " --size 480x270 -o " + actualPath.string() + " > /dev/null";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  auto actual = io::loadImageRgba(actualPath);
+  ASSERT_TRUE(actual) << actual.error();
+
+  const fs::path goldenPath = fs::path(GLOBE_GOLDEN_DIR) / (std::string(view.name) + ".png");
+  if (std::getenv("GLOBE_UPDATE_GOLDENS") != nullptr) {
+    fs::copy_file(actualPath, goldenPath, fs::copy_options::overwrite_existing);
+    GTEST_SKIP() << "golden updated: " << goldenPath;
+  }
+  auto golden = io::loadImageRgba(goldenPath);
+  ASSERT_TRUE(golden) << golden.error() << " (regenerate with GLOBE_UPDATE_GOLDENS=1)";
+  const auto difference = testing::compareImages(*golden, *actual, kChannelTolerance);
+  if (difference.differingFraction > kMaxDifferingFraction) {
+    const fs::path diffPath = outDir / (std::string(view.name) + ".diff.png");
+    if (!difference.diffRgba.empty()) {
+      (void)io::writePngAtomically(diffPath, difference.diffRgba, golden->widthPixels,
+                                   golden->heightPixels);
+    }
+    FAIL() << view.name << ": " << 100 * difference.differingFraction
+           << "% of pixels differ (max channel " << difference.largestChannelDifference
+           << "); actual " << actualPath << ", diff " << diffPath;
+  }
+  // The image is a real rendering, not an empty frame: it has many distinct colours.
+  size_t lit = 0;
+  for (size_t p = 0; p < actual->pixels.size(); p += 4) {
+    lit += (actual->pixels[p] | actual->pixels[p + 1] | actual->pixels[p + 2]) > 8 ? 1 : 0;
+  }
+  EXPECT_GT(lit, actual->pixels.size() / 4 / 10) << view.name << " is mostly black";
+}
+
+INSTANTIATE_TEST_SUITE_P(Views, GoldenImages, ::testing::ValuesIn(kViews),
+                         [](const auto& param) { return std::string(param.param.name); });
+
+TEST(GoldenCompare, DetectsAChangedImage) {
+  io::ImageRgba a{4, 4, std::vector<uint8_t>(64, 100)};
+  io::ImageRgba b = a;
+  EXPECT_EQ(testing::compareImages(a, b, 24).differingFraction, 0.0);
+  b.pixels[0] = 200;
+  const auto d = testing::compareImages(a, b, 24);
+  EXPECT_DOUBLE_EQ(d.differingFraction, 1.0 / 16);
+  EXPECT_EQ(d.largestChannelDifference, 100);
+  EXPECT_EQ(d.diffRgba[0], 255);
+  io::ImageRgba small{2, 2, std::vector<uint8_t>(16, 0)};
+  EXPECT_EQ(testing::compareImages(a, small, 24).differingFraction, 1.0);
+}
+
+}  // namespace
+}  // namespace globe
