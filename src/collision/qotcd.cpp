@@ -1,0 +1,95 @@
+// QOTCD's three steps (camera to geodetic, tile and height, comparison), linear or indexed.
+#include "collision/qotcd.hpp"
+
+#include <cmath>
+#include <optional>
+
+#include "collision/tile_containment.hpp"
+#include "geo/ecef.hpp"
+
+namespace globe::collision {
+namespace {
+
+enum class Lookup { Linear, Indexed };
+
+QotcdResult detect(const RenderingTileArray& array, const geo::Cartographic& camera,
+                   double clearanceMeters, Lookup lookup) {
+  if (!std::isfinite(camera.heightMeters)) return {};
+  const std::optional<QueryPoint> point =
+      makeQueryPoint(camera.longitudeRadians, camera.latitudeRadians);
+  if (!point) return {};
+  const double clearance = std::isfinite(clearanceMeters) ? clearanceMeters : 0.0;
+
+  QotcdResult result;
+  result.valid = true;
+  result.cameraHeightMeters = camera.heightMeters;
+  result.longitudeRadians = point->longitudeRadians;
+  result.latitudeRadians = point->latitudeRadians;
+  const TileLookup found =
+      lookup == Lookup::Linear
+          ? array.lookupLinear(point->longitudeRadians, point->latitudeRadians)
+          : array.lookupIndexed(point->longitudeRadians, point->latitudeRadians);
+  result.tilesExamined = found.tilesExamined;
+  if (found.tile != nullptr) {
+    const ArrayTile& tile = *found.tile;
+    result.found = true;
+    result.tile = tile.id;
+    if (result.cameraHeightMeters > tile.maximumHeightMeters + clearance) {
+      result.earlyOut = true;
+      result.terrainHeightMeters = tile.maximumHeightMeters;
+      result.heightCase = HeightCase::TileMaximum;
+    } else {
+      const TileHeight height =
+          qotcdTileHeight(tile, point->longitudeRadians, point->latitudeRadians);
+      result.terrainHeightMeters = height.heightMeters;
+      result.heightCase = height.heightCase;
+    }
+  }
+  result.collided = result.cameraHeightMeters <= result.terrainHeightMeters + clearance;
+  return result;
+}
+
+QotcdResult detect(const RenderingTileArray& array, const geo::Ellipsoid& ellipsoid,
+                   const glm::dvec3& cameraEcefMeters, double clearanceMeters, Lookup lookup) {
+  const std::optional<geo::Cartographic> camera =
+      geo::ecefToCartographic(ellipsoid, cameraEcefMeters);
+  if (!camera) return {};
+  return detect(array, *camera, clearanceMeters, lookup);
+}
+
+}  // namespace
+
+QotcdResult qotcdLinear(const RenderingTileArray& array, const geo::Ellipsoid& ellipsoid,
+                        const glm::dvec3& cameraEcefMeters, double clearanceMeters) {
+  return detect(array, ellipsoid, cameraEcefMeters, clearanceMeters, Lookup::Linear);
+}
+
+QotcdResult qotcdIndexed(const RenderingTileArray& array, const geo::Ellipsoid& ellipsoid,
+                         const glm::dvec3& cameraEcefMeters, double clearanceMeters) {
+  return detect(array, ellipsoid, cameraEcefMeters, clearanceMeters, Lookup::Indexed);
+}
+
+QotcdResult qotcdLinear(const RenderingTileArray& array, const geo::Cartographic& camera,
+                        double clearanceMeters) {
+  return detect(array, camera, clearanceMeters, Lookup::Linear);
+}
+
+QotcdResult qotcdIndexed(const RenderingTileArray& array, const geo::Cartographic& camera,
+                         double clearanceMeters) {
+  return detect(array, camera, clearanceMeters, Lookup::Indexed);
+}
+
+void QotcdCounters::add(const QotcdResult& result) {
+  ++queries;
+  tilesExamined += result.tilesExamined;
+  if (!result.valid) {
+    ++invalid;
+    return;
+  }
+  if (!result.found) ++notFound;
+  if (result.collided) ++collisions;
+  if (result.earlyOut) ++earlyOuts;
+  if (result.heightCase != HeightCase::None && !result.earlyOut) ++blockReads;
+}
+
+}  // namespace globe::collision

@@ -1,0 +1,139 @@
+// Building the rendering tile array's index, and its linear and indexed tile lookups.
+#include "collision/rendering_tile_array.hpp"
+
+#include <optional>
+
+#include "collision/grid_location.hpp"
+#include "collision/tile_containment.hpp"
+#include "geo/tiling_scheme.hpp"
+
+namespace globe::collision {
+namespace {
+
+using Scheme = geo::GeographicTilingScheme;
+
+bool isUsable(const ArrayTile& tile) {
+  if (!Scheme::isValid(tile.id) || !hasReadableBlock(tile)) return false;
+  if (!terrain::isValidBlockSize(tile.block->verticesPerSide)) return false;
+  const geo::GlobeRectangle rectangle = Scheme::tileRectangle(tile.id);
+  return tile.westRadians == rectangle.westRadians && tile.southRadians == rectangle.southRadians &&
+         tile.eastRadians == rectangle.eastRadians && tile.northRadians == rectangle.northRadians;
+}
+
+// Keeps the candidate with the highest selectionKey.
+struct BestTile {
+  const ArrayTile* tile = nullptr;
+  uint64_t key = 0;
+
+  void consider(const ArrayTile* candidate, const QueryPoint& point) {
+    if (candidate == nullptr || !containsClosed(*candidate, point)) return;
+    const uint64_t candidateKey = selectionKey(*candidate, point);
+    if (tile == nullptr || candidateKey > key) tile = candidate, key = candidateKey;
+  }
+};
+
+}  // namespace
+
+ArrayTile makeArrayTile(const geo::TileId& id, const terrain::HeightBlock& block) {
+  const geo::GlobeRectangle rectangle = Scheme::tileRectangle(id);
+  return {id,
+          rectangle.westRadians,
+          rectangle.southRadians,
+          rectangle.eastRadians,
+          rectangle.northRadians,
+          &block,
+          terrain::surfaceHeightRange(block).maximumMeters};
+}
+
+void RenderingTileArray::assign(std::vector<ArrayTile> tiles) {
+  tiles_.clear();
+  positions_.clear();
+  levels_.clear();
+  northPoleTiles_.fill(kNoTile);
+  southPoleTiles_.fill(kNoTile);
+  rejected_ = 0;
+  tiles_.reserve(tiles.size());
+  positions_.reserve(tiles.size());
+  for (const ArrayTile& tile : tiles) {
+    if (!isUsable(tile) || positions_.contains(tile.id)) {
+      ++rejected_;
+      continue;
+    }
+    positions_.emplace(tile.id, static_cast<uint32_t>(tiles_.size()));
+    tiles_.push_back(tile);
+  }
+  std::array<bool, geo::kMaxLevel + 1> present{};
+  for (uint32_t position = 0; position < tiles_.size(); ++position) {
+    const geo::TileId& id = tiles_[position].id;
+    present[id.level] = true;
+    auto keepWesternmost = [&](uint32_t& slot) {
+      if (slot == kNoTile || id.x < tiles_[slot].id.x) slot = position;
+    };
+    if (id.y == 0) keepWesternmost(northPoleTiles_[id.level]);
+    if (id.y + 1 == Scheme::tilesY(id.level)) keepWesternmost(southPoleTiles_[id.level]);
+  }
+  for (uint32_t level = geo::kMaxLevel + 1; level-- > 0;) {
+    if (present[level]) levels_.push_back(level);
+  }
+}
+
+const ArrayTile* RenderingTileArray::find(const geo::TileId& id) const {
+  const auto it = positions_.find(id);
+  return it == positions_.end() ? nullptr : &tiles_[it->second];
+}
+
+TileLookup RenderingTileArray::lookupLinear(double longitudeRadians, double latitudeRadians) const {
+  const std::optional<QueryPoint> point = makeQueryPoint(longitudeRadians, latitudeRadians);
+  if (!point) return {};
+  BestTile best;
+  for (const ArrayTile& tile : tiles_) best.consider(&tile, *point);
+  return {best.tile, static_cast<uint32_t>(tiles_.size())};
+}
+
+TileLookup RenderingTileArray::lookupIndexed(double longitudeRadians,
+                                             double latitudeRadians) const {
+  const std::optional<QueryPoint> point = makeQueryPoint(longitudeRadians, latitudeRadians);
+  if (!point || levels_.empty()) return {};
+  const double lon = point->longitudeRadians;
+  const double lat = point->latitudeRadians;
+  // The tile owning the point (the scheme's half-open rule) at the finest level present; the
+  // owner at a coarser level is its ancestor, since edges are identical across levels.
+  const uint32_t finest = levels_.front();
+  const std::optional<geo::TileId> finestOwner = Scheme::positionToTile(lon, lat, finest);
+  if (!finestOwner) return {};  // unreachable for a canonical point
+  // A point owned by a tile lies on its west or north edge, never on its east or south one; an
+  // edge of a coarser owner is an edge of the finer owners inside it.
+  const geo::GlobeRectangle finestRectangle = Scheme::tileRectangle(*finestOwner);
+  const bool onWestEdge = lon == finestRectangle.westRadians;
+  const bool onNorthEdge = lat == finestRectangle.northRadians;
+
+  uint32_t probes = 0;
+  auto probe = [&](uint32_t level, uint32_t x, uint32_t y) {
+    ++probes;
+    return find(geo::TileId{level, x, y});
+  };
+  for (const uint32_t level : levels_) {
+    const uint32_t shift = finest - level;
+    const geo::TileId owner{level, finestOwner->x >> shift, finestOwner->y >> shift};
+    BestTile best;
+    best.consider(probe(level, owner.x, owner.y), *point);
+    if (point->pole != Pole::None) {
+      // Every tile of the polar row contains the pole: the owner, else the westernmost.
+      best.consider(
+          at(point->pole == Pole::North ? northPoleTiles_[level] : southPoleTiles_[level]), *point);
+    } else if (onWestEdge || onNorthEdge) {
+      // On an edge the neighbours sharing it contain the point too (across +-180 deg as well).
+      const geo::GlobeRectangle rectangle = Scheme::tileRectangle(owner);
+      const bool west = onWestEdge && lon == rectangle.westRadians;
+      const bool north = onNorthEdge && lat == rectangle.northRadians && owner.y > 0;
+      const uint32_t westX = owner.x > 0 ? owner.x - 1 : Scheme::tilesX(level) - 1;
+      if (west) best.consider(probe(level, westX, owner.y), *point);
+      if (north) best.consider(probe(level, owner.x, owner.y - 1), *point);
+      if (west && north) best.consider(probe(level, westX, owner.y - 1), *point);
+    }
+    if (best.tile != nullptr) return {best.tile, probes};
+  }
+  return {nullptr, probes};
+}
+
+}  // namespace globe::collision

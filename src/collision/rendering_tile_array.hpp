@@ -1,0 +1,85 @@
+// The rendering tile array as collision sees it: the tiles drawn this frame with their blocks,
+// and an index (TileId hash, levels present, pole tiles) for O(1)-per-level lookups.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <unordered_map>
+#include <vector>
+
+#include "geo/tile_id.hpp"
+#include "terrain/height_block.hpp"
+
+namespace globe::collision {
+
+// One drawn tile. The bounds must be exactly GeographicTilingScheme::tileRectangle(id) (closed:
+// a point on an edge is in the tile). The block is owned elsewhere and must outlive the array.
+// maximumHeightMeters must be >= every vertex's surface height (sea = 0 m): the early-out trusts
+// it.
+struct ArrayTile {
+  geo::TileId id{};
+  double westRadians = 0.0;
+  double southRadians = 0.0;
+  double eastRadians = 0.0;
+  double northRadians = 0.0;
+  const terrain::HeightBlock* block = nullptr;
+  int16_t maximumHeightMeters = 0;
+};
+
+// An ArrayTile with the scheme's bounds and the block's maximum surface height.
+ArrayTile makeArrayTile(const geo::TileId& id, const terrain::HeightBlock& block);
+
+// Result of a tile lookup: the tile (nullptr if none contains the point) and how many tiles were
+// examined (bounds tests for the linear scan, hash probes for the indexed lookup).
+struct TileLookup {
+  const ArrayTile* tile = nullptr;
+  uint32_t tilesExamined = 0;
+};
+
+// Which tile holds a point (both lookups give the same tile; rules in tile_containment.hpp):
+// among the tiles whose closed bounds contain it (+-180 deg are one meridian; a pole lies in
+// every tile of the polar row), the finest level wins; within a level, the tile owning the point
+// by the scheme's half-open edge rule, else the southern, else the eastern one; at a pole, the
+// tile owning the longitude, else the westernmost (smallest x).
+class RenderingTileArray {
+ public:
+  // Replaces the contents and rebuilds the index. Tiles with an invalid id, no block, a block
+  // whose size is not 2^k+1 or whose heights are not N^2, bounds other than tileRectangle(id),
+  // or an id already present are dropped and counted in rejectedTileCount().
+  void assign(std::vector<ArrayTile> tiles);
+
+  std::span<const ArrayTile> tiles() const { return tiles_; }
+  uint32_t rejectedTileCount() const { return rejected_; }
+  // The levels present, finest first.
+  std::span<const uint32_t> levelsFinestFirst() const { return levels_; }
+  const ArrayTile* find(const geo::TileId& id) const;
+
+  // The paper's lookup: compares the point with the bounds of every tile. O(tiles).
+  TileLookup lookupLinear(double longitudeRadians, double latitudeRadians) const;
+  // The same tile from the tile ids of the point at each level present (finest first), with the
+  // edge neighbours when the point lies exactly on an edge. O(levels present).
+  TileLookup lookupIndexed(double longitudeRadians, double latitudeRadians) const;
+  const ArrayTile* findLinear(double longitudeRadians, double latitudeRadians) const {
+    return lookupLinear(longitudeRadians, latitudeRadians).tile;
+  }
+  const ArrayTile* findIndexed(double longitudeRadians, double latitudeRadians) const {
+    return lookupIndexed(longitudeRadians, latitudeRadians).tile;
+  }
+
+ private:
+  std::vector<ArrayTile> tiles_;
+  std::unordered_map<geo::TileId, uint32_t> positions_;
+  std::vector<uint32_t> levels_;
+  // Per level, the position of the westernmost tile of the northernmost / southernmost row, or
+  // kNoTile (positions, not pointers, so that copies of the array stay valid).
+  static constexpr uint32_t kNoTile = UINT32_MAX;
+  std::array<uint32_t, geo::kMaxLevel + 1> northPoleTiles_{};
+  std::array<uint32_t, geo::kMaxLevel + 1> southPoleTiles_{};
+  const ArrayTile* at(uint32_t position) const {
+    return position == kNoTile ? nullptr : &tiles_[position];
+  }
+  uint32_t rejected_ = 0;
+};
+
+}  // namespace globe::collision
