@@ -1,10 +1,12 @@
 // globe: the virtual-globe viewer's command line. Subcommands wire the libraries together.
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <iostream>
 #include <string>
 
 #include "app/camera_argument.hpp"
 #include "app/info_command.hpp"
+#include "app/query_command.hpp"
 #include "app/snapshot_command.hpp"
 #include "geo/ellipsoid.hpp"
 #include "io/pyramid_manifest.hpp"
@@ -51,6 +53,19 @@ int main(int argc, char** argv) {
                        "never load tiles deeper than this (shows a view mid-refinement)");
   addGlobe(snapshot);
 
+  CLI::App* query = app.add_subcommand(
+      "query", "heights: reads lon,lat lines (degrees) on stdin, prints lon,lat,level,height_m");
+  std::string mode = "qotcd";
+  uint32_t queryLevel = 0;
+  query->add_option("PYRAMID", pyramid, "pyramid directory made by globe-tiler")->required();
+  query
+      ->add_option("--mode", mode,
+                   "qotcd (the paper's conservative height) | exact (the drawn surface)")
+      ->capture_default_str();
+  auto* queryLevelOption =
+      query->add_option("--level", queryLevel, "query this level (default: the finest there)");
+  addGlobe(query);
+
   CLI11_PARSE(app, argc, argv);
   const auto globeModel = globe::geo::parseGlobeModel(globeName);
   if (!globeModel) {
@@ -84,6 +99,25 @@ int main(int argc, char** argv) {
     std::printf("%s: %u tiles drawn, %llu triangles, %llu tile loads, %.2f s\n", output.c_str(),
                 report->tilesDrawn, static_cast<unsigned long long>(report->triangles),
                 static_cast<unsigned long long>(report->tileLoads), report->seconds);
+  }
+
+  if (query->parsed()) {
+    globe::app::QueryOptions options;
+    options.pyramid = pyramid;
+    options.globeModel = *globeModel;
+    if (mode == "exact") {
+      options.mode = globe::collision::HeightMode::Exact;
+    } else if (mode != "qotcd") {
+      std::fprintf(stderr, "globe query: --mode must be qotcd or exact, not '%s'\n", mode.c_str());
+      return 2;
+    }
+    if (queryLevelOption->count() > 0) options.level = queryLevel;
+    auto report = globe::app::runQuery(options, std::cin, stdout, stderr);
+    if (!report) {
+      std::fprintf(stderr, "globe query: %s\n", report.error().c_str());
+      return 1;
+    }
+    return report->rejected > 0 ? 1 : 0;
   }
 
   if (info->parsed()) {

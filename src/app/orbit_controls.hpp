@@ -1,0 +1,57 @@
+// Orbit-style camera controls for `globe view`: drag rotates the globe under the camera, tilt and
+// turn change pitch and heading, zoom scales the height above the terrain. Pure math, no GLFW.
+#pragma once
+
+#include <numbers>
+
+#include "camera/camera_pose.hpp"
+#include "geo/cartographic.hpp"
+#include "geo/ellipsoid.hpp"
+
+namespace globe::app {
+
+struct OrbitLimits {
+  double minimumClearanceMeters = 1;        // lowest height above the terrain zoom may reach
+  double maximumHeightMeters = 4e7;         // above the ellipsoid
+  double maximumLatitudeRadians = geo::degreesToRadians(89);  // lon/lat motion avoids the poles
+  double minimumPitchRadians = -std::numbers::pi / 2;        // straight down
+  double maximumPitchRadians = 0;           // the horizon
+};
+
+class OrbitControls {
+ public:
+  OrbitControls(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& home,
+                double fovYRadians, const OrbitLimits& limits = {});
+
+  const camera::CameraPose& pose() const { return pose_; }
+  const camera::CameraPose& home() const { return home_; }
+  double groundHeightMeters() const { return groundHeightMeters_; }
+  double clearanceMeters() const { return pose_.position.heightMeters - groundHeightMeters_; }
+
+  // Moves the camera over the globe so the ground under the cursor roughly follows a drag of
+  // (dx, dy) window pixels (y down) in a viewport this many pixels high.
+  void rotateByDrag(double dxPixels, double dyPixels, int viewportHeightPixels);
+  // Turns the heading (dx) and tilts the pitch (dy, dragging up raises the view to the horizon).
+  void tiltByDrag(double dxPixels, double dyPixels);
+  // Multiplies the clearance above the terrain by factor^notches (notches > 0 zooms in).
+  void zoom(double notches);
+  void reset() { pose_ = home_; }
+  // The terrain height under the camera as the scene knows it now; lifts the camera when it is
+  // less than the minimum clearance above it. Returns whether the pose changed.
+  bool setGroundHeight(double groundHeightMeters);
+
+  static constexpr double kZoomFactorPerNotch = 0.8;
+  static constexpr double kTiltRadiansPerPixel = 0.005;
+
+ private:
+  void clampPose();
+
+  geo::Ellipsoid ellipsoid_;
+  camera::CameraPose home_;
+  camera::CameraPose pose_;
+  double fovYRadians_;
+  OrbitLimits limits_;
+  double groundHeightMeters_ = 0;
+};
+
+}  // namespace globe::app
