@@ -8,6 +8,7 @@
 #include "app/info_command.hpp"
 #include "app/query_command.hpp"
 #include "app/snapshot_command.hpp"
+#include "app/view_command.hpp"
 #include "geo/ellipsoid.hpp"
 #include "io/pyramid_manifest.hpp"
 
@@ -66,6 +67,23 @@ int main(int argc, char** argv) {
       query->add_option("--level", queryLevel, "query this level (default: the finest there)");
   addGlobe(query);
 
+  CLI::App* view = app.add_subcommand(
+      "view",
+      "open an interactive window: left-drag rotates, right/shift-drag tilts, scroll "
+      "zooms, arrows pan, +/- zoom, R resets, Esc/Q quits");
+  std::string viewCamera = "0,20,20000000", viewSize = "1280x720", viewImagery, viewScreenshot;
+  int viewFrames = 0;
+  bool viewLog = false;
+  view->add_option("PYRAMID", pyramid, "pyramid directory made by globe-tiler")->required();
+  view->add_option("--camera", viewCamera, "LON,LAT,HEIGHT[,HEADING,PITCH,ROLL] to start from")
+      ->capture_default_str();
+  view->add_option("--size", viewSize, "WxH window size")->capture_default_str();
+  view->add_option("--imagery", viewImagery, "equirectangular world image to drape (JPEG/PNG)");
+  view->add_option("--frames", viewFrames, "redraw continuously and quit after N frames (tests)");
+  view->add_option("--screenshot", viewScreenshot, "write the last frame to this PNG on exit");
+  view->add_flag("--log", viewLog, "print when the view is complete, and the camera on exit");
+  addGlobe(view);
+
   CLI11_PARSE(app, argc, argv);
   const auto globeModel = globe::geo::parseGlobeModel(globeName);
   if (!globeModel) {
@@ -118,6 +136,29 @@ int main(int argc, char** argv) {
       return 1;
     }
     return report->rejected > 0 ? 1 : 0;
+  }
+
+  if (view->parsed()) {
+    auto pose = globe::app::parseCameraArgument(viewCamera);
+    auto size = globe::app::parseSizeArgument(viewSize);
+    if (!pose || !size) {
+      std::fprintf(stderr, "globe view: %s\n", (!pose ? pose.error() : size.error()).c_str());
+      return 2;
+    }
+    globe::app::ViewOptions options;
+    options.pyramid = pyramid;
+    options.pose = *pose;
+    options.widthPixels = size->first;
+    options.heightPixels = size->second;
+    if (!viewImagery.empty()) options.imagery = viewImagery;
+    if (!viewScreenshot.empty()) options.screenshot = viewScreenshot;
+    options.frames = viewFrames;
+    options.log = viewLog;
+    options.scene.globeModel = *globeModel;
+    if (auto report = globe::app::runView(options); !report) {
+      std::fprintf(stderr, "globe view: %s\n", report.error().c_str());
+      return 1;
+    }
   }
 
   if (info->parsed()) {

@@ -20,8 +20,8 @@ void OrbitControls::rotateByDrag(double dxPixels, double dyPixels, int viewportH
   // of the depression angle (capped for views near the horizon).
   const double depression = std::max(-pose_.pitchRadians, 0.17);
   const double distanceMeters = std::max(clearanceMeters(), 1.0) / std::sin(depression);
-  const double metersPerPixel = 2 * distanceMeters * std::tan(fovYRadians_ / 2) /
-                                std::max(viewportHeightPixels, 1);
+  const double metersPerPixel =
+      2 * distanceMeters * std::tan(fovYRadians_ / 2) / std::max(viewportHeightPixels, 1);
   // Screen right and up in east/north for this heading; the camera moves against the drag.
   const double sh = std::sin(pose_.headingRadians), ch = std::cos(pose_.headingRadians);
   const double rightMeters = -dxPixels * metersPerPixel, upMeters = dyPixels * metersPerPixel;
@@ -63,10 +63,9 @@ void OrbitControls::clampPose() {
   pose_.headingRadians = std::remainder(pose_.headingRadians, kTwoPi);
   pose_.pitchRadians =
       std::clamp(pose_.pitchRadians, limits_.minimumPitchRadians, limits_.maximumPitchRadians);
-  pose_.position.heightMeters =
-      std::clamp(pose_.position.heightMeters, groundHeightMeters_ + limits_.minimumClearanceMeters,
-                 std::max(limits_.maximumHeightMeters,
-                          groundHeightMeters_ + limits_.minimumClearanceMeters));
+  pose_.position.heightMeters = std::clamp(
+      pose_.position.heightMeters, groundHeightMeters_ + limits_.minimumClearanceMeters,
+      std::max(limits_.maximumHeightMeters, groundHeightMeters_ + limits_.minimumClearanceMeters));
 }
 
 }  // namespace globe::app

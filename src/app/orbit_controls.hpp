@@ -11,17 +11,17 @@
 namespace globe::app {
 
 struct OrbitLimits {
-  double minimumClearanceMeters = 1;        // lowest height above the terrain zoom may reach
-  double maximumHeightMeters = 4e7;         // above the ellipsoid
+  double minimumClearanceMeters = 1;  // lowest height above the terrain zoom may reach
+  double maximumHeightMeters = 4e7;   // above the ellipsoid
   double maximumLatitudeRadians = geo::degreesToRadians(89);  // lon/lat motion avoids the poles
-  double minimumPitchRadians = -std::numbers::pi / 2;        // straight down
-  double maximumPitchRadians = 0;           // the horizon
+  double minimumPitchRadians = -std::numbers::pi / 2;         // straight down
+  double maximumPitchRadians = 0;                             // the horizon
 };
 
 class OrbitControls {
  public:
-  OrbitControls(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& home,
-                double fovYRadians, const OrbitLimits& limits = {});
+  OrbitControls(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& home, double fovYRadians,
+                const OrbitLimits& limits = {});
 
   const camera::CameraPose& pose() const { return pose_; }
   const camera::CameraPose& home() const { return home_; }

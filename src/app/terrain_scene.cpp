@@ -147,13 +147,19 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   loader_->request(requests);
 
   tiles_.clear();
+  blocks_.clear();
+  std::vector<collision::ArrayTile> arrayTiles;
   for (const geo::TileId& tile : selection.tiles) {
     const bool onGpu = renderer.hasTile(tile);
-    if (uploadIfNeeded(tile, renderer)) {
+    auto block = loader_->get(tile);
+    if (block && uploadIfNeeded(tile, renderer)) {
       tiles_.push_back(tile);
+      arrayTiles.push_back(collision::makeArrayTile(tile, *block));
+      blocks_.push_back(std::move(block));
       info.uploaded += onGpu ? 0 : 1;
     }
   }
+  array_.assign(std::move(arrayTiles));
   // Free GPU memory of tiles not drawn for a while, oldest first, once over the budget.
   if (gpuLastUsedFrame_.size() > options_.gpuTileBudget) {
     std::vector<std::pair<uint64_t, geo::TileId>> byAge;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "camera/camera_pose.hpp"
+#include "collision/rendering_tile_array.hpp"
 #include "geo/ellipsoid.hpp"
 #include "geo/result.hpp"
 #include "io/block_cache.hpp"
@@ -60,6 +61,9 @@ class TerrainScene {
   render::FrameStats draw(render::TerrainRenderer& renderer) const;
   const render::RenderView& view() const { return view_; }
   const std::vector<geo::TileId>& tiles() const { return tiles_; }
+  // This frame's rendering tile array with its blocks: what collision runs against (the paper's
+  // "rendering terrain tiles array"), exactly the tiles drawn.
+  const collision::RenderingTileArray& renderingTileArray() const { return array_; }
   // Blocks until a load completes or the timeout passes (loads run on worker threads).
   void waitForLoads(std::chrono::milliseconds timeout) const;
   // Surface height at a position from the finest tile the pyramid has there (loads it if needed).
@@ -81,6 +85,8 @@ class TerrainScene {
   io::ThreadPoolRunner runner_;
   std::unique_ptr<io::TileLoader> loader_;
   std::vector<geo::TileId> tiles_;
+  std::vector<std::shared_ptr<const terrain::HeightBlock>> blocks_;  // keep the array's blocks alive
+  collision::RenderingTileArray array_;
   render::RenderView view_;
   uint64_t frame_ = 0;
   std::unordered_map<geo::TileId, uint64_t> gpuLastUsedFrame_;

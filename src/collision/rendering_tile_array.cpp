@@ -1,6 +1,7 @@
 // Building the rendering tile array's index, and its linear and indexed tile lookups.
 #include "collision/rendering_tile_array.hpp"
 
+#include <bit>
 #include <optional>
 
 #include "collision/grid_location.hpp"
@@ -32,6 +33,19 @@ struct BestTile {
   }
 };
 
+// A unique key per valid tile: the tiles of all coarser levels, then row-major (< 2^62).
+uint64_t quadtreeKey(const geo::TileId& id) {
+  const uint64_t tilesBefore = ((uint64_t{1} << (2 * id.level)) - 1) / 3 * 2;
+  return tilesBefore + (uint64_t{id.y} << (id.level + 1)) + id.x;
+}
+
+// splitmix64's finaliser: consecutive keys land far apart.
+uint64_t mix(uint64_t key) {
+  key = (key ^ (key >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  key = (key ^ (key >> 27)) * 0x94d049bb133111ebULL;
+  return key ^ (key >> 31);
+}
+
 }  // namespace
 
 ArrayTile makeArrayTile(const geo::TileId& id, const terrain::HeightBlock& block) {
@@ -47,19 +61,19 @@ ArrayTile makeArrayTile(const geo::TileId& id, const terrain::HeightBlock& block
 
 void RenderingTileArray::assign(std::vector<ArrayTile> tiles) {
   tiles_.clear();
-  positions_.clear();
   levels_.clear();
   northPoleTiles_.fill(kNoTile);
   southPoleTiles_.fill(kNoTile);
   rejected_ = 0;
   tiles_.reserve(tiles.size());
-  positions_.reserve(tiles.size());
+  const size_t capacity = std::bit_ceil(tiles.size() + tiles.size() / 2 + 1);
+  slots_.assign(capacity, Slot{});
+  slotMask_ = capacity - 1;
   for (const ArrayTile& tile : tiles) {
-    if (!isUsable(tile) || positions_.contains(tile.id)) {
+    if (!isUsable(tile) || !insertPosition(tile.id, static_cast<uint32_t>(tiles_.size()))) {
       ++rejected_;
       continue;
     }
-    positions_.emplace(tile.id, static_cast<uint32_t>(tiles_.size()));
     tiles_.push_back(tile);
   }
   std::array<bool, geo::kMaxLevel + 1> present{};
@@ -77,16 +91,43 @@ void RenderingTileArray::assign(std::vector<ArrayTile> tiles) {
   }
 }
 
-const ArrayTile* RenderingTileArray::find(const geo::TileId& id) const {
-  const auto it = positions_.find(id);
-  return it == positions_.end() ? nullptr : &tiles_[it->second];
+bool RenderingTileArray::insertPosition(const geo::TileId& id, uint32_t position) {
+  const uint64_t key = quadtreeKey(id);
+  for (uint64_t slot = mix(key) & slotMask_;; slot = (slot + 1) & slotMask_) {
+    if (slots_[slot].key == key) return false;
+    if (slots_[slot].key == kEmptyKey) {
+      slots_[slot] = {key, position};
+      return true;
+    }
+  }
 }
+
+uint32_t RenderingTileArray::findPosition(const geo::TileId& id) const {
+  if (slots_.empty() || !Scheme::isValid(id)) return kNoTile;
+  const uint64_t key = quadtreeKey(id);
+  for (uint64_t slot = mix(key) & slotMask_;; slot = (slot + 1) & slotMask_) {
+    if (slots_[slot].key == key) return slots_[slot].position;
+    if (slots_[slot].key == kEmptyKey) return kNoTile;
+  }
+}
+
+const ArrayTile* RenderingTileArray::find(const geo::TileId& id) const {
+  return at(findPosition(id));
+}
+
+size_t RenderingTileArray::indexMemoryBytes() const { return slots_.capacity() * sizeof(Slot); }
 
 TileLookup RenderingTileArray::lookupLinear(double longitudeRadians, double latitudeRadians) const {
   const std::optional<QueryPoint> point = makeQueryPoint(longitudeRadians, latitudeRadians);
   if (!point) return {};
   BestTile best;
-  for (const ArrayTile& tile : tiles_) best.consider(&tile, *point);
+  const double lat = point->latitudeRadians;
+  for (const ArrayTile& tile : tiles_) {
+    // containsClosed's latitude test, inline: it rejects most tiles without a call (a pole's
+    // latitude passes it exactly for the tiles of the polar row).
+    if (lat < tile.southRadians || lat > tile.northRadians) continue;
+    best.consider(&tile, *point);
+  }
   return {best.tile, static_cast<uint32_t>(tiles_.size())};
 }
 
@@ -101,22 +142,31 @@ TileLookup RenderingTileArray::lookupIndexed(double longitudeRadians,
   const uint32_t finest = levels_.front();
   const std::optional<geo::TileId> finestOwner = Scheme::positionToTile(lon, lat, finest);
   if (!finestOwner) return {};  // unreachable for a canonical point
-  // A point owned by a tile lies on its west or north edge, never on its east or south one; an
-  // edge of a coarser owner is an edge of the finer owners inside it.
-  const geo::GlobeRectangle finestRectangle = Scheme::tileRectangle(*finestOwner);
-  const bool onWestEdge = lon == finestRectangle.westRadians;
-  const bool onNorthEdge = lat == finestRectangle.northRadians;
 
   uint32_t probes = 0;
   auto probe = [&](uint32_t level, uint32_t x, uint32_t y) {
     ++probes;
     return find(geo::TileId{level, x, y});
   };
+  const ArrayTile* finestOwnerTile = probe(finest, finestOwner->x, finestOwner->y);
+  // The common case: the finest owner is present and the point is neither a pole nor on the
+  // owner's west or north edge (its bounds are tileRectangle(owner)), so no other tile contains
+  // it at this level and no coarser tile can win: the loop below would return the owner too.
+  if (finestOwnerTile != nullptr && point->pole == Pole::None &&
+      lon != finestOwnerTile->westRadians && lat != finestOwnerTile->northRadians) {
+    return {finestOwnerTile, probes};
+  }
+  // A point owned by a tile lies on its west or north edge, never on its east or south one; an
+  // edge of a coarser owner is an edge of the finer owners inside it.
+  const geo::GlobeRectangle finestRectangle = Scheme::tileRectangle(*finestOwner);
+  const bool onWestEdge = lon == finestRectangle.westRadians;
+  const bool onNorthEdge = lat == finestRectangle.northRadians;
+
   for (const uint32_t level : levels_) {
     const uint32_t shift = finest - level;
     const geo::TileId owner{level, finestOwner->x >> shift, finestOwner->y >> shift};
     BestTile best;
-    best.consider(probe(level, owner.x, owner.y), *point);
+    best.consider(level == finest ? finestOwnerTile : probe(level, owner.x, owner.y), *point);
     if (point->pole != Pole::None) {
       // Every tile of the polar row contains the pole: the owner, else the westernmost.
       best.consider(

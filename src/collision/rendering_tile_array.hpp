@@ -5,7 +5,6 @@
 #include <array>
 #include <cstdint>
 #include <span>
-#include <unordered_map>
 #include <vector>
 
 #include "geo/tile_id.hpp"
@@ -54,6 +53,9 @@ class RenderingTileArray {
   // The levels present, finest first.
   std::span<const uint32_t> levelsFinestFirst() const { return levels_; }
   const ArrayTile* find(const geo::TileId& id) const;
+  // Heap bytes of the tile index (for memory reports; the tile records are tiles().size() x
+  // sizeof(ArrayTile)).
+  size_t indexMemoryBytes() const;
 
   // The paper's lookup: compares the point with the bounds of every tile. O(tiles).
   TileLookup lookupLinear(double longitudeRadians, double latitudeRadians) const;
@@ -69,7 +71,17 @@ class RenderingTileArray {
 
  private:
   std::vector<ArrayTile> tiles_;
-  std::unordered_map<geo::TileId, uint32_t> positions_;
+  // The index: open addressing with linear probing over a power-of-two table (load <= 2/3) of
+  // (quadtree key, position) slots, so a lookup is a mix, a mask and usually one cache line.
+  static constexpr uint64_t kEmptyKey = UINT64_MAX;  // quadtree keys are < 2^62
+  struct Slot {
+    uint64_t key = kEmptyKey;
+    uint32_t position = 0;
+  };
+  std::vector<Slot> slots_;
+  uint64_t slotMask_ = 0;
+  uint32_t findPosition(const geo::TileId& id) const;
+  bool insertPosition(const geo::TileId& id, uint32_t position);
   std::vector<uint32_t> levels_;
   // Per level, the position of the westernmost tile of the northernmost / southernmost row, or
   // kNoTile (positions, not pointers, so that copies of the array stay valid).

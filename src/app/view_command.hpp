@@ -1,0 +1,41 @@
+// `globe view`: the interactive window (GLFW) with orbit controls, driven by TerrainScene. It
+// redraws only when the camera moved, a tile arrived or the window changed, so idling is free.
+#pragma once
+
+#include <chrono>
+#include <filesystem>
+#include <optional>
+
+#include "app/terrain_scene.hpp"
+#include "camera/camera_pose.hpp"
+
+namespace globe::app {
+
+// While tiles load, the loop waits at most this long for one to finish (it wakes as soon as one
+// does: each update starts only a few loads, so waking late would pace the streaming).
+inline constexpr std::chrono::milliseconds kLoadWait{10};
+// While tiles stream in with the camera still, redraw at most this often: a software-rendered
+// frame can take tens of ms, and every frame drawn delays the next poll and request of tiles.
+inline constexpr std::chrono::milliseconds kLoadingRedrawInterval{100};
+
+struct ViewOptions {
+  std::filesystem::path pyramid;
+  camera::CameraPose pose;
+  int widthPixels = 1280, heightPixels = 720;
+  std::optional<std::filesystem::path> imagery;  // equirectangular world image to drape
+  SceneOptions scene;
+  int frames = 0;  // > 0: redraw continuously and quit after this many frames (tests, timing)
+  std::optional<std::filesystem::path> screenshot;  // the last frame as a PNG, written on exit
+  bool log = false;  // print when the view becomes complete, and the final camera on exit
+};
+
+struct ViewReport {
+  int framesDrawn = 0;
+  camera::CameraPose finalPose;
+};
+
+// Opens the window and runs until it is closed (Esc, Q, the close button) or `frames` are drawn.
+// Fails without a display (GLFW cannot initialise) or when the pyramid cannot be opened.
+Result<ViewReport> runView(const ViewOptions& options);
+
+}  // namespace globe::app

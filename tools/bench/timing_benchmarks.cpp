@@ -1,0 +1,321 @@
+// Benchmark cases over Fuji-centred arrays: one query per iteration, consecutive frames of one
+// flight path (or independent random positions), cycling through a precomputed query list.
+#include "tools/bench/timing_benchmarks.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "collision/exact_surface.hpp"
+#include "collision/qotcd.hpp"
+#include "collision/sphere_tree.hpp"
+#include "geo/ecef.hpp"
+#include "tools/bench/bench_terrain.hpp"
+#include "tools/bench/sqrt_geodetic.hpp"
+
+namespace globe::bench {
+namespace {
+
+constexpr size_t kFlightFrames = 4096;  // 68 s of flight at 60 Hz
+constexpr size_t kRandomQueries = 65536;
+constexpr uint64_t kFlightSeed = 20240607;
+constexpr uint64_t kRandomSeed = 7;
+constexpr double kClearanceMeters = collision::kCameraSphereRadiusMeters;
+const std::vector<int64_t> kTileCounts = {10, 100, 1000, 10000, 100000};
+
+// Everything the cases share, built on first use and kept (the sphere trees: one size at a
+// time, they are large).
+struct Shared {
+  std::filesystem::path pyramidDirectory;
+  std::unique_ptr<Pyramid> pyramid;
+  std::string error;
+  std::map<uint32_t, std::unique_ptr<BenchArray>> arrays;
+  std::map<uint32_t, std::vector<CameraQuery>> randomQueries;
+  std::vector<CameraQuery> flight;
+  std::vector<CameraQuery> flightOnSphere;  // the same longitude, latitude, height on a sphere
+  uint32_t treeTiles = 0;
+  std::unique_ptr<collision::SphereTreeSet> trees;
+  double treeBuildSeconds = 0;
+
+  Pyramid* openPyramid() {
+    if (!pyramid && error.empty()) {
+      auto opened = Pyramid::open(pyramidDirectory);
+      if (opened) {
+        pyramid = std::move(*opened);
+      } else {
+        error = opened.error();
+      }
+    }
+    return pyramid.get();
+  }
+  const BenchArray* array(uint32_t tiles) {
+    auto it = arrays.find(tiles);
+    if (it != arrays.end()) return it->second.get();
+    if (openPyramid() == nullptr) return nullptr;
+    auto made = makeBenchArray(*pyramid, tiles);
+    if (!made) {
+      error = made.error();
+      return nullptr;
+    }
+    return arrays.emplace(tiles, std::move(*made)).first->second.get();
+  }
+  const std::vector<CameraQuery>* flightPath() {
+    if (flight.empty()) {
+      const BenchArray* area = array(10);
+      if (area == nullptr) return nullptr;
+      flight = bench::flightPath(area->array, flightArea(), pyramid->ellipsoid(), kFlightFrames,
+                                 kFlightSeed);
+    }
+    return &flight;
+  }
+  const std::vector<CameraQuery>* sphereFlightPath() {
+    if (flightOnSphere.empty() && flightPath() != nullptr) {
+      flightOnSphere = flight;
+      for (CameraQuery& q : flightOnSphere) {
+        q.ecefMeters = geo::cartographicToEcef(
+            geo::Ellipsoid::sphere(), {q.longitudeRadians, q.latitudeRadians, q.heightMeters});
+      }
+    }
+    return flightOnSphere.empty() ? nullptr : &flightOnSphere;
+  }
+  const std::vector<CameraQuery>* random(uint32_t tiles) {
+    auto it = randomQueries.find(tiles);
+    if (it != randomQueries.end()) return &it->second;
+    const BenchArray* a = array(tiles);
+    if (a == nullptr) return nullptr;
+    auto queries = bench::randomQueries(a->array, a->bounds, pyramid->ellipsoid(), kRandomQueries,
+                                        kRandomSeed);
+    return &randomQueries.emplace(tiles, std::move(queries)).first->second;
+  }
+  const collision::SphereTreeSet* sphereTrees(uint32_t tiles) {
+    if (trees && treeTiles == tiles) return trees.get();
+    const BenchArray* a = array(tiles);
+    if (a == nullptr) return nullptr;
+    trees.reset();
+    auto built = std::make_unique<collision::SphereTreeSet>();
+    const auto start = std::chrono::steady_clock::now();
+    built->build(a->array, pyramid->ellipsoid());
+    treeBuildSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    trees = std::move(built);
+    treeTiles = tiles;
+    return trees.get();
+  }
+};
+
+Shared& shared() {
+  static Shared instance;
+  return instance;
+}
+
+// Runs `query(camera)` once per iteration over the whole list, a whole number of times (so
+// every size sees the same frames); counts collisions.
+template <class Query>
+void runQueries(benchmark::State& state, const std::vector<CameraQuery>& queries, Query&& query) {
+  int64_t collisions = 0;
+  while (state.KeepRunningBatch(static_cast<benchmark::IterationCount>(queries.size()))) {
+    for (const CameraQuery& camera : queries) {
+      const bool collided = query(camera);
+      benchmark::DoNotOptimize(collided);
+      collisions += collided ? 1 : 0;
+    }
+  }
+  state.counters["collided"] =
+      benchmark::Counter(static_cast<double>(collisions), benchmark::Counter::kAvgIterations);
+}
+
+bool prepare(benchmark::State& state, const BenchArray*& array,
+             const std::vector<CameraQuery>*& queries, bool randomPositions) {
+  const auto tiles = static_cast<uint32_t>(state.range(0));
+  array = shared().array(tiles);
+  queries = array == nullptr ? nullptr
+                             : (randomPositions ? shared().random(tiles) : shared().flightPath());
+  if (array == nullptr || queries == nullptr) {
+    state.SkipWithError(shared().error.c_str());
+    return false;
+  }
+  state.counters["tiles"] = static_cast<double>(array->array.tiles().size());
+  return true;
+}
+
+void BM_SphereTree(benchmark::State& state) {
+  const BenchArray* array = nullptr;
+  const std::vector<CameraQuery>* queries = nullptr;
+  if (!prepare(state, array, queries, false)) return;
+  const collision::SphereTreeSet* trees =
+      shared().sphereTrees(static_cast<uint32_t>(state.range(0)));
+  int64_t sphereTests = 0, triangleTests = 0;
+  runQueries(state, *queries, [&](const CameraQuery& camera) {
+    const collision::SphereTreeResult result =
+        trees->intersect(camera.ecefMeters, collision::kCameraSphereRadiusMeters);
+    sphereTests += result.sphereTests;
+    triangleTests += result.triangleTests;
+    return result.collided;
+  });
+  const double tiles = static_cast<double>(trees->tileCount());
+  state.counters["Nv"] =
+      benchmark::Counter(static_cast<double>(sphereTests), benchmark::Counter::kAvgIterations);
+  state.counters["Np"] =
+      benchmark::Counter(static_cast<double>(triangleTests), benchmark::Counter::kAvgIterations);
+  state.counters["build_ns_per_tile"] = shared().treeBuildSeconds * 1e9 / tiles;
+  state.counters["bytes_per_tile"] = static_cast<double>(trees->memoryBytes()) / tiles;
+}
+
+void BM_QotcdLinear(benchmark::State& state) {
+  const BenchArray* array = nullptr;
+  const std::vector<CameraQuery>* queries = nullptr;
+  if (!prepare(state, array, queries, false)) return;
+  const geo::Ellipsoid ellipsoid = shared().pyramid->ellipsoid();
+  runQueries(state, *queries, [&](const CameraQuery& camera) {
+    return collision::qotcdLinear(array->array, ellipsoid, camera.ecefMeters, kClearanceMeters)
+        .collided;
+  });
+}
+
+void BM_QotcdIndexed(benchmark::State& state) {
+  const BenchArray* array = nullptr;
+  const std::vector<CameraQuery>* queries = nullptr;
+  if (!prepare(state, array, queries, false)) return;
+  const geo::Ellipsoid ellipsoid = shared().pyramid->ellipsoid();
+  runQueries(state, *queries, [&](const CameraQuery& camera) {
+    return collision::qotcdIndexed(array->array, ellipsoid, camera.ecefMeters, kClearanceMeters)
+        .collided;
+  });
+}
+
+void BM_ExactSurface(benchmark::State& state) {
+  const BenchArray* array = nullptr;
+  const std::vector<CameraQuery>* queries = nullptr;
+  if (!prepare(state, array, queries, false)) return;
+  const geo::Ellipsoid ellipsoid = shared().pyramid->ellipsoid();
+  runQueries(state, *queries, [&](const CameraQuery& camera) {
+    return collision::exactSurfaceTest(array->array, ellipsoid, camera.ecefMeters, kClearanceMeters)
+        .collided;
+  });
+}
+
+void BM_QotcdIndexedRandom(benchmark::State& state) {
+  const BenchArray* array = nullptr;
+  const std::vector<CameraQuery>* queries = nullptr;
+  if (!prepare(state, array, queries, true)) return;
+  const geo::Ellipsoid ellipsoid = shared().pyramid->ellipsoid();
+  runQueries(state, *queries, [&](const CameraQuery& camera) {
+    return collision::qotcdIndexed(array->array, ellipsoid, camera.ecefMeters, kClearanceMeters)
+        .collided;
+  });
+}
+
+// Diagnostics: QOTCD and the exact surface split into the camera's conversion to geodetic
+// coordinates (geo::ecefToCartographic on WGS84) and the rest; the conversion on the paper's
+// sphere, and on WGS84 with sqrt in place of hypot.
+void BM_EcefToCartographic(benchmark::State& state) {
+  const BenchArray* array = nullptr;
+  const std::vector<CameraQuery>* queries = nullptr;
+  if (!prepare(state, array, queries, false)) return;
+  const geo::Ellipsoid ellipsoid = shared().pyramid->ellipsoid();
+  runQueries(state, *queries, [&](const CameraQuery& camera) {
+    const auto geodetic = geo::ecefToCartographic(ellipsoid, camera.ecefMeters);
+    return geodetic && geodetic->heightMeters <= kClearanceMeters;
+  });
+}
+
+void BM_EcefToCartographicSphere(benchmark::State& state) {
+  const BenchArray* array = nullptr;
+  const std::vector<CameraQuery>* queries = nullptr;
+  if (!prepare(state, array, queries, false)) return;
+  const geo::Ellipsoid sphere = geo::Ellipsoid::sphere();
+  runQueries(state, *queries, [&](const CameraQuery& camera) {
+    const auto geodetic = geo::ecefToCartographic(sphere, camera.ecefMeters);
+    return geodetic && geodetic->heightMeters <= kClearanceMeters;
+  });
+}
+
+void BM_EcefToCartographicSqrt(benchmark::State& state) {
+  const BenchArray* array = nullptr;
+  const std::vector<CameraQuery>* queries = nullptr;
+  if (!prepare(state, array, queries, false)) return;
+  const geo::Ellipsoid ellipsoid = shared().pyramid->ellipsoid();
+  runQueries(state, *queries, [&](const CameraQuery& camera) {
+    return sqrtEcefToCartographic(ellipsoid, camera.ecefMeters).heightMeters <= kClearanceMeters;
+  });
+}
+
+void BM_QotcdIndexedGeodetic(benchmark::State& state) {
+  const BenchArray* array = nullptr;
+  const std::vector<CameraQuery>* queries = nullptr;
+  if (!prepare(state, array, queries, false)) return;
+  runQueries(state, *queries, [&](const CameraQuery& camera) {
+    const geo::Cartographic geodetic{camera.longitudeRadians, camera.latitudeRadians,
+                                     camera.heightMeters};
+    return collision::qotcdIndexed(array->array, geodetic, kClearanceMeters).collided;
+  });
+}
+
+// QOTCD indexed on the paper's spherical globe: the same array and camera longitudes,
+// latitudes and heights, the camera's ECEF position and its conversion on a sphere.
+void BM_QotcdIndexedOnSphere(benchmark::State& state) {
+  const BenchArray* array = nullptr;
+  const std::vector<CameraQuery>* queries = nullptr;
+  if (!prepare(state, array, queries, false)) return;
+  queries = shared().sphereFlightPath();
+  const geo::Ellipsoid sphere = geo::Ellipsoid::sphere();
+  runQueries(state, *queries, [&](const CameraQuery& camera) {
+    return collision::qotcdIndexed(array->array, sphere, camera.ecefMeters, kClearanceMeters)
+        .collided;
+  });
+}
+
+void BM_ExactSurfaceGeodetic(benchmark::State& state) {
+  const BenchArray* array = nullptr;
+  const std::vector<CameraQuery>* queries = nullptr;
+  if (!prepare(state, array, queries, false)) return;
+  const geo::Ellipsoid ellipsoid = shared().pyramid->ellipsoid();
+  runQueries(state, *queries, [&](const CameraQuery& camera) {
+    const auto surface = collision::exactSurfaceHeight(
+        array->array, ellipsoid, camera.longitudeRadians, camera.latitudeRadians);
+    return camera.heightMeters <= (surface ? surface->heightMeters : 0.0) + kClearanceMeters;
+  });
+}
+
+double minimum(const std::vector<double>& values) {
+  return values.empty() ? 0.0 : *std::min_element(values.begin(), values.end());
+}
+double maximum(const std::vector<double>& values) {
+  return values.empty() ? 0.0 : *std::max_element(values.begin(), values.end());
+}
+
+// Per-size registration with min and max over the repetitions besides the default statistics.
+void registerSizes(const char* name, void (*function)(benchmark::State&),
+                   const std::vector<int64_t>& sizes) {
+  benchmark::internal::Benchmark* bench = benchmark::RegisterBenchmark(name, function);
+  for (const int64_t tiles : sizes) bench->Arg(tiles);
+  bench->Unit(benchmark::kNanosecond);
+  bench->ComputeStatistics("min", &minimum);
+  bench->ComputeStatistics("max", &maximum);
+}
+
+}  // namespace
+
+void registerTimingBenchmarks(const std::filesystem::path& pyramidDirectory) {
+  shared().pyramidDirectory = pyramidDirectory;
+  registerSizes("BM_SphereTree", &BM_SphereTree, kTileCounts);
+  registerSizes("BM_QotcdLinear", &BM_QotcdLinear, kTileCounts);
+  registerSizes("BM_QotcdIndexed", &BM_QotcdIndexed, kTileCounts);
+  registerSizes("BM_ExactSurface", &BM_ExactSurface, kTileCounts);
+  registerSizes("BM_QotcdIndexedRandom", &BM_QotcdIndexedRandom, kTileCounts);
+  // Diagnostics (the conversion does not depend on the array: one size).
+  registerSizes("BM_EcefToCartographic", &BM_EcefToCartographic, {10});
+  registerSizes("BM_EcefToCartographicSphere", &BM_EcefToCartographicSphere, {10});
+  registerSizes("BM_EcefToCartographicSqrt", &BM_EcefToCartographicSqrt, {10});
+  registerSizes("BM_QotcdIndexedGeodetic", &BM_QotcdIndexedGeodetic, kTileCounts);
+  registerSizes("BM_ExactSurfaceGeodetic", &BM_ExactSurfaceGeodetic, kTileCounts);
+  registerSizes("BM_QotcdIndexedOnSphere", &BM_QotcdIndexedOnSphere, kTileCounts);
+}
+
+}  // namespace globe::bench
