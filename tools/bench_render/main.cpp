@@ -111,10 +111,14 @@ int main(int argc, char** argv) {
   int frames = 50;
   bool child = false, noFragDepth = false;
   std::string shaderDirectory;
+  bench::ScenarioOptions options;
   app.add_option("--pyramid", pyramid,
                  "pyramid directory (default: tile the bundled data/dem into a temp dir)");
   app.add_option("--frames", frames, "frames timed per steady view")->capture_default_str();
   app.add_option("--size", sizeText, "WxH pixels")->capture_default_str();
+  app.add_option("--sse", options.maximumScreenSpaceErrorPixels,
+                 "maximum screen-space error in pixels (a what-if: the viewer uses 2)")
+      ->capture_default_str();
   app.add_option("--lp-threads", threadList, "llvmpipe thread counts to compare, comma-separated")
       ->capture_default_str();
   app.add_flag("--no-frag-depth", noFragDepth,
@@ -123,7 +127,6 @@ int main(int argc, char** argv) {
   app.add_option("--shader-dir", shaderDirectory, "internal: shader directory")->group("");
   CLI11_PARSE(app, argc, argv);
 
-  bench::ScenarioOptions options;
   if (std::sscanf(sizeText.c_str(), "%dx%d", &options.widthPixels, &options.heightPixels) != 2) {
     std::fprintf(stderr, "globe-bench-render: --size must be WxH\n");
     return 2;
@@ -165,7 +168,8 @@ int main(int argc, char** argv) {
   }
   const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
   const std::string common = "--pyramid " + shellQuote(pyramid) + " --frames " +
-                             std::to_string(frames) + " --size " + shellQuote(sizeText);
+                             std::to_string(frames) + " --size " + shellQuote(sizeText) +
+                             " --sse " + std::to_string(options.maximumScreenSpaceErrorPixels);
 
   std::printf(
       "| LP threads | scenario | frames | ms/frame median | p90 | min | draw+glFinish median | "

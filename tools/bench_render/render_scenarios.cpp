@@ -145,7 +145,9 @@ Result<ScenarioRow> viewerPacedUntilComplete(Context& c, const std::string& name
 
 Result<std::vector<ScenarioRow>> runScenarios(const ScenarioOptions& options,
                                               std::string& rendererName) {
-  auto scene = app::TerrainScene::open(options.pyramid, app::SceneOptions{});
+  app::SceneOptions sceneOptions;
+  sceneOptions.maximumScreenSpaceErrorPixels = options.maximumScreenSpaceErrorPixels;
+  auto scene = app::TerrainScene::open(options.pyramid, sceneOptions);
   if (!scene) return Error{scene.error()};
   auto context = render::OsMesaContext::create(options.widthPixels, options.heightPixels);
   if (!context) return Error{context.error()};
@@ -173,7 +175,7 @@ Result<std::vector<ScenarioRow>> runScenarios(const ScenarioOptions& options,
 
   // The jump again from a cold cache, paced as the interactive viewer paces it.
   (*renderer)->evictAllTiles();
-  auto fresh = app::TerrainScene::open(options.pyramid, app::SceneOptions{});
+  auto fresh = app::TerrainScene::open(options.pyramid, sceneOptions);
   if (!fresh) return Error{fresh.error()};
   Context again{**fresh, **renderer, options};
   if (auto globeAgain = framesUntilComplete(again, "globe", globe); !globeAgain) {

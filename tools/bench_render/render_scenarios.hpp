@@ -16,6 +16,7 @@ struct ScenarioOptions {
   std::filesystem::path shaderDirectory;  // empty: the default shaders
   int widthPixels = 1280, heightPixels = 720;
   int frames = 50;
+  double maximumScreenSpaceErrorPixels = 2.0;  // the viewer's default
 };
 
 // One table row. Steady views fill the per-frame fields; the jump fills wall time and frames.
