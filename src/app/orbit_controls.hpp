@@ -36,6 +36,8 @@ class OrbitControls {
   // Multiplies the clearance above the terrain by factor^notches (notches > 0 zooms in).
   void zoom(double notches);
   void reset() { pose_ = home_; }
+  // Takes the pose the collision response settled on, as it is (no clamping, so the two agree).
+  void adoptPose(const camera::CameraPose& pose) { pose_ = pose; }
   // The terrain height under the camera as the scene knows it now; lifts the camera when it is
   // less than the minimum clearance above it. Returns whether the pose changed.
   bool setGroundHeight(double groundHeightMeters);

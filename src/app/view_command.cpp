@@ -3,12 +3,14 @@
 
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <string>
 #include <vector>
 
 #include "app/orbit_controls.hpp"
+#include "camera/camera_controller.hpp"
 #include "io/image_io.hpp"
 #include "render/glfw_window_context.hpp"
 #include "render/read_pixels.hpp"
@@ -113,12 +115,27 @@ void onCursor(GLFWwindow* window, double x, double y) {
 void onRepaintNeeded(GLFWwindow* window) { inputOf(window).changed = true; }
 void onFramebufferSize(GLFWwindow* window, int, int) { inputOf(window).changed = true; }
 
-std::string titleFor(const camera::CameraPose& pose, size_t tiles, bool loading) {
-  char text[160];
-  std::snprintf(text, sizeof text, "%s  lon %.4f  lat %.4f  height %.0f m  tiles %zu%s",
+// The HUD for now: position, tiles, and what collision did this frame.
+std::string titleFor(const camera::CameraPose& pose, size_t tiles, bool loading,
+                     const camera::CollisionState& collision) {
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "%s  lon %.5f  lat %.5f  height %.0f m  terrain %.1f m  clearance %.1f m  %s%s  "
+                "tiles %zu%s",
                 kTitlePrefix, pose.position.longitudeDegrees(), pose.position.latitudeDegrees(),
-                pose.position.heightMeters, tiles, loading ? " (loading)" : "");
+                pose.position.heightMeters, collision.terrainHeightMeters,
+                collision.clearanceMeters, collision.collided ? "COLLISION " : "",
+                std::string(collision::toString(collision.response)).c_str(), tiles,
+                loading ? " (loading)" : "");
   return text;
+}
+
+bool samePose(const camera::CameraPose& a, const camera::CameraPose& b) {
+  return a.position.longitudeRadians == b.position.longitudeRadians &&
+         a.position.latitudeRadians == b.position.latitudeRadians &&
+         a.position.heightMeters == b.position.heightMeters &&
+         a.headingRadians == b.headingRadians && a.pitchRadians == b.pitchRadians &&
+         a.rollRadians == b.rollRadians;
 }
 
 std::string formatPose(const camera::CameraPose& pose) {
@@ -158,6 +175,7 @@ Result<ViewReport> runView(const ViewOptions& options) {
   }
 
   OrbitControls controls((*scene)->ellipsoid(), options.pose, options.scene.fovYRadians);
+  camera::CameraController controller(options.pose);
   InputState input;
   input.controls = &controls;
   GLFWwindow* handle = (*window)->window();
@@ -171,7 +189,7 @@ Result<ViewReport> runView(const ViewOptions& options) {
 
   const bool continuous = options.frames > 0;
   const auto start = std::chrono::steady_clock::now();
-  auto lastChange = start, lastDraw = start;
+  auto lastChange = start, lastDraw = start, lastUpdate = start;
   ViewReport report;
   std::vector<geo::TileId> drawnTiles;
   std::string title;
@@ -185,9 +203,25 @@ Result<ViewReport> runView(const ViewOptions& options) {
       bool redraw = input.changed || continuous;
       if (input.changed) lastChange = now;
       input.changed = false;
-      const FrameInfo info = (*scene)->update(controls.pose(), width, height, **renderer);
-      // Terrain that arrived may stand above the camera: lift it and look again next time round.
-      if (controls.setGroundHeight(info.terrainHeightMeters)) input.changed = true;
+      // The controller moves the camera to the pose the controls ask for, checked by QOTCD
+      // against the tiles drawn now, and corrects it (stop, slide, heighten, raise).
+      const double dtSeconds =
+          std::clamp(std::chrono::duration<double>(now - lastUpdate).count(), 0.0, 0.1);
+      lastUpdate = now;
+      if (!samePose(controls.pose(), controller.pose())) controller.propose(controls.pose());
+      controller.setNearPlane(
+          {camera::projectionForHeight(0, controller.settings().clearance.eyeMeters,
+                                       options.scene.fovYRadians, 1, (*scene)->ellipsoid())
+               .nearMeters,
+           options.scene.fovYRadians, static_cast<double>(width) / std::max(height, 1)});
+      const camera::CollisionState& collisionState =
+          controller.update(dtSeconds, (*scene)->renderingTileArray(), (*scene)->ellipsoid());
+      if (!samePose(controls.pose(), controller.pose())) controls.adoptPose(controller.pose());
+      // The controls scale zoom steps by the height above the terrain the controller found.
+      if (collisionState.terrainFound) controls.setGroundHeight(collisionState.terrainHeightMeters);
+      // A smooth raise over new, finer terrain takes a few frames: keep updating until done.
+      if (collisionState.raisedForNewTerrain) input.changed = true;
+      const FrameInfo info = (*scene)->update(controller.pose(), width, height, **renderer);
       tilesChanged =
           tilesChanged || info.arrived > 0 || info.uploaded > 0 || (*scene)->tiles() != drawnTiles;
       loading = !info.complete;
@@ -199,7 +233,8 @@ Result<ViewReport> runView(const ViewOptions& options) {
         (*window)->swapBuffers();
         ++report.framesDrawn;
         drawnTiles = (*scene)->tiles();
-        if (std::string next = titleFor(controls.pose(), drawnTiles.size(), loading);
+        if (std::string next =
+                titleFor(controller.pose(), drawnTiles.size(), loading, controller.state());
             next != title) {
           title = std::move(next);
           glfwSetWindowTitle(handle, title.c_str());
@@ -231,7 +266,7 @@ Result<ViewReport> runView(const ViewOptions& options) {
     }
   }
 
-  report.finalPose = controls.pose();
+  report.finalPose = controller.pose();
   if (options.screenshot) {
     // The back buffer is undefined after a swap: draw the last frame again and read it back.
     const int width = (*window)->framebufferWidthPixels();

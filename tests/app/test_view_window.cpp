@@ -256,3 +256,27 @@ TEST(GlobeViewWindow, NoDisplayIsAClearError) {
 }
 
 }  // namespace
+
+namespace {
+
+// The controller runs every frame in the window: a camera started 100 m above the ellipsoid at
+// Mount Fuji's summit (3,731 m of drawn surface) is raised out of the terrain and stays above it.
+TEST(GlobeViewWindow, CameraBelowTheTerrainIsRaisedAboveTheDrawnSurface) {
+  SKIP_WITHOUT("xvfb-run");
+  const ShellRun run = runUnderXvfb(
+      "view-collision",
+      globeView("--size 320x180 --frames 40 --log --camera 138.7275,35.3606,100,0,-10,0"));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const double height = loggedHeightMeters("\n" + run.output);
+  const ShellRun ground =
+      runShell("echo 138.7275,35.3606 | " + std::string(GLOBE_EXE) + " query " +
+               globe::tiler::testing::bundledPyramid().string() + " --mode exact");
+  ASSERT_EQ(ground.exitCode, 0) << ground.output;
+  double lon = 0, lat = 0, level = 0, surface = 0;
+  ASSERT_EQ(std::sscanf(ground.output.c_str(), "%lf,%lf,%lf,%lf", &lon, &lat, &level, &surface), 4);
+  EXPECT_GT(surface, 3700);
+  EXPECT_GE(height, surface + 1.0) << "the hard floor is 1 m above the drawn surface";
+  EXPECT_LE(height, surface + 2.5) << "raised to the clearance, not launched";
+}
+
+}  // namespace
