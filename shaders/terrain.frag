@@ -1,5 +1,6 @@
 // Terrain fragment shader: hypsometric colour ramp (or draped imagery), hill-shading from the mesh
-// normals and the sun, flat-lit blue sea with a depth tint, logarithmic depth.
+// normals and the sun, flat-lit blue sea with a depth tint, logarithmic depth (per fragment, or
+// per vertex in terrain.vert when GLOBE_VERTEX_LOG_DEPTH is defined).
 #version 330 core
 
 in vec3 v_normal;
@@ -55,5 +56,7 @@ void main() {
   vec3 n = (sea || !u_hillShading) ? up : normalize(v_normal);
   float diffuse = max(dot(n, u_sunDirection), 0.0);
   o_color = vec4(base * (u_ambient + (1.0 - u_ambient) * diffuse), 1.0);
+#ifndef GLOBE_VERTEX_LOG_DEPTH
   gl_FragDepth = log2(v_logDepth) * u_logDepthScale;
+#endif
 }

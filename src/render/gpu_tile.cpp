@@ -1,8 +1,12 @@
 // Vertex buffer upload and attribute setup for one tile.
 #include "render/gpu_tile.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <numbers>
+
+#include <glm/geometric.hpp>
 
 #include "geo/tiling_scheme.hpp"
 
@@ -28,6 +32,15 @@ GpuTile uploadGpuTile(const geo::TileId& tile, const terrain::TileMesh& mesh, GL
                               static_cast<float>(rect.widthRadians() / (2.0 * pi)),
                               static_cast<float>(rect.heightRadians() / pi));
   gpu.vertexBytes = mesh.vertices.size() * sizeof(float);
+  double radiusSquared = 0.0;
+  for (size_t k = 0; k + terrain::kTileVertexFloats <= mesh.vertices.size();
+       k += terrain::kTileVertexFloats) {
+    const glm::dvec3 offset(mesh.vertices[k + terrain::kTileVertexPositionOffset],
+                            mesh.vertices[k + terrain::kTileVertexPositionOffset + 1],
+                            mesh.vertices[k + terrain::kTileVertexPositionOffset + 2]);
+    radiusSquared = std::max(radiusSquared, glm::dot(offset, offset));
+  }
+  gpu.radiusMeters = std::sqrt(radiusSquared);
 
   gpu.vertexArray = makeGlVertexArray();
   gpu.vertexBuffer = makeGlBuffer();

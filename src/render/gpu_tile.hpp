@@ -25,6 +25,7 @@ struct GpuTile {
   GlObject vertexBuffer;
   glm::dvec3 centerEcefMeters{0.0};
   glm::vec4 imageryRect{0.0f};  // global equirectangular uv = xy + tile uv · zw
+  double radiusMeters = 0.0;    // the farthest vertex (skirts included) from the centre
   uint64_t vertexBytes = 0;
 };
 

@@ -24,6 +24,22 @@ Result<std::string> readTextFile(const std::filesystem::path& path) {
   return result;
 }
 
+// `defines` go on the line after the "#version" line (no code may precede it), or first without
+// one.
+std::string withDefines(std::string source, std::string_view defines) {
+  if (defines.empty()) return source;
+  std::string text(defines);
+  if (text.back() != '\n') text.push_back('\n');
+  size_t at = 0;
+  if (const size_t version = source.find("#version"); version != std::string::npos) {
+    const size_t end = source.find('\n', version);
+    if (end == std::string::npos) source.push_back('\n');
+    at = end == std::string::npos ? source.size() : end + 1;
+  }
+  source.insert(at, text);
+  return source;
+}
+
 std::string shaderLog(GLuint shader) {
   GLint length = 0;
   glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
@@ -82,12 +98,14 @@ Result<ShaderProgram> buildShaderProgram(std::string_view vertexSource, std::str
 }
 
 Result<ShaderProgram> loadShaderProgram(const std::filesystem::path& vertexPath,
-                                        const std::filesystem::path& fragmentPath) {
+                                        const std::filesystem::path& fragmentPath,
+                                        std::string_view defines) {
   auto vertexSource = readTextFile(vertexPath);
   if (!vertexSource) return makeError(vertexSource.error());
   auto fragmentSource = readTextFile(fragmentPath);
   if (!fragmentSource) return makeError(fragmentSource.error());
-  return buildShaderProgram(*vertexSource, vertexPath.string(), *fragmentSource,
+  return buildShaderProgram(withDefines(std::move(*vertexSource), defines), vertexPath.string(),
+                            withDefines(std::move(*fragmentSource), defines),
                             fragmentPath.string());
 }
 

@@ -25,8 +25,11 @@ class ShaderProgram {
 
 // Reads, compiles and links the two files. Errors: "<file>: cannot read shader file",
 // "<file>: GLSL compile error:\n<log>", "<vertex file> + <fragment file>: GLSL link error:\n<log>".
+// `defines` (e.g. "#define X 1"), when given, is inserted into both sources right after their
+// "#version" line.
 Result<ShaderProgram> loadShaderProgram(const std::filesystem::path& vertexPath,
-                                        const std::filesystem::path& fragmentPath);
+                                        const std::filesystem::path& fragmentPath,
+                                        std::string_view defines = {});
 
 // The same from sources in memory; the names stand in for file names in error messages.
 Result<ShaderProgram> buildShaderProgram(std::string_view vertexSource, std::string_view vertexName,

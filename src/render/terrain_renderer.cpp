@@ -1,6 +1,7 @@
 // The terrain renderer: shared index buffer, per-tile GPU buffers, per-frame uniforms, draw loop.
 #include "render/terrain_renderer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -18,6 +19,17 @@
 
 namespace globe::render {
 
+namespace {
+
+// A tile gets per-vertex logarithmic depth (early depth test) when its nearest point is at least
+// this far from the camera and at least this many bounding radii away: its triangles (1/16 of the
+// tile across) then span under ~1/32 of their distance, where the screen-linear interpolation of
+// log2(1 + w) between vertices is off by < 1e-3 · w and only ever farther (log is concave).
+constexpr double kVertexDepthMinMeters = 1000.0;
+constexpr double kVertexDepthRadii = 2.0;
+
+}  // namespace
+
 struct TerrainRenderer::Impl {
   struct Uniforms {
     GLint modelView = -1, projection = -1, tileCenter = -1, imageryRect = -1;
@@ -25,10 +37,20 @@ struct TerrainRenderer::Impl {
     GLint logDepthScale = -1;
   };
 
+  // [0]: logarithmic depth per fragment (gl_FragDepth); [1]: per vertex (keeps early-z).
+  struct Program {
+    ShaderProgram program;
+    Uniforms uniforms;
+  };
+  struct DrawItem {
+    double nearestMeters;
+    const GpuTile* gpu;
+  };
+
   TerrainRendererOptions options;
   TerrainStyle style;
-  ShaderProgram program;
-  Uniforms uniforms;
+  Program programs[2];
+  std::vector<DrawItem> drawItems[2];  // per-frame scratch, kept to avoid reallocating
   GlObject indexBuffer;
   GLenum indexType = GL_UNSIGNED_SHORT;
   GLsizei indexCount = 0;
@@ -55,26 +77,29 @@ Result<std::unique_ptr<TerrainRenderer>> TerrainRenderer::create(
   if (impl->options.shaderDirectory.empty())
     impl->options.shaderDirectory = defaultShaderDirectory();
   const auto& dir = impl->options.shaderDirectory;
-  auto program = loadShaderProgram(dir / "terrain.vert", dir / "terrain.frag");
-  if (!program) return makeError(program.error());
-  impl->program = std::move(*program);
-
-  const ShaderProgram& p = impl->program;
-  Impl::Uniforms& u = impl->uniforms;
-  u.modelView = p.uniformLocation("u_modelView");
-  u.projection = p.uniformLocation("u_projection");
-  u.tileCenter = p.uniformLocation("u_tileCenterEcef");
-  u.imageryRect = p.uniformLocation("u_imageryRect");
-  u.sunDirection = p.uniformLocation("u_sunDirection");
-  u.ambient = p.uniformLocation("u_ambient");
-  u.hillShading = p.uniformLocation("u_hillShading");
-  u.useImagery = p.uniformLocation("u_useImagery");
-  u.imagery = p.uniformLocation("u_imagery");
-  u.logDepthScale = p.uniformLocation("u_logDepthScale");
-  if (u.modelView < 0 || u.projection < 0 || u.logDepthScale < 0) {
-    return makeError((dir / "terrain.vert").string() +
-                     " + terrain.frag: the program lacks "
-                     "u_modelView, u_projection or u_logDepthScale");
+  for (int variant = 0; variant < 2; ++variant) {
+    auto program = loadShaderProgram(dir / "terrain.vert", dir / "terrain.frag",
+                                     variant == 1 ? "#define GLOBE_VERTEX_LOG_DEPTH 1" : "");
+    if (!program) return makeError(program.error());
+    Impl::Program& target = impl->programs[variant];
+    target.program = std::move(*program);
+    const ShaderProgram& p = target.program;
+    Impl::Uniforms& u = target.uniforms;
+    u.modelView = p.uniformLocation("u_modelView");
+    u.projection = p.uniformLocation("u_projection");
+    u.tileCenter = p.uniformLocation("u_tileCenterEcef");
+    u.imageryRect = p.uniformLocation("u_imageryRect");
+    u.sunDirection = p.uniformLocation("u_sunDirection");
+    u.ambient = p.uniformLocation("u_ambient");
+    u.hillShading = p.uniformLocation("u_hillShading");
+    u.useImagery = p.uniformLocation("u_useImagery");
+    u.imagery = p.uniformLocation("u_imagery");
+    u.logDepthScale = p.uniformLocation("u_logDepthScale");
+    if (u.modelView < 0 || u.projection < 0 || u.logDepthScale < 0) {
+      return makeError((dir / "terrain.vert").string() +
+                       " + terrain.frag: the program lacks "
+                       "u_modelView, u_projection or u_logDepthScale");
+    }
   }
 
   const std::vector<uint32_t> indices =
@@ -193,11 +218,27 @@ void TerrainRenderer::setStyle(const TerrainStyle& style) { impl_->style = style
 const TerrainStyle& TerrainRenderer::style() const { return impl_->style; }
 
 FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::TileId> tiles) {
-  const Impl& impl = *impl_;
-  const Impl::Uniforms& u = impl.uniforms;
+  Impl& impl = *impl_;
   const TerrainStyle& style = impl.style;
   FrameStats stats;
   stats.tilesRequested = static_cast<uint32_t>(tiles.size());
+
+  // Near tiles (per-fragment depth) and far ones (per-vertex depth), each front to back so the
+  // depth test rejects hidden fragments early. Near tiles go first: they occlude the far ones.
+  for (auto& items : impl.drawItems) items.clear();
+  for (const geo::TileId& tile : tiles) {
+    const auto found = impl.tiles.find(tile);
+    if (found == impl.tiles.end()) {
+      ++stats.tilesMissing;
+      continue;
+    }
+    const GpuTile& gpu = found->second;
+    const double nearest = std::max(
+        0.0, glm::distance(view.cameraEcefMeters, gpu.centerEcefMeters) - gpu.radiusMeters);
+    const bool far =
+        nearest >= kVertexDepthMinMeters && nearest >= kVertexDepthRadii * gpu.radiusMeters;
+    impl.drawItems[far ? 1 : 0].push_back({nearest, &gpu});
+  }
 
   glViewport(0, 0, view.widthPixels, view.heightPixels);
   glClearColor(style.backgroundRgb.r, style.backgroundRgb.g, style.backgroundRgb.b, 1.0f);
@@ -211,44 +252,50 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
   glFrontFace(GL_CCW);
   glDisable(GL_BLEND);
 
-  glUseProgram(impl.program.id());
   const glm::mat4 projection(view.projection);
-  glUniformMatrix4fv(u.projection, 1, GL_FALSE, glm::value_ptr(projection));
   const double sunLength = glm::length(view.sunDirectionEcef);
   const glm::vec3 sun = std::isfinite(sunLength) && sunLength > 0.0
                             ? glm::vec3(view.sunDirectionEcef / sunLength)
                             : glm::vec3(0.0f);
-  glUniform3fv(u.sunDirection, 1, glm::value_ptr(sun));
-  glUniform1f(u.ambient, style.ambient);
-  glUniform1i(u.hillShading, style.hillShading ? 1 : 0);
   const bool useImagery = style.drapeImagery && impl.imagery;
-  glUniform1i(u.useImagery, useImagery ? 1 : 0);
-  glUniform1i(u.imagery, 0);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, useImagery ? impl.imagery.get() : 0);
   const double farMeters = view.farMeters > 1.0 ? view.farMeters : kDefaultFarMeters;
-  glUniform1f(u.logDepthScale, static_cast<float>(1.0 / std::log2(1.0 + farMeters)));
+  const auto logDepthScale = static_cast<float>(1.0 / std::log2(1.0 + farMeters));
 
-  for (const geo::TileId& tile : tiles) {
-    const auto found = impl.tiles.find(tile);
-    if (found == impl.tiles.end()) {
-      ++stats.tilesMissing;
-      continue;
+  for (int variant = 0; variant < 2; ++variant) {
+    auto& items = impl.drawItems[variant];
+    if (items.empty()) continue;
+    std::sort(items.begin(), items.end(), [](const Impl::DrawItem& a, const Impl::DrawItem& b) {
+      return a.nearestMeters < b.nearestMeters;
+    });
+    const Impl::Program& program = impl.programs[variant];
+    const Impl::Uniforms& u = program.uniforms;
+    glUseProgram(program.program.id());
+    glUniformMatrix4fv(u.projection, 1, GL_FALSE, glm::value_ptr(projection));
+    glUniform3fv(u.sunDirection, 1, glm::value_ptr(sun));
+    glUniform1f(u.ambient, style.ambient);
+    glUniform1i(u.hillShading, style.hillShading ? 1 : 0);
+    glUniform1i(u.useImagery, useImagery ? 1 : 0);
+    glUniform1i(u.imagery, 0);
+    glUniform1f(u.logDepthScale, logDepthScale);
+
+    for (const Impl::DrawItem& item : items) {
+      const GpuTile& gpu = *item.gpu;
+      // Camera-relative in double: the ~6.4e6 m translation cancels before the cast to float.
+      const glm::dmat4 modelViewDouble =
+          view.viewMatrix * glm::translate(glm::dmat4(1.0), gpu.centerEcefMeters);
+      const glm::mat4 modelView(modelViewDouble);
+      glUniformMatrix4fv(u.modelView, 1, GL_FALSE, glm::value_ptr(modelView));
+      const glm::vec3 center(gpu.centerEcefMeters);
+      glUniform3fv(u.tileCenter, 1, glm::value_ptr(center));
+      if (useImagery) glUniform4fv(u.imageryRect, 1, glm::value_ptr(gpu.imageryRect));
+      glBindVertexArray(gpu.vertexArray.get());
+      glDrawElements(GL_TRIANGLES, impl.indexCount, impl.indexType, nullptr);
+      ++stats.drawCalls;
+      ++stats.tilesDrawn;
+      stats.triangles += static_cast<uint64_t>(impl.indexCount / 3);
     }
-    const GpuTile& gpu = found->second;
-    // Camera-relative in double: the ~6.4e6 m translation cancels before the cast to float.
-    const glm::dmat4 modelViewDouble =
-        view.viewMatrix * glm::translate(glm::dmat4(1.0), gpu.centerEcefMeters);
-    const glm::mat4 modelView(modelViewDouble);
-    glUniformMatrix4fv(u.modelView, 1, GL_FALSE, glm::value_ptr(modelView));
-    const glm::vec3 center(gpu.centerEcefMeters);
-    glUniform3fv(u.tileCenter, 1, glm::value_ptr(center));
-    glUniform4fv(u.imageryRect, 1, glm::value_ptr(gpu.imageryRect));
-    glBindVertexArray(gpu.vertexArray.get());
-    glDrawElements(GL_TRIANGLES, impl.indexCount, impl.indexType, nullptr);
-    ++stats.drawCalls;
-    ++stats.tilesDrawn;
-    stats.triangles += static_cast<uint64_t>(impl.indexCount / 3);
   }
   glBindVertexArray(0);
   glBindTexture(GL_TEXTURE_2D, 0);

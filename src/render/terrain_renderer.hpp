@@ -43,8 +43,11 @@ struct TerrainStyle {
 // the eye distance along the view axis. With the 24-bit depth buffer OSMesa and most windows give,
 // the resolvable depth step is ~1.1e-6 · (1 + w): 2 µm at 1 m, 1 mm at 1 km, 44 m at 40,000 km,
 // so 5 cm to 40,000 km draws without z-fighting. Per-fragment (not per-vertex) because triangles
-// next to a low camera span a wide depth range. Costs early-z; reversed-Z would need a float
-// depth buffer and glClipControl, which OSMesa's default framebuffer does not give.
+// next to a low camera span a wide depth range. Tiles whose nearest point is >= 1 km and >= 2
+// bounding radii away get the same depth per vertex instead (a second program, early-z kept), and
+// tiles are drawn front to back, near group first. Per-fragment depth costs early-z; reversed-Z
+// would need a float depth buffer and glClipControl, which OSMesa's default framebuffer does not
+// give.
 //
 // Shading (shaders/terrain.frag): land takes a hypsometric ramp (0 m green, 300 m light green,
 // 800 m tan, 1500 m brown, 2500 m grey-brown, 3500 m grey, 4500 m+ snow white) or, with imagery
