@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # One-command set-up: installs the Debian packages, builds globe, tiles the bundled real data
 # (whole-globe ETOPO20 + a GTOPO30 crop of eastern England + the Mount Fuji SRTM3 tile) into
-# ./pyramid, prints what it holds, renders two views headless into out/ and queries the
-# height of Mount Fuji's summit.
+# ./pyramid, prints what it holds, renders two views headless into out/, queries the height of
+# Mount Fuji's summit and plays the bundled demo path over Fuji into out/play (frames, log,
+# video when ffmpeg is installed; in a window as well when a display exists).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install-deps.sh
@@ -15,3 +16,9 @@ mkdir -p out
 ./build/src/app/globe snapshot pyramid --camera 138,30,20000000 -o out/globe.png
 echo "138.7275,35.3606" | ./build/src/app/globe query pyramid
 echo "Images in out/. Interactive: ./build/src/app/globe view pyramid (needs a display)"
+PLAY=(./build/src/app/globe play pyramid data/paths/fuji-demo.json --out out/play --size 640x360)
+if command -v ffmpeg >/dev/null 2>&1; then PLAY+=(--video out/play/fuji.mp4); fi
+# In a window when a display works; headless (OSMesa) otherwise. Same frames either way.
+if [ -n "${DISPLAY:-}" ] && "${PLAY[@]}" --window; then :; else "${PLAY[@]}"; fi
+echo "Demo flight: frames in out/play/frames/, per-frame log out/play/log.csv, summary out/play/summary.txt"
+if [ -f out/play/fuji.mp4 ]; then echo "Video: out/play/fuji.mp4"; fi

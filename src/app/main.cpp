@@ -6,6 +6,7 @@
 
 #include "app/camera_argument.hpp"
 #include "app/info_command.hpp"
+#include "app/play_command.hpp"
 #include "app/query_command.hpp"
 #include "app/snapshot_command.hpp"
 #include "app/view_command.hpp"
@@ -69,9 +70,11 @@ int main(int argc, char** argv) {
 
   CLI::App* view = app.add_subcommand(
       "view",
-      "open an interactive window: left-drag rotates, right/shift-drag tilts, scroll "
-      "zooms, arrows pan, +/- zoom, R resets, Esc/Q quits");
+      "open an interactive window: orbit (drag rotates, scroll zooms, double-click flies to a "
+      "point) and fly (F/Tab; WASD/QE, drag looks, Shift x5); P records the path, K/F12 takes a "
+      "screenshot, H shows every key, Esc quits");
   std::string viewCamera = "0,20,20000000", viewSize = "1280x720", viewImagery, viewScreenshot;
+  std::string viewRecordDir;
   int viewFrames = 0;
   bool viewLog = false;
   view->add_option("PYRAMID", pyramid, "pyramid directory made by globe-tiler")->required();
@@ -82,7 +85,26 @@ int main(int argc, char** argv) {
   view->add_option("--frames", viewFrames, "redraw continuously and quit after N frames (tests)");
   view->add_option("--screenshot", viewScreenshot, "write the last frame to this PNG on exit");
   view->add_flag("--log", viewLog, "print when the view is complete, and the camera on exit");
+  view->add_option("--record-dir", viewRecordDir,
+                   "where P (globe-path-*.json) and K/F12 (globe-shot-*.png) write (default: .)");
   addGlobe(view);
+
+  CLI::App* play = app.add_subcommand(
+      "play",
+      "play a camera path (.json or KML tour) through the collision controller, headless "
+      "(OSMesa): frames, log.csv, timing.csv, summary.txt in --out");
+  std::string playPath, playOut, playSize = "1280x720", playVideo;
+  double playFps = 30;
+  bool playNoFrames = false, playWindow = false;
+  play->add_option("PYRAMID", pyramid, "pyramid directory made by globe-tiler")->required();
+  play->add_option("PATH", playPath, "camera path: .json keyframes or a .kml gx:Tour")->required();
+  play->add_option("--out", playOut, "output directory")->required();
+  play->add_option("--fps", playFps, "frames per second of path time")->capture_default_str();
+  play->add_option("--size", playSize, "WxH pixels")->capture_default_str();
+  play->add_flag("--no-frames", playNoFrames, "write the logs only, no PNG frames");
+  play->add_flag("--window", playWindow, "show the playback in a GLFW window (same loop)");
+  play->add_option("--video", playVideo, "encode the frames into this MP4 with ffmpeg");
+  addGlobe(play);
 
   CLI11_PARSE(app, argc, argv);
   const auto globeModel = globe::geo::parseGlobeModel(globeName);
@@ -154,11 +176,37 @@ int main(int argc, char** argv) {
     if (!viewScreenshot.empty()) options.screenshot = viewScreenshot;
     options.frames = viewFrames;
     options.log = viewLog;
+    options.recordDirectory = viewRecordDir;
     options.scene.globeModel = *globeModel;
     if (auto report = globe::app::runView(options); !report) {
       std::fprintf(stderr, "globe view: %s\n", report.error().c_str());
       return 1;
     }
+  }
+
+  if (play->parsed()) {
+    auto size = globe::app::parseSizeArgument(playSize);
+    if (!size) {
+      std::fprintf(stderr, "globe play: %s\n", size.error().c_str());
+      return 2;
+    }
+    globe::app::PlayOptions options;
+    options.pyramid = pyramid;
+    options.pathFile = playPath;
+    options.outputDir = playOut;
+    options.framesPerSecond = playFps;
+    options.widthPixels = size->first;
+    options.heightPixels = size->second;
+    options.writeFrames = !playNoFrames;
+    options.window = playWindow;
+    if (!playVideo.empty()) options.video = playVideo;
+    options.scene.globeModel = *globeModel;
+    auto report = globe::app::runPlay(options);
+    if (!report) {
+      std::fprintf(stderr, "globe play: %s\n", report.error().c_str());
+      return 1;
+    }
+    std::fputs(report->summaryText.c_str(), stdout);
   }
 
   if (info->parsed()) {

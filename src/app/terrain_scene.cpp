@@ -159,6 +159,32 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
       info.uploaded += onGpu ? 0 : 1;
     }
   }
+  // The ground under the camera must be known to collision even when it is not drawn (a camera
+  // looking at the horizon does not see its own nadir): where no drawn tile covers the nadir, the
+  // finest loaded tile there joins the collision array, and the finest tile is requested.
+  // The nadir is nearer than anything drawn: it needs at least the finest level drawn.
+  uint32_t nadirLevels = 0;
+  for (const geo::TileId& tile : tiles_) nadirLevels = std::max(nadirLevels, tile.level);
+  nadirLevels = std::min(nadirLevels, store_->manifest().maxLevel());
+  const double lon = pose.position.longitudeRadians, lat = pose.position.latitudeRadians;
+  collision::RenderingTileArray drawnOnly;
+  drawnOnly.assign(arrayTiles);
+  if (drawnOnly.lookupIndexed(lon, lat).tile == nullptr) {
+    for (uint32_t level = std::min(nadirLevels, options_.maximumLoadLevel) + 1; level-- > 0;) {
+      const auto tile = geo::GeographicTilingScheme::positionToTile(lon, lat, level);
+      if (!tile) break;
+      if (auto block = loader_->isResident(*tile) ? loader_->get(*tile) : nullptr) {
+        arrayTiles.push_back(collision::makeArrayTile(*tile, *block));
+        blocks_.push_back(std::move(block));
+        break;
+      }
+      auto entry = store_->entry(*tile);
+      if (entry && *entry && loader_->state(*tile) != io::TileState::Failed) {
+        requests.push_back({*tile, 1.0});  // after what the view needs
+      }
+    }
+    if (!requests.empty()) loader_->request(requests);
+  }
   array_.assign(std::move(arrayTiles));
   // Free GPU memory of tiles not drawn for a while, oldest first, once over the budget.
   if (gpuLastUsedFrame_.size() > options_.gpuTileBudget) {

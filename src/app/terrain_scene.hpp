@@ -85,7 +85,8 @@ class TerrainScene {
   io::ThreadPoolRunner runner_;
   std::unique_ptr<io::TileLoader> loader_;
   std::vector<geo::TileId> tiles_;
-  std::vector<std::shared_ptr<const terrain::HeightBlock>> blocks_;  // keep the array's blocks alive
+  std::vector<std::shared_ptr<const terrain::HeightBlock>>
+      blocks_;  // keep the array's blocks alive
   collision::RenderingTileArray array_;
   render::RenderView view_;
   uint64_t frame_ = 0;

@@ -1,3 +1,5 @@
+// The `globe view` loop: input → (orbit controls | fly controls | fly-to animation) → camera
+// controller (collision every frame) → TerrainScene::update → draw terrain and HUD, on change only.
 #define GLFW_INCLUDE_NONE
 #include "app/view_command.hpp"
 
@@ -7,115 +9,30 @@
 #include <chrono>
 #include <cstdio>
 #include <string>
+#include <system_error>
 #include <vector>
 
+#include "app/fly_controls.hpp"
+#include "app/fly_to.hpp"
+#include "app/hud_text.hpp"
 #include "app/orbit_controls.hpp"
+#include "app/path_recorder.hpp"
+#include "app/view_input.hpp"
 #include "camera/camera_controller.hpp"
+#include "collision/surface_probe.hpp"
+#include "io/atomic_file.hpp"
 #include "io/image_io.hpp"
 #include "render/glfw_window_context.hpp"
+#include "render/hud_renderer.hpp"
 #include "render/read_pixels.hpp"
 
 namespace globe::app {
 namespace {
 
-constexpr double kPanPixelsPerKey = 60;        // an arrow key pans like a drag this long
 constexpr const char* kTitlePrefix = "globe";  // tests find the window by this name
+using Clock = std::chrono::steady_clock;
 
-// What the GLFW callbacks change; the loop reads it between event waits.
-struct InputState {
-  OrbitControls* controls = nullptr;
-  bool changed = true;  // the camera moved or the window needs repainting
-  bool leftDown = false, rightDown = false, shiftDrag = false;
-  double lastX = 0, lastY = 0;
-  bool cursorKnown = false;
-};
-
-InputState& inputOf(GLFWwindow* window) {
-  return *static_cast<InputState*>(glfwGetWindowUserPointer(window));
-}
-
-void onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods*/) {
-  if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
-  InputState& input = inputOf(window);
-  OrbitControls& controls = *input.controls;
-  int height = 0;
-  glfwGetWindowSize(window, nullptr, &height);
-  switch (key) {
-    case GLFW_KEY_ESCAPE:
-    case GLFW_KEY_Q:
-      glfwSetWindowShouldClose(window, GLFW_TRUE);
-      return;
-    case GLFW_KEY_R:
-      controls.reset();
-      break;
-    case GLFW_KEY_UP:
-      controls.rotateByDrag(0, kPanPixelsPerKey, height);
-      break;
-    case GLFW_KEY_DOWN:
-      controls.rotateByDrag(0, -kPanPixelsPerKey, height);
-      break;
-    case GLFW_KEY_LEFT:
-      controls.rotateByDrag(kPanPixelsPerKey, 0, height);
-      break;
-    case GLFW_KEY_RIGHT:
-      controls.rotateByDrag(-kPanPixelsPerKey, 0, height);
-      break;
-    case GLFW_KEY_EQUAL:  // '+' is shift + '=' on most layouts
-    case GLFW_KEY_KP_ADD:
-      controls.zoom(1);
-      break;
-    case GLFW_KEY_MINUS:
-    case GLFW_KEY_KP_SUBTRACT:
-      controls.zoom(-1);
-      break;
-    default:
-      return;
-  }
-  input.changed = true;
-}
-
-void onScroll(GLFWwindow* window, double /*dx*/, double dy) {
-  InputState& input = inputOf(window);
-  input.controls->zoom(dy);
-  input.changed = true;
-}
-
-void onMouseButton(GLFWwindow* window, int button, int action, int mods) {
-  InputState& input = inputOf(window);
-  const bool down = action == GLFW_PRESS;
-  if (button == GLFW_MOUSE_BUTTON_LEFT) {
-    input.leftDown = down;
-    input.shiftDrag = down && (mods & GLFW_MOD_SHIFT) != 0;
-  } else if (button == GLFW_MOUSE_BUTTON_RIGHT) {
-    input.rightDown = down;
-  }
-  // The position from the last motion event, not the pointer's now: events may lag the pointer.
-  if (down && !input.cursorKnown) glfwGetCursorPos(window, &input.lastX, &input.lastY);
-  input.cursorKnown = true;
-}
-
-void onCursor(GLFWwindow* window, double x, double y) {
-  InputState& input = inputOf(window);
-  const double dx = x - input.lastX, dy = y - input.lastY;
-  input.lastX = x;
-  input.lastY = y;
-  input.cursorKnown = true;
-  if (input.rightDown || (input.leftDown && input.shiftDrag)) {
-    input.controls->tiltByDrag(dx, dy);
-  } else if (input.leftDown) {
-    int height = 0;
-    glfwGetWindowSize(window, nullptr, &height);
-    input.controls->rotateByDrag(dx, dy, height);
-  } else {
-    return;
-  }
-  input.changed = true;
-}
-
-void onRepaintNeeded(GLFWwindow* window) { inputOf(window).changed = true; }
-void onFramebufferSize(GLFWwindow* window, int, int) { inputOf(window).changed = true; }
-
-// The HUD for now: position, tiles, and what collision did this frame.
+// The window title: position, tiles, and what collision did this frame.
 std::string titleFor(const camera::CameraPose& pose, size_t tiles, bool loading,
                      const camera::CollisionState& collision) {
   char text[320];
@@ -147,6 +64,71 @@ std::string formatPose(const camera::CameraPose& pose) {
   return text;
 }
 
+std::filesystem::path shown(const std::filesystem::path& path) {
+  std::error_code error;
+  const std::filesystem::path absolute = std::filesystem::absolute(path, error);
+  return error ? path : absolute;
+}
+
+void writeRecordedPath(const std::filesystem::path& directory,
+                       const std::vector<PathKeyframe>& keyframes) {
+  const std::filesystem::path path = timestampedPath(directory, "globe-path", ".json");
+  if (auto written = io::writeFileAtomically(path, pathJson(keyframes)); !written) {
+    std::fprintf(stderr, "globe view: cannot write the path: %s\n", written.error().c_str());
+    return;
+  }
+  std::printf("wrote path %s (%zu keyframes)\n", shown(path).string().c_str(), keyframes.size());
+  std::fflush(stdout);
+}
+
+// Reads the frame drawn into the back buffer (before the swap) and writes it as a PNG.
+void writeScreenshot(const std::filesystem::path& directory, int width, int height) {
+  const std::filesystem::path path = timestampedPath(directory, "globe-shot", ".png");
+  const std::vector<uint8_t> pixels = render::readPixelsRgba(width, height);
+  if (auto written = io::writePngAtomically(path, pixels, width, height); !written) {
+    std::fprintf(stderr, "globe view: cannot write the screenshot: %s\n", written.error().c_str());
+    return;
+  }
+  std::printf("wrote screenshot %s\n", shown(path).string().c_str());
+  std::fflush(stdout);
+}
+
+// The status block at the top left and, when shown, the help under it; larger on tall windows.
+std::vector<render::HudTextBlock> hudBlocks(std::vector<std::string> status, bool help,
+                                            int heightPixels) {
+  std::vector<render::HudTextBlock> blocks(1);
+  blocks[0].lines = std::move(status);
+  blocks[0].scale = heightPixels >= 600 ? 2.0f : 1.0f;
+  if (help) {
+    render::HudTextBlock helpBlock;
+    helpBlock.lines = hudHelpLines();
+    helpBlock.scale = blocks[0].scale;
+    helpBlock.topLeftPixels =
+        blocks[0].topLeftPixels + glm::vec2(0.0f, render::hudBlockSizePixels(blocks[0]).y + 8.0f);
+    helpBlock.textRgba = {1.0f, 1.0f, 0.75f, 1.0f};
+    blocks.push_back(std::move(helpBlock));
+  }
+  return blocks;
+}
+
+// The point of the drawn terrain under window pixel (x, y), by marching the pixel's ray.
+std::optional<glm::dvec3> pickTerrain(TerrainScene& scene, const camera::CameraPose& pose,
+                                      glm::dvec2 pixel, GLFWwindow* window, double fovYRadians) {
+  int width = 0, height = 0;
+  glfwGetWindowSize(window, &width, &height);
+  const geo::Ellipsoid& ellipsoid = scene.ellipsoid();
+  const camera::CameraFrame frame = camera::cameraFrame(ellipsoid, pose);
+  const glm::dvec3 ray = pixelRayEcef(frame, pixel.x, pixel.y, width, height, fovYRadians);
+  const collision::RenderingTileArray& array = scene.renderingTileArray();
+  return intersectTerrain(ellipsoid, frame.positionEcefMeters, ray,
+                          [&](double lon, double lat) -> std::optional<double> {
+                            const auto surface = collision::surfaceHeightAt(
+                                array, ellipsoid, lon, lat, collision::SurfaceModel::Exact);
+                            if (!surface || !surface->found) return std::nullopt;
+                            return surface->heightMeters;
+                          });
+}
+
 }  // namespace
 
 Result<ViewReport> runView(const ViewOptions& options) {
@@ -165,6 +147,8 @@ Result<ViewReport> runView(const ViewOptions& options) {
   // Declared after the window: destroyed before its context goes.
   auto renderer = render::TerrainRenderer::create({});
   if (!renderer) return Error{renderer.error()};
+  auto hud = render::HudRenderer::create({});
+  if (!hud) return Error{hud.error()};
   if (options.imagery) {
     auto image = io::loadImageRgba(*options.imagery);
     if (!image) return Error{image.error()};
@@ -173,64 +157,167 @@ Result<ViewReport> runView(const ViewOptions& options) {
       return Error{set.error()};
     }
   }
+  std::error_code directoryError;
+  if (!options.recordDirectory.empty()) {
+    std::filesystem::create_directories(options.recordDirectory, directoryError);
+  }
 
-  OrbitControls controls((*scene)->ellipsoid(), options.pose, options.scene.fovYRadians);
+  const geo::Ellipsoid& ellipsoid = (*scene)->ellipsoid();
+  const double fovY = options.scene.fovYRadians;
+  OrbitControls controls(ellipsoid, options.pose, fovY);
   camera::CameraController controller(options.pose);
-  InputState input;
-  input.controls = &controls;
+  ViewInput input;
+  input.orbit = &controls;
   GLFWwindow* handle = (*window)->window();
-  glfwSetWindowUserPointer(handle, &input);
-  glfwSetKeyCallback(handle, onKey);
-  glfwSetScrollCallback(handle, onScroll);
-  glfwSetMouseButtonCallback(handle, onMouseButton);
-  glfwSetCursorPosCallback(handle, onCursor);
-  glfwSetWindowRefreshCallback(handle, onRepaintNeeded);
-  glfwSetFramebufferSizeCallback(handle, onFramebufferSize);
+  installViewCallbacks(handle, input);
+  PathRecorder recorder;
+  std::optional<FlyToAnimation> flyTo;
+  Clock::time_point flyToStart{};
+  // Fly mode's wanted orientation: kept when a move is stopped, so no look is lost.
+  camera::CameraPose flyLook = controller.pose();
 
   const bool continuous = options.frames > 0;
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   auto lastChange = start, lastDraw = start, lastUpdate = start;
+  const auto secondsAt = [&](Clock::time_point t) {
+    return std::chrono::duration<double>(t - start).count();
+  };
   ViewReport report;
   std::vector<geo::TileId> drawnTiles;
   std::string title;
+  std::vector<std::string> drawnHud;  // the HUD's status lines drawn, frame time aside
+  bool drawnHelp = false;
+  double frameMilliseconds = 0;
   bool loading = true, wasComplete = false, tilesChanged = false;
   while (!(*window)->shouldClose()) {
     const int width = (*window)->framebufferWidthPixels();
     const int height = (*window)->framebufferHeightPixels();
     const bool visible = width > 0 && height > 0;  // not minimised
     if (visible && (input.changed || loading || continuous)) {
-      const auto now = std::chrono::steady_clock::now();
+      const auto now = Clock::now();
       bool redraw = input.changed || continuous;
       if (input.changed) lastChange = now;
       input.changed = false;
-      // The controller moves the camera to the pose the controls ask for, checked by QOTCD
-      // against the tiles drawn now, and corrects it (stop, slide, heighten, raise).
       const double dtSeconds =
           std::clamp(std::chrono::duration<double>(now - lastUpdate).count(), 0.0, 0.1);
       lastUpdate = now;
-      if (!samePose(controls.pose(), controller.pose())) controller.propose(controls.pose());
-      controller.setNearPlane(
-          {camera::projectionForHeight(0, controller.settings().clearance.eyeMeters,
-                                       options.scene.fovYRadians, 1, (*scene)->ellipsoid())
-               .nearMeters,
-           options.scene.fovYRadians, static_cast<double>(width) / std::max(height, 1)});
+
+      // One-shot requests.
+      if (input.recordToggleRequested) {
+        input.recordToggleRequested = false;
+        if (recorder.recording()) {
+          writeRecordedPath(options.recordDirectory,
+                            recorder.stop(secondsAt(now), controller.pose()));
+        } else {
+          recorder.start(secondsAt(now), controller.pose());
+          std::printf("recording the path (P again stops and writes it)\n");
+          std::fflush(stdout);
+        }
+      }
+      if (input.userMoved) flyTo.reset();  // the user takes over
+      input.userMoved = false;
+      if (input.doubleClickPixels) {
+        if (const auto target =
+                pickTerrain(**scene, controller.pose(), *input.doubleClickPixels, handle, fovY)) {
+          const camera::CameraPose end = flyToEndPose(ellipsoid, controller.pose(), *target);
+          flyTo.emplace(ellipsoid, controller.pose(), end, FlyToSettings{}.durationSeconds);
+          flyToStart = now;
+        }
+        input.doubleClickPixels.reset();
+      }
+      const bool reset = input.resetRequested;
+      input.resetRequested = false;
+
+      // This frame's move, proposed to the controller, which checks it against the tiles drawn
+      // now (QOTCD) and corrects it (stop, slide, heighten, raise).
+      if (reset) {
+        controls.reset();
+        controller.propose(controls.home());
+      } else if (flyTo) {
+        const double elapsed = std::chrono::duration<double>(now - flyToStart).count();
+        controller.propose(flyTo->poseAt(elapsed));
+        if (flyTo->finishedAt(elapsed)) flyTo.reset();
+        input.changed = true;
+      } else if (input.mode == ViewMode::Fly) {
+        if (input.lookDxPixels != 0 || input.lookDyPixels != 0) {
+          flyLook = lookByPixels(flyLook, input.lookDxPixels, input.lookDyPixels);
+        }
+        if (input.lookHeadingRadians != 0 || input.lookPitchRadians != 0) {
+          flyLook = lookByRadians(flyLook, input.lookHeadingRadians, input.lookPitchRadians);
+        }
+        input.lookDxPixels = input.lookDyPixels = 0;
+        input.lookHeadingRadians = input.lookPitchRadians = 0;
+        camera::CameraPose wanted = flyLook;
+        wanted.position = controller.pose().position;
+        if (input.flyKeys.moving()) {
+          const glm::dvec3 velocity =
+              flyVelocityEcef(ellipsoid, wanted, input.flyKeys, controller.state().clearanceMeters,
+                              input.speedFactor);
+          controller.propose(flyStep(ellipsoid, wanted, velocity, dtSeconds),
+                             camera::MotionKind::Linear);
+          input.changed = true;  // keep flying while the key is held
+        } else if (!samePose(wanted, controller.pose())) {
+          controller.propose(wanted);  // a turn on the spot
+        }
+      } else if (!samePose(controls.pose(), controller.pose())) {
+        controller.propose(controls.pose());
+      }
+      controller.setNearPlane({camera::projectionForHeight(
+                                   0, controller.settings().clearance.eyeMeters, fovY, 1, ellipsoid)
+                                   .nearMeters,
+                               fovY, static_cast<double>(width) / std::max(height, 1)});
       const camera::CollisionState& collisionState =
-          controller.update(dtSeconds, (*scene)->renderingTileArray(), (*scene)->ellipsoid());
+          controller.update(dtSeconds, (*scene)->renderingTileArray(), ellipsoid);
       if (!samePose(controls.pose(), controller.pose())) controls.adoptPose(controller.pose());
+      if (input.mode != ViewMode::Fly || flyTo || reset) flyLook = controller.pose();
       // The controls scale zoom steps by the height above the terrain the controller found.
       if (collisionState.terrainFound) controls.setGroundHeight(collisionState.terrainHeightMeters);
       // A smooth raise over new, finer terrain takes a few frames: keep updating until done.
       if (collisionState.raisedForNewTerrain) input.changed = true;
+      recorder.sample(secondsAt(now), controller.pose());
       const FrameInfo info = (*scene)->update(controller.pose(), width, height, **renderer);
       tilesChanged =
           tilesChanged || info.arrived > 0 || info.uploaded > 0 || (*scene)->tiles() != drawnTiles;
       loading = !info.complete;
-      redraw = redraw || (tilesChanged && (!loading || now - lastDraw >= kLoadingRedrawInterval));
+      const bool throttled = loading && now - lastDraw < kLoadingRedrawInterval;
+      redraw = redraw || (tilesChanged && !throttled);
+
+      // The HUD: redrawn when what it says changes (the frame time alone does not count).
+      HudState hudState;
+      hudState.mode = input.mode;
+      hudState.pose = controller.pose();
+      hudState.collision = collisionState;
+      hudState.tilesDrawn = (*scene)->tiles().size();
+      hudState.tilesLoading = info.requests;
+      hudState.flySpeedMetersPerSecond = flySpeedMetersPerSecond(
+          collisionState.clearanceMeters, input.flyKeys.fast, input.speedFactor);
+      hudState.speedFactor = input.speedFactor;
+      hudState.recording = recorder.recording();
+      hudState.keyframes = recorder.keyframes().size();
+      hudState.flyingTo = flyTo.has_value();
+      std::vector<std::string> hudKey = hudStatusLines(hudState, false);
+      const bool hudChanged = hudKey != drawnHud || input.helpVisible != drawnHelp;
+      redraw = redraw || (hudChanged && !throttled) || input.screenshotRequested;
+
       if (redraw) {
+        const auto drawStart = Clock::now();
         tilesChanged = false;
         lastDraw = now;
+        if (hudChanged || continuous) {
+          hudState.frameMilliseconds = frameMilliseconds;
+          (*hud)->setBlocks(hudBlocks(hudStatusLines(hudState), input.helpVisible, height));
+          drawnHud = std::move(hudKey);
+          drawnHelp = input.helpVisible;
+        }
         (*scene)->draw(**renderer);
+        (*hud)->draw(width, height);
+        if (input.screenshotRequested) {
+          input.screenshotRequested = false;
+          writeScreenshot(options.recordDirectory, width, height);
+        }
         (*window)->swapBuffers();
+        frameMilliseconds =
+            std::chrono::duration<double, std::milli>(Clock::now() - drawStart).count();
         ++report.framesDrawn;
         drawnTiles = (*scene)->tiles();
         if (std::string next =
@@ -241,12 +328,10 @@ Result<ViewReport> runView(const ViewOptions& options) {
         }
       }
       if (options.log && info.complete && !wasComplete) {
-        std::printf(
-            "view complete: %zu tiles, %.0f ms after the last change, frame %d\n",
-            drawnTiles.size(),
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - lastChange)
-                .count(),
-            report.framesDrawn);
+        std::printf("view complete: %zu tiles, %.0f ms after the last change, frame %d\n",
+                    drawnTiles.size(),
+                    std::chrono::duration<double, std::milli>(Clock::now() - lastChange).count(),
+                    report.framesDrawn);
         std::fflush(stdout);
       }
       wasComplete = info.complete;
@@ -266,6 +351,10 @@ Result<ViewReport> runView(const ViewOptions& options) {
     }
   }
 
+  if (recorder.recording()) {  // closed while recording: keep what was flown
+    writeRecordedPath(options.recordDirectory,
+                      recorder.stop(secondsAt(Clock::now()), controller.pose()));
+  }
   report.finalPose = controller.pose();
   if (options.screenshot) {
     // The back buffer is undefined after a swap: draw the last frame again and read it back.

@@ -1,5 +1,6 @@
-// `globe view`: the interactive window (GLFW) with orbit controls, driven by TerrainScene. It
-// redraws only when the camera moved, a tile arrived or the window changed, so idling is free.
+// `globe view`: the interactive window (GLFW): orbit and fly modes through the camera controller,
+// a HUD, path recording and screenshots. It redraws only when the camera moved, a tile arrived, the
+// HUD's text or the window changed, so idling is free.
 #pragma once
 
 #include <chrono>
@@ -25,8 +26,12 @@ struct ViewOptions {
   std::optional<std::filesystem::path> imagery;  // equirectangular world image to drape
   SceneOptions scene;
   int frames = 0;  // > 0: redraw continuously and quit after this many frames (tests, timing)
-  std::optional<std::filesystem::path> screenshot;  // the last frame as a PNG, written on exit
+  // The last frame as a PNG, written on exit: the terrain alone, without the HUD (K/F12 keep it).
+  std::optional<std::filesystem::path> screenshot;
   bool log = false;  // print when the view becomes complete, and the final camera on exit
+  // Where P (recorded paths, globe-path-*.json) and K/F12 (screenshots, globe-shot-*.png) write;
+  // empty: the current directory.
+  std::filesystem::path recordDirectory;
 };
 
 struct ViewReport {
@@ -34,7 +39,8 @@ struct ViewReport {
   camera::CameraPose finalPose;
 };
 
-// Opens the window and runs until it is closed (Esc, Q, the close button) or `frames` are drawn.
+// Opens the window and runs until it is closed (Esc, the close button) or `frames` are drawn.
+// The keys and mouse actions are listed in docs/view-controls.md and the help overlay (H).
 // Fails without a display (GLFW cannot initialise) or when the pyramid cannot be opened.
 Result<ViewReport> runView(const ViewOptions& options);
 

@@ -1,5 +1,7 @@
 // `globe view`: orbit-control math, and the real window under Xvfb: a screenshot shows terrain,
-// keys and the scroll wheel zoom, Escape quits, and an idle window uses almost no CPU.
+// keys and the scroll wheel zoom, Escape quits, an idle window uses almost no CPU; fly mode moves
+// the camera and keeps it above the terrain, the HUD is drawn, P records a path, double-click
+// flies to a point.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -8,6 +10,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <string>
 
@@ -277,6 +280,222 @@ TEST(GlobeViewWindow, CameraBelowTheTerrainIsRaisedAboveTheDrawnSurface) {
   EXPECT_GT(surface, 3700);
   EXPECT_GE(height, surface + 1.0) << "the hard floor is 1 m above the drawn surface";
   EXPECT_LE(height, surface + 2.5) << "raised to the clearance, not launched";
+}
+
+}  // namespace
+
+namespace {
+
+struct LoggedCamera {
+  double lon = 0, lat = 0, height = -1;
+  bool found = false;
+};
+
+// The "camera LON,LAT,HEIGHT,..." line `globe view --log` prints on exit.
+LoggedCamera loggedCamera(const std::string& output) {
+  LoggedCamera camera;
+  const size_t at = ("\n" + output).find("\ncamera ");
+  if (at == std::string::npos) return camera;
+  camera.found = std::sscanf(output.c_str() + at, "camera %lf,%lf,%lf", &camera.lon, &camera.lat,
+                             &camera.height) == 3;
+  return camera;
+}
+
+// The drawn surface's height at a position, from `globe query --mode exact`.
+double surfaceHeightMeters(double lon, double lat) {
+  char position[64];
+  std::snprintf(position, sizeof position, "%.7f,%.7f", lon, lat);
+  const ShellRun ground =
+      runShell("echo " + std::string(position) + " | " + std::string(GLOBE_EXE) + " query " +
+               globe::tiler::testing::bundledPyramid().string() + " --mode exact");
+  double qLon = 0, qLat = 0, level = 0, surface = -1e9;
+  if (std::sscanf(ground.output.c_str(), "%lf,%lf,%lf,%lf", &qLon, &qLat, &level, &surface) != 4)
+    ADD_FAILURE() << ground.output;
+  return surface;
+}
+
+// The path after "wrote <what> " in the log (the file `globe view` says it wrote).
+std::string writtenFile(const std::string& output, const std::string& what) {
+  const std::string marker = "wrote " + what + " ";
+  const size_t at = output.find(marker);
+  if (at == std::string::npos) return {};
+  const size_t end = output.find_first_of(" \n", at + marker.size());
+  return output.substr(at + marker.size(), end - at - marker.size());
+}
+
+// Fly mode from 300 m above Mount Fuji's southern slope, heading north and a little down: holding
+// W flies north (only north), the controller keeps the camera above the drawn surface, and with
+// the key up the window idles.
+TEST(GlobeViewWindow, FlyModeWFliesForwardAndStaysAboveTheTerrain) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const ShellRun run = runUnderXvfb(
+      "view-fly",
+      globeView("--size 640x360 --log --camera 138.7275,35.25,1000,0,-5,0 > log.txt &\n") +
+          "VIEW=$!\n" + kFindWindow +
+          "xdotool key --window $WID f\n"
+          "xdotool keydown --window $WID w\n"
+          "sleep 1.5\n"
+          "xdotool keyup --window $WID w\n"
+          // Keys up, the camera still: fly mode and its HUD idle like orbit mode.
+          "sleep 0.5\n"
+          "read -r _ _ _ _ _ _ _ _ _ _ _ _ _ u0 s0 _ < /proc/$PID/stat\n"
+          "sleep 2\n"
+          "read -r _ _ _ _ _ _ _ _ _ _ _ _ _ u1 s1 _ < /proc/$PID/stat\n"
+          "echo idle_ticks=$((u1 + s1 - u0 - s0))\n"
+          "echo ticks_per_second=$(getconf CLK_TCK)\n"
+          "xdotool keydown --window $WID Escape\n"
+          "wait $VIEW; echo exit=$?\n"
+          "cat log.txt\n");
+  const auto values = valuesOf(run.output);
+  ASSERT_EQ(values.count("exit"), 1u) << run.output;
+  EXPECT_EQ(values.at("exit"), "0") << run.output;
+  const LoggedCamera camera = loggedCamera(run.output);
+  ASSERT_TRUE(camera.found) << run.output;
+  const double northMeters = (camera.lat - 35.25) * 111000;
+  std::printf("flew %.0f m north in fly mode; %.1f m above the surface\n", northMeters,
+              camera.height - surfaceHeightMeters(camera.lon, camera.lat));
+  RecordProperty("fly_north_meters", std::to_string(northMeters));
+  EXPECT_GT(northMeters, 100) << "about 300 m/s for 1.5 s: hundreds of metres\n" << run.output;
+  EXPECT_NEAR(camera.lon, 138.7275, 1e-5) << "heading north: no sideways motion\n" << run.output;
+  EXPECT_LT(camera.height, 1000) << "pitched 5 deg down: lower\n" << run.output;
+  EXPECT_GE(camera.height, surfaceHeightMeters(camera.lon, camera.lat) + 1.0) << run.output;
+  ASSERT_EQ(values.count("idle_ticks"), 1u) << run.output;
+  const double idleSeconds =
+      std::stod(values.at("idle_ticks")) / std::stod(values.at("ticks_per_second"));
+  std::printf("CPU during 2 s idle in fly mode: %.2f s\n", idleSeconds);
+  EXPECT_LT(idleSeconds, 0.2) << run.output;
+}
+
+// H shows the help and K takes a screenshot with the HUD: its top-left corner has text where the
+// same view without the HUD (--screenshot on exit) has none.
+TEST(GlobeViewWindow, HudIsDrawnAndKTakesAScreenshot) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const auto dir = globe::tiler::testing::freshTempDir("view-hud-shots");
+  const auto plain = dir / "plain.png";
+  const ShellRun run = runUnderXvfb(
+      "view-hud",
+      globeView("--size 640x360 --log --record-dir " + dir.string() + " --screenshot " +
+                plain.string() + " --camera 138.73,35.36,50000 > log.txt &\n") +
+          "VIEW=$!\n" + kFindWindow +
+          "xdotool key --window $WID h\n"
+          "xdotool key --window $WID k\n"
+          "for i in $(seq 200); do grep -q 'wrote screenshot' log.txt && break; sleep 0.1; done\n"
+          "xdotool keydown --window $WID Escape\n"
+          "wait $VIEW; echo exit=$?\n"
+          "cat log.txt\n");
+  const auto values = valuesOf(run.output);
+  ASSERT_EQ(values.count("exit"), 1u) << run.output;
+  EXPECT_EQ(values.at("exit"), "0") << run.output;
+  const std::string shot = writtenFile(run.output, "screenshot");
+  ASSERT_FALSE(shot.empty()) << run.output;
+  EXPECT_EQ(std::filesystem::path(shot).parent_path(), dir) << shot;
+  EXPECT_EQ(std::filesystem::path(shot).filename().string().substr(0, 11), "globe-shot-") << shot;
+  auto withHud = globe::io::loadImageRgba(shot);
+  auto without = globe::io::loadImageRgba(plain);
+  ASSERT_TRUE(withHud) << withHud.error();
+  ASSERT_TRUE(without) << without.error();
+  ASSERT_EQ(withHud->widthPixels, 640);
+  ASSERT_EQ(without->widthPixels, 640);
+  // Text pixels (white status, light-yellow help) in the status and the help areas.
+  const auto textPixels = [](const globe::io::ImageRgba& image, int y0, int y1) {
+    size_t count = 0;
+    for (int y = y0; y < y1; ++y) {
+      for (int x = 0; x < 400; ++x) {
+        const uint8_t* p = &image.pixels[static_cast<size_t>(y * image.widthPixels + x) * 4];
+        if (p[0] >= 220 && p[1] >= 220 && p[2] >= 150) ++count;
+      }
+    }
+    return count;
+  };
+  std::printf("text pixels with the HUD: status %zu, help %zu; without: %zu, %zu\n",
+              textPixels(*withHud, 0, 100), textPixels(*withHud, 110, 280),
+              textPixels(*without, 0, 100), textPixels(*without, 110, 280));
+  EXPECT_GT(textPixels(*withHud, 0, 100), textPixels(*without, 0, 100) + 500) << run.output;
+  EXPECT_GT(textPixels(*withHud, 110, 280), textPixels(*without, 110, 280) + 500) << run.output;
+  size_t differing = 0;
+  for (size_t k = 0; k < withHud->pixels.size(); k += 4) {
+    if (std::abs(withHud->pixels[k] - without->pixels[k]) > 40) ++differing;
+  }
+  EXPECT_GT(differing, 5000u) << "the HUD's boxes darken the corner";
+  EXPECT_LT(differing, 640u * 360 / 2) << "the rest of the view is the same";
+}
+
+// P starts recording, W flies, P stops and writes a path file `globe play` reads.
+TEST(GlobeViewWindow, PRecordsTheFlownPathAsJson) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const auto dir = globe::tiler::testing::freshTempDir("view-record-paths");
+  const ShellRun run = runUnderXvfb(
+      "view-record",
+      globeView("--size 640x360 --log --record-dir " + dir.string() +
+                " --camera 138.60,35.20,2500,0,0,0 > log.txt &\n") +
+          "VIEW=$!\n" + kFindWindow +
+          "xdotool key --window $WID Tab\n"
+          "xdotool key --window $WID p\n"
+          "xdotool keydown --window $WID w\n"
+          "sleep 1.2\n"
+          "xdotool keyup --window $WID w\n"
+          "xdotool key --window $WID p\n"
+          "for i in $(seq 200); do grep -q 'wrote path' log.txt && break; sleep 0.1; done\n"
+          "xdotool keydown --window $WID Escape\n"
+          "wait $VIEW; echo exit=$?\n"
+          "cat log.txt\n");
+  const auto values = valuesOf(run.output);
+  ASSERT_EQ(values.count("exit"), 1u) << run.output;
+  EXPECT_EQ(values.at("exit"), "0") << run.output;
+  const std::string file = writtenFile(run.output, "path");
+  ASSERT_FALSE(file.empty()) << run.output;
+  EXPECT_EQ(std::filesystem::path(file).parent_path(), dir) << file;
+  const std::string name = std::filesystem::path(file).filename().string();
+  EXPECT_EQ(name.size(), std::string("globe-path-YYYYMMDD-HHMMSS.json").size()) << name;
+  std::ifstream in(file);
+  const auto json = nlohmann::json::parse(in, nullptr, false);
+  ASSERT_FALSE(json.is_discarded()) << file;
+  EXPECT_EQ(json.at("interpolation"), "smooth");
+  const auto& keyframes = json.at("keyframes");
+  ASSERT_GE(keyframes.size(), 2u) << json.dump();
+  for (size_t k = 0; k < keyframes.size(); ++k) {
+    for (const char* field : {"t", "lon", "lat", "height", "heading", "pitch", "roll"})
+      EXPECT_TRUE(keyframes[k].at(field).is_number()) << field;
+    if (k > 0) {
+      EXPECT_GT(keyframes[k].at("t"), keyframes[k - 1].at("t")) << json.dump();
+    }
+  }
+  EXPECT_DOUBLE_EQ(keyframes.front().at("t").get<double>(), 0.0);
+  EXPECT_NEAR(keyframes.front().at("lat").get<double>(), 35.20, 1e-6) << json.dump();
+  EXPECT_GT(keyframes.back().at("lat").get<double>(), 35.21) << "flew north\n" << json.dump();
+  EXPECT_NEAR(keyframes.back().at("lon").get<double>(), 138.60, 1e-5) << json.dump();
+}
+
+// In orbit mode a double-click flies towards the point under the cursor (up and right of the
+// centre: north-east) and closer to it.
+TEST(GlobeViewWindow, DoubleClickFliesToThePoint) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const ShellRun run = runUnderXvfb(
+      "view-double-click",
+      globeView("--size 640x360 --log --camera 138.5,35.2,60000,0,-90,0 > log.txt &\n") +
+          "VIEW=$!\n" + kFindWindow +
+          "T0=$(xdotool getwindowname $WID)\n"
+          "xdotool mousemove --window $WID 480 90 click --window $WID --repeat 2 --delay 80 1\n"
+          // Until the title has changed and then stays the same for 0.5 s (the flight ended).
+          "LAST=$T0\n"
+          "for i in $(seq 60); do sleep 0.5; T=$(xdotool getwindowname $WID); "
+          "[ \"$T\" != \"$T0\" ] && [ \"$T\" = \"$LAST\" ] && break; LAST=$T; done\n"
+          "xdotool keydown --window $WID Escape\n"
+          "wait $VIEW; echo exit=$?\n"
+          "cat log.txt\n");
+  const auto values = valuesOf(run.output);
+  ASSERT_EQ(values.count("exit"), 1u) << run.output;
+  EXPECT_EQ(values.at("exit"), "0") << run.output;
+  const LoggedCamera camera = loggedCamera(run.output);
+  ASSERT_TRUE(camera.found) << run.output;
+  EXPECT_GT(camera.lon, 138.6) << run.output;
+  EXPECT_GT(camera.lat, 35.25) << run.output;
+  EXPECT_LT(camera.height, 30000) << "0.3 of the way from 60 km up\n" << run.output;
+  EXPECT_GE(camera.height, surfaceHeightMeters(camera.lon, camera.lat) + 1.0) << run.output;
 }
 
 }  // namespace

@@ -1,0 +1,79 @@
+// Fly-mode maths: directions in the local east-north-up frame, speed from the clearance, look.
+#include "app/fly_controls.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+
+#include "geo/ecef.hpp"
+
+namespace globe::app {
+
+bool FlyKeys::moving() const { return forward != back || left != right || down != up; }
+
+double flySpeedMetersPerSecond(double clearanceMeters, bool fast, double factor,
+                               const FlySettings& settings) {
+  const double clearance = std::isfinite(clearanceMeters) ? std::max(clearanceMeters, 0.0) : 0.0;
+  const double speed = std::max(settings.minimumSpeedMetersPerSecond,
+                                settings.speedPerClearancePerSecond * clearance);
+  return speed * factor * (fast ? settings.fastFactor : 1.0);
+}
+
+glm::dvec3 flyDirectionEnu(const FlyKeys& keys, double headingRadians, double pitchRadians) {
+  const double sh = std::sin(headingRadians), ch = std::cos(headingRadians);
+  const double sp = std::sin(pitchRadians), cp = std::cos(pitchRadians);
+  const glm::dvec3 forward(cp * sh, cp * ch, sp);  // the view direction
+  const glm::dvec3 right(ch, -sh, 0.0);            // horizontal, 90 deg clockwise of the heading
+  const glm::dvec3 up(0.0, 0.0, 1.0);
+  glm::dvec3 direction(0.0);
+  if (keys.forward) direction += forward;
+  if (keys.back) direction -= forward;
+  if (keys.right) direction += right;
+  if (keys.left) direction -= right;
+  if (keys.up) direction += up;
+  if (keys.down) direction -= up;
+  const double length = glm::length(direction);
+  return length > 1e-12 ? direction / length : glm::dvec3(0.0);
+}
+
+glm::dvec3 flyVelocityEcef(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& pose,
+                           const FlyKeys& keys, double clearanceMeters, double factor,
+                           const FlySettings& settings) {
+  const glm::dvec3 d = flyDirectionEnu(keys, pose.headingRadians, pose.pitchRadians);
+  const camera::EastNorthUp enu = camera::eastNorthUp(ellipsoid, pose.position);
+  const double speed = flySpeedMetersPerSecond(clearanceMeters, keys.fast, factor, settings);
+  return speed * (d.x * enu.east + d.y * enu.north + d.z * enu.up);
+}
+
+camera::CameraPose flyStep(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& pose,
+                           const glm::dvec3& velocityEcefMetersPerSecond, double dtSeconds) {
+  const glm::dvec3 displacement = velocityEcefMetersPerSecond * dtSeconds;
+  if (!(glm::length(displacement) > 0.0)) return pose;
+  const auto moved = geo::ecefToCartographic(
+      ellipsoid, geo::cartographicToEcef(ellipsoid, pose.position) + displacement);
+  if (!moved) return pose;
+  camera::CameraPose next = pose;
+  next.position = *moved;
+  return next;
+}
+
+camera::CameraPose lookByPixels(const camera::CameraPose& pose, double dxPixels, double dyPixels,
+                                const FlySettings& settings) {
+  return lookByRadians(pose, dxPixels * settings.lookRadiansPerPixel,
+                       -dyPixels * settings.lookRadiansPerPixel, settings);
+}
+
+camera::CameraPose lookByRadians(const camera::CameraPose& pose, double headingRadians,
+                                 double pitchRadians, const FlySettings& settings) {
+  constexpr double kTwoPi = 2 * std::numbers::pi;
+  camera::CameraPose next = pose;
+  next.headingRadians = std::fmod(pose.headingRadians + headingRadians, kTwoPi);
+  if (next.headingRadians < 0) next.headingRadians += kTwoPi;
+  next.pitchRadians = std::clamp(pose.pitchRadians + pitchRadians, -settings.maximumPitchRadians,
+                                 settings.maximumPitchRadians);
+  return next;
+}
+
+}  // namespace globe::app

@@ -1,0 +1,58 @@
+// Fly-mode camera controls for `globe view`: WASD/QE move along the view (ENU frame), speed scales
+// with the height above the terrain, the mouse turns heading and pitch. Pure math, no GLFW.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include "camera/camera_pose.hpp"
+#include "geo/cartographic.hpp"
+#include "geo/ellipsoid.hpp"
+
+namespace globe::app {
+
+// The movement keys held now.
+struct FlyKeys {
+  bool forward = false, back = false, left = false, right = false;
+  bool down = false, up = false;
+  bool fast = false;  // Shift
+  bool moving() const;
+};
+
+struct FlySettings {
+  double minimumSpeedMetersPerSecond = 2.0;
+  double speedPerClearancePerSecond = 1.0;  // speed = clearance * this, at least the minimum
+  double fastFactor = 5.0;                  // Shift
+  double lookRadiansPerPixel = 0.003;
+  double maximumPitchRadians = geo::degreesToRadians(89);  // either way from the horizon
+};
+
+// Speed for this clearance above the terrain (negative clearances count as 0), times `factor`
+// (the user's scroll-wheel speed factor) and the fast factor with Shift.
+double flySpeedMetersPerSecond(double clearanceMeters, bool fast, double factor = 1.0,
+                               const FlySettings& settings = {});
+
+// The unit direction (east, north, up) the held keys move in: W/S along the view direction
+// (heading and pitch), A/D along the horizontal right, E/Q along the local up; zero when the keys
+// cancel or none is held.
+glm::dvec3 flyDirectionEnu(const FlyKeys& keys, double headingRadians, double pitchRadians);
+
+// The ECEF velocity (m/s) for the pose and keys at this clearance.
+glm::dvec3 flyVelocityEcef(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& pose,
+                           const FlyKeys& keys, double clearanceMeters, double factor = 1.0,
+                           const FlySettings& settings = {});
+
+// The pose `dtSeconds` of flight later: the position moved in a straight line (ECEF) by the
+// velocity, heading and pitch kept. The pose itself when nothing moves or the move is undefined.
+camera::CameraPose flyStep(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& pose,
+                           const glm::dvec3& velocityEcefMetersPerSecond, double dtSeconds);
+
+// Mouse look: a drag (or a captured-cursor motion) of dx, dy pixels turns the heading right for
+// dx > 0 and tilts the view up for dy < 0 (window y points down); the pitch is clamped and the
+// heading wrapped into [0, 2 pi).
+camera::CameraPose lookByPixels(const camera::CameraPose& pose, double dxPixels, double dyPixels,
+                                const FlySettings& settings = {});
+// The same by angles (arrow keys).
+camera::CameraPose lookByRadians(const camera::CameraPose& pose, double headingRadians,
+                                 double pitchRadians, const FlySettings& settings = {});
+
+}  // namespace globe::app

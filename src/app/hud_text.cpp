@@ -1,0 +1,80 @@
+// The HUD's status and help text, formatted from the camera, the collision state and the tiles.
+#include "app/hud_text.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "collision/collision_response.hpp"
+#include "geo/cartographic.hpp"
+
+namespace globe::app {
+namespace {
+
+std::string format(const char* pattern, auto... values) {
+  char text[256];
+  std::snprintf(text, sizeof text, pattern, values...);
+  return text;
+}
+
+// Metres with fewer decimals the larger they are: 1.25 m, 312.4 m, 41236 m.
+std::string meters(double value) {
+  const double magnitude = std::abs(value);
+  return format(magnitude < 100 ? "%.2f m" : magnitude < 10000 ? "%.1f m" : "%.0f m", value);
+}
+
+double headingDegrees(double radians) {
+  double degrees = std::fmod(geo::radiansToDegrees(radians), 360.0);
+  if (degrees < 0) degrees += 360.0;
+  return degrees >= 359.95 ? 0.0 : degrees;
+}
+
+}  // namespace
+
+const char* toString(ViewMode mode) { return mode == ViewMode::Fly ? "FLY" : "ORBIT"; }
+
+std::vector<std::string> hudStatusLines(const HudState& s, bool withFrameTime) {
+  std::vector<std::string> lines;
+  std::string mode = std::string(toString(s.mode)) + (s.flyingTo ? " (flying to)" : "");
+  if (s.mode == ViewMode::Fly) {
+    mode += format("  speed %.1f m/s (x%g)", s.flySpeedMetersPerSecond, s.speedFactor);
+  }
+  lines.push_back(mode);
+  lines.push_back(format("lon %.5f  lat %.5f  height ", s.pose.position.longitudeDegrees(),
+                         s.pose.position.latitudeDegrees()) +
+                  meters(s.pose.position.heightMeters));
+  lines.push_back(
+      "terrain " +
+      (s.collision.terrainFound ? meters(s.collision.terrainHeightMeters) : std::string("-")) +
+      "  clearance " + meters(s.collision.clearanceMeters));
+  lines.push_back(format("heading %.1f  pitch %.1f", headingDegrees(s.pose.headingRadians),
+                         geo::radiansToDegrees(s.pose.pitchRadians)));
+  lines.push_back(s.collision.collided
+                      ? "COLLISION " + std::string(collision::toString(s.collision.response))
+                      : std::string("collision none"));
+  std::string tiles = format("tiles %zu drawn, %zu loading", s.tilesDrawn, s.tilesLoading);
+  if (withFrameTime && s.frameMilliseconds > 0) {
+    tiles += format("  frame %.1f ms (%.0f fps)", s.frameMilliseconds, 1000 / s.frameMilliseconds);
+  }
+  lines.push_back(tiles);
+  if (s.recording) lines.push_back(format("REC  %zu keyframes  (P stops)", s.keyframes));
+  lines.push_back("H: help");
+  return lines;
+}
+
+std::vector<std::string> hudHelpLines() {
+  return {
+      "F / Tab      switch orbit <-> fly",
+      "orbit:  left-drag rotates the globe, right- or Shift-drag tilts and turns",
+      "        scroll or +/- zooms, arrows pan, double-click flies to the point",
+      "fly:    W/S forward/back, A/D left/right, E/Q up/down, Shift x5",
+      "        drag (either button) or arrows look, scroll changes the speed",
+      "        speed = max(2 m/s, clearance per second)",
+      "P            start/stop recording the path (globe-path-*.json)",
+      "K / F12      screenshot (globe-shot-*.png)",
+      "R            back to the start camera",
+      "H / F1       this help",
+      "Esc          quit",
+  };
+}
+
+}  // namespace globe::app

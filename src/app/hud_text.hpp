@@ -1,0 +1,38 @@
+// What the `globe view` HUD says: the always-on status lines and the help overlay. Pure text; the
+// loop redraws only when the text (frame time aside) changes.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "camera/camera_controller.hpp"
+#include "camera/camera_pose.hpp"
+
+namespace globe::app {
+
+enum class ViewMode { Orbit, Fly };
+const char* toString(ViewMode mode);
+
+struct HudState {
+  ViewMode mode = ViewMode::Orbit;
+  camera::CameraPose pose;
+  camera::CollisionState collision;  // the controller's last update
+  size_t tilesDrawn = 0;
+  size_t tilesLoading = 0;             // wanted by the view and not resident yet
+  double frameMilliseconds = 0;        // the last frame drawn; 0: not known yet
+  double flySpeedMetersPerSecond = 0;  // shown in fly mode
+  double speedFactor = 1;              // the scroll-wheel factor, shown in fly mode
+  bool recording = false;
+  size_t keyframes = 0;  // recorded so far
+  bool flyingTo = false;
+};
+
+// The status lines, e.g. "lon 138.73000  lat 35.36000  height 4123 m". With withFrameTime false
+// the frame time is left out: what the loop compares to decide whether the HUD changed.
+std::vector<std::string> hudStatusLines(const HudState& state, bool withFrameTime = true);
+
+// The help overlay: every key and mouse action.
+std::vector<std::string> hudHelpLines();
+
+}  // namespace globe::app

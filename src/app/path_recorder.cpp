@@ -1,0 +1,113 @@
+// Keyframes from the camera's motion, their JSON, and time-stamped file names.
+#include "app/path_recorder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <numbers>
+#include <system_error>
+
+namespace globe::app {
+namespace {
+
+bool samePose(const camera::CameraPose& a, const camera::CameraPose& b) {
+  return a.position.longitudeRadians == b.position.longitudeRadians &&
+         a.position.latitudeRadians == b.position.latitudeRadians &&
+         a.position.heightMeters == b.position.heightMeters &&
+         a.headingRadians == b.headingRadians && a.pitchRadians == b.pitchRadians &&
+         a.rollRadians == b.rollRadians;
+}
+
+double headingDegrees(double radians) {
+  double degrees = std::fmod(geo::radiansToDegrees(radians), 360.0);
+  if (degrees < 0) degrees += 360.0;
+  return degrees >= 360.0 ? 0.0 : degrees;
+}
+
+}  // namespace
+
+void PathRecorder::start(double nowSeconds, const camera::CameraPose& pose) {
+  recording_ = true;
+  startSeconds_ = nowSeconds;
+  keyframes_.clear();
+  keyframes_.push_back({0.0, pose});
+  last_ = pose;
+  lastSeconds_ = nowSeconds;
+  moving_ = false;
+}
+
+void PathRecorder::append(double nowSeconds, const camera::CameraPose& pose) {
+  const double t = nowSeconds - startSeconds_;
+  if (!keyframes_.empty() && t <= keyframes_.back().tSeconds + 1e-3) {
+    // Not after the last one: within 1 ms it replaces it, earlier ones are dropped.
+    if (t >= keyframes_.back().tSeconds - 1e-3) keyframes_.back().pose = pose;
+    return;
+  }
+  keyframes_.push_back({t, pose});
+}
+
+void PathRecorder::sample(double nowSeconds, const camera::CameraPose& pose) {
+  if (!recording_) return;
+  const bool moved = !samePose(pose, last_);
+  // The loop samples only while something happens: a long gap means the camera stood still.
+  const bool gap = nowSeconds - lastSeconds_ > kGapSeconds;
+  if (moved && (!moving_ || gap)) {
+    // Moving again after standing still: hold the old pose until the motion resumed.
+    append(lastSeconds_, last_);
+    append(std::max(lastSeconds_, nowSeconds - kResumeSeconds), last_);
+  } else if (!moved && moving_) {
+    append(nowSeconds, pose);  // a stop
+  }
+  if (moved && nowSeconds - startSeconds_ >= keyframes_.back().tSeconds + kIntervalSeconds) {
+    append(nowSeconds, pose);
+  }
+  moving_ = moved;
+  last_ = pose;
+  lastSeconds_ = nowSeconds;
+}
+
+std::vector<PathKeyframe> PathRecorder::stop(double nowSeconds, const camera::CameraPose& pose) {
+  if (!recording_) return {};
+  sample(nowSeconds, pose);
+  append(nowSeconds, pose);  // the path lasts until it was stopped
+  recording_ = false;
+  return std::move(keyframes_);
+}
+
+std::string pathJson(const std::vector<PathKeyframe>& keyframes) {
+  std::string json = "{\"interpolation\": \"smooth\", \"keyframes\": [";
+  for (size_t k = 0; k < keyframes.size(); ++k) {
+    const camera::CameraPose& p = keyframes[k].pose;
+    char line[320];
+    std::snprintf(line, sizeof line,
+                  "%s\n  {\"t\": %.3f, \"lon\": %.8f, \"lat\": %.8f, \"height\": %.3f, "
+                  "\"heading\": %.4f, \"pitch\": %.4f, \"roll\": %.4f}",
+                  k == 0 ? "" : ",", keyframes[k].tSeconds,
+                  geo::radiansToDegrees(geo::wrapLongitudeRadians(p.position.longitudeRadians)),
+                  p.position.latitudeDegrees(), p.position.heightMeters,
+                  headingDegrees(p.headingRadians), geo::radiansToDegrees(p.pitchRadians),
+                  geo::radiansToDegrees(p.rollRadians));
+    json += line;
+  }
+  json += "\n]}\n";
+  return json;
+}
+
+std::filesystem::path timestampedPath(const std::filesystem::path& directory,
+                                      const std::string& prefix, const std::string& extension) {
+  const std::time_t now = std::time(nullptr);
+  std::tm local{};
+  localtime_r(&now, &local);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
+  const std::string base = prefix + "-" + stamp;
+  std::filesystem::path path = directory / (base + extension);
+  std::error_code error;
+  for (int n = 2; std::filesystem::exists(path, error) && n < 1000; ++n) {
+    path = directory / (base + "-" + std::to_string(n) + extension);
+  }
+  return path;
+}
+
+}  // namespace globe::app

@@ -1,0 +1,66 @@
+// What `globe play` records per frame and how it is written: log.csv (deterministic: fixed
+// precision, no timings), timing.csv (wall clock) and the summary.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "camera/camera_pose.hpp"
+#include "collision/collision_response.hpp"
+
+namespace globe::app {
+
+struct FrameTimings {
+  double selectMs = 0;     // scene updates: selection, mesh building, uploads
+  double loadMs = 0;       // waiting for tile loads
+  double collisionMs = 0;  // the camera controller (QOTCD + response)
+  double drawMs = 0;       // draw and read-back
+  double writeMs = 0;      // PNG encoding and writing
+  double totalMs = 0;
+};
+
+enum class TerrainSource { Drawn, Nadir, Finest };
+std::string_view toString(TerrainSource source);  // drawn | nadir | finest
+
+struct FrameRecord {
+  int frame = 0;
+  double timeSeconds = 0;
+  camera::CameraPose pose;          // after the controller: what is drawn
+  double scriptedHeightMeters = 0;  // the path's height at this time
+  // The exact surface under the camera of the tile the controller's array holds there (drawn, or
+  // only added for collision where the nadir is out of view); where the array holds none, the
+  // finest pyramid tile's. terrainSource says which.
+  double terrainHeightMeters = 0;
+  TerrainSource terrainSource = TerrainSource::Finest;
+  double clearanceMeters = 0;      // pose height - terrain height
+  double nearClearanceMeters = 0;  // the lowest near-plane corner above the drawn surface
+  bool collided = false;           // any response this frame
+  collision::Response response = collision::Response::None;
+  size_t tilesDrawn = 0;
+  FrameTimings timings;
+};
+
+// frame,time_s,lon_deg,lat_deg,height_m,terrain_height_m,clearance_m,collided,response,
+// tiles_drawn,terrain_source,heading_deg,pitch_deg,roll_deg,scripted_height_m,near_clearance_m
+// (terrain_source: drawn | nadir | finest)
+std::string formatPlayLog(const std::vector<FrameRecord>& frames);
+// frame,select_ms,load_ms,collision_ms,draw_ms,write_ms,total_ms
+std::string formatTimingLog(const std::vector<FrameRecord>& frames);
+
+struct PlaySummary {
+  int frames = 0;
+  int collisionFrames = 0;
+  int firstCollisionFrame = -1;
+  double minimumClearanceMeters = 0;
+  int minimumClearanceFrame = -1;
+  double medianFrameMs = 0, p90FrameMs = 0, maximumFrameMs = 0;
+  double medianSelectMs = 0, medianLoadMs = 0, medianDrawMs = 0;
+};
+PlaySummary summarize(const std::vector<FrameRecord>& frames);
+std::string formatSummary(const PlaySummary& summary, const std::vector<FrameRecord>& frames);
+
+// The q-quantile (0..1, nearest rank) of the values; 0 for none.
+double quantile(std::vector<double> values, double q);
+
+}  // namespace globe::app

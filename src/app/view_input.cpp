@@ -1,0 +1,234 @@
+// GLFW callbacks of `globe view`: keys by mode, drags, double-clicks, the scroll wheel.
+#define GLFW_INCLUDE_NONE
+#include "app/view_input.hpp"
+
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace globe::app {
+namespace {
+
+ViewInput& inputOf(GLFWwindow* window) {
+  return *static_cast<ViewInput*>(glfwGetWindowUserPointer(window));
+}
+
+int windowHeight(GLFWwindow* window) {
+  int height = 0;
+  glfwGetWindowSize(window, nullptr, &height);
+  return height;
+}
+
+void changeSpeed(ViewInput& input, double steps) {
+  input.speedFactor =
+      std::clamp(input.speedFactor * std::pow(kSpeedFactorPerStep, steps), 1.0 / 64, 64.0);
+}
+
+// Held movement keys; true when the key is one of them.
+bool trackFlyKey(FlyKeys& keys, int key, bool down) {
+  switch (key) {
+    case GLFW_KEY_W:
+      keys.forward = down;
+      return true;
+    case GLFW_KEY_S:
+      keys.back = down;
+      return true;
+    case GLFW_KEY_A:
+      keys.left = down;
+      return true;
+    case GLFW_KEY_D:
+      keys.right = down;
+      return true;
+    case GLFW_KEY_Q:
+      keys.down = down;
+      return true;
+    case GLFW_KEY_E:
+      keys.up = down;
+      return true;
+    case GLFW_KEY_LEFT_SHIFT:
+    case GLFW_KEY_RIGHT_SHIFT:
+      keys.fast = down;
+      return true;
+    default:
+      return false;
+  }
+}
+
+// Keys that do the same in both modes; false when the key is not one of them.
+bool commonKey(GLFWwindow* window, ViewInput& input, int key) {
+  switch (key) {
+    case GLFW_KEY_ESCAPE:
+      glfwSetWindowShouldClose(window, GLFW_TRUE);
+      return true;
+    case GLFW_KEY_F:
+    case GLFW_KEY_TAB:
+      input.mode = input.mode == ViewMode::Orbit ? ViewMode::Fly : ViewMode::Orbit;
+      input.lookDxPixels = input.lookDyPixels = 0;
+      input.userMoved = true;
+      return true;
+    case GLFW_KEY_R:
+      input.resetRequested = true;
+      input.userMoved = true;
+      return true;
+    case GLFW_KEY_P:
+      input.recordToggleRequested = true;
+      return true;
+    case GLFW_KEY_K:
+    case GLFW_KEY_F12:
+      input.screenshotRequested = true;
+      return true;
+    case GLFW_KEY_H:
+    case GLFW_KEY_F1:
+      input.helpVisible = !input.helpVisible;
+      return true;
+    default:
+      return false;
+  }
+}
+
+bool orbitKey(GLFWwindow* window, ViewInput& input, int key) {
+  OrbitControls& controls = *input.orbit;
+  switch (key) {
+    case GLFW_KEY_UP:
+      controls.rotateByDrag(0, kPanPixelsPerKey, windowHeight(window));
+      break;
+    case GLFW_KEY_DOWN:
+      controls.rotateByDrag(0, -kPanPixelsPerKey, windowHeight(window));
+      break;
+    case GLFW_KEY_LEFT:
+      controls.rotateByDrag(kPanPixelsPerKey, 0, windowHeight(window));
+      break;
+    case GLFW_KEY_RIGHT:
+      controls.rotateByDrag(-kPanPixelsPerKey, 0, windowHeight(window));
+      break;
+    case GLFW_KEY_EQUAL:  // '+' is shift + '=' on most layouts
+    case GLFW_KEY_KP_ADD:
+      controls.zoom(1);
+      break;
+    case GLFW_KEY_MINUS:
+    case GLFW_KEY_KP_SUBTRACT:
+      controls.zoom(-1);
+      break;
+    default:
+      return false;
+  }
+  input.userMoved = true;
+  return true;
+}
+
+bool flyKey(ViewInput& input, int key) {
+  switch (key) {
+    case GLFW_KEY_UP:
+      input.lookPitchRadians += kLookRadiansPerKey;
+      break;
+    case GLFW_KEY_DOWN:
+      input.lookPitchRadians -= kLookRadiansPerKey;
+      break;
+    case GLFW_KEY_LEFT:
+      input.lookHeadingRadians -= kLookRadiansPerKey;
+      break;
+    case GLFW_KEY_RIGHT:
+      input.lookHeadingRadians += kLookRadiansPerKey;
+      break;
+    case GLFW_KEY_EQUAL:
+    case GLFW_KEY_KP_ADD:
+      changeSpeed(input, 1);
+      break;
+    case GLFW_KEY_MINUS:
+    case GLFW_KEY_KP_SUBTRACT:
+      changeSpeed(input, -1);
+      break;
+    default:
+      return false;
+  }
+  input.userMoved = true;
+  return true;
+}
+
+void onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods*/) {
+  ViewInput& input = inputOf(window);
+  if (trackFlyKey(input.flyKeys, key, action != GLFW_RELEASE)) {
+    if (input.mode == ViewMode::Fly) input.userMoved = input.changed = true;
+    return;
+  }
+  if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
+  const bool handled =
+      (action == GLFW_PRESS && commonKey(window, input, key)) ||
+      (input.mode == ViewMode::Orbit ? orbitKey(window, input, key) : flyKey(input, key));
+  if (handled) input.changed = true;
+}
+
+void onScroll(GLFWwindow* window, double /*dx*/, double dy) {
+  ViewInput& input = inputOf(window);
+  if (input.mode == ViewMode::Orbit) {
+    input.orbit->zoom(dy);
+    input.userMoved = true;
+  } else {
+    changeSpeed(input, dy);
+  }
+  input.changed = true;
+}
+
+void onMouseButton(GLFWwindow* window, int button, int action, int mods) {
+  ViewInput& input = inputOf(window);
+  const bool down = action == GLFW_PRESS;
+  // The position from the last motion event, not the pointer's now: events may lag the pointer.
+  if (down && !input.cursorKnown) glfwGetCursorPos(window, &input.lastX, &input.lastY);
+  input.cursorKnown = true;
+  if (button == GLFW_MOUSE_BUTTON_LEFT) {
+    input.leftDown = down;
+    input.shiftDrag = down && (mods & GLFW_MOD_SHIFT) != 0;
+    if (down) {
+      const double now = glfwGetTime();
+      if (now - input.lastClickSeconds <= kDoubleClickSeconds &&
+          std::abs(input.lastX - input.lastClickX) <= kDoubleClickPixels &&
+          std::abs(input.lastY - input.lastClickY) <= kDoubleClickPixels) {
+        input.doubleClickPixels = glm::dvec2(input.lastX, input.lastY);
+        input.lastClickSeconds = -1;  // a third click starts a new pair
+        input.changed = true;
+      } else {
+        input.lastClickSeconds = now;
+        input.lastClickX = input.lastX;
+        input.lastClickY = input.lastY;
+      }
+    }
+  } else if (button == GLFW_MOUSE_BUTTON_RIGHT) {
+    input.rightDown = down;
+  }
+}
+
+void onCursor(GLFWwindow* window, double x, double y) {
+  ViewInput& input = inputOf(window);
+  const double dx = x - input.lastX, dy = y - input.lastY;
+  input.lastX = x;
+  input.lastY = y;
+  input.cursorKnown = true;
+  if (!input.leftDown && !input.rightDown) return;
+  if (input.mode == ViewMode::Fly) {
+    input.lookDxPixels += dx;
+    input.lookDyPixels += dy;
+  } else if (input.rightDown || input.shiftDrag) {
+    input.orbit->tiltByDrag(dx, dy);
+  } else {
+    input.orbit->rotateByDrag(dx, dy, windowHeight(window));
+  }
+  input.userMoved = input.changed = true;
+}
+
+void onRepaintNeeded(GLFWwindow* window) { inputOf(window).changed = true; }
+void onFramebufferSize(GLFWwindow* window, int, int) { inputOf(window).changed = true; }
+
+}  // namespace
+
+void installViewCallbacks(GLFWwindow* window, ViewInput& input) {
+  glfwSetWindowUserPointer(window, &input);
+  glfwSetKeyCallback(window, onKey);
+  glfwSetScrollCallback(window, onScroll);
+  glfwSetMouseButtonCallback(window, onMouseButton);
+  glfwSetCursorPosCallback(window, onCursor);
+  glfwSetWindowRefreshCallback(window, onRepaintNeeded);
+  glfwSetFramebufferSizeCallback(window, onFramebufferSize);
+}
+
+}  // namespace globe::app

@@ -1,0 +1,52 @@
+// `globe view`'s input: GLFW key, mouse and scroll callbacks that drive the orbit controls
+// directly and leave fly-mode motion, mode switches and one-shot actions for the loop to take.
+#pragma once
+
+#include <optional>
+
+#include <glm/vec2.hpp>
+
+#include "app/fly_controls.hpp"
+#include "app/hud_text.hpp"
+#include "app/orbit_controls.hpp"
+
+struct GLFWwindow;
+
+namespace globe::app {
+
+struct ViewInput {
+  OrbitControls* orbit = nullptr;
+  ViewMode mode = ViewMode::Orbit;
+  bool changed = true;     // something to update or redraw
+  bool userMoved = false;  // the user moved the camera (cancels a fly-to)
+
+  FlyKeys flyKeys;                            // held now (tracked in both modes, used in fly mode)
+  double lookDxPixels = 0, lookDyPixels = 0;  // fly: mouse look to apply
+  double lookHeadingRadians = 0, lookPitchRadians = 0;  // fly: arrow keys to apply
+  double speedFactor = 1;                               // fly: scroll wheel, +/-
+
+  // One-shot requests, cleared by the loop when taken.
+  bool resetRequested = false;
+  bool recordToggleRequested = false;
+  bool screenshotRequested = false;
+  std::optional<glm::dvec2> doubleClickPixels;  // window pixels, y down
+  bool helpVisible = false;
+
+  // Mouse state.
+  bool leftDown = false, rightDown = false, shiftDrag = false;
+  double lastX = 0, lastY = 0;
+  bool cursorKnown = false;
+  double lastClickSeconds = -1, lastClickX = 0, lastClickY = 0;
+};
+
+// Two left clicks this close in time and space are a double-click.
+inline constexpr double kDoubleClickSeconds = 0.4;
+inline constexpr double kDoubleClickPixels = 6;
+inline constexpr double kPanPixelsPerKey = 60;  // an orbit arrow key pans like a drag this long
+inline constexpr double kLookRadiansPerKey = 0.087;  // a fly arrow key turns 5 deg
+inline constexpr double kSpeedFactorPerStep = 1.25;
+
+// Sets the window's user pointer to `input` and installs the callbacks; `input` must outlive them.
+void installViewCallbacks(GLFWwindow* window, ViewInput& input);
+
+}  // namespace globe::app

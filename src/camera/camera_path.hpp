@@ -1,0 +1,48 @@
+// Scripted camera paths: keyframed poses and their interpolation in time, on the globe (ECEF
+// directions and quaternions, so ±180° and the poles need no special cases).
+#pragma once
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "camera/camera_pose.hpp"
+#include "geo/ellipsoid.hpp"
+
+namespace globe::camera {
+
+// Linear: positions along the great circle (slerp of the geodetic up directions) with the height
+// linear in time, orientations by shortest-arc quaternion slerp; continuous, corners at keys.
+// Smooth: C1 everywhere: the up direction by a cubic Hermite curve in R^3 renormalised, the
+// height by a monotone cubic (Fritsch-Butland: never overshoots its keys, so a path never dips
+// below both neighbouring keyframes' heights), the orientation by a cumulative quaternion Hermite
+// curve (Kim-Kim-Shin) with shortest-arc steps. Interior velocities are the three-point (Bessel)
+// estimates limited to twice the slower neighbouring segment's speed (a short, slow segment next
+// to a long, fast one does not swing out: no Catmull-Rom overshoot); the path starts and ends at
+// rest, and a repeated keyframe (a hold) stops it there.
+enum class PathInterpolation { Linear, Smooth };
+std::optional<PathInterpolation> parsePathInterpolation(std::string_view text);  // linear|smooth
+std::string_view toString(PathInterpolation interpolation);
+
+struct CameraKeyframe {
+  double timeSeconds = 0;
+  CameraPose pose;
+};
+
+// At least one keyframe, times strictly increasing, poses finite with |latitude| <= 90°
+// (io's path readers check all of it; samplePath returns a default pose for an empty path).
+struct CameraPath {
+  std::vector<CameraKeyframe> keyframes;
+  PathInterpolation interpolation = PathInterpolation::Smooth;
+
+  double startSeconds() const { return keyframes.empty() ? 0 : keyframes.front().timeSeconds; }
+  double endSeconds() const { return keyframes.empty() ? 0 : keyframes.back().timeSeconds; }
+};
+
+// The pose at a time: a keyframe's pose exactly (as given) at its time, the first before the
+// start (and for a non-finite time), the last after the end. Between keys the heading is in
+// (-180°, 180°] and the longitude in [-180°, 180°]; looking straight down the roll is folded into
+// the heading (the same view).
+CameraPose samplePath(const CameraPath& path, double timeSeconds, const geo::Ellipsoid& ellipsoid);
+
+}  // namespace globe::camera
