@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "app/imagery.hpp"
 #include "io/image_io.hpp"
 #include "render/osmesa_context.hpp"
 #include "render/read_pixels.hpp"
@@ -27,12 +28,8 @@ Result<SnapshotReport> runSnapshot(const SnapshotOptions& options) {
   auto renderer = render::TerrainRenderer::create({});
   if (!renderer) return Error{renderer.error()};
   if (options.imagery) {
-    auto image = io::loadImageRgba(*options.imagery);
-    if (!image) return Error{image.error()};
-    if (auto set = (*renderer)->setImagery(image->pixels, image->widthPixels, image->heightPixels);
-        !set) {
-      return Error{set.error()};
-    }
+    if (auto draped = drapeImagery(**renderer, *options.imagery); !draped)
+      return Error{draped.error()};
   }
   auto frame =
       (*scene)->updateUntilComplete(pose, options.widthPixels, options.heightPixels, **renderer,

@@ -15,6 +15,7 @@
 #include "app/fly_controls.hpp"
 #include "app/fly_to.hpp"
 #include "app/hud_text.hpp"
+#include "app/imagery.hpp"
 #include "app/orbit_controls.hpp"
 #include "app/path_recorder.hpp"
 #include "app/view_input.hpp"
@@ -150,12 +151,8 @@ Result<ViewReport> runView(const ViewOptions& options) {
   auto hud = render::HudRenderer::create({});
   if (!hud) return Error{hud.error()};
   if (options.imagery) {
-    auto image = io::loadImageRgba(*options.imagery);
-    if (!image) return Error{image.error()};
-    if (auto set = (*renderer)->setImagery(image->pixels, image->widthPixels, image->heightPixels);
-        !set) {
-      return Error{set.error()};
-    }
+    if (auto draped = drapeImagery(**renderer, *options.imagery); !draped)
+      return Error{draped.error()};
   }
   std::error_code directoryError;
   if (!options.recordDirectory.empty()) {

@@ -283,7 +283,6 @@ def main():
     sphere = median_of(bench, "BM_SphereTree")
     conv = med("BM_EcefToCartographic", 10)
     conv_sphere = med("BM_EcefToCartographicSphere", 10)
-    conv_sqrt = med("BM_EcefToCartographicSqrt", 10)
     own = median_of(bench, "BM_QotcdIndexedGeodetic")
     on_sphere = median_of(bench, "BM_QotcdIndexedOnSphere") or [float("nan")]
     exact_own = median_of(bench, "BM_ExactSurfaceGeodetic")

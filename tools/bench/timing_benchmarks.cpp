@@ -17,7 +17,6 @@
 #include "collision/sphere_tree.hpp"
 #include "geo/ecef.hpp"
 #include "tools/bench/bench_terrain.hpp"
-#include "tools/bench/sqrt_geodetic.hpp"
 
 namespace globe::bench {
 namespace {
@@ -236,16 +235,6 @@ void BM_EcefToCartographicSphere(benchmark::State& state) {
   });
 }
 
-void BM_EcefToCartographicSqrt(benchmark::State& state) {
-  const BenchArray* array = nullptr;
-  const std::vector<CameraQuery>* queries = nullptr;
-  if (!prepare(state, array, queries, false)) return;
-  const geo::Ellipsoid ellipsoid = shared().pyramid->ellipsoid();
-  runQueries(state, *queries, [&](const CameraQuery& camera) {
-    return sqrtEcefToCartographic(ellipsoid, camera.ecefMeters).heightMeters <= kClearanceMeters;
-  });
-}
-
 void BM_QotcdIndexedGeodetic(benchmark::State& state) {
   const BenchArray* array = nullptr;
   const std::vector<CameraQuery>* queries = nullptr;
@@ -312,7 +301,6 @@ void registerTimingBenchmarks(const std::filesystem::path& pyramidDirectory) {
   // Diagnostics (the conversion does not depend on the array: one size).
   registerSizes("BM_EcefToCartographic", &BM_EcefToCartographic, {10});
   registerSizes("BM_EcefToCartographicSphere", &BM_EcefToCartographicSphere, {10});
-  registerSizes("BM_EcefToCartographicSqrt", &BM_EcefToCartographicSqrt, {10});
   registerSizes("BM_QotcdIndexedGeodetic", &BM_QotcdIndexedGeodetic, kTileCounts);
   registerSizes("BM_ExactSurfaceGeodetic", &BM_ExactSurfaceGeodetic, kTileCounts);
   registerSizes("BM_QotcdIndexedOnSphere", &BM_QotcdIndexedOnSphere, kTileCounts);
