@@ -9,6 +9,25 @@ if(GLOBE_SANITIZE)
   add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
   add_link_options(-fsanitize=address,undefined)
 endif()
+option(GLOBE_SANITIZE_THREAD "Build with ThreadSanitizer (CI runs globe_loader_tests with it)" OFF)
+if(GLOBE_SANITIZE_THREAD)
+  if(GLOBE_SANITIZE)
+    message(FATAL_ERROR "GLOBE_SANITIZE and GLOBE_SANITIZE_THREAD cannot be combined")
+  endif()
+  add_compile_options(-fsanitize=thread -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=thread)
+endif()
+# libFuzzer targets in tests/fuzz (clang only): everything is instrumented for coverage and
+# built with ASan+UBSan; only the fuzz_* executables link the fuzzer's main.
+option(GLOBE_FUZZ "Build the libFuzzer targets (needs clang)" OFF)
+if(GLOBE_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "GLOBE_FUZZ=ON needs clang: -DCMAKE_CXX_COMPILER=clang++")
+  endif()
+  add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer
+    -fno-sanitize-recover=undefined)
+  add_link_options(-fsanitize=address,undefined)
+endif()
 
 # globe_module(NAME SOURCES... DEPENDS targets...): one static library per src/<module>.
 function(globe_module name)

@@ -12,3 +12,8 @@ $SUDO apt-get install -y -qq --no-install-recommends \
   libgtest-dev libgmock-dev libbenchmark-dev libtinyxml2-dev ffmpeg \
   python3-glad time xvfb xdotool x11-apps imagemagick gnuplot-nox python3-matplotlib mesa-utils \
   >/dev/null
+# Optional: clang with libFuzzer for the fuzz targets (tests/fuzz, -DGLOBE_FUZZ=ON). CI does not
+# need it: the corpora replay under g++ and the sanitizer builds use g++'s libasan/libtsan.
+if [ "${GLOBE_INSTALL_FUZZ:-0}" = 1 ]; then
+  $SUDO apt-get install -y -qq --no-install-recommends clang libclang-rt-14-dev >/dev/null
+fi

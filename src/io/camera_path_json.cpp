@@ -55,8 +55,8 @@ Result<PathKeyframe> readKeyframe(const json& object, const std::string& where,
   if (!object.is_object()) {
     return fail("", "expected a keyframe object, got " + std::string(typeName(object)));
   }
-  for (const auto& [key, value] : object.items()) {
-    (void)value;
+  for (const auto& item : object.items()) {
+    const std::string& key = item.key();  // not a structured binding: clang 14 cannot capture one
     const bool known = key == "aboveTerrain" ||
                        std::any_of(kNumberFields.begin(), kNumberFields.end(),
                                    [&](const NumberField& field) { return key == field.name; });

@@ -167,6 +167,16 @@ void decodeBlock(std::span<const std::byte> bytes, std::span<int16_t> heights) {
 Result<Pack> decodePack(std::span<const std::byte> bytes, const std::filesystem::path& path) {
   auto index = decodePackIndex(bytes, bytes.size(), path);
   if (!index) return Error{index.error()};
+  // Pack::empty holds every slot's block: bound what a (small) hostile header can make us allocate.
+  const uint64_t memoryBytes = uint64_t{index->layout.slotCount()} * index->layout.blockBytes();
+  if (memoryBytes > kPackMaximumMemoryBytes) {
+    return packError(path, "pack of " + std::to_string(index->layout.tilesPerSide) + "x" +
+                               std::to_string(index->layout.tilesPerSide) + " tiles of " +
+                               std::to_string(index->layout.verticesPerSide) +
+                               " vertices would need " + std::to_string(memoryBytes >> 20) +
+                               " MiB in memory (more than " +
+                               std::to_string(kPackMaximumMemoryBytes >> 20) + " MiB)");
+  }
   const size_t body = bytes.size() - 4;
   if (crc32(bytes.first(body)) != loadBigEndian32(&bytes[body])) {
     return packError(path, "CRC mismatch (corrupt pack)");

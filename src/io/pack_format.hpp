@@ -26,6 +26,8 @@ namespace globe::io {
 inline constexpr uint32_t kPackFormatVersion = 1;
 inline constexpr size_t kPackHeaderBytes = 40;
 inline constexpr size_t kPackEntryBytes = 16;
+// decodePack refuses a pack whose in-memory blocks (all P×P slots) would exceed this.
+inline constexpr uint64_t kPackMaximumMemoryBytes = uint64_t{1} << 30;
 
 struct PackId {
   uint32_t level = 0;

@@ -1,13 +1,44 @@
 #include "io/pyramid_manifest.hpp"
 
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <stdexcept>
+#include <type_traits>
 
 namespace globe::io {
 namespace {
 
 using nlohmann::json;
+
+// An integer field out of its type's range (or not an integer at all, e.g. 1e64): nlohmann's
+// get<T>() would cast it with undefined behaviour, so every integer goes through integerOf.
+struct FieldError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+template <class T>
+T integerOf(const json& value) {
+  constexpr auto lowest = std::numeric_limits<T>::min();
+  constexpr auto highest = std::numeric_limits<T>::max();
+  bool inRange = false;
+  if (value.is_number_unsigned()) {
+    inRange = value.get<uint64_t>() <= static_cast<uint64_t>(highest);
+  } else if (value.is_number_integer()) {
+    const auto signedValue = value.get<int64_t>();
+    if constexpr (std::is_signed_v<T>) {
+      inRange = signedValue >= int64_t{lowest} && signedValue <= int64_t{highest};
+    } else {
+      inRange = signedValue >= 0 && static_cast<uint64_t>(signedValue) <= uint64_t{highest};
+    }
+  }
+  if (!inRange) {
+    throw FieldError("expected an integer in " + std::to_string(lowest) + ".." +
+                     std::to_string(highest) + ", got " + value.dump());
+  }
+  return static_cast<T>(value.get<int64_t>());
+}
 
 json boundsToJson(const BoundsDegrees& b) {
   return {{"west", b.west}, {"south", b.south}, {"east", b.east}, {"north", b.north}};
@@ -23,7 +54,7 @@ json rangeToJson(const terrain::HeightRange& r) {
 }
 
 terrain::HeightRange rangeFromJson(const json& j) {
-  return {j.at(0).get<int16_t>(), j.at(1).get<int16_t>()};
+  return {integerOf<int16_t>(j.at(0)), integerOf<int16_t>(j.at(1))};
 }
 
 }  // namespace
@@ -79,12 +110,12 @@ Result<PyramidManifest> manifestFromJson(std::string_view text, const std::files
   if (j.is_discarded()) return makeError(path.string() + ": not valid JSON");
   try {
     if (j.at("format").get<std::string>() != "globe-pyramid" ||
-        j.at("formatVersion").get<int>() != 1) {
+        integerOf<int>(j.at("formatVersion")) != 1) {
       return makeError(path.string() + ": not a globe pyramid manifest of format version 1");
     }
     PyramidManifest m;
-    m.verticesPerSide = j.at("blockSize").get<uint32_t>();
-    m.packTilesPerSide = j.at("packTilesPerSide").get<uint32_t>();
+    m.verticesPerSide = integerOf<uint32_t>(j.at("blockSize"));
+    m.packTilesPerSide = integerOf<uint32_t>(j.at("packTilesPerSide"));
     if (!terrain::isValidBlockSize(m.verticesPerSide)) {
       return makeError(path.string() + ": blockSize " + std::to_string(m.verticesPerSide) +
                        " is not 2^k+1 (3..1025)");
@@ -97,15 +128,16 @@ Result<PyramidManifest> manifestFromJson(std::string_view text, const std::files
     m.globeModel = *model;
     for (const json& level : j.at("levels")) {
       LevelInfo info;
-      info.level = level.at("level").get<uint32_t>();
+      info.level = integerOf<uint32_t>(level.at("level"));
       if (info.level != m.levels.size()) {
         return makeError(path.string() + ": levels must be listed 0, 1, 2, ... without gaps");
       }
-      info.tileCount = level.at("tiles").get<uint64_t>();
+      info.tileCount = integerOf<uint64_t>(level.at("tiles"));
       info.bounds = boundsFromJson(level.at("boundsDegrees"));
       info.heightRange = rangeFromJson(level.at("heightRangeMeters"));
       for (const json& pack : level.at("packs")) {
-        info.packs.push_back({info.level, pack.at(0).get<uint32_t>(), pack.at(1).get<uint32_t>()});
+        info.packs.push_back(
+            {info.level, integerOf<uint32_t>(pack.at(0)), integerOf<uint32_t>(pack.at(1))});
       }
       m.levels.push_back(std::move(info));
     }
@@ -115,13 +147,15 @@ Result<PyramidManifest> manifestFromJson(std::string_view text, const std::files
     for (const json& source : j.at("sources")) {
       m.sources.push_back(
           {source.at("path").get<std::string>(), source.at("format").get<std::string>(),
-           source.at("columns").get<int64_t>(), source.at("rows").get<int64_t>(),
+           integerOf<int64_t>(source.at("columns")), integerOf<int64_t>(source.at("rows")),
            source.at("stepDegrees").get<double>(), boundsFromJson(source.at("boundsDegrees")),
-           source.at("finestLevel").get<uint32_t>()});
+           integerOf<uint32_t>(source.at("finestLevel"))});
     }
     return m;
   } catch (const json::exception& e) {
     return makeError(path.string() + ": missing or malformed field (" + e.what() + ")");
+  } catch (const FieldError& e) {
+    return makeError(path.string() + ": malformed integer field (" + e.what() + ")");
   }
 }
 

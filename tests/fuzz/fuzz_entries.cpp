@@ -1,0 +1,86 @@
+// Fuzz entry points: bytes in, parser called, result inspected; the path parsers read a temp file.
+#include "fuzz_entries.hpp"
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <span>
+#include <string>
+
+#include "io/camera_path_file.hpp"
+#include "io/gtopo30_header.hpp"
+#include "io/pack_format.hpp"
+#include "io/pyramid_manifest.hpp"
+
+namespace globe::fuzz {
+namespace {
+
+std::string_view asText(const uint8_t* data, size_t size) {
+  return {reinterpret_cast<const char*>(data), size};
+}
+
+// A per-process file in the temp folder: the path readers take a path, not text.
+std::filesystem::path writeTemp(const uint8_t* data, size_t size, const char* extension) {
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("globe-fuzz-" + std::to_string(::getpid()) + extension);
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+  return path;
+}
+
+void touch(const Result<io::CameraPathFile>& result) {
+  if (result) {
+    volatile size_t n = result->keyframes.size();
+    (void)n;
+  } else {
+    volatile size_t n = result.error().size();
+    (void)n;
+  }
+}
+
+}  // namespace
+
+void gtopo30Header(const uint8_t* data, size_t size) {
+  auto header = io::parseGtopo30Header(asText(data, size), "fuzz.HDR");
+  if (header) (void)io::formatGtopo30Header(*header);
+}
+
+void pack(const uint8_t* data, size_t size) {
+  const std::span<const std::byte> bytes(reinterpret_cast<const std::byte*>(data), size);
+  auto whole = io::decodePack(bytes, "fuzz.pack");
+  if (whole) (void)io::encodePack(*whole);
+  // The streaming reader's path: the head and index only, against the same and a larger file.
+  (void)io::decodePackIndex(bytes, size, "fuzz.pack");
+  (void)io::decodePackIndex(bytes.first(size / 2), size, "fuzz.pack");
+}
+
+void manifest(const uint8_t* data, size_t size) {
+  auto result = io::manifestFromJson(asText(data, size), "fuzz/manifest.json");
+  if (result) (void)io::manifestToJson(*result);
+}
+
+void pathJson(const uint8_t* data, size_t size) {
+  const auto path = writeTemp(data, size, ".json");
+  touch(io::readCameraPathJson(path));
+  std::error_code ignored;
+  std::filesystem::remove(path, ignored);
+}
+
+void pathKml(const uint8_t* data, size_t size) {
+  const auto path = writeTemp(data, size, ".kml");
+  touch(io::readKmlTour(path));
+  std::error_code ignored;
+  std::filesystem::remove(path, ignored);
+}
+
+Entry entryNamed(std::string_view target) {
+  if (target == "gtopo30_header") return gtopo30Header;
+  if (target == "pack") return pack;
+  if (target == "manifest") return manifest;
+  if (target == "path_json") return pathJson;
+  if (target == "path_kml") return pathKml;
+  return nullptr;
+}
+
+}  // namespace globe::fuzz

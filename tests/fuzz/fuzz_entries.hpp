@@ -1,0 +1,21 @@
+// Fuzz entry points: one per parser, shared by the libFuzzer targets and the corpus replay test.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+namespace globe::fuzz {
+
+// Each feeds arbitrary bytes to one parser; any outcome but a crash, leak or UB is a pass.
+void gtopo30Header(const uint8_t* data, size_t size);
+void pack(const uint8_t* data, size_t size);
+void manifest(const uint8_t* data, size_t size);
+void pathJson(const uint8_t* data, size_t size);
+void pathKml(const uint8_t* data, size_t size);
+
+// The entry for a corpus folder name (gtopo30_header, pack, ...), or nullptr.
+using Entry = void (*)(const uint8_t*, size_t);
+Entry entryNamed(std::string_view target);
+
+}  // namespace globe::fuzz
