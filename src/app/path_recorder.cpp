@@ -11,14 +11,6 @@
 namespace globe::app {
 namespace {
 
-bool samePose(const camera::CameraPose& a, const camera::CameraPose& b) {
-  return a.position.longitudeRadians == b.position.longitudeRadians &&
-         a.position.latitudeRadians == b.position.latitudeRadians &&
-         a.position.heightMeters == b.position.heightMeters &&
-         a.headingRadians == b.headingRadians && a.pitchRadians == b.pitchRadians &&
-         a.rollRadians == b.rollRadians;
-}
-
 double headingDegrees(double radians) {
   double degrees = std::fmod(geo::radiansToDegrees(radians), 360.0);
   if (degrees < 0) degrees += 360.0;
@@ -49,7 +41,7 @@ void PathRecorder::append(double nowSeconds, const camera::CameraPose& pose) {
 
 void PathRecorder::sample(double nowSeconds, const camera::CameraPose& pose) {
   if (!recording_) return;
-  const bool moved = !samePose(pose, last_);
+  const bool moved = !camera::samePose(pose, last_);
   // The loop samples only while something happens: a long gap means the camera stood still.
   const bool gap = nowSeconds - lastSeconds_ > kGapSeconds;
   if (moved && (!moving_ || gap)) {

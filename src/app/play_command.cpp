@@ -34,14 +34,6 @@ double msSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-bool samePose(const camera::CameraPose& a, const camera::CameraPose& b) {
-  return a.position.longitudeRadians == b.position.longitudeRadians &&
-         a.position.latitudeRadians == b.position.latitudeRadians &&
-         a.position.heightMeters == b.position.heightMeters &&
-         a.headingRadians == b.headingRadians && a.pitchRadians == b.pitchRadians &&
-         a.rollRadians == b.rollRadians;
-}
-
 // A directory removed on scope exit unless kept: frames of a run that fails never remain.
 class PartialDirectory {
  public:
@@ -240,7 +232,7 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
       }
       const camera::CameraPose before = controller.pose();
       player.collide(controller, 0.0, record);
-      settled = samePose(before, controller.pose());
+      settled = camera::samePose(before, controller.pose());
     }
     if (!settled) {
       if (auto view = player.completeView(controller.pose(), record.timings); !view) {

@@ -76,14 +76,13 @@ Result<std::unique_ptr<TerrainScene>> TerrainScene::open(const std::filesystem::
 }
 
 Result<void> TerrainScene::uploadIfNeeded(const geo::TileId& tile,
+                                          const terrain::HeightBlock& block,
                                           render::TerrainRenderer& renderer) {
   gpuLastUsedFrame_[tile] = frame_;
   if (renderer.hasTile(tile)) return {};
-  auto block = loader_->get(tile);
-  if (!block) return makeError("internal: selected tile is not resident");
   const uint32_t n = store_->manifest().verticesPerSide;
   const auto mesh = terrain::buildTileMesh(
-      tile, *block, ellipsoid_, terrain::recommendedSkirtDepthMeters(tile.level, n, ellipsoid_));
+      tile, block, ellipsoid_, terrain::recommendedSkirtDepthMeters(tile.level, n, ellipsoid_));
   return renderer.uploadTile(tile, mesh);
 }
 
@@ -152,7 +151,7 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   for (const geo::TileId& tile : selection.tiles) {
     const bool onGpu = renderer.hasTile(tile);
     auto block = loader_->get(tile);
-    if (block && uploadIfNeeded(tile, renderer)) {
+    if (block && uploadIfNeeded(tile, *block, renderer)) {
       tiles_.push_back(tile);
       arrayTiles.push_back(collision::makeArrayTile(tile, *block));
       blocks_.push_back(std::move(block));
@@ -167,15 +166,15 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   for (const geo::TileId& tile : tiles_) nadirLevels = std::max(nadirLevels, tile.level);
   nadirLevels = std::min(nadirLevels, store_->manifest().maxLevel());
   const double lon = pose.position.longitudeRadians, lat = pose.position.latitudeRadians;
-  collision::RenderingTileArray drawnOnly;
-  drawnOnly.assign(arrayTiles);
-  if (drawnOnly.lookupIndexed(lon, lat).tile == nullptr) {
+  array_.assign(arrayTiles);
+  if (array_.lookupIndexed(lon, lat).tile == nullptr) {
     for (uint32_t level = std::min(nadirLevels, options_.maximumLoadLevel) + 1; level-- > 0;) {
       const auto tile = geo::GeographicTilingScheme::positionToTile(lon, lat, level);
       if (!tile) break;
       if (auto block = loader_->isResident(*tile) ? loader_->get(*tile) : nullptr) {
         arrayTiles.push_back(collision::makeArrayTile(*tile, *block));
         blocks_.push_back(std::move(block));
+        array_.assign(std::move(arrayTiles));  // rebuilt only in this rare case
         break;
       }
       auto entry = store_->entry(*tile);
@@ -185,7 +184,6 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
     }
     if (!requests.empty()) loader_->request(requests);
   }
-  array_.assign(std::move(arrayTiles));
   // Free GPU memory of tiles not drawn for a while, oldest first, once over the budget.
   if (gpuLastUsedFrame_.size() > options_.gpuTileBudget) {
     std::vector<std::pair<uint64_t, geo::TileId>> byAge;

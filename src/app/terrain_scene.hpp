@@ -76,7 +76,8 @@ class TerrainScene {
 
  private:
   TerrainScene(std::unique_ptr<io::TileStore> store, const SceneOptions& options);
-  Result<void> uploadIfNeeded(const geo::TileId& tile, render::TerrainRenderer& renderer);
+  Result<void> uploadIfNeeded(const geo::TileId& tile, const terrain::HeightBlock& block,
+                              render::TerrainRenderer& renderer);
 
   SceneOptions options_;
   geo::Ellipsoid ellipsoid_;

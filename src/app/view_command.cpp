@@ -48,14 +48,6 @@ std::string titleFor(const camera::CameraPose& pose, size_t tiles, bool loading,
   return text;
 }
 
-bool samePose(const camera::CameraPose& a, const camera::CameraPose& b) {
-  return a.position.longitudeRadians == b.position.longitudeRadians &&
-         a.position.latitudeRadians == b.position.latitudeRadians &&
-         a.position.heightMeters == b.position.heightMeters &&
-         a.headingRadians == b.headingRadians && a.pitchRadians == b.pitchRadians &&
-         a.rollRadians == b.rollRadians;
-}
-
 std::string formatPose(const camera::CameraPose& pose) {
   char text[160];
   std::snprintf(text, sizeof text, "%.6f,%.6f,%.2f,%.3f,%.3f,%.3f",
@@ -253,10 +245,10 @@ Result<ViewReport> runView(const ViewOptions& options) {
           controller.propose(flyStep(ellipsoid, wanted, velocity, dtSeconds),
                              camera::MotionKind::Linear);
           input.changed = true;  // keep flying while the key is held
-        } else if (!samePose(wanted, controller.pose())) {
+        } else if (!camera::samePose(wanted, controller.pose())) {
           controller.propose(wanted);  // a turn on the spot
         }
-      } else if (!samePose(controls.pose(), controller.pose())) {
+      } else if (!camera::samePose(controls.pose(), controller.pose())) {
         controller.propose(controls.pose());
       }
       controller.setNearPlane({camera::projectionForHeight(
@@ -265,7 +257,8 @@ Result<ViewReport> runView(const ViewOptions& options) {
                                fovY, static_cast<double>(width) / std::max(height, 1)});
       const camera::CollisionState& collisionState =
           controller.update(dtSeconds, (*scene)->renderingTileArray(), ellipsoid);
-      if (!samePose(controls.pose(), controller.pose())) controls.adoptPose(controller.pose());
+      if (!camera::samePose(controls.pose(), controller.pose()))
+        controls.adoptPose(controller.pose());
       if (input.mode != ViewMode::Fly || flyTo || reset) flyLook = controller.pose();
       // The controls scale zoom steps by the height above the terrain the controller found.
       if (collisionState.terrainFound) controls.setGroundHeight(collisionState.terrainHeightMeters);

@@ -22,6 +22,14 @@ bool CameraPose::isFinite() const {
          std::isfinite(pitchRadians) && std::isfinite(rollRadians);
 }
 
+bool samePose(const CameraPose& a, const CameraPose& b) {
+  return a.position.longitudeRadians == b.position.longitudeRadians &&
+         a.position.latitudeRadians == b.position.latitudeRadians &&
+         a.position.heightMeters == b.position.heightMeters &&
+         a.headingRadians == b.headingRadians && a.pitchRadians == b.pitchRadians &&
+         a.rollRadians == b.rollRadians;
+}
+
 EastNorthUp eastNorthUp(const geo::Ellipsoid& ellipsoid, const geo::Cartographic& position) {
   const glm::dvec3 up = geo::geodeticSurfaceNormal(ellipsoid, position);
   const double lon = position.longitudeRadians;

@@ -24,6 +24,9 @@ struct CameraPose {
   bool isFinite() const;
 };
 
+// Exactly the same pose, field by field (no tolerance: used to tell "moved" from "not moved").
+bool samePose(const CameraPose& a, const CameraPose& b);
+
 // Orthonormal camera axes in ECEF.
 struct CameraFrame {
   glm::dvec3 positionEcefMeters;
