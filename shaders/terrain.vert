@@ -1,7 +1,15 @@
-// Terrain vertex shader: camera-relative transform (modelView made in double on the CPU) and the
-// eye distance for the logarithmic depth written in terrain.frag. With GLOBE_VERTEX_LOG_DEPTH
-// defined (the renderer's variant for tiles far from the camera), the same logarithmic depth is
-// written per vertex into gl_Position.z instead, so the fragment shader keeps early depth testing.
+// Terrain vertex shader: camera-relative transform (modelView made in double on the CPU), the
+// colour and the light per vertex, and the eye distance for the logarithmic depth written in
+// terrain.frag. With GLOBE_VERTEX_LOG_DEPTH defined (the renderer's variant for tiles far from the
+// camera), the same logarithmic depth is written per vertex into gl_Position.z instead, so the
+// fragment shader keeps early depth testing. With GLOBE_IMAGERY defined (imagery draped), the
+// colours are the light only and the image gives the colour in terrain.frag.
+//
+// Colour and light are computed here, not per fragment: llvmpipe shades several fragments per
+// vertex even near the ground, and the normals are per vertex anyway, so per-fragment lighting
+// bought little but cost a fifth of the frame (docs/performance-render.md). The land and the sea
+// colour both travel, with the sea flag, so the coastline stays sharp (the fragment picks one)
+// instead of blending across a grid cell. Few varyings keep llvmpipe's per-triangle set-up cheap.
 #version 330 core
 
 layout(location = 0) in vec3 a_offset;  // metres from the tile centre, ECEF axes
@@ -15,13 +23,42 @@ uniform mat4 u_projection;
 uniform vec3 u_tileCenterEcef;   // only used for a direction ("up"), so float is plenty
 uniform vec4 u_imageryRect;      // global equirectangular uv = xy + a_uv · zw
 uniform float u_logDepthScale;   // 1 / log2(1 + far)
+uniform vec3 u_sunDirection;     // unit, towards the sun, ECEF axes (zero: ambient only)
+uniform float u_ambient;         // light on faces turned away from the sun
+uniform bool u_hillShading;      // false: light with the ellipsoid "up" only
 
-out vec3 v_normal;
-out vec3 v_up;
-out float v_height;
-out float v_sea;
+out vec3 v_landColor;  // lit (the light only, with imagery)
+out vec3 v_seaColor;   // lit with "up" (the light only, with imagery)
+out float v_sea;       // 1 = sea; the fragment thresholds it at 0.5
+#ifdef GLOBE_IMAGERY
 out vec2 v_imageryUv;
+#endif
 out float v_logDepth;  // 1 + eye distance w
+
+// Height (m) → colour: lowland greens, tan and browns, greys, then snow.
+const int kStops = 7;
+const float kStopHeights[kStops] = float[](0.0, 300.0, 800.0, 1500.0, 2500.0, 3500.0, 4500.0);
+const vec3 kStopColors[kStops] = vec3[](
+    vec3(0.30, 0.52, 0.27), vec3(0.47, 0.63, 0.33), vec3(0.75, 0.71, 0.45),
+    vec3(0.62, 0.46, 0.30), vec3(0.50, 0.41, 0.35), vec3(0.64, 0.63, 0.62),
+    vec3(0.96, 0.96, 0.98));
+
+vec3 hypsometric(float heightMeters) {
+  if (heightMeters <= kStopHeights[0]) return kStopColors[0];
+  for (int k = 1; k < kStops; ++k) {
+    if (heightMeters < kStopHeights[k]) {
+      float t = (heightMeters - kStopHeights[k - 1]) / (kStopHeights[k] - kStopHeights[k - 1]);
+      return mix(kStopColors[k - 1], kStopColors[k], t);
+    }
+  }
+  return kStopColors[kStops - 1];
+}
+
+// Shallow (and no-data) sea is mid blue, 6 km deep is dark blue.
+vec3 seaColor(float heightMeters) {
+  float depth = clamp(-heightMeters / 6000.0, 0.0, 1.0);
+  return mix(vec3(0.16, 0.36, 0.72), vec3(0.03, 0.10, 0.38), sqrt(depth));
+}
 
 void main() {
   gl_Position = u_projection * (u_modelView * vec4(a_offset, 1.0));
@@ -31,9 +68,19 @@ void main() {
   gl_Position.z = (log2(max(1e-6, 1.0 + gl_Position.w)) * 2.0 * u_logDepthScale - 1.0) *
                   gl_Position.w;
 #endif
-  v_normal = a_normal;
-  v_up = u_tileCenterEcef + a_offset;
-  v_height = a_height;
-  v_sea = a_sea;
+  // Sea is lit with the geocentric "up": water stays flat while the sea floor keeps its depth.
+  vec3 up = normalize(u_tileCenterEcef + a_offset);
+  float upLight = u_ambient + (1.0 - u_ambient) * max(dot(up, u_sunDirection), 0.0);
+  float landLight = u_hillShading
+                        ? u_ambient + (1.0 - u_ambient) * max(dot(a_normal, u_sunDirection), 0.0)
+                        : upLight;
+#ifdef GLOBE_IMAGERY
+  v_landColor = vec3(landLight);
+  v_seaColor = vec3(upLight);
   v_imageryUv = u_imageryRect.xy + a_uv * u_imageryRect.zw;
+#else
+  v_landColor = hypsometric(a_height) * landLight;
+  v_seaColor = seaColor(a_height) * upLight;
+#endif
+  v_sea = a_sea;
 }

@@ -2,10 +2,12 @@
 #include "render/terrain_renderer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include <glm/ext/matrix_transform.hpp>
@@ -16,6 +18,7 @@
 #include "render/gpu_tile.hpp"
 #include "render/shader_directory.hpp"
 #include "render/shader_program.hpp"
+#include "terrain/skirt_edges.hpp"
 
 namespace globe::render {
 
@@ -33,11 +36,12 @@ constexpr double kVertexDepthRadii = 2.0;
 struct TerrainRenderer::Impl {
   struct Uniforms {
     GLint modelView = -1, projection = -1, tileCenter = -1, imageryRect = -1;
-    GLint sunDirection = -1, ambient = -1, hillShading = -1, useImagery = -1, imagery = -1;
+    GLint sunDirection = -1, ambient = -1, hillShading = -1, imagery = -1;
     GLint logDepthScale = -1;
   };
 
-  // [0]: logarithmic depth per fragment (gl_FragDepth); [1]: per vertex (keeps early-z).
+  // [imagery][depth]: imagery 1 = draped (GLOBE_IMAGERY); depth 0 = logarithmic depth per
+  // fragment (gl_FragDepth), 1 = per vertex (keeps early-z).
   struct Program {
     ShaderProgram program;
     Uniforms uniforms;
@@ -45,15 +49,18 @@ struct TerrainRenderer::Impl {
   struct DrawItem {
     double nearestMeters;
     const GpuTile* gpu;
+    terrain::SkirtEdgeMask skirts;
   };
 
   TerrainRendererOptions options;
   TerrainStyle style;
-  Program programs[2];
+  Program programs[2][2];
   std::vector<DrawItem> drawItems[2];  // per-frame scratch, kept to avoid reallocating
+  std::unordered_set<geo::TileId> drawnIds;
   GlObject indexBuffer;
   GLenum indexType = GL_UNSIGNED_SHORT;
   GLsizei indexCount = 0;
+  uintptr_t indexSize = 2;  // bytes per index
   uint64_t indexBytes = 0;
   GlObject imagery;
   uint64_t imageryBytes = 0;
@@ -77,11 +84,13 @@ Result<std::unique_ptr<TerrainRenderer>> TerrainRenderer::create(
   if (impl->options.shaderDirectory.empty())
     impl->options.shaderDirectory = defaultShaderDirectory();
   const auto& dir = impl->options.shaderDirectory;
-  for (int variant = 0; variant < 2; ++variant) {
-    auto program = loadShaderProgram(dir / "terrain.vert", dir / "terrain.frag",
-                                     variant == 1 ? "#define GLOBE_VERTEX_LOG_DEPTH 1" : "");
+  for (int variant = 0; variant < 4; ++variant) {
+    const int imagery = variant / 2, depth = variant % 2;
+    const std::string defines = std::string(imagery == 1 ? "#define GLOBE_IMAGERY 1\n" : "") +
+                                (depth == 1 ? "#define GLOBE_VERTEX_LOG_DEPTH 1\n" : "");
+    auto program = loadShaderProgram(dir / "terrain.vert", dir / "terrain.frag", defines);
     if (!program) return makeError(program.error());
-    Impl::Program& target = impl->programs[variant];
+    Impl::Program& target = impl->programs[imagery][depth];
     target.program = std::move(*program);
     const ShaderProgram& p = target.program;
     Impl::Uniforms& u = target.uniforms;
@@ -92,7 +101,6 @@ Result<std::unique_ptr<TerrainRenderer>> TerrainRenderer::create(
     u.sunDirection = p.uniformLocation("u_sunDirection");
     u.ambient = p.uniformLocation("u_ambient");
     u.hillShading = p.uniformLocation("u_hillShading");
-    u.useImagery = p.uniformLocation("u_useImagery");
     u.imagery = p.uniformLocation("u_imagery");
     u.logDepthScale = p.uniformLocation("u_logDepthScale");
     if (u.modelView < 0 || u.projection < 0 || u.logDepthScale < 0) {
@@ -111,11 +119,13 @@ Result<std::unique_ptr<TerrainRenderer>> TerrainRenderer::create(
   if (vertexCount <= std::numeric_limits<uint16_t>::max() + 1u) {
     const std::vector<uint16_t> shortIndices(indices.begin(), indices.end());
     impl->indexType = GL_UNSIGNED_SHORT;
+    impl->indexSize = sizeof(uint16_t);
     impl->indexBytes = shortIndices.size() * sizeof(uint16_t);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(impl->indexBytes),
                  shortIndices.data(), GL_STATIC_DRAW);
   } else {
     impl->indexType = GL_UNSIGNED_INT;
+    impl->indexSize = sizeof(uint32_t);
     impl->indexBytes = indices.size() * sizeof(uint32_t);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(impl->indexBytes), indices.data(),
                  GL_STATIC_DRAW);
@@ -226,6 +236,8 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
   // Near tiles (per-fragment depth) and far ones (per-vertex depth), each front to back so the
   // depth test rejects hidden fragments early. Near tiles go first: they occlude the far ones.
   for (auto& items : impl.drawItems) items.clear();
+  impl.drawnIds.clear();
+  impl.drawnIds.insert(tiles.begin(), tiles.end());
   for (const geo::TileId& tile : tiles) {
     const auto found = impl.tiles.find(tile);
     if (found == impl.tiles.end()) {
@@ -237,7 +249,9 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
         0.0, glm::distance(view.cameraEcefMeters, gpu.centerEcefMeters) - gpu.radiusMeters);
     const bool far =
         nearest >= kVertexDepthMinMeters && nearest >= kVertexDepthRadii * gpu.radiusMeters;
-    impl.drawItems[far ? 1 : 0].push_back({nearest, &gpu});
+    const terrain::SkirtEdgeMask skirts =
+        impl.options.skirts ? terrain::neededSkirtEdges(tile, impl.drawnIds) : 0;
+    impl.drawItems[far ? 1 : 0].push_back({nearest, &gpu, skirts});
   }
 
   glViewport(0, 0, view.widthPixels, view.heightPixels);
@@ -269,15 +283,14 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
     std::sort(items.begin(), items.end(), [](const Impl::DrawItem& a, const Impl::DrawItem& b) {
       return a.nearestMeters < b.nearestMeters;
     });
-    const Impl::Program& program = impl.programs[variant];
+    const Impl::Program& program = impl.programs[useImagery ? 1 : 0][variant];
     const Impl::Uniforms& u = program.uniforms;
     glUseProgram(program.program.id());
     glUniformMatrix4fv(u.projection, 1, GL_FALSE, glm::value_ptr(projection));
     glUniform3fv(u.sunDirection, 1, glm::value_ptr(sun));
     glUniform1f(u.ambient, style.ambient);
     glUniform1i(u.hillShading, style.hillShading ? 1 : 0);
-    glUniform1i(u.useImagery, useImagery ? 1 : 0);
-    glUniform1i(u.imagery, 0);
+    if (u.imagery >= 0) glUniform1i(u.imagery, 0);
     glUniform1f(u.logDepthScale, logDepthScale);
 
     for (const Impl::DrawItem& item : items) {
@@ -291,10 +304,21 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
       glUniform3fv(u.tileCenter, 1, glm::value_ptr(center));
       if (useImagery) glUniform4fv(u.imageryRect, 1, glm::value_ptr(gpu.imageryRect));
       glBindVertexArray(gpu.vertexArray.get());
-      glDrawElements(GL_TRIANGLES, impl.indexCount, impl.indexType, nullptr);
+      // The grid and only the skirts this tile needs (terrain/skirt_edges.hpp), in one call.
+      std::array<terrain::IndexRange, 3> ranges;
+      const uint32_t rangeCount =
+          terrain::skirtedIndexRanges(impl.options.verticesPerSide, item.skirts, ranges);
+      std::array<GLsizei, 3> counts{};
+      std::array<const void*, 3> offsets{};
+      for (uint32_t r = 0; r < rangeCount; ++r) {
+        counts[r] = static_cast<GLsizei>(ranges[r].count);
+        offsets[r] = reinterpret_cast<const void*>(uintptr_t{ranges[r].first} * impl.indexSize);
+        stats.triangles += ranges[r].count / 3;
+      }
+      glMultiDrawElements(GL_TRIANGLES, counts.data(), impl.indexType, offsets.data(),
+                          static_cast<GLsizei>(rangeCount));
       ++stats.drawCalls;
       ++stats.tilesDrawn;
-      stats.triangles += static_cast<uint64_t>(impl.indexCount / 3);
     }
   }
   glBindVertexArray(0);

@@ -49,12 +49,16 @@ struct TerrainStyle {
 // would need a float depth buffer and glClipControl, which OSMesa's default framebuffer does not
 // give.
 //
-// Shading (shaders/terrain.frag): land takes a hypsometric ramp (0 m green, 300 m light green,
-// 800 m tan, 1500 m brown, 2500 m grey-brown, 3500 m grey, 4500 m+ snow white) or, with imagery
-// set and drapeImagery on, the image; it is lit by Lambert on the mesh normal, ambient +
-// (1 − ambient)·max(n·sun, 0), which is the hill-shading. Sea (the vertex sea flag, i.e. no data
-// or below 0 m) is blue, darker with depth down to 6 km, and lit with the geocentric "up" instead
-// of the normal, so water stays flat while the sea floor geometry keeps its real depth.
+// Shading (shaders/terrain.vert, per vertex): land takes a hypsometric ramp (0 m green, 300 m
+// light green, 800 m tan, 1500 m brown, 2500 m grey-brown, 3500 m grey, 4500 m+ snow white) or,
+// with imagery set and drapeImagery on, the image (sampled per fragment); it is lit by Lambert on
+// the mesh normal, ambient + (1 − ambient)·max(n·sun, 0), which is the hill-shading. Sea (the
+// vertex sea flag, i.e. no data or below 0 m) is blue, darker with depth down to 6 km, and lit
+// with the geocentric "up" instead of the normal, so water stays flat while the sea floor geometry
+// keeps its real depth; the fragment picks land or sea by the interpolated flag, so coasts stay
+// sharp.
+// Skirts: only on the edges whose same-level neighbour is not drawn this frame
+// (terrain/skirt_edges.hpp); tiles of one level share their edge vertices, so no crack opens there.
 // Back faces are culled (meshes are counter-clockwise from outside); draw() leaves depth test and
 // culling enabled.
 class TerrainRenderer {

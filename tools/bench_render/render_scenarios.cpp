@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <sstream>
 
 #include "app/terrain_scene.hpp"
@@ -16,6 +17,13 @@ namespace globe::bench {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// CPU time of the whole process: all llvmpipe threads included.
+double processCpuMilliseconds() {
+  timespec t{};
+  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) / 1e6;
+}
 
 double millisecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -47,9 +55,10 @@ ScenarioRow steadyFrames(Context& c, const std::string& name, const camera::Came
   ScenarioRow row;
   row.name = name;
   row.frames = c.options.frames;
-  std::vector<double> total, draw, update;
+  std::vector<double> total, draw, update, cpu;
   render::FrameStats stats;
   for (int k = 0; k < c.options.frames; ++k) {
+    const double cpuStart = processCpuMilliseconds();
     const auto start = Clock::now();
     c.scene.update(pose, c.options.widthPixels, c.options.heightPixels, c.renderer);
     const auto updated = Clock::now();
@@ -58,7 +67,9 @@ ScenarioRow steadyFrames(Context& c, const std::string& name, const camera::Came
     total.push_back(millisecondsSince(start));
     draw.push_back(millisecondsSince(updated));
     update.push_back(std::chrono::duration<double, std::milli>(updated - start).count());
+    cpu.push_back(processCpuMilliseconds() - cpuStart);
   }
+  row.medianCpuMs = percentile(cpu, 50);
   row.medianMs = percentile(total, 50);
   row.p90Ms = percentile(total, 90);
   row.minMs = percentile(total, 0);
@@ -78,14 +89,17 @@ ScenarioRow smallViewportFrames(Context& c, const std::string& name) {
   render::RenderView view = c.scene.view();
   view.widthPixels = std::max(view.widthPixels / 8, 1);
   view.heightPixels = std::max(view.heightPixels / 8, 1);
-  std::vector<double> draw;
+  std::vector<double> draw, cpu;
   render::FrameStats stats;
   for (int k = 0; k < c.options.frames; ++k) {
+    const double cpuStart = processCpuMilliseconds();
     const auto start = Clock::now();
     stats = c.renderer.draw(view, c.scene.tiles());
     render::finishGl();
     draw.push_back(millisecondsSince(start));
+    cpu.push_back(processCpuMilliseconds() - cpuStart);
   }
+  row.medianCpuMs = percentile(cpu, 50);
   row.medianMs = row.medianDrawMs = percentile(draw, 50);
   row.p90Ms = percentile(draw, 90);
   row.minMs = percentile(draw, 0);
@@ -191,8 +205,8 @@ std::string formatRow(const ScenarioRow& r) {
   std::ostringstream out;
   out << r.name << '\t' << r.frames << '\t' << r.medianMs << '\t' << r.p90Ms << '\t' << r.minMs
       << '\t' << r.medianDrawMs << '\t' << r.medianUpdateMs << '\t' << r.wallMs << '\t'
-      << r.tilesDrawn << '\t' << r.drawCalls << '\t' << r.triangles << '\t' << r.tileLoads << '\t'
-      << r.gpuBytes;
+      << r.medianCpuMs << '\t' << r.tilesDrawn << '\t' << r.drawCalls << '\t' << r.triangles << '\t'
+      << r.tileLoads << '\t' << r.gpuBytes;
   return out.str();
 }
 
@@ -200,7 +214,8 @@ bool parseRow(const std::string& line, ScenarioRow& r) {
   std::istringstream in(line);
   if (!std::getline(in, r.name, '\t')) return false;
   in >> r.frames >> r.medianMs >> r.p90Ms >> r.minMs >> r.medianDrawMs >> r.medianUpdateMs >>
-      r.wallMs >> r.tilesDrawn >> r.drawCalls >> r.triangles >> r.tileLoads >> r.gpuBytes;
+      r.wallMs >> r.medianCpuMs >> r.tilesDrawn >> r.drawCalls >> r.triangles >> r.tileLoads >>
+      r.gpuBytes;
   return !in.fail();
 }
 

@@ -26,7 +26,8 @@ struct ScenarioRow {
   double medianMs = 0, p90Ms = 0, minMs = 0;  // update + draw + glFinish
   double medianDrawMs = 0;                    // draw + glFinish
   double medianUpdateMs = 0;                  // selection, load polling, uploads
-  double wallMs = 0;                          // the jump: from the new pose to the complete view
+  double medianCpuMs = 0;  // CPU time of every thread (llvmpipe's too): steadier under load
+  double wallMs = 0;       // the jump: from the new pose to the complete view
   uint32_t tilesDrawn = 0, drawCalls = 0;
   uint64_t triangles = 0, gpuBytes = 0;
   uint64_t tileLoads = 0;  // loads it took to complete this view (steady rows: the row before)
