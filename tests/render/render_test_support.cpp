@@ -140,6 +140,27 @@ int Image::countNonBackground() const {
   return count;
 }
 
+double meanAbsoluteDifference(const Image& a, const Image& b) {
+  EXPECT_EQ(a.rgba.size(), b.rgba.size());
+  const size_t size = std::min(a.rgba.size(), b.rgba.size());
+  double sum = 0;
+  for (size_t k = 0; k < size; ++k) {
+    sum += std::abs(static_cast<int>(a.rgba[k]) - static_cast<int>(b.rgba[k]));
+  }
+  return size == 0 ? 0.0 : sum / static_cast<double>(size);
+}
+
+glm::dvec3 roundedToFloat(const glm::dvec3& v) {
+  // Through volatile: GCC 12 at -O2 drops the double -> float -> double round trip of the two
+  // components it vectorises together, leaving them unrounded.
+  glm::dvec3 rounded;
+  for (int c = 0; c < 3; ++c) {
+    volatile float component = static_cast<float>(v[c]);
+    rounded[c] = component;
+  }
+  return rounded;
+}
+
 std::filesystem::path outputDirectory() { return GLOBE_TEST_OUTPUT_DIR; }
 
 Image readImage(int width, int height) {

@@ -53,6 +53,12 @@ struct Image {
   int countNonBackground() const;
 };
 
+// Mean absolute difference of two same-sized images over all RGBA bytes (0..255).
+double meanAbsoluteDifference(const Image& a, const Image& b);
+
+// Each component rounded to the nearest float, as a renderer holding ECEF in float would have it.
+glm::dvec3 roundedToFloat(const glm::dvec3& v);
+
 // Reads the current framebuffer and writes it as <test output dir>/<name>.png.
 Image readImage(int width, int height);
 void savePng(const Image& image, const std::string& name);

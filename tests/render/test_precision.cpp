@@ -55,14 +55,16 @@ class Precision : public RenderTest {
     upload(tiles);
   }
 
-  // 1 m above the highest bump in the middle tile, looking north-east 50° down.
-  RenderView view(double eastMeters) const {
+  // 1 m above the highest bump in the middle tile, looking north-east 50° down. floatEye: the eye
+  // rounded to float, as a renderer holding ECEF in float would have it.
+  RenderView view(double eastMeters, bool floatEye = false) const {
     const terrain::BlockGrid grid{centre_, kN};
     const double lon = grid.longitudeDegrees(8), lat = grid.latitudeDegrees(8);
     const LocalFrame frame = localFrame(lon, lat);
-    const glm::dvec3 eye =
+    glm::dvec3 eye =
         geo::cartographicToEcef(kWgs84, geo::Cartographic::fromDegrees(lon, lat, 103.0)) +
         eastMeters * frame.east;
+    if (floatEye) eye = roundedToFloat(eye);
     const double pitch = geo::degreesToRadians(-50.0);
     const glm::dvec3 forward =
         std::cos(pitch) * glm::normalize(frame.north + frame.east) + std::sin(pitch) * frame.up;
@@ -98,6 +100,11 @@ TEST_F(Precision, SmallCameraMovesChangeTheImageSmoothly) {
     previous = difference;
   }
   EXPECT_GT(previous, 2.0);
+
+  // The check above can fail: with the eye in float (ECEF components of 3.4e6-3.9e6 m are
+  // multiples of 0.25 m there), the same millimetre move does not change the image at all.
+  const Image floatBase = drawAndRead(view(0.0, true), ids_);
+  EXPECT_EQ(meanAbsoluteDifference(floatBase, drawAndRead(view(0.001, true), ids_)), 0.0);
 }
 
 }  // namespace
