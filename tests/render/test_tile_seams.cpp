@@ -1,6 +1,7 @@
-// No background shows through the terrain: tiles of one level are drawn without skirts between
-// them (they share their edge vertices), tiles of different levels with skirts. Looking at a block
-// of real tiles from many directions and heights, every pixel that looks at the block is terrain.
+// No background shows through the terrain between tiles, of one level (their shared edge vertices
+// round differently through two tiles' float transforms) or of different levels (the finer edge
+// has samples the coarser one interpolates): skirts cover both. Looking at a block of real tiles
+// from many directions and heights, every pixel that looks at the block is terrain.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -40,8 +41,7 @@ class TileSeams : public RenderTest {
 };
 
 TEST_F(TileSeams, OneLevelShowsNoGapsFromAnyDirection) {
-  // ~10 × 8 level-13 tiles (~2 km) on Fuji's eastern flanks: every interior edge is
-  // skirtless.
+  // ~10 × 8 level-13 tiles (~2 km) on Fuji's eastern flanks.
   const auto tiles = loadTiles(13, 138.67, 35.25, 138.89, 35.41);
   ASSERT_GE(tiles.size(), 40u);
   upload(tiles);
@@ -61,8 +61,7 @@ TEST_F(TileSeams, OneLevelShowsNoGapsFromAnyDirection) {
 }
 
 TEST_F(TileSeams, MixedLevelsShowNoGaps) {
-  // Level 11 all around, the middle replaced by its level-12 and level-13 descendants: edges
-  // between levels carry skirts, edges inside a level do not.
+  // Level 11 all around, the middle replaced by its level-12 and level-13 descendants.
   auto coarse = loadTiles(11, 138.62, 35.26, 138.84, 35.44);
   const auto middle = loadTiles(12, 138.70, 35.32, 138.76, 35.38);
   const auto finest = loadTiles(13, 138.72, 35.34, 138.74, 35.36);
