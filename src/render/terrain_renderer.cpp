@@ -2,10 +2,12 @@
 #include "render/terrain_renderer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include <glm/ext/matrix_transform.hpp>
@@ -16,6 +18,7 @@
 #include "render/gpu_tile.hpp"
 #include "render/shader_directory.hpp"
 #include "render/shader_program.hpp"
+#include "terrain/skirt_edges.hpp"
 
 namespace globe::render {
 
@@ -46,15 +49,18 @@ struct TerrainRenderer::Impl {
   struct DrawItem {
     double nearestMeters;
     const GpuTile* gpu;
+    terrain::SkirtEdgeMask skirts;
   };
 
   TerrainRendererOptions options;
   TerrainStyle style;
   Program programs[2][2];
   std::vector<DrawItem> drawItems[2];  // per-frame scratch, kept to avoid reallocating
+  std::unordered_set<geo::TileId> drawnIds;
   GlObject indexBuffer;
   GLenum indexType = GL_UNSIGNED_SHORT;
   GLsizei indexCount = 0;
+  uintptr_t indexSize = 2;  // bytes per index
   uint64_t indexBytes = 0;
   GlObject imagery;
   uint64_t imageryBytes = 0;
@@ -113,11 +119,13 @@ Result<std::unique_ptr<TerrainRenderer>> TerrainRenderer::create(
   if (vertexCount <= std::numeric_limits<uint16_t>::max() + 1u) {
     const std::vector<uint16_t> shortIndices(indices.begin(), indices.end());
     impl->indexType = GL_UNSIGNED_SHORT;
+    impl->indexSize = sizeof(uint16_t);
     impl->indexBytes = shortIndices.size() * sizeof(uint16_t);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(impl->indexBytes),
                  shortIndices.data(), GL_STATIC_DRAW);
   } else {
     impl->indexType = GL_UNSIGNED_INT;
+    impl->indexSize = sizeof(uint32_t);
     impl->indexBytes = indices.size() * sizeof(uint32_t);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(impl->indexBytes), indices.data(),
                  GL_STATIC_DRAW);
@@ -228,6 +236,11 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
   // Near tiles (per-fragment depth) and far ones (per-vertex depth), each front to back so the
   // depth test rejects hidden fragments early. Near tiles go first: they occlude the far ones.
   for (auto& items : impl.drawItems) items.clear();
+  // Skirts face the tiles that are really drawn: resident ones.
+  impl.drawnIds.clear();
+  for (const geo::TileId& tile : tiles) {
+    if (impl.tiles.contains(tile)) impl.drawnIds.insert(tile);
+  }
   for (const geo::TileId& tile : tiles) {
     const auto found = impl.tiles.find(tile);
     if (found == impl.tiles.end()) {
@@ -239,7 +252,9 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
         0.0, glm::distance(view.cameraEcefMeters, gpu.centerEcefMeters) - gpu.radiusMeters);
     const bool far =
         nearest >= kVertexDepthMinMeters && nearest >= kVertexDepthRadii * gpu.radiusMeters;
-    impl.drawItems[far ? 1 : 0].push_back({nearest, &gpu});
+    const terrain::SkirtEdgeMask skirts =
+        impl.options.skirts ? terrain::neededSkirtEdges(tile, impl.drawnIds) : 0;
+    impl.drawItems[far ? 1 : 0].push_back({nearest, &gpu, skirts});
   }
 
   glViewport(0, 0, view.widthPixels, view.heightPixels);
@@ -292,8 +307,19 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
       glUniform3fv(u.tileCenter, 1, glm::value_ptr(center));
       if (useImagery) glUniform4fv(u.imageryRect, 1, glm::value_ptr(gpu.imageryRect));
       glBindVertexArray(gpu.vertexArray.get());
-      glDrawElements(GL_TRIANGLES, impl.indexCount, impl.indexType, nullptr);
-      stats.triangles += static_cast<uint64_t>(impl.indexCount / 3);
+      // The grid and only the skirts this tile needs (terrain/skirt_edges.hpp), in one call.
+      std::array<terrain::IndexRange, 3> ranges;
+      const uint32_t rangeCount =
+          terrain::skirtedIndexRanges(impl.options.verticesPerSide, item.skirts, ranges);
+      std::array<GLsizei, 3> counts{};
+      std::array<const void*, 3> offsets{};
+      for (uint32_t r = 0; r < rangeCount; ++r) {
+        counts[r] = static_cast<GLsizei>(ranges[r].count);
+        offsets[r] = reinterpret_cast<const void*>(uintptr_t{ranges[r].first} * impl.indexSize);
+        stats.triangles += ranges[r].count / 3;
+      }
+      glMultiDrawElements(GL_TRIANGLES, counts.data(), impl.indexType, offsets.data(),
+                          static_cast<GLsizei>(rangeCount));
       ++stats.drawCalls;
       ++stats.tilesDrawn;
     }

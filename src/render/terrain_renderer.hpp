@@ -57,9 +57,9 @@ struct TerrainStyle {
 // with the geocentric "up" instead of the normal, so water stays flat while the sea floor geometry
 // keeps its real depth; the fragment picks land or sea by the interpolated flag, so coasts stay
 // sharp.
-// Skirts: every edge carries a curtain (terrain/tile_mesh.hpp): between tiles of different levels
-// it covers the crack, between tiles of one level the sub-pixel slivers that float rounding of
-// two tiles' transforms opens along their shared edge.
+// Skirts: only on the edges whose same-level neighbour is not drawn this frame
+// (terrain/skirt_edges.hpp); tiles of one level share their edge samples and their meshes overlap
+// by a hair (terrain::kSeamOverlapFraction), so no crack opens there.
 // Back faces are culled (meshes are counter-clockwise from outside); draw() leaves depth test and
 // culling enabled.
 class TerrainRenderer {

@@ -46,6 +46,31 @@ glm::dvec3 tileVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGrid
                     heightMeters);
 }
 
+// The drawn edges reach a hair past the tile's rectangle, so the edges of two tiles of one level
+// overlap instead of meeting: through two tiles' float transforms their shared vertices round to
+// slightly different pixels, and a pixel centre could fall through the sliver between them.
+glm::dvec3 drawnVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGrid& grid,
+                                 uint32_t row, uint32_t column, double heightMeters) {
+  const uint32_t n = grid.verticesPerSide;
+  double latitude = grid.latitudeDegrees(row);
+  double longitude = grid.longitudeDegrees(column);
+  if (n < 2) return vertexEcef(ellipsoid, longitude, latitude, heightMeters);
+  const double latitudeStep = std::abs(grid.latitudeDegrees(1) - grid.latitudeDegrees(0));
+  const double longitudeStep = std::abs(grid.longitudeDegrees(1) - grid.longitudeDegrees(0));
+  const double overlapDegrees = kSeamOverlapFraction * latitudeStep;
+  if (row == 0) latitude = std::min(latitude + overlapDegrees, 90.0);
+  if (row == n - 1) latitude = std::max(latitude - overlapDegrees, -90.0);
+  if (column == 0 || column == n - 1) {
+    // The same distance in metres as in latitude, but at most a quarter cell near the poles.
+    const double cosine = std::cos(geo::degreesToRadians(latitude));
+    const double quarterCell = 0.25 * longitudeStep;
+    const double overlap =
+        cosine * quarterCell > overlapDegrees ? overlapDegrees / cosine : quarterCell;
+    longitude += column == 0 ? -overlap : overlap;
+  }
+  return vertexEcef(ellipsoid, longitude, latitude, heightMeters);
+}
+
 TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
                        const geo::Ellipsoid& ellipsoid, double skirtDepthMeters) {
   const uint32_t n = block.verticesPerSide;
@@ -96,6 +121,16 @@ TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
     }
   }
 
+  // Edge vertices are drawn a hair outside the rectangle (drawnVertexEcefMeters); the normals
+  // above come from the exact grid.
+  for (uint32_t i = 0; i < n; ++i) {
+    for (uint32_t j = 0; j < n; ++j) {
+      if (i != 0 && i != n - 1 && j != 0 && j != n - 1) continue;
+      Vertex& vertex = vertices[gridVertexIndex(i, j, n)];
+      vertex.positionEcef = drawnVertexEcefMeters(ellipsoid, grid, i, j, vertex.heightMeters);
+    }
+  }
+
   if (mesh.hasSkirts) {
     for (uint32_t edge = 0; edge < 4; ++edge) {
       for (uint32_t k = 0; k < n; ++k) {
@@ -115,8 +150,8 @@ TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
             break;
         }
         Vertex skirt = vertices[gridVertexIndex(row, column, n)];
-        skirt.positionEcef = vertexEcef(ellipsoid, longitudes[column], latitudes[row],
-                                        skirt.heightMeters - skirtDepthMeters);
+        skirt.positionEcef = drawnVertexEcefMeters(ellipsoid, grid, row, column,
+                                                   skirt.heightMeters - skirtDepthMeters);
         vertices[skirtVertexIndex(static_cast<TileEdge>(edge), k, n)] = skirt;
       }
     }

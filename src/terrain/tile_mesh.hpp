@@ -24,6 +24,11 @@ namespace globe::terrain {
 //          equirectangular image maps with u_global = (west+180°+u·width)/360°,
 //          v_global = (90°-north+v·height)/180°; the renderer does that per tile.
 inline constexpr uint32_t kTileVertexFloats = 10;
+// How far (in vertex spacings) a mesh's edge vertices are drawn past the tile's rectangle, so
+// neighbouring tiles overlap by a hair instead of meeting at a float-rounded seam: far more than
+// float rounding at any distance the selection draws a tile from (≲ 200 spacings: ~1e-5
+// spacing), far less than anything visible.
+inline constexpr double kSeamOverlapFraction = 1e-3;
 inline constexpr uint32_t kTileVertexPositionOffset = 0;
 inline constexpr uint32_t kTileVertexNormalOffset = 3;
 inline constexpr uint32_t kTileVertexHeightOffset = 6;
@@ -66,9 +71,16 @@ struct TileMesh {
 glm::dvec3 tileVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGrid& grid,
                                 uint32_t row, uint32_t column, double heightMeters);
 
+// Where buildTileMesh draws grid vertex (row, column): tileVertexEcefMeters inside the tile; on
+// its edges moved outwards by kSeamOverlapFraction of the latitude spacing (in metres; in
+// longitude at most a quarter cell, near the poles; never past a pole), so that neighbouring
+// meshes overlap by a hair.
+glm::dvec3 drawnVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGrid& grid,
+                                 uint32_t row, uint32_t column, double heightMeters);
+
 // Builds the mesh of `tile` from its block. A block whose size is not 2^k+1 or whose height array
 // does not hold N² samples gives an empty mesh (no vertices).
-// - Positions: tileVertexEcefMeters of the surface height (no-data → 0 m), minus the double
+// - Positions: drawnVertexEcefMeters of the surface height (no-data → 0 m), minus the double
 //   centre, stored as float. Shared edge vertices of neighbouring tiles are therefore bit-identical
 //   in double; the float offsets reconstruct them to about 2^-24 of the tile's extent (< 1 cm from
 //   level 8). Vertices at latitude ±90° are placed exactly on the polar axis (x = y = 0): a pole

@@ -35,7 +35,7 @@ TEST(RealMeshes, NeighboursShareEdgesExactlyAndFloatsAreCentimetreExact) {
     const terrain::TileMesh mesh = terrain::buildTileMesh(tile.id, tile.block, kWgs84, 150.0);
     for (uint32_t i = 0; i < n; ++i) {
       for (uint32_t j = 0; j < n; ++j) {
-        const glm::dvec3 exact = terrain::tileVertexEcefMeters(
+        const glm::dvec3 exact = terrain::drawnVertexEcefMeters(
             kWgs84, grid, i, j, tile.block.surfaceHeightMetersAt(i, j));
         EXPECT_LT(glm::length(reconstructed(mesh, gridVertexIndex(i, j, n)) - exact), 0.01);
       }

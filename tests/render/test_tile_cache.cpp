@@ -44,7 +44,11 @@ TEST_F(TileCache, CountsBytesAndTilesAndSkipsMissingOnes) {
   EXPECT_EQ(stats.tilesDrawn, 31u);
   EXPECT_EQ(stats.tilesMissing, 2u);
   EXPECT_EQ(stats.drawCalls, 31u);
-  EXPECT_EQ(stats.triangles, 31u * 640u);
+  // 512 grid triangles a tile, plus 32 for each edge that gets a skirt: the 15 drawn tiles of
+  // the polar rows on their pole edge (tiles[5], 2/5/0, is in the north row and not drawn),
+  // and its three drawn neighbours on the edge facing it.
+  ASSERT_EQ(tiles[5].id, (geo::TileId{2, 5, 0}));
+  EXPECT_EQ(stats.triangles, 31u * 512u + (15u + 3u) * 32u);
   EXPECT_EQ(stats.tilesResident, 31u);
   EXPECT_EQ(stats.gpuBytesResident, baseBytes + 31 * tileBytes);
 

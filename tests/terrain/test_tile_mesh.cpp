@@ -80,6 +80,13 @@ double tileExtentMeters(const geo::TileId& tile) {
          kWgs84.semiMajorAxisMeters;
 }
 
+// How far a mesh's edge vertices are drawn outside the tile (along the meridian, ~1 % exact).
+double seamOverlapMeters(const geo::TileId& tile) {
+  const BlockGrid grid{tile, kN};
+  const double stepDegrees = std::abs(grid.latitudeDegrees(1) - grid.latitudeDegrees(0));
+  return kSeamOverlapFraction * geo::degreesToRadians(stepDegrees) * kWgs84.semiMajorAxisMeters;
+}
+
 TEST(TileMesh, LayoutAndCounts) {
   const geo::TileId tile{5, 10, 7};
   const TileMesh mesh = buildTileMesh(tile, syntheticBlock(tile), kWgs84, 100.0);
@@ -108,7 +115,7 @@ TEST(TileMesh, FloatOffsetsReconstructDoublePositions) {
     for (uint32_t i = 0; i < kN; ++i) {
       for (uint32_t j = 0; j < kN; ++j) {
         const glm::dvec3 exact =
-            tileVertexEcefMeters(kWgs84, grid, i, j, block.surfaceHeightMetersAt(i, j));
+            drawnVertexEcefMeters(kWgs84, grid, i, j, block.surfaceHeightMetersAt(i, j));
         worst =
             std::max(worst, glm::length(reconstructed(mesh, gridVertexIndex(i, j, kN)) - exact));
       }
@@ -127,12 +134,42 @@ TEST(TileMesh, PositionsMatchCartographicToEcef) {
   const HeightBlock block = syntheticBlock(tile);
   const TileMesh mesh = buildTileMesh(tile, block, kWgs84, 0.0);
   const BlockGrid grid{tile, kN};
-  for (uint32_t i = 0; i < kN; i += 4) {
-    for (uint32_t j = 0; j < kN; j += 4) {
+  // Interior vertices (edge vertices are drawn a hair outside: SeamOverlap below).
+  for (uint32_t i = 4; i + 1 < kN; i += 4) {
+    for (uint32_t j = 4; j + 1 < kN; j += 4) {
       const glm::dvec3 expected = geo::cartographicToEcef(
           kWgs84, geo::Cartographic::fromDegrees(grid.longitudeDegrees(j), grid.latitudeDegrees(i),
                                                  block.surfaceHeightMetersAt(i, j)));
       EXPECT_LT(glm::length(reconstructed(mesh, gridVertexIndex(i, j, kN)) - expected), 0.01);
+    }
+  }
+}
+
+// Edge vertices are drawn a hair outside the tile (neighbours overlap instead of meeting at a
+// float-rounded seam), interior ones exactly; the pole stays on the axis.
+TEST(TileMesh, SeamOverlapMovesOnlyEdgeVerticesOutwards) {
+  for (const geo::TileId& tile :
+       {geo::TileId{13, 9000, 3000}, geo::TileId{4, 3, 0}, geo::TileId{20, 1048575, 0}}) {
+    const BlockGrid grid{tile, kN};
+    const double overlap = seamOverlapMeters(tile);
+    for (uint32_t i = 0; i < kN; ++i) {
+      for (uint32_t j = 0; j < kN; ++j) {
+        const glm::dvec3 exact = tileVertexEcefMeters(kWgs84, grid, i, j, 100.0);
+        const glm::dvec3 drawn = drawnVertexEcefMeters(kWgs84, grid, i, j, 100.0);
+        const bool edge = i == 0 || j == 0 || i == kN - 1 || j == kN - 1;
+        if (!edge) {
+          EXPECT_EQ(drawn, exact);
+          continue;
+        }
+        const double moved = glm::length(drawn - exact);
+        const bool pole = std::abs(grid.latitudeDegrees(i)) == 90.0;
+        if (pole) {
+          EXPECT_EQ(drawn, exact) << "the pole stays on the axis";
+        } else {
+          EXPECT_GT(moved, 0.0) << i << "," << j;
+          EXPECT_LE(moved, 1.5 * overlap) << i << "," << j;
+        }
+      }
     }
   }
 }
@@ -218,16 +255,21 @@ TEST(TileMesh, SharedEdgeVerticesCoincideExactlyInDouble) {
           tileVertexEcefMeters(kWgs84, ga, k, kN - 1, a.surfaceHeightMetersAt(k, kN - 1));
       const glm::dvec3 pb = tileVertexEcefMeters(kWgs84, gb, k, 0, b.surfaceHeightMetersAt(k, 0));
       EXPECT_EQ(pa, pb) << "east edge k " << k;
-      EXPECT_LT(glm::length(reconstructed(ma, gridVertexIndex(k, kN - 1, kN)) -
-                            reconstructed(mb, gridVertexIndex(k, 0, kN))),
-                0.02);
+      // Drawn, the two edges overlap by twice the seam overlap: A's reaches east past B's.
+      const glm::dvec3 eastward = glm::normalize(glm::dvec3(-pa.y, pa.x, 0.0));
+      const double overlapEast = glm::dot(reconstructed(ma, gridVertexIndex(k, kN - 1, kN)) -
+                                              reconstructed(mb, gridVertexIndex(k, 0, kN)),
+                                          eastward);
+      EXPECT_NEAR(overlapEast, 2.0 * seamOverlapMeters(tile), 0.05 * seamOverlapMeters(tile) + 0.02)
+          << "east edge k " << k;
       const glm::dvec3 qa =
           tileVertexEcefMeters(kWgs84, ga, kN - 1, k, a.surfaceHeightMetersAt(kN - 1, k));
       const glm::dvec3 qc = tileVertexEcefMeters(kWgs84, gc, 0, k, c.surfaceHeightMetersAt(0, k));
       EXPECT_EQ(qa, qc) << "south edge k " << k;
-      EXPECT_LT(glm::length(reconstructed(ma, gridVertexIndex(kN - 1, k, kN)) -
-                            reconstructed(mc, gridVertexIndex(0, k, kN))),
-                0.02);
+      EXPECT_NEAR(glm::length(reconstructed(ma, gridVertexIndex(kN - 1, k, kN)) -
+                              reconstructed(mc, gridVertexIndex(0, k, kN))),
+                  2.0 * seamOverlapMeters(tile), 0.05 * seamOverlapMeters(tile) + 0.02)
+          << "south edge k " << k;
       // The along-edge normal component agrees across the edge (it uses shared vertices only).
       const glm::dvec3 alongEdge =
           glm::normalize(tileVertexEcefMeters(kWgs84, ga, std::min(k + 1, kN - 1), kN - 1, 0.0) -

@@ -1,0 +1,42 @@
+// Which skirts a drawn tile needs: only the edges where the neighbour is not drawn at the same
+// level. Two tiles of one level have the same edge samples and their meshes overlap by a hair
+// (kSeamOverlapFraction, against float rounding), so no crack opens between them; a crack can open
+// only against a coarser or finer neighbour (its edge interpolates other samples) or where no
+// neighbour is drawn. Skirt triangles cost llvmpipe as much as grid triangles (vertex
+// shading and set-up run on one thread), so drawing only the needed ones matters.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <unordered_set>
+
+#include "geo/tile_id.hpp"
+#include "terrain/tile_mesh.hpp"
+
+namespace globe::terrain {
+
+// Bit (1 << TileEdge) set: that edge needs its skirt.
+using SkirtEdgeMask = uint32_t;
+constexpr SkirtEdgeMask kAllSkirtEdges = 0xF;
+
+// The tile across `edge` at the same level: longitude wraps at ±180°; none beyond the poles.
+std::optional<geo::TileId> sameLevelNeighbour(const geo::TileId& tile, TileEdge edge);
+
+// The edges of `tile` whose same-level neighbour is not in `drawn`.
+SkirtEdgeMask neededSkirtEdges(const geo::TileId& tile,
+                               const std::unordered_set<geo::TileId>& drawn);
+
+// One index range of the shared index buffer (in indices, not bytes).
+struct IndexRange {
+  uint32_t first = 0;
+  uint32_t count = 0;
+};
+
+// The index ranges to draw for a tile with the given skirt edges, in buildGridIndices' layout
+// (grid, then the N, S, W, E skirts), adjacent ranges merged: at most 3 (grid, S, E). Returns how
+// many of `out` it filled.
+uint32_t skirtedIndexRanges(uint32_t verticesPerSide, SkirtEdgeMask edges,
+                            std::span<IndexRange, 3> out);
+
+}  // namespace globe::terrain
