@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "geo/ecef.hpp"
 #include "geo/frustum.hpp"
@@ -193,6 +194,10 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
       renderer.evictTile(byAge[k].second);
       gpuLastUsedFrame_.erase(byAge[k].second);
     }
+  }
+  // Each missing or damaged pack once (the store remembers it), not once per tile or frame.
+  for (const std::string& error : store_->takeNewPackErrors()) {
+    std::fprintf(stderr, "globe: %s; drawing coarser tiles there\n", error.c_str());
   }
   info.selection = selection.counters;
   info.tilesSelected = tiles_.size();

@@ -64,6 +64,8 @@ Result<void> writeFileAtomically(const std::filesystem::path& path,
       if (errno == EINTR) continue;
       return fail("write failed", errno);
     }
+    // POSIX allows 0 only for an empty write; looping on it would never end.
+    if (n == 0) return fail("write failed", EIO);
     data += n;
     left -= static_cast<size_t>(n);
   }
@@ -84,7 +86,8 @@ Result<void> writeFileAtomically(const std::filesystem::path& path, std::string_
 }
 
 Result<std::vector<std::byte>> readWholeFile(const std::filesystem::path& path, uint64_t maxBytes) {
-  Fd fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+  // O_NONBLOCK: opening a FIFO without a writer would wait forever; it is refused below.
+  Fd fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
   if (fd.get() < 0) return ioError(path, "cannot open", errno);
   struct stat st {};
   if (::fstat(fd.get(), &st) != 0) return ioError(path, "cannot stat", errno);

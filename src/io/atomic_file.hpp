@@ -18,7 +18,8 @@ Result<void> writeFileAtomically(const std::filesystem::path& path,
                                  std::span<const std::byte> bytes);
 Result<void> writeFileAtomically(const std::filesystem::path& path, std::string_view text);
 
-// Reads a regular file whole; refuses files larger than maxBytes before allocating.
+// Reads a regular file whole; refuses files larger than maxBytes before allocating, and anything
+// that is not a regular file (a FIFO without waiting for a writer).
 Result<std::vector<std::byte>> readWholeFile(const std::filesystem::path& path, uint64_t maxBytes);
 
 }  // namespace globe::io

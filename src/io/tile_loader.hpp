@@ -101,8 +101,11 @@ class TileLoader {
 
   // Every failure so far, in the order poll() collected them.
   const std::vector<LoadError>& errors() const { return errors_; }
-  // Lets failed tiles be queued again (say, after the pyramid was repaired).
-  void forgetFailures() { failed_.clear(); }
+  // Lets failed tiles be queued again and their packs reopened (say, after a repair).
+  void forgetFailures() {
+    failed_.clear();
+    store_.forgetFailedPacks();
+  }
 
   LoaderCounters counters() const;
   // Blocks until a load has finished on its worker (ready for poll()) or the timeout passes.

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <utility>
 
 namespace globe::io {
 namespace {
@@ -56,15 +57,29 @@ Result<std::unique_ptr<TileStore>> TileStore::open(const std::filesystem::path& 
 Result<std::shared_ptr<const TileStore::OpenPack>> TileStore::pack(const PackId& id) {
   std::lock_guard lock(mutex_);
   if (auto it = openPacks_.find(id); it != openPacks_.end()) return it->second;
+  if (auto it = failedPacks_.find(id); it != failedPacks_.end()) return makeError(it->second);
   if (id.level >= manifest_.levels.size()) return std::shared_ptr<const OpenPack>();
   const auto& packs = manifest_.levels[id.level].packs;
   if (!std::binary_search(packs.begin(), packs.end(), id)) return std::shared_ptr<const OpenPack>();
+  auto opened = openPack(id);
+  if (!opened) {
+    ++packOpenFailures_;
+    failedPacks_.emplace(id, opened.error());
+    notePackError(id, opened.error());
+  }
+  return opened;
+}
 
+Result<std::shared_ptr<const TileStore::OpenPack>> TileStore::openPack(const PackId& id) {
   const std::filesystem::path path = packPath(dir_, id);
-  FdCloser file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
+  // O_NONBLOCK: a FIFO in the pack's place must not block the viewer; it is refused below.
+  FdCloser file{::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK)};
   if (file.fd < 0) return makeError(path.string() + ": cannot open: " + std::strerror(errno));
   struct stat info {};
-  if (::fstat(file.fd, &info) != 0) return makeError(path.string() + ": cannot stat");
+  if (::fstat(file.fd, &info) != 0) {
+    return makeError(path.string() + ": cannot stat: " + std::strerror(errno));
+  }
+  if (!S_ISREG(info.st_mode)) return makeError(path.string() + ": not a regular file");
   const PackLayout layout = manifest_.packLayout();
   std::vector<std::byte> head(layout.indexEndOffset());
   if (static_cast<uint64_t>(info.st_size) < head.size()) {
@@ -86,6 +101,23 @@ Result<std::shared_ptr<const TileStore::OpenPack>> TileStore::pack(const PackId&
   file.fd = -1;
   openPacks_.emplace(id, opened);
   return std::shared_ptr<const OpenPack>(opened);
+}
+
+void TileStore::notePackError(const PackId& id, const std::string& message) {
+  if (reportedPacks_.insert(id).second) newPackErrors_.push_back(message);
+}
+
+std::vector<std::string> TileStore::takeNewPackErrors() {
+  std::lock_guard lock(mutex_);
+  return std::exchange(newPackErrors_, {});
+}
+
+void TileStore::forgetFailedPacks() {
+  std::lock_guard lock(mutex_);
+  // A pack whose blocks failed to read is opened afresh: a repair usually renames a new file in.
+  for (const PackId& id : reportedPacks_) openPacks_.erase(id);
+  failedPacks_.clear();
+  reportedPacks_.clear();
 }
 
 Result<std::optional<PackEntry>> TileStore::entry(const geo::TileId& tile) {
@@ -110,6 +142,8 @@ Result<terrain::HeightBlock> TileStore::loadBlock(const geo::TileId& tile) {
   if (auto read =
           preadFully(p.fd, bytes.data(), bytes.size(), e.blockOffset, packPath(dir_, p.index.id));
       !read) {
+    std::lock_guard lock(mutex_);
+    notePackError(p.index.id, read.error());
     return Error{read.error()};
   }
   ++blockReads_;

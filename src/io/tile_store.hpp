@@ -7,6 +7,9 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
+#include <string>
+#include <vector>
 
 #include "geo/result.hpp"
 #include "geo/tile_id.hpp"
@@ -33,6 +36,15 @@ class TileStore {
 
   uint64_t blockReads() const { return blockReads_.load(); }
   uint64_t packIndexReads() const { return packIndexReads_.load(); }
+  // Packs that could not be opened: each is tried once, then its error is returned from memory.
+  uint64_t packOpenFailures() const { return packOpenFailures_.load(); }
+
+  // The first error of each pack found missing or damaged (at open or at a block read) since the
+  // last call, each pack once: a viewer reports these instead of one error per tile or frame.
+  std::vector<std::string> takeNewPackErrors();
+  // Lets failed packs be opened (again, from their current file) and reported again: say, after
+  // the pyramid was repaired.
+  void forgetFailedPacks();
 
  private:
   // Owns its descriptor, so a pack evicted from the cache stays readable while a loader uses it.
@@ -47,13 +59,19 @@ class TileStore {
   TileStore(std::filesystem::path dir, PyramidManifest manifest);
   // nullptr when the level has no such pack.
   Result<std::shared_ptr<const OpenPack>> pack(const PackId& id);
+  Result<std::shared_ptr<const OpenPack>> openPack(const PackId& id);  // with mutex_ held
+  void notePackError(const PackId& id, const std::string& message);    // with mutex_ held
 
   std::filesystem::path dir_;
   PyramidManifest manifest_;
   std::mutex mutex_;
   std::map<PackId, std::shared_ptr<const OpenPack>> openPacks_;
+  std::map<PackId, std::string> failedPacks_;  // open failed: the error, not retried
+  std::set<PackId> reportedPacks_;             // packs whose error was queued for reporting
+  std::vector<std::string> newPackErrors_;
   std::atomic<uint64_t> blockReads_{0};
   std::atomic<uint64_t> packIndexReads_{0};
+  std::atomic<uint64_t> packOpenFailures_{0};
 };
 
 }  // namespace globe::io

@@ -2,6 +2,8 @@
 #include "io/atomic_file.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <string>
 
@@ -86,6 +88,22 @@ TEST(AtomicFile, ReadRefusesOversizedMissingAndDirectories) {
   auto directory = readWholeFile(dir.path(), 10);
   ASSERT_FALSE(directory.ok());
   EXPECT_NE(directory.error().find("not a regular file"), std::string::npos) << directory.error();
+}
+
+TEST(AtomicFile, ReadRefusesAFifoWithoutWaitingAndNamesADanglingLink) {
+  TempDir dir;
+  ASSERT_EQ(::mkfifo((dir / "fifo").c_str(), 0644), 0);
+  ::alarm(20);  // opening a FIFO without a writer blocks: fail rather than hang
+  auto fifo = readWholeFile(dir / "fifo", 10);
+  ::alarm(0);
+  ASSERT_FALSE(fifo.ok());
+  EXPECT_NE(fifo.error().find("not a regular file"), std::string::npos) << fifo.error();
+
+  std::filesystem::create_symlink(dir / "gone", dir / "link");
+  auto dangling = readWholeFile(dir / "link", 10);
+  ASSERT_FALSE(dangling.ok());
+  EXPECT_NE(dangling.error().find("link: cannot open: No such file"), std::string::npos)
+      << dangling.error();
 }
 
 }  // namespace

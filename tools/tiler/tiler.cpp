@@ -72,6 +72,12 @@ std::string planFingerprint(const TilerOptions& options, const std::vector<Tiler
   return plan.dump(1) + "\n";
 }
 
+// A failed write leaves no half-written file (io::writeFileAtomically), so the run can resume.
+Error writeFailed(const std::string& error) {
+  return makeError(error +
+                   " (nothing half-written was left; once fixed, the same command resumes)");
+}
+
 Result<void> prepareOutput(const TilerOptions& options, const std::string& fingerprint) {
   std::error_code error;
   fs::create_directories(options.outputDir, error);
@@ -79,13 +85,14 @@ Result<void> prepareOutput(const TilerOptions& options, const std::string& finge
   // Temporaries left by a killed run are never complete files: remove them.
   for (auto it = fs::recursive_directory_iterator(options.outputDir, error);
        !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
-    if (it->is_regular_file() &&
+    std::error_code typeError;
+    if (it->is_regular_file(typeError) &&
         it->path().filename().string().find(".tmp-") != std::string::npos) {
-      fs::remove(it->path(), error);
+      fs::remove(it->path(), typeError);
     }
   }
   const fs::path planPath = options.outputDir / kPlanFileName;
-  if (fs::exists(planPath)) {
+  if (fs::exists(planPath, error)) {
     auto existing = io::readWholeFile(planPath, 1 << 24);
     if (!existing) return Error{existing.error()};
     const std::string text(reinterpret_cast<const char*>(existing->data()), existing->size());
@@ -96,11 +103,14 @@ Result<void> prepareOutput(const TilerOptions& options, const std::string& finge
     }
     return {};
   }
-  if (fs::exists(options.outputDir / io::kManifestFileName)) {
+  if (fs::exists(options.outputDir / io::kManifestFileName, error)) {
     return makeError(options.outputDir.string() + ": holds a pyramid without " + kPlanFileName +
                      "; remove it or choose another output directory");
   }
-  return io::writeFileAtomically(planPath, fingerprint);
+  if (auto written = io::writeFileAtomically(planPath, fingerprint); !written) {
+    return writeFailed(written.error());
+  }
+  return {};
 }
 
 Result<io::Pack> readPack(const fs::path& path) {
@@ -119,7 +129,8 @@ struct PackJob {
   Result<PackSummary> run(const io::PackId& id, bool& reused, PackBuildStats& stats) const {
     const fs::path path = io::packPath(options.outputDir, id);
     reused = false;
-    if (fs::exists(path)) {
+    std::error_code error;
+    if (fs::exists(path, error)) {  // an unreadable path (a symlink loop) is rebuilt too
       auto existing = readPack(path);
       if (existing && existing->id == id && existing->layout.tilesPerSide == layout.tilesPerSide &&
           existing->layout.verticesPerSide == layout.verticesPerSide) {
@@ -142,12 +153,11 @@ struct PackJob {
     }
     auto pack = buildPack(id, layout, plan, sources, children, stats);
     if (!pack) return Error{pack.error()};
-    std::error_code error;
     fs::create_directories(path.parent_path(), error);
     if (error)
       return makeError(path.parent_path().string() + ": cannot create: " + error.message());
     if (auto written = io::writeFileAtomically(path, io::encodePack(*pack)); !written) {
-      return Error{written.error()};
+      return writeFailed(written.error());
     }
     return summarise(*pack);
   }
@@ -271,7 +281,7 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
   if (auto written = io::writeFileAtomically(options.outputDir / io::kManifestFileName,
                                              io::manifestToJson(manifest));
       !written) {
-    return Error{written.error()};
+    return writeFailed(written.error());
   }
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "io/atomic_file.hpp"
+#include "io/crc32.hpp"
 #include "tools/tiler/tiler.hpp"
 
 namespace globe::tiler::testing {
@@ -53,6 +55,20 @@ const std::filesystem::path& bundledPyramid() {
     return out;
   }();
   return dir;
+}
+
+std::map<std::string, std::pair<uint32_t, size_t>> checksums(const std::filesystem::path& dir) {
+  std::map<std::string, std::pair<uint32_t, size_t>> sums;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
+    if (!entry.is_regular_file()) continue;
+    auto bytes = io::readWholeFile(entry.path(), 1ULL << 32);
+    EXPECT_TRUE(bytes) << bytes.error();
+    if (bytes) {
+      sums[std::filesystem::relative(entry.path(), dir).string()] = {io::crc32(*bytes),
+                                                                     bytes->size()};
+    }
+  }
+  return sums;
 }
 
 int16_t Oracle::Raster::sample(int64_t row, int64_t column) const {

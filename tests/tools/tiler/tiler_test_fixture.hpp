@@ -2,8 +2,11 @@
 // independent oracle that evaluates the "finest source wins, bilinear" rule on whole rasters.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/raster_source.hpp"
@@ -14,6 +17,8 @@ std::vector<std::string> bundledInputs();  // ETOPO20, W002N52, E138N35_FUJI fro
 // Tiles the bundled inputs (once) and returns the pyramid directory.
 const std::filesystem::path& bundledPyramid();
 std::filesystem::path freshTempDir(const std::string& name);
+// relative path -> CRC-32 and size of every regular file below dir
+std::map<std::string, std::pair<uint32_t, size_t>> checksums(const std::filesystem::path& dir);
 
 // Whole-raster reference sampler, written separately from the tiler's strip sampler.
 class Oracle {
