@@ -1,30 +1,38 @@
 #include "app/camera_argument.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <sstream>
+#include <optional>
+#include <string_view>
 #include <vector>
+
+#include "io/path_checks.hpp"
 
 namespace globe::app {
 namespace {
 
+// The fields of `text` split at every separator (an empty text has none; "1,,2" and "1,2," have
+// an empty field, which is not a number).
 Result<std::vector<double>> parseNumbers(const std::string& text, char separator,
                                          const char* what) {
   std::vector<double> values;
-  std::stringstream stream(text);
-  std::string field;
-  while (std::getline(stream, field, separator)) {
-    double value = 0;
-    const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
-    if (error != std::errc() || end != field.data() + field.size()) {
+  if (text.empty()) return values;
+  for (size_t begin = 0;;) {
+    const size_t end = std::min(text.find(separator, begin), text.size());
+    const std::string field = text.substr(begin, end - begin);
+    const std::optional<double> value = io::parseDecimal(field);
+    if (!value) {
       return makeError(std::string(what) + " '" + text + "': '" + field + "' is not a number");
     }
-    if (!std::isfinite(value)) {
-      return makeError(std::string(what) + " '" + text + "': '" + field + "' is not finite");
+    if (!std::isfinite(*value)) {
+      return makeError(std::string(what) + " '" + text + "': '" + field +
+                       "' is not a finite number");
     }
-    values.push_back(value);
+    values.push_back(*value);
+    if (end == text.size()) return values;
+    begin = end + 1;
   }
-  return values;
 }
 
 }  // namespace
@@ -62,6 +70,20 @@ Result<std::pair<int, int>> parseSizeArgument(const std::string& text) {
     return makeError("--size '" + text + "': width and height must be 1..16384");
   }
   return std::pair{w, h};
+}
+
+Result<double> parseNumberArgument(std::string_view option, const std::string& text, double minimum,
+                                   double maximum, bool minimumExcluded) {
+  const std::string named = std::string(option) + " '" + text + "': ";
+  const std::optional<double> value = io::parseDecimal(text);
+  if (!value) return makeError(named + "not a number");
+  if (!std::isfinite(*value)) return makeError(named + "not a finite number");
+  if (*value < minimum || (minimumExcluded && *value == minimum) || *value > maximum) {
+    return makeError(named + "must be in " + (minimumExcluded ? "(" : "[") +
+                     io::detail::formatNumber(minimum) + ", " + io::detail::formatNumber(maximum) +
+                     "]");
+  }
+  return *value;
 }
 
 }  // namespace globe::app

@@ -50,7 +50,8 @@ glm::dvec3 flyVelocityEcef(const geo::Ellipsoid& ellipsoid, const camera::Camera
 camera::CameraPose flyStep(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& pose,
                            const glm::dvec3& velocityEcefMetersPerSecond, double dtSeconds) {
   const glm::dvec3 displacement = velocityEcefMetersPerSecond * dtSeconds;
-  if (!(glm::length(displacement) > 0.0)) return pose;
+  const double length = glm::length(displacement);
+  if (!(length > 0.0 && std::isfinite(length))) return pose;  // NaN, inf or no motion
   const auto moved = geo::ecefToCartographic(
       ellipsoid, geo::cartographicToEcef(ellipsoid, pose.position) + displacement);
   if (!moved) return pose;
@@ -68,6 +69,7 @@ camera::CameraPose lookByPixels(const camera::CameraPose& pose, double dxPixels,
 camera::CameraPose lookByRadians(const camera::CameraPose& pose, double headingRadians,
                                  double pitchRadians, const FlySettings& settings) {
   constexpr double kTwoPi = 2 * std::numbers::pi;
+  if (!std::isfinite(headingRadians) || !std::isfinite(pitchRadians)) return pose;
   camera::CameraPose next = pose;
   next.headingRadians = std::fmod(pose.headingRadians + headingRadians, kTwoPi);
   if (next.headingRadians < 0) next.headingRadians += kTwoPi;

@@ -42,13 +42,14 @@ glm::dvec3 flyVelocityEcef(const geo::Ellipsoid& ellipsoid, const camera::Camera
                            const FlySettings& settings = {});
 
 // The pose `dtSeconds` of flight later: the position moved in a straight line (ECEF) by the
-// velocity, heading and pitch kept. The pose itself when nothing moves or the move is undefined.
+// velocity, heading and pitch kept. The pose itself when nothing moves or the move is undefined
+// (a non-finite velocity or dt).
 camera::CameraPose flyStep(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& pose,
                            const glm::dvec3& velocityEcefMetersPerSecond, double dtSeconds);
 
 // Mouse look: a drag (or a captured-cursor motion) of dx, dy pixels turns the heading right for
 // dx > 0 and tilts the view up for dy < 0 (window y points down); the pitch is clamped and the
-// heading wrapped into [0, 2 pi).
+// heading wrapped into [0, 2 pi). Non-finite deltas are ignored: the pose is returned as it is.
 camera::CameraPose lookByPixels(const camera::CameraPose& pose, double dxPixels, double dyPixels,
                                 const FlySettings& settings = {});
 // The same by angles (arrow keys).

@@ -116,7 +116,7 @@ FlyToAnimation::FlyToAnimation(const geo::Ellipsoid& ellipsoid, const camera::Ca
 
 camera::CameraPose FlyToAnimation::poseAt(double elapsedSeconds) const {
   const double u = std::clamp(elapsedSeconds / durationSeconds_, 0.0, 1.0);
-  if (u >= 1) return to_;
+  if (!(u < 1)) return to_;              // the end, or a non-finite time: the animation is over
   const double s = u * u * (3 - 2 * u);  // smoothstep
   camera::CameraPose pose = to_;
   pose.position.longitudeRadians = geo::wrapLongitudeRadians(

@@ -50,7 +50,8 @@ class FlyToAnimation {
   FlyToAnimation(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& from,
                  const camera::CameraPose& to, double durationSeconds);
   camera::CameraPose poseAt(double elapsedSeconds) const;
-  bool finishedAt(double elapsedSeconds) const { return elapsedSeconds >= durationSeconds_; }
+  // A non-finite time ends the animation (at its target), so it never runs on with NaN.
+  bool finishedAt(double elapsedSeconds) const { return !(elapsedSeconds < durationSeconds_); }
   const camera::CameraPose& to() const { return to_; }
 
  private:

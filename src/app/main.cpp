@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
       "snapshot", "render one view headless (OSMesa) once every tile it needs is loaded");
   std::string cameraText, sizeText = "1280x720", output, imagery;
   bool aboveTerrain = false;
-  double sse = 2.0;
+  std::string sseText = "2";  // numbers as text: checked and named by parseNumberArgument
   uint32_t maxLoadLevel = globe::geo::kMaxLevel;
   snapshot->add_option("PYRAMID", pyramid, "pyramid directory made by globe-tiler")->required();
   snapshot
@@ -50,7 +50,8 @@ int main(int argc, char** argv) {
   snapshot->add_flag("--above-terrain", aboveTerrain,
                      "HEIGHT is above the terrain, not the ellipsoid");
   snapshot->add_option("--imagery", imagery, "equirectangular world image to drape (JPEG/PNG)");
-  snapshot->add_option("--sse", sse, "maximum screen-space error in pixels")->capture_default_str();
+  snapshot->add_option("--sse", sseText, "maximum screen-space error in pixels (0.1..10000)")
+      ->capture_default_str();
   snapshot->add_option("--max-load-level", maxLoadLevel,
                        "never load tiles deeper than this (shows a view mid-refinement)");
   addGlobe(snapshot);
@@ -94,12 +95,13 @@ int main(int argc, char** argv) {
       "play a camera path (.json or KML tour) through the collision controller, headless "
       "(OSMesa): frames, log.csv, timing.csv, summary.txt in --out");
   std::string playPath, playOut, playSize = "1280x720", playVideo;
-  double playFps = 30;
+  std::string playFps = "30";
   bool playNoFrames = false, playWindow = false;
   play->add_option("PYRAMID", pyramid, "pyramid directory made by globe-tiler")->required();
   play->add_option("PATH", playPath, "camera path: .json keyframes or a .kml gx:Tour")->required();
   play->add_option("--out", playOut, "output directory")->required();
-  play->add_option("--fps", playFps, "frames per second of path time")->capture_default_str();
+  play->add_option("--fps", playFps, "frames per second of path time (0..1000]")
+      ->capture_default_str();
   play->add_option("--size", playSize, "WxH pixels")->capture_default_str();
   play->add_flag("--no-frames", playNoFrames, "write the logs only, no PNG frames");
   play->add_flag("--window", playWindow, "show the playback in a GLFW window (same loop)");
@@ -116,8 +118,13 @@ int main(int argc, char** argv) {
   if (snapshot->parsed()) {
     auto pose = globe::app::parseCameraArgument(cameraText);
     auto size = globe::app::parseSizeArgument(sizeText);
-    if (!pose || !size) {
-      std::fprintf(stderr, "globe snapshot: %s\n", (!pose ? pose.error() : size.error()).c_str());
+    auto sse = globe::app::parseNumberArgument("--sse", sseText, 0.1, 10000);
+    if (!pose || !size || !sse) {
+      std::fprintf(stderr, "globe snapshot: %s\n",
+                   (!pose   ? pose.error()
+                    : !size ? size.error()
+                            : sse.error())
+                       .c_str());
       return 2;
     }
     globe::app::SnapshotOptions options;
@@ -129,7 +136,7 @@ int main(int argc, char** argv) {
     options.output = output;
     if (!imagery.empty()) options.imagery = imagery;
     options.scene.globeModel = *globeModel;
-    options.scene.maximumScreenSpaceErrorPixels = sse;
+    options.scene.maximumScreenSpaceErrorPixels = *sse;
     options.scene.maximumLoadLevel = maxLoadLevel;
     auto report = globe::app::runSnapshot(options);
     if (!report) {
@@ -167,6 +174,10 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "globe view: %s\n", (!pose ? pose.error() : size.error()).c_str());
       return 2;
     }
+    if (viewFrames < 0) {
+      std::fprintf(stderr, "globe view: --frames %d: must be at least 0\n", viewFrames);
+      return 2;
+    }
     globe::app::ViewOptions options;
     options.pyramid = pyramid;
     options.pose = *pose;
@@ -186,15 +197,16 @@ int main(int argc, char** argv) {
 
   if (play->parsed()) {
     auto size = globe::app::parseSizeArgument(playSize);
-    if (!size) {
-      std::fprintf(stderr, "globe play: %s\n", size.error().c_str());
+    auto fps = globe::app::parseNumberArgument("--fps", playFps, 0, 1000, true);
+    if (!size || !fps) {
+      std::fprintf(stderr, "globe play: %s\n", (!size ? size.error() : fps.error()).c_str());
       return 2;
     }
     globe::app::PlayOptions options;
     options.pyramid = pyramid;
     options.pathFile = playPath;
     options.outputDir = playOut;
-    options.framesPerSecond = playFps;
+    options.framesPerSecond = *fps;
     options.widthPixels = size->first;
     options.heightPixels = size->second;
     options.writeFrames = !playNoFrames;

@@ -11,11 +11,13 @@ namespace globe::app {
 OrbitControls::OrbitControls(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& home,
                              double fovYRadians, const OrbitLimits& limits)
     : ellipsoid_(ellipsoid), home_(home), pose_(home), fovYRadians_(fovYRadians), limits_(limits) {
+  if (!pose_.isFinite()) pose_ = camera::CameraPose::fromDegrees(0, 20, 2e7);  // view's default
   clampPose();
   home_ = pose_;
 }
 
 void OrbitControls::rotateByDrag(double dxPixels, double dyPixels, int viewportHeightPixels) {
+  if (!std::isfinite(dxPixels) || !std::isfinite(dyPixels)) return;
   // Ground metres per pixel at the point looked at: its distance is the clearance over the sine
   // of the depression angle (capped for views near the horizon).
   const double depression = std::max(-pose_.pitchRadians, 0.17);
@@ -27,6 +29,7 @@ void OrbitControls::rotateByDrag(double dxPixels, double dyPixels, int viewportH
   const double rightMeters = -dxPixels * metersPerPixel, upMeters = dyPixels * metersPerPixel;
   const double eastMeters = rightMeters * ch + upMeters * sh;
   const double northMeters = -rightMeters * sh + upMeters * ch;
+  if (!std::isfinite(eastMeters) || !std::isfinite(northMeters)) return;  // a drag that overflows
   const double radiusMeters = ellipsoid_.semiMajorAxisMeters;
   const double cosLatitude = std::max(std::cos(pose_.position.latitudeRadians), 0.02);
   pose_.position.latitudeRadians += northMeters / radiusMeters;
@@ -35,12 +38,14 @@ void OrbitControls::rotateByDrag(double dxPixels, double dyPixels, int viewportH
 }
 
 void OrbitControls::tiltByDrag(double dxPixels, double dyPixels) {
+  if (!std::isfinite(dxPixels) || !std::isfinite(dyPixels)) return;
   pose_.headingRadians += dxPixels * kTiltRadiansPerPixel;
   pose_.pitchRadians -= dyPixels * kTiltRadiansPerPixel;
   clampPose();
 }
 
 void OrbitControls::zoom(double notches) {
+  if (!std::isfinite(notches)) return;
   const double clearance = std::max(clearanceMeters(), limits_.minimumClearanceMeters);
   pose_.position.heightMeters =
       groundHeightMeters_ + clearance * std::pow(kZoomFactorPerNotch, notches);
@@ -48,6 +53,7 @@ void OrbitControls::zoom(double notches) {
 }
 
 bool OrbitControls::setGroundHeight(double groundHeightMeters) {
+  if (!std::isfinite(groundHeightMeters)) return false;
   groundHeightMeters_ = groundHeightMeters;
   const camera::CameraPose before = pose_;
   clampPose();

@@ -18,6 +18,8 @@ struct OrbitLimits {
   double maximumPitchRadians = 0;                             // the horizon
 };
 
+// Every input must be finite: a NaN or infinite drag, zoom or ground height is ignored (a
+// non-finite home pose is replaced by the default view), so the pose stays finite.
 class OrbitControls {
  public:
   OrbitControls(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& home, double fovYRadians,

@@ -1,21 +1,18 @@
-// The `globe play` frame loop: scripted pose → controller against the complete drawn array →
-// complete view for the corrected pose → draw → frame, log row.
+// The `globe play` frame loop: PlaybackStep (scripted pose → controller against the complete
+// drawn array → complete view for the corrected pose) → draw → frame, log row.
 #include "app/play_command.hpp"
 
 #include <unistd.h>
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <system_error>
 
-#include "app/finest_surface.hpp"
 #include "app/path_conversion.hpp"
+#include "app/playback_step.hpp"
 #include "app/video_encoder.hpp"
-#include "camera/camera_controller.hpp"
 #include "camera/camera_path.hpp"
-#include "collision/exact_surface.hpp"
 #include "io/atomic_file.hpp"
 #include "io/camera_path_file.hpp"
 #include "io/image_io.hpp"
@@ -27,7 +24,6 @@ namespace globe::app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr int kMaximumSettleRounds = 8;
 constexpr long kMaximumFrames = 10'000'000;
 
 double msSince(Clock::time_point start) {
@@ -98,49 +94,6 @@ Result<Surface> openSurface(const PlayOptions& options) {
   return surface;
 }
 
-class Player {
- public:
-  Player(const PlayOptions& options, TerrainScene& scene, render::TerrainRenderer& renderer,
-         const Surface& surface)
-      : options_(options), scene_(scene), renderer_(renderer), surface_(surface) {}
-
-  // Updates the scene for the pose until every tile it needs is loaded.
-  Result<void> completeView(const camera::CameraPose& pose, FrameTimings& timings) {
-    const auto until = Clock::now() + std::chrono::seconds(options_.timeoutSeconds);
-    for (;;) {
-      const auto start = Clock::now();
-      const FrameInfo info =
-          scene_.update(pose, surface_.widthPixels, surface_.heightPixels, renderer_);
-      timings.selectMs += msSince(start);
-      if (info.complete) return {};
-      if (Clock::now() > until) {
-        return makeError("the view was not complete after " +
-                         std::to_string(options_.timeoutSeconds) + " s (" +
-                         std::to_string(info.requests) + " tiles still wanted)");
-      }
-      const auto wait = Clock::now();
-      scene_.waitForLoads(std::chrono::milliseconds(50));
-      timings.loadMs += msSince(wait);
-    }
-  }
-
-  // One controller update against the scene's current (complete) array, folded into the record.
-  void collide(camera::CameraController& controller, double dtSeconds, FrameRecord& record) {
-    const auto start = Clock::now();
-    const camera::CollisionState& state =
-        controller.update(dtSeconds, scene_.renderingTileArray(), scene_.ellipsoid());
-    record.timings.collisionMs += msSince(start);
-    record.collided = record.collided || state.collided;
-    if (record.response == collision::Response::None) record.response = state.response;
-  }
-
- private:
-  const PlayOptions& options_;
-  TerrainScene& scene_;
-  render::TerrainRenderer& renderer_;
-  const Surface& surface_;
-};
-
 }  // namespace
 
 Result<PlayReport> runPlay(const PlayOptions& options) {
@@ -150,7 +103,9 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
   if (!file) return Error{file.error()};
   if (!(std::isfinite(options.framesPerSecond) && options.framesPerSecond > 0 &&
         options.framesPerSecond <= 1000)) {
-    return makeError("--fps must be in (0, 1000]");
+    char text[64];
+    std::snprintf(text, sizeof text, "--fps %g: must be in (0, 1000]", options.framesPerSecond);
+    return makeError(text);
   }
   std::optional<std::filesystem::path> ffmpeg;
   if (options.video) {
@@ -171,8 +126,8 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
   if (!path) return makeError(options.pathFile.string() + ": " + path.error());
   const double fps = options.framesPerSecond;
   const double duration = path->endSeconds() - path->startSeconds();
-  const double frameCount = std::floor(duration * fps + 1e-9) + 1;
-  if (frameCount > static_cast<double>(kMaximumFrames)) {
+  const double frameCount = playbackFrameCount(duration, fps);
+  if (!(frameCount <= static_cast<double>(kMaximumFrames))) {
     return makeError("the path is " + std::to_string(duration) + " s long: more than " +
                      std::to_string(kMaximumFrames) + " frames at this --fps");
   }
@@ -195,70 +150,22 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
   if (!surface) return Error{surface.error()};
   auto renderer = render::TerrainRenderer::create({});
   if (!renderer) return Error{renderer.error()};
-  const geo::Ellipsoid& ellipsoid = (*scene)->ellipsoid();
   const int width = surface->widthPixels, height = surface->heightPixels;
-  Player player(options, **scene, **renderer, *surface);
-  FinestSurface finestSurface((*scene)->store(), ellipsoid);
-
-  const camera::CameraPose first = camera::samplePath(*path, path->startSeconds(), ellipsoid);
-  camera::CameraController controller(first);
-  controller.setNearPlane({camera::projectionForHeight(0, controller.settings().clearance.eyeMeters,
-                                                       sceneOptions.fovYRadians, 1, ellipsoid)
-                               .nearMeters,
-                           sceneOptions.fovYRadians,
-                           static_cast<double>(width) / std::max(height, 1)});
+  PlaybackStep step(**scene, **renderer, *path, width, height,
+                    std::chrono::seconds(options.timeoutSeconds));
   // The first collision test runs against a complete view at the scripted start.
   FrameTimings startup;
-  if (auto view = player.completeView(first, startup); !view) return Error{view.error()};
+  if (auto view = step.start(startup); !view) return Error{view.error()};
 
   PlayReport report;
   std::vector<FrameRecord> records;
   for (int i = 0; i < frames; ++i) {
     const auto frameStart = Clock::now();
-    FrameRecord record;
-    record.frame = i;
-    record.timeSeconds = path->startSeconds() + static_cast<double>(i) / fps;
-    const camera::CameraPose scripted = camera::samplePath(*path, record.timeSeconds, ellipsoid);
-    record.scriptedHeightMeters = scripted.position.heightMeters;
-    // The move, against the array drawn last frame (complete, so the same on every run).
-    controller.propose(scripted);
-    player.collide(controller, i == 0 ? 0.0 : 1.0 / fps, record);
-    // The view for the corrected pose, and the controller once more against that array (dt 0:
-    // the floor and the near-plane push only) until it keeps the pose.
-    bool settled = false;
-    for (int round = 0; round < kMaximumSettleRounds && !settled; ++round) {
-      if (auto view = player.completeView(controller.pose(), record.timings); !view) {
-        return Error{view.error()};
-      }
-      const camera::CameraPose before = controller.pose();
-      player.collide(controller, 0.0, record);
-      settled = camera::samePose(before, controller.pose());
-    }
-    if (!settled) {
-      if (auto view = player.completeView(controller.pose(), record.timings); !view) {
-        return Error{view.error()};
-      }
-    }
-    record.pose = controller.pose();
-    const auto surfaceHeight = collision::exactSurfaceHeight(
-        (*scene)->renderingTileArray(), ellipsoid, record.pose.position.longitudeRadians,
-        record.pose.position.latitudeRadians);
-    if (surfaceHeight) {
-      record.terrainHeightMeters = surfaceHeight->heightMeters;
-      const std::vector<geo::TileId>& drawn = (*scene)->tiles();
-      record.terrainSource =
-          std::find(drawn.begin(), drawn.end(), surfaceHeight->tile) != drawn.end()
-              ? TerrainSource::Drawn
-              : TerrainSource::Nadir;
-    } else {
-      record.terrainSource = TerrainSource::Finest;
-      auto finest = finestSurface.heightMeters(record.pose.position.longitudeRadians,
-                                               record.pose.position.latitudeRadians);
-      if (!finest) return Error{finest.error()};
-      record.terrainHeightMeters = *finest;
-    }
-    record.clearanceMeters = record.pose.position.heightMeters - record.terrainHeightMeters;
-    record.nearClearanceMeters = controller.state().nearPlaneClearanceMeters;
+    // Time from the frame number, never accumulated: frame i is exactly start + i / fps.
+    auto stepped = step.frame(i, path->startSeconds() + static_cast<double>(i) / fps,
+                              i == 0 ? 0.0 : 1.0 / fps);
+    if (!stepped) return Error{stepped.error()};
+    FrameRecord& record = *stepped;
 
     const auto drawStart = Clock::now();
     const render::FrameStats stats = (*scene)->draw(**renderer);

@@ -1,12 +1,12 @@
 #include "app/query_command.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <map>
 #include <string>
 
 #include "geo/cartographic.hpp"
 #include "geo/tiling_scheme.hpp"
+#include "io/path_checks.hpp"
 #include "io/tile_store.hpp"
 
 namespace globe::app {
@@ -19,10 +19,7 @@ std::optional<double> parseNumber(std::string_view text) {
   while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r')) {
     text.remove_suffix(1);
   }
-  double value = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
-  return value;
+  return io::parseDecimal(text);  // 1e999 reads as inf, refused below as not finite
 }
 
 // "lon,lat" → radians, or the reason the line is rejected.

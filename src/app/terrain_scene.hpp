@@ -53,6 +53,7 @@ class TerrainScene {
   const geo::Ellipsoid& ellipsoid() const { return ellipsoid_; }
   io::TileStore& store() { return *store_; }
   const io::TileLoader& loader() const { return *loader_; }
+  const io::BlockCache& cache() const { return cache_; }
   const SceneOptions& options() const { return options_; }
 
   // Selects and streams the tiles for this pose; uploads what arrived to the renderer.

@@ -3,8 +3,9 @@
 #include <tinyxml2.h>
 
 #include <algorithm>
-#include <charconv>
+#include <cmath>
 #include <cstring>
+#include <limits>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -74,18 +75,25 @@ class TourReader {
       return fail(parent, std::string(label) + ": missing <" + std::string(name) + ">");
     }
     const std::string_view text = trimmed(e->GetText());
-    double value = 0;
-    const auto parsed = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (text.empty() || parsed.ec == std::errc::invalid_argument ||
-        parsed.ptr != text.data() + text.size()) {
+    const std::optional<double> value = parseDecimal(text);
+    if (!value) {
       return fail(
           *e, std::string(label) + ": '" + std::string(text.substr(0, 40)) + "' is not a number");
     }
-    if (parsed.ec == std::errc::result_out_of_range) value = kUnbounded;
-    if (auto problem = detail::checkNumber(text.substr(0, 40), value, minimum, maximum)) {
+    if (auto problem = detail::checkNumber(text.substr(0, 40), *value, minimum, maximum)) {
       return fail(*e, std::string(label) + ": " + *problem);
     }
-    return value;
+    return *value;
+  }
+
+  // Each duration is finite, but their sum may not be: the tour's time must stay a number.
+  std::optional<Error> timeOverflow(const XMLElement& step, double timeSeconds) const {
+    if (std::isfinite(timeSeconds)) return std::nullopt;
+    const XMLElement* at = child(step, "duration");
+    return fail(at ? *at : step, "gx:" + std::string(localName(step)) +
+                                     ".duration: the tour's time passes " +
+                                     detail::formatNumber(std::numeric_limits<double>::max()) +
+                                     " s (not a finite number)");
   }
 
   Result<PathKeyframe> camera(const XMLElement& camera) const {
@@ -146,6 +154,7 @@ class TourReader {
         if (!file.keyframes.empty() && *duration > 0) {
           PathKeyframe hold = file.keyframes.back();
           hold.timeSeconds += pendingSeconds + *duration;
+          if (auto overflow = timeOverflow(*e, hold.timeSeconds)) return *overflow;
           file.keyframes.push_back(hold);
           pendingSeconds = 0;
         }
@@ -174,6 +183,7 @@ class TourReader {
         key->timeSeconds = 0;  // the first FlyTo's duration is Google Earth's approach to it
       } else {
         key->timeSeconds = file.keyframes.back().timeSeconds + pendingSeconds + *duration;
+        if (auto overflow = timeOverflow(*e, key->timeSeconds)) return *overflow;
         if (!(key->timeSeconds > file.keyframes.back().timeSeconds)) {
           const XMLElement* at = child(*e, "duration");
           return fail(at ? *at : *e,

@@ -4,6 +4,24 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace globe::io {
+
+std::optional<double> parseDecimal(std::string_view text) {
+  double value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (end != text.data() + text.size() || text.empty()) return std::nullopt;
+  if (error == std::errc::result_out_of_range) {
+    // from_chars leaves the value alone on overflow and underflow alike; strtod tells them apart.
+    return std::strtod(std::string(text).c_str(), nullptr);
+  }
+  if (error != std::errc()) return std::nullopt;
+  return value;
+}
+
+}  // namespace globe::io
 
 namespace globe::io::detail {
 

@@ -9,6 +9,16 @@
 
 #include "io/camera_path_file.hpp"
 
+namespace globe::io {
+
+// A decimal number as written in a file or on the command line (std::from_chars' general format:
+// no leading '+' or spaces; "nan", "inf" and "infinity" are read as such, to be refused by the
+// caller's finiteness check). A value too large for a double reads as +-infinity and one too
+// small as +-0, as strtod gives them. nullopt when the text is not a number.
+std::optional<double> parseDecimal(std::string_view text);
+
+}  // namespace globe::io
+
 namespace globe::io::detail {
 
 inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();

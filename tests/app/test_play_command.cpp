@@ -250,8 +250,9 @@ TEST(GlobePlayErrors, AnUnwritableOutputOrMissingFfmpegIsRefusedBeforeRendering)
   EXPECT_FALSE(fs::exists(dir / "v"));
   const PlayRun badFps =
       runGlobe(bundledPyramid().string() + " " + path + " --fps 0 --out " + (dir / "f").string());
-  EXPECT_EQ(badFps.exitCode, 1);
-  EXPECT_NE(badFps.output.find("--fps must be in (0, 1000]"), std::string::npos) << badFps.output;
+  EXPECT_EQ(badFps.exitCode, 2);  // a bad argument
+  EXPECT_NE(badFps.output.find("--fps '0': must be in (0, 1000]"), std::string::npos)
+      << badFps.output;
 }
 
 TEST(GlobePlayFormats, TheBundledKmlTourPlaysAndAVideoIsEncoded) {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <numbers>
 
@@ -286,6 +287,131 @@ TEST(CameraController, NonFiniteInputIsRejectedAndTheLastValidPoseKept) {
   EXPECT_TRUE(fallback.pose().isFinite());
   EXPECT_TRUE(fallback.update(kDt, fuji(), kWgs84).inputRejected);
   EXPECT_FALSE(fallback.update(kDt, fuji(), kWgs84).inputRejected);
+}
+
+// A camera in motion that receives non-finite input in any form: the input is dropped and the
+// camera goes on exactly as a twin that never received it (a bad dt moves nothing: the last
+// valid pose is kept); a camera driven by proposals keeps its last valid pose for the frame.
+TEST(CameraController, ARunningCameraDropsNonFiniteInputAndGoesOn) {
+  struct BadInput {
+    const char* name;
+    std::function<void(CameraController&)> apply;
+    double dtSeconds;
+  };
+  const geo::Cartographic at = onSlope(0.5, 2500.0, 300.0);
+  const BadInput inputs[] = {
+      {"propose NaN longitude",
+       [&](CameraController& c) {
+         c.propose({{kNan, at.latitudeRadians, 3000.0}, 0, 0, 0});
+       },
+       kDt},
+      {"propose +inf height",
+       [&](CameraController& c) {
+         c.propose({{at.longitudeRadians, at.latitudeRadians, kInf}, 0, 0, 0});
+       },
+       kDt},
+      {"propose -inf pitch",
+       [&](CameraController& c) {
+         c.propose({at, 0, -kInf, 0});
+       },
+       kDt},
+      {"jump to NaN roll",
+       [&](CameraController& c) {
+         c.setTargetPose({at, 0, 0, kNan});
+       },
+       kDt},
+      {"NaN velocity",
+       [](CameraController& c) {
+         c.setVelocity({0, kNan, 0});
+       },
+       kDt},
+      {"inf acceleration",
+       [](CameraController& c) {
+         c.setAcceleration({kInf, 0, 0});
+       },
+       kDt},
+      {"NaN angular velocity",
+       [](CameraController& c) {
+         c.setAngularVelocity({kNan, kNan, kNan});
+       },
+       kDt},
+      {"-inf angular acceleration",
+       [](CameraController& c) {
+         c.setAngularAcceleration({0, 0, -kInf});
+       },
+       kDt},
+      {"NaN near plane",
+       [](CameraController& c) {
+         c.setNearPlane({0.5, kNan, 1.7});
+       },
+       kDt},
+      {"NaN dt", [](CameraController&) {}, kNan},
+      {"+inf dt", [](CameraController&) {}, kInf},
+      {"-inf dt", [](CameraController&) {}, -kInf},
+  };
+  for (const BadInput& input : inputs) {
+    SCOPED_TRACE(input.name);
+    CameraController controller({at, 0.3, -0.2, 0.0}), twin({at, 0.3, -0.2, 0.0});
+    for (CameraController* c : {&controller, &twin}) {
+      ASSERT_TRUE(c->setVelocity({20.0, -10.0, 5.0}));  // moving at 23 m/s
+      for (int frame = 0; frame < 5; ++frame) c->update(kDt, fuji(), kWgs84);
+    }
+    const CameraPose valid = controller.pose();
+    input.apply(controller);
+    EXPECT_TRUE(controller.update(input.dtSeconds, fuji(), kWgs84).inputRejected);
+    if (std::isfinite(input.dtSeconds)) twin.update(kDt, fuji(), kWgs84);
+    expectSamePose(controller.pose(), twin.pose());
+    if (!std::isfinite(input.dtSeconds)) expectSamePose(controller.pose(), valid);
+    EXPECT_EQ(controller.velocity(), twin.velocity());
+    // The next frame is valid again, and the same as the twin's.
+    EXPECT_FALSE(controller.update(kDt, fuji(), kWgs84).inputRejected);
+    twin.update(kDt, fuji(), kWgs84);
+    expectSamePose(controller.pose(), twin.pose());
+    EXPECT_FALSE(samePose(controller.pose(), valid));
+  }
+  // Driven by a proposal each frame (as `globe play` and `globe view` drive it): a bad proposal
+  // keeps the pose of the frame before, and the next good one is taken.
+  CameraController driven({at, 0.3, -0.2, 0.0});
+  for (int frame = 1; frame <= 5; ++frame) {
+    driven.propose({offsetPosition(at, 0.5, 2.0 * frame, at.heightMeters), 0.3, -0.2, 0.0});
+    driven.update(kDt, fuji(), kWgs84);
+  }
+  const CameraPose valid = driven.pose();
+  for (const double bad : {kNan, kInf, -kInf}) {
+    EXPECT_FALSE(driven.propose({offsetPosition(at, 0.5, 12.0, bad), 0.3, -0.2, 0.0}));
+    EXPECT_TRUE(driven.update(kDt, fuji(), kWgs84).inputRejected);
+    expectSamePose(driven.pose(), valid);
+  }
+  ASSERT_TRUE(driven.propose({offsetPosition(at, 0.5, 12.0, at.heightMeters), 0.3, -0.2, 0.0}));
+  EXPECT_FALSE(driven.update(kDt, fuji(), kWgs84).inputRejected);
+  EXPECT_FALSE(samePose(driven.pose(), valid));
+}
+
+// Finite but absurd poses (beyond the path files' ranges): the controller never produces a
+// non-finite pose from them, and a valid proposal afterwards is taken.
+TEST(CameraController, HugeFiniteProposalsNeverGiveANonFinitePose) {
+  const geo::Cartographic at = onSlope(0.5, 2500.0, 300.0);
+  const CameraPose huge[] = {
+      {{1e300, at.latitudeRadians, 3000.0}, 0, 0, 0},
+      {{at.longitudeRadians, at.latitudeRadians, 1e300}, 0, 0, 0},
+      {{at.longitudeRadians, at.latitudeRadians, -1e300}, 0, 0, 0},
+      {{at.longitudeRadians, kPi / 2, 3000.0}, 0, 0, 0},
+      {{at.longitudeRadians, -kPi / 2, -6.0e6}, 0, 0, 0},  // near the centre of the Earth
+      {at, 1e300, -1e300, 1e300},
+      {{-std::numeric_limits<double>::max(), 0, std::numeric_limits<double>::max()}, 0, 0, 0},
+  };
+  for (const CameraPose& pose : huge) {
+    SCOPED_TRACE(pose.position.heightMeters);
+    CameraController controller({at, 0.0, -0.3, 0.0});
+    controller.update(kDt, fuji(), kWgs84);
+    controller.propose(pose);
+    controller.update(kDt, fuji(), kWgs84);
+    EXPECT_TRUE(controller.pose().isFinite());
+    ASSERT_TRUE(controller.propose({at, 0.1, -0.3, 0.0}, MotionKind::Jump));
+    controller.update(kDt, fuji(), kWgs84);
+    EXPECT_TRUE(controller.pose().isFinite());
+    EXPECT_NEAR(controller.pose().position.heightMeters, at.heightMeters, 1e-6);
+  }
 }
 
 TEST(CameraController, StateDescribesTheTerrainUnderTheEye) {

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 
 #include <glm/geometric.hpp>
@@ -81,6 +82,32 @@ TEST(CameraPath, ClampsBeforeTheStartAndAfterTheEnd) {
                                   {{3.0, CameraPose::fromDegrees(10, 20, 300, 40, -50, 0)}});
   EXPECT_EQ(samplePath(one, 0, kWgs84).position.heightMeters, 300);
   EXPECT_EQ(samplePath(one, 9, kWgs84).position.heightMeters, 300);
+}
+
+TEST(CameraPath, NonFiniteAndHugeTimesGiveAnEndKeyAndHugeKeysStayFinite) {
+  const CameraPath path = windingPath(PathInterpolation::Smooth);
+  const double kMax = std::numeric_limits<double>::max();
+  const double kInf = std::numeric_limits<double>::infinity();
+  const std::pair<double, double> timesAndHeights[] = {
+      {std::nan(""), 8000}, {-kInf, 8000}, {-kMax, 8000}, {-1e300, 8000},
+      {kInf, 5000},         {kMax, 5000},  {1e300, 5000},
+  };
+  for (const auto& [time, height] : timesAndHeights) {
+    const CameraPose pose = samplePath(path, time, kWgs84);
+    EXPECT_TRUE(isFinite(pose)) << time;
+    EXPECT_EQ(pose.position.heightMeters, height) << time;
+  }
+  // Keys whose time span overflows a double, with huge angles: every sample is finite.
+  for (const PathInterpolation interpolation :
+       {PathInterpolation::Smooth, PathInterpolation::Linear}) {
+    const CameraPath wide = makePath(
+        interpolation, {{-kMax, CameraPose::fromDegrees(138.6, 35.2, 8000, 1e300, -30)},
+                        {0.0, CameraPose::fromDegrees(138.7, 35.3, 3000, -1e300, -20)},
+                        {kMax, CameraPose::fromDegrees(138.8, 35.4, 4000e4, 0, 90, 1e300)}});
+    for (const double time : {-kMax, -1e308, -1.0, 0.0, 1e-300, 1e300, kMax}) {
+      EXPECT_TRUE(isFinite(samplePath(wide, time, kWgs84))) << time;
+    }
+  }
 }
 
 // Velocity estimates from either side of t: equal for a C1 path, different at a corner.

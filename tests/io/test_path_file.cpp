@@ -1,12 +1,15 @@
 // Camera path files: the JSON format read and written, KML tours, and every bad file refused
 // with its file, line and field.
 #include "io/camera_path_file.hpp"
+#include "io/path_checks.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cmath>
 #include <fstream>
+#include <limits>
 #include <string>
 
 namespace globe::io {
@@ -337,6 +340,46 @@ TEST_F(PathFiles, BadKmlNamesFileLineAndField) {
     return s;
   }() + "</kml>";
   EXPECT_EQ(errorOf("nested.kml", nested).rfind("nested.kml:1: not valid XML", 0), 0u);
+}
+
+TEST(ParseDecimal, OverflowIsInfinityUnderflowIsZeroAndNonNumbersAreRefused) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::pair<const char*, double> numbers[] = {
+      {"0", 0.0},       {"-2.5", -2.5},    {"1e308", 1e308},       {"1e999", inf},
+      {"-1e999", -inf}, {"1E400", inf},    {"inf", inf},           {"-infinity", -inf},
+      {"1e-999", 0.0},  {"-1e-400", -0.0}, {"4.9e-324", 4.9e-324}, {"1e+400", inf},
+  };
+  for (const auto& [text, value] : numbers) {
+    const auto parsed = parseDecimal(text);
+    ASSERT_TRUE(parsed) << text;
+    EXPECT_EQ(*parsed, value) << text;
+    EXPECT_EQ(std::signbit(*parsed), std::signbit(value)) << text;
+  }
+  // 400 digits with no exponent overflow too, and 400 zeros after the point underflow.
+  EXPECT_EQ(parseDecimal(std::string(400, '9')), inf);
+  EXPECT_EQ(parseDecimal("0." + std::string(400, '0') + "1"), 0.0);
+  for (const char* text : {"nan", "-nan", "NaN", "nan(1)"}) {
+    const auto parsed = parseDecimal(text);
+    ASSERT_TRUE(parsed) << text;
+    EXPECT_TRUE(std::isnan(*parsed)) << text;
+  }
+  for (const char* text : {"", " 1", "1 ", "+1", "1,5", "0x10", "1e", "--1", "n", "e5", "1..2"}) {
+    EXPECT_FALSE(parseDecimal(text)) << "'" << text << "'";
+  }
+}
+
+TEST_F(PathFiles, KmlDurationsWhoseSumOverflowsAreRefused) {
+  // Each duration is finite, the tour's time is not: 1e308 + 1e308.
+  const std::string big = "<gx:duration>1e308</gx:duration>";
+  std::string flyTos = tourWith("<gx:duration>3</gx:duration>", big);
+  flyTos = flyTos.replace(flyTos.find("<gx:duration>2</gx:duration>"), 28, big);
+  EXPECT_EQ(errorOf("sum.kml", flyTos),
+            "sum.kml:37: gx:FlyTo.duration: the tour's time passes 1.7976931348623157e+308 s "
+            "(not a finite number)");
+  // A number too small for a double is 0: accepted where 0 is in range.
+  auto tiny = readCameraPath(write("tiny.kml", tourWith("<roll>2</roll>", "<roll>1e-999</roll>")));
+  ASSERT_TRUE(tiny) << tiny.error();
+  EXPECT_EQ(tiny->keyframes[2].rollDegrees, 0.0);
 }
 
 TEST_F(PathFiles, TheBundledExamplesRead) {

@@ -1,0 +1,125 @@
+// Scripted pose → controller against the complete array → complete view for the corrected pose →
+// settle → the frame's record (terrain under the camera, clearances).
+#include "app/playback_step.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "collision/exact_surface.hpp"
+
+namespace globe::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr int kMaximumSettleRounds = 8;
+
+double msSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+double playbackFrameCount(double durationSeconds, double framesPerSecond) {
+  return std::floor(durationSeconds * framesPerSecond + 1e-9) + 1;
+}
+
+PlaybackStep::PlaybackStep(TerrainScene& scene, render::TerrainRenderer& renderer,
+                           const camera::CameraPath& path, int widthPixels, int heightPixels,
+                           std::chrono::seconds viewTimeout)
+    : scene_(scene),
+      renderer_(renderer),
+      path_(path),
+      widthPixels_(widthPixels),
+      heightPixels_(heightPixels),
+      viewTimeout_(viewTimeout),
+      finestSurface_(scene.store(), scene.ellipsoid()),
+      controller_(camera::samplePath(path, path.startSeconds(), scene.ellipsoid())) {
+  const double fovY = scene.options().fovYRadians;
+  controller_.setNearPlane(
+      {camera::projectionForHeight(0, controller_.settings().clearance.eyeMeters, fovY, 1,
+                                   scene.ellipsoid())
+           .nearMeters,
+       fovY, static_cast<double>(widthPixels) / std::max(heightPixels, 1)});
+}
+
+Result<void> PlaybackStep::start(FrameTimings& timings) {
+  return completeView(controller_.pose(), timings);
+}
+
+Result<void> PlaybackStep::completeView(const camera::CameraPose& pose, FrameTimings& timings) {
+  const auto until = Clock::now() + viewTimeout_;
+  for (;;) {
+    const auto start = Clock::now();
+    const FrameInfo info = scene_.update(pose, widthPixels_, heightPixels_, renderer_);
+    timings.selectMs += msSince(start);
+    if (info.complete) return {};
+    if (Clock::now() > until) {
+      return makeError("the view was not complete after " + std::to_string(viewTimeout_.count()) +
+                       " s (" + std::to_string(info.requests) + " tiles still wanted)");
+    }
+    const auto wait = Clock::now();
+    scene_.waitForLoads(std::chrono::milliseconds(50));
+    timings.loadMs += msSince(wait);
+  }
+}
+
+void PlaybackStep::collide(double dtSeconds, FrameRecord& record) {
+  const auto start = Clock::now();
+  const camera::CollisionState& state =
+      controller_.update(dtSeconds, scene_.renderingTileArray(), scene_.ellipsoid());
+  record.timings.collisionMs += msSince(start);
+  record.collided = record.collided || state.collided;
+  if (record.response == collision::Response::None) record.response = state.response;
+}
+
+Result<FrameRecord> PlaybackStep::frame(int frameIndex, double timeSeconds, double dtSeconds,
+                                        camera::MotionKind kind) {
+  const geo::Ellipsoid& ellipsoid = scene_.ellipsoid();
+  FrameRecord record;
+  record.frame = frameIndex;
+  record.timeSeconds = timeSeconds;
+  const camera::CameraPose scripted = camera::samplePath(path_, timeSeconds, ellipsoid);
+  record.scriptedHeightMeters = scripted.position.heightMeters;
+  // The move, against the array drawn last frame (complete, so the same on every run).
+  controller_.propose(scripted, kind);
+  collide(dtSeconds, record);
+  // The view for the corrected pose, and the controller once more against that array (dt 0:
+  // the floor and the near-plane push only) until it keeps the pose.
+  bool settled = false;
+  for (int round = 0; round < kMaximumSettleRounds && !settled; ++round) {
+    if (auto view = completeView(controller_.pose(), record.timings); !view) {
+      return Error{view.error()};
+    }
+    const camera::CameraPose before = controller_.pose();
+    collide(0.0, record);
+    settled = camera::samePose(before, controller_.pose());
+  }
+  if (!settled) {
+    if (auto view = completeView(controller_.pose(), record.timings); !view) {
+      return Error{view.error()};
+    }
+  }
+  record.pose = controller_.pose();
+  const auto surfaceHeight = collision::exactSurfaceHeight(scene_.renderingTileArray(), ellipsoid,
+                                                           record.pose.position.longitudeRadians,
+                                                           record.pose.position.latitudeRadians);
+  if (surfaceHeight) {
+    record.terrainHeightMeters = surfaceHeight->heightMeters;
+    const std::vector<geo::TileId>& drawn = scene_.tiles();
+    record.terrainSource = std::find(drawn.begin(), drawn.end(), surfaceHeight->tile) != drawn.end()
+                               ? TerrainSource::Drawn
+                               : TerrainSource::Nadir;
+  } else {
+    record.terrainSource = TerrainSource::Finest;
+    auto finest = finestSurface_.heightMeters(record.pose.position.longitudeRadians,
+                                              record.pose.position.latitudeRadians);
+    if (!finest) return Error{finest.error()};
+    record.terrainHeightMeters = *finest;
+  }
+  record.clearanceMeters = record.pose.position.heightMeters - record.terrainHeightMeters;
+  record.nearClearanceMeters = controller_.state().nearPlaneClearanceMeters;
+  return record;
+}
+
+}  // namespace globe::app

@@ -1,0 +1,96 @@
+// The view's controls given non-finite input (NaN, +-inf, overflowing deltas): fly, look, orbit
+// and fly-to keep a finite pose, the one they had, so the camera never freezes on a NaN.
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "app/fly_controls.hpp"
+#include "app/fly_to.hpp"
+#include "app/orbit_controls.hpp"
+#include "camera/camera_pose.hpp"
+#include "geo/ecef.hpp"
+
+namespace globe::app {
+namespace {
+
+using camera::CameraPose;
+
+constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
+const double kBad[] = {kNan, kInf, -kInf};
+
+void expectSamePose(const CameraPose& actual, const CameraPose& expected) {
+  EXPECT_TRUE(camera::samePose(actual, expected))
+      << actual.position.longitudeRadians << " " << actual.position.latitudeRadians << " "
+      << actual.position.heightMeters << " " << actual.headingRadians << " " << actual.pitchRadians;
+}
+
+TEST(ControlGuards, FlyStepAndLookIgnoreNonFiniteInput) {
+  const CameraPose pose = CameraPose::fromDegrees(138.7, 35.3, 5000, 30, -20, 0);
+  for (const double bad : kBad) {
+    SCOPED_TRACE(bad);
+    expectSamePose(flyStep(kWgs84, pose, {bad, 0, 0}, 0.1), pose);
+    expectSamePose(flyStep(kWgs84, pose, {0, 0, 10}, bad), pose);
+    expectSamePose(lookByPixels(pose, bad, 0), pose);
+    expectSamePose(lookByPixels(pose, 0, bad), pose);
+    expectSamePose(lookByRadians(pose, bad, 0), pose);
+    expectSamePose(lookByRadians(pose, 0, bad), pose);
+    // A non-finite speed factor gives a non-finite velocity, which the step ignores.
+    FlyKeys forward;
+    forward.forward = true;
+    const glm::dvec3 velocity = flyVelocityEcef(kWgs84, pose, forward, 100, bad);
+    expectSamePose(flyStep(kWgs84, pose, velocity, 0.1), pose);
+  }
+  // A finite velocity whose step overflows is ignored as well.
+  expectSamePose(flyStep(kWgs84, pose, {1e308, 1e308, 0}, 10), pose);
+  // Finite input still moves and turns.
+  EXPECT_FALSE(camera::samePose(flyStep(kWgs84, pose, {0, 0, 10}, 0.1), pose));
+  EXPECT_FALSE(camera::samePose(lookByPixels(pose, 5, 0), pose));
+}
+
+TEST(ControlGuards, OrbitControlsKeepAFinitePose) {
+  const CameraPose home = CameraPose::fromDegrees(138.7, 35.3, 5000, 30, -40, 0);
+  OrbitControls controls(kWgs84, home, 0.785);
+  const CameraPose start = controls.pose();
+  for (const double bad : kBad) {
+    SCOPED_TRACE(bad);
+    controls.rotateByDrag(bad, 3, 720);
+    controls.rotateByDrag(3, bad, 720);
+    controls.tiltByDrag(bad, 0);
+    controls.tiltByDrag(0, bad);
+    controls.zoom(bad);
+    EXPECT_FALSE(controls.setGroundHeight(bad));
+    expectSamePose(controls.pose(), start);
+    EXPECT_EQ(controls.groundHeightMeters(), 0.0);
+  }
+  // Finite input that overflows: a zoom is clamped to the limits, a drag ignored.
+  controls.zoom(-1e308);
+  EXPECT_TRUE(controls.pose().isFinite());
+  EXPECT_LE(controls.pose().position.heightMeters, OrbitLimits{}.maximumHeightMeters);
+  const CameraPose zoomedOut = controls.pose();
+  controls.rotateByDrag(1e308, -1e308, 720);
+  expectSamePose(controls.pose(), zoomedOut);
+  // A non-finite home is replaced by the default view.
+  OrbitControls fallback(kWgs84, CameraPose::fromDegrees(kNan, 0, 1000), 0.785);
+  EXPECT_TRUE(fallback.pose().isFinite());
+  EXPECT_TRUE(fallback.home().isFinite());
+}
+
+TEST(ControlGuards, FlyToEndsOnANonFiniteTime) {
+  const CameraPose from = CameraPose::fromDegrees(138.7, 35.3, 5000, 30, -40, 0);
+  const CameraPose to = CameraPose::fromDegrees(138.8, 35.4, 3000, 40, -30, 0);
+  const FlyToAnimation animation(kWgs84, from, to, 1.0);
+  expectSamePose(animation.poseAt(kNan), to);
+  expectSamePose(animation.poseAt(kInf), to);
+  EXPECT_TRUE(animation.poseAt(-kInf).isFinite());  // before the start: at the start
+  EXPECT_TRUE(animation.finishedAt(kNan));
+  EXPECT_TRUE(animation.finishedAt(kInf));
+  EXPECT_FALSE(animation.finishedAt(0.5));
+  // A non-finite target ends where it started.
+  expectSamePose(flyToEndPose(kWgs84, from, {kNan, 0, 0}), from);
+  expectSamePose(flyToEndPose(kWgs84, from, {kInf, kInf, kInf}), from);
+}
+
+}  // namespace
+}  // namespace globe::app
