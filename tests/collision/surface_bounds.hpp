@@ -13,7 +13,7 @@ namespace globe::collision::testing {
 // quad across it (exact_surface.hpp), whose plane climbs at most s b over that distance (s: the
 // steepest north-south step between the vertices around the point, per metre), while the chord
 // itself sags a cos^2(lat) dLon^2 / 8 below its ends. So H - E >= -s b (+ rounding); 10% margin
-// for the ellipsoid's radii of curvature. (The same derivation as in test_real_pyramid.cpp.)
+// for the ellipsoid's radii of curvature.
 double rowSliverAllowanceMeters(const ArrayTile& tile, double latitudeRadians,
                                 const geo::Ellipsoid& ellipsoid);
 

@@ -22,11 +22,13 @@
 #include "geo/tiling_scheme.hpp"
 #include "tests/collision/collision_test_support.hpp"
 #include "tests/collision/mesh_ray_cast.hpp"
+#include "tests/collision/surface_bounds.hpp"
 
 namespace globe::collision {
 namespace {
 
 using geo::TileId;
+using testing::rowSliverAllowanceMeters;  // the derivation is in surface_bounds.hpp
 using Scheme = geo::GeographicTilingScheme;
 using testing::RealPyramid;
 constexpr double kPi = std::numbers::pi;
@@ -177,33 +179,6 @@ std::pair<double, double> randomPointInTile(std::mt19937_64& rng, const TileId& 
       break;
   }
   return {testing::gridLongitude(id, 17, column), testing::gridLatitude(id, 17, row)};
-}
-
-// The one way H can fall below the rendered surface, by geometry rather than rounding: a mesh
-// row edge is a chord, which runs poleward of its parallel by up to
-// b = a |sin(lat) cos(lat)| dLon^2 / 8, so next to a row line the ray can meet a triangle of the
-// quad across it (exact_surface.hpp), whose plane climbs at most s b over that distance (s: the
-// steepest north-south step between the vertices around the point, per metre), while the chord
-// itself sags a cos^2(lat) dLon^2 / 8 below its ends. So H - E >= -s b (+ rounding); 10% margin
-// for the ellipsoid's radii of curvature.
-double rowSliverAllowanceMeters(const ArrayTile& tile, double latitudeRadians,
-                                const geo::Ellipsoid& ellipsoid) {
-  const uint32_t cells = tile.block->verticesPerSide - 1;
-  const double a = ellipsoid.semiMajorAxisMeters;
-  const double cellLongitude = (tile.eastRadians - tile.westRadians) / cells;
-  const double cellLatitude = (tile.northRadians - tile.southRadians) / cells;
-  const double bulge = a * std::abs(std::sin(latitudeRadians) * std::cos(latitudeRadians)) *
-                       cellLongitude * cellLongitude / 8.0;
-  const GridLocation at = locateInGrid(tile, tile.westRadians, latitudeRadians);
-  double steepest = 0.0;
-  for (uint32_t row = at.quadRow > 0 ? at.quadRow - 1 : 0;
-       row <= std::min(at.quadRow + 1, cells - 1); ++row) {
-    for (uint32_t column = 0; column <= cells; ++column) {
-      steepest = std::max(steepest, std::abs(tile.block->surfaceHeightMetersAt(row + 1, column) -
-                                             tile.block->surfaceHeightMetersAt(row, column)));
-    }
-  }
-  return 1e-6 + 1.1 * bulge * steepest / (a * cellLatitude);
 }
 
 TEST(RealPyramid, QotcdHeightIsAtLeastTheExactSurface) {
