@@ -1,9 +1,8 @@
-// Keyframes from the camera's motion, their JSON, and time-stamped file names.
+// Keyframes from the camera's motion, as a camera path file, and time-stamped file names.
 #include "app/path_recorder.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <ctime>
 #include <numbers>
 #include <system_error>
@@ -67,23 +66,23 @@ std::vector<PathKeyframe> PathRecorder::stop(double nowSeconds, const camera::Ca
   return std::move(keyframes_);
 }
 
-std::string pathJson(const std::vector<PathKeyframe>& keyframes) {
-  std::string json = "{\"interpolation\": \"smooth\", \"keyframes\": [";
-  for (size_t k = 0; k < keyframes.size(); ++k) {
-    const camera::CameraPose& p = keyframes[k].pose;
-    char line[320];
-    std::snprintf(line, sizeof line,
-                  "%s\n  {\"t\": %.3f, \"lon\": %.8f, \"lat\": %.8f, \"height\": %.3f, "
-                  "\"heading\": %.4f, \"pitch\": %.4f, \"roll\": %.4f}",
-                  k == 0 ? "" : ",", keyframes[k].tSeconds,
-                  geo::radiansToDegrees(geo::wrapLongitudeRadians(p.position.longitudeRadians)),
-                  p.position.latitudeDegrees(), p.position.heightMeters,
-                  headingDegrees(p.headingRadians), geo::radiansToDegrees(p.pitchRadians),
-                  geo::radiansToDegrees(p.rollRadians));
-    json += line;
+io::CameraPathFile recordedPathFile(const std::vector<PathKeyframe>& keyframes) {
+  io::CameraPathFile file;
+  file.interpolation = "smooth";
+  for (const PathKeyframe& keyframe : keyframes) {
+    const camera::CameraPose& p = keyframe.pose;
+    io::PathKeyframe key;
+    key.timeSeconds = keyframe.tSeconds;
+    key.longitudeDegrees =
+        geo::radiansToDegrees(geo::wrapLongitudeRadians(p.position.longitudeRadians));
+    key.latitudeDegrees = p.position.latitudeDegrees();
+    key.heightMeters = p.position.heightMeters;
+    key.headingDegrees = headingDegrees(p.headingRadians);
+    key.pitchDegrees = geo::radiansToDegrees(p.pitchRadians);
+    key.rollDegrees = geo::radiansToDegrees(p.rollRadians);
+    file.keyframes.push_back(key);
   }
-  json += "\n]}\n";
-  return json;
+  return file;
 }
 
 std::filesystem::path timestampedPath(const std::filesystem::path& directory,

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "camera/camera_pose.hpp"
+#include "io/camera_path_file.hpp"
 
 namespace globe::app {
 
@@ -45,10 +46,9 @@ class PathRecorder {
   bool moving_ = false;
 };
 
-// {"interpolation": "smooth", "keyframes": [{"t": 0.0, "lon": ..., "lat": ..., "height": ...,
-// "heading": ..., "pitch": ..., "roll": ...}, ...]}: degrees, metres, seconds. Longitude in
-// [-180, 180], heading in [0, 360).
-std::string pathJson(const std::vector<PathKeyframe>& keyframes);
+// The keyframes as a smooth camera path (degrees, metres, seconds; longitude in [-180, 180],
+// heading in [0, 360)), for io::writeCameraPathJson.
+io::CameraPathFile recordedPathFile(const std::vector<PathKeyframe>& keyframes);
 
 // `prefix`-YYYYMMDD-HHMMSS`extension` in `directory` (local time now); "-2", "-3", ... added
 // before the extension when such a file exists already.

@@ -21,7 +21,6 @@
 #include "app/view_input.hpp"
 #include "camera/camera_controller.hpp"
 #include "collision/surface_probe.hpp"
-#include "io/atomic_file.hpp"
 #include "io/image_io.hpp"
 #include "render/glfw_window_context.hpp"
 #include "render/hud_renderer.hpp"
@@ -66,7 +65,7 @@ std::filesystem::path shown(const std::filesystem::path& path) {
 void writeRecordedPath(const std::filesystem::path& directory,
                        const std::vector<PathKeyframe>& keyframes) {
   const std::filesystem::path path = timestampedPath(directory, "globe-path", ".json");
-  if (auto written = io::writeFileAtomically(path, pathJson(keyframes)); !written) {
+  if (auto written = io::writeCameraPathJson(path, recordedPathFile(keyframes)); !written) {
     std::fprintf(stderr, "globe view: cannot write the path: %s\n", written.error().c_str());
     return;
   }

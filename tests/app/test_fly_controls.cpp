@@ -220,7 +220,11 @@ TEST(PathRecorder, KeyframesEveryHalfSecondOfMotionAtStopsAndAtTheEnd) {
   for (size_t k = 1; k < keyframes.size(); ++k)
     EXPECT_GT(keyframes[k].tSeconds, keyframes[k - 1].tSeconds);
 
-  const auto json = nlohmann::json::parse(globe::app::pathJson(keyframes));
+  // Written as `globe view` writes it: io::writeCameraPathJson of the recorded path.
+  const auto file = std::filesystem::temp_directory_path() / "globe-recorded-path.json";
+  ASSERT_TRUE(globe::io::writeCameraPathJson(file, globe::app::recordedPathFile(keyframes)).ok());
+  const auto json = nlohmann::json::parse(std::ifstream(file));
+  std::filesystem::remove(file);
   EXPECT_EQ(json.at("interpolation"), "smooth");
   ASSERT_EQ(json.at("keyframes").size(), 5u);
   const auto& first = json.at("keyframes")[0];
