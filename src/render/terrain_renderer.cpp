@@ -49,6 +49,7 @@ struct TerrainRenderer::Impl {
   struct DrawItem {
     double nearestMeters;
     const GpuTile* gpu;
+    geo::TileId tile;
     terrain::SkirtEdgeMask skirts;
   };
 
@@ -236,25 +237,28 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
   // Near tiles (per-fragment depth) and far ones (per-vertex depth), each front to back so the
   // depth test rejects hidden fragments early. Near tiles go first: they occlude the far ones.
   for (auto& items : impl.drawItems) items.clear();
-  // Skirts face the tiles that are really drawn: resident ones.
   impl.drawnIds.clear();
-  for (const geo::TileId& tile : tiles) {
-    if (impl.tiles.contains(tile)) impl.drawnIds.insert(tile);
-  }
   for (const geo::TileId& tile : tiles) {
     const auto found = impl.tiles.find(tile);
     if (found == impl.tiles.end()) {
       ++stats.tilesMissing;
       continue;
     }
+    impl.drawnIds.insert(tile);
     const GpuTile& gpu = found->second;
     const double nearest = std::max(
         0.0, glm::distance(view.cameraEcefMeters, gpu.centerEcefMeters) - gpu.radiusMeters);
     const bool far =
         nearest >= kVertexDepthMinMeters && nearest >= kVertexDepthRadii * gpu.radiusMeters;
-    const terrain::SkirtEdgeMask skirts =
-        impl.options.skirts ? terrain::neededSkirtEdges(tile, impl.drawnIds) : 0;
-    impl.drawItems[far ? 1 : 0].push_back({nearest, &gpu, skirts});
+    impl.drawItems[far ? 1 : 0].push_back({nearest, &gpu, tile, 0});
+  }
+  // Skirts face the tiles that are really drawn (resident ones), known once all are listed.
+  if (impl.options.skirts) {
+    for (auto& items : impl.drawItems) {
+      for (Impl::DrawItem& item : items) {
+        item.skirts = terrain::neededSkirtEdges(item.tile, impl.drawnIds);
+      }
+    }
   }
 
   glViewport(0, 0, view.widthPixels, view.heightPixels);
