@@ -99,8 +99,6 @@ Result<Surface> openSurface(const PlayOptions& options) {
 Result<PlayReport> runPlay(const PlayOptions& options) {
   const auto runStart = Clock::now();
   // Everything that can be refused is checked before anything is written.
-  auto file = io::readCameraPath(options.pathFile);
-  if (!file) return Error{file.error()};
   if (!(std::isfinite(options.framesPerSecond) && options.framesPerSecond > 0 &&
         options.framesPerSecond <= 1000)) {
     char text[64];
@@ -117,15 +115,12 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
           "ffmpeg); nothing was rendered");
     }
   }
-  SceneOptions sceneOptions = options.scene;
-  sceneOptions.hysteresis = false;  // each view depends on its pose only, not on the load order
-  auto scene = TerrainScene::open(options.pyramid, sceneOptions);
-  if (!scene) return Error{scene.error()};
-  auto path = toCameraPath(
-      *file, [&](double lon, double lat) { return (*scene)->terrainHeightMeters(lon, lat); });
-  if (!path) return makeError(options.pathFile.string() + ": " + path.error());
+  auto playback = openScriptedPlayback(options.pyramid, options.pathFile, options.scene);
+  if (!playback) return Error{playback.error()};
+  TerrainScene& scene = *playback->scene;
+  const camera::CameraPath& path = playback->path;
   const double fps = options.framesPerSecond;
-  const double duration = path->endSeconds() - path->startSeconds();
+  const double duration = path.endSeconds() - path.startSeconds();
   const double frameCount = playbackFrameCount(duration, fps);
   if (!(frameCount <= static_cast<double>(kMaximumFrames))) {
     return makeError("the path is " + std::to_string(duration) + " s long: more than " +
@@ -151,7 +146,7 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
   auto renderer = render::TerrainRenderer::create({});
   if (!renderer) return Error{renderer.error()};
   const int width = surface->widthPixels, height = surface->heightPixels;
-  PlaybackStep step(**scene, **renderer, *path, width, height,
+  PlaybackStep step(scene, **renderer, path, width, height,
                     std::chrono::seconds(options.timeoutSeconds));
   // The first collision test runs against a complete view at the scripted start.
   FrameTimings startup;
@@ -162,13 +157,13 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
   for (int i = 0; i < frames; ++i) {
     const auto frameStart = Clock::now();
     // Time from the frame number, never accumulated: frame i is exactly start + i / fps.
-    auto stepped = step.frame(i, path->startSeconds() + static_cast<double>(i) / fps,
-                              i == 0 ? 0.0 : 1.0 / fps);
+    auto stepped =
+        step.frame(i, path.startSeconds() + static_cast<double>(i) / fps, i == 0 ? 0.0 : 1.0 / fps);
     if (!stepped) return Error{stepped.error()};
     FrameRecord& record = *stepped;
 
     const auto drawStart = Clock::now();
-    const render::FrameStats stats = (*scene)->draw(**renderer);
+    const render::FrameStats stats = scene.draw(**renderer);
     record.tilesDrawn = stats.tilesDrawn;
     std::vector<uint8_t> pixels;
     if (options.writeFrames) {

@@ -38,17 +38,12 @@ Result<SoakReport> runSoak(const SoakOptions& options,
   }
   if (options.memorySampleFrames < 1) return makeError("the memory sample interval must be >= 1");
   if (!readProcessMemory()) return makeError("cannot read the process memory (/proc/self/status)");
-  auto file = io::readCameraPath(options.pathFile);
-  if (!file) return Error{file.error()};
-  SceneOptions sceneOptions = options.scene;
-  sceneOptions.hysteresis = false;  // as `globe play`: each view depends on its pose only
-  auto scene = TerrainScene::open(options.pyramid, sceneOptions);
-  if (!scene) return Error{scene.error()};
-  auto path = toCameraPath(
-      *file, [&](double lon, double lat) { return (*scene)->terrainHeightMeters(lon, lat); });
-  if (!path) return makeError(options.pathFile.string() + ": " + path.error());
+  auto playback = openScriptedPlayback(options.pyramid, options.pathFile, options.scene);
+  if (!playback) return Error{playback.error()};
+  TerrainScene& scene = *playback->scene;
+  const camera::CameraPath& path = playback->path;
   const double fps = options.framesPerSecond;
-  const double loopFrames = playbackFrameCount(path->endSeconds() - path->startSeconds(), fps);
+  const double loopFrames = playbackFrameCount(path.endSeconds() - path.startSeconds(), fps);
   if (!(loopFrames >= 2 && loopFrames <= 1e7)) {
     return makeError("the path must last between 2 and 10,000,000 frames at this --fps");
   }
@@ -60,8 +55,8 @@ Result<SoakReport> runSoak(const SoakOptions& options,
   if (!context) return Error{context.error()};
   auto renderer = render::TerrainRenderer::create({});
   if (!renderer) return Error{renderer.error()};
-  const geo::Ellipsoid& ellipsoid = (*scene)->ellipsoid();
-  PlaybackStep step(**scene, **renderer, *path, options.widthPixels, options.heightPixels,
+  const geo::Ellipsoid& ellipsoid = scene.ellipsoid();
+  PlaybackStep step(scene, **renderer, path, options.widthPixels, options.heightPixels,
                     std::chrono::seconds(options.timeoutSeconds));
   FrameTimings startup;
   if (auto view = step.start(startup); !view) return Error{view.error()};
@@ -81,7 +76,7 @@ Result<SoakReport> runSoak(const SoakOptions& options,
   for (int64_t k = 0; k < options.frames; ++k) {
     const int64_t inLoop = k % framesPerLoop;
     // Time from integers only: the same double for frame k and frame k + framesPerLoop.
-    const double timeSeconds = path->startSeconds() + static_cast<double>(inLoop) / fps;
+    const double timeSeconds = path.startSeconds() + static_cast<double>(inLoop) / fps;
     const bool restart = k > 0 && inLoop == 0;
     auto record = step.frame(static_cast<int>(std::min<int64_t>(k, INT32_MAX)), timeSeconds,
                              k == 0 ? 0.0 : 1.0 / fps,
@@ -126,9 +121,9 @@ Result<SoakReport> runSoak(const SoakOptions& options,
     if (checkpoint) {
       state.frames = done;
       state.wallSeconds = std::chrono::duration<double>(Clock::now() - runStart).count();
-      state.loader = (*scene)->loader().counters();
-      state.cache = (*scene)->cache().counters();
-      state.cacheBudgetBytes = (*scene)->cache().budgetBytes();
+      state.loader = scene.loader().counters();
+      state.cache = scene.cache().counters();
+      state.cacheBudgetBytes = scene.cache().budgetBytes();
       state.gpuTiles = (*renderer)->tilesResident();
       state.gpuBytes = (*renderer)->gpuBytesResident();
       report.checkpoints.push_back(state);

@@ -6,7 +6,9 @@
 #include <cmath>
 #include <string>
 
+#include "app/path_conversion.hpp"
 #include "collision/exact_surface.hpp"
+#include "io/camera_path_file.hpp"
 
 namespace globe::app {
 namespace {
@@ -19,6 +21,20 @@ double msSince(Clock::time_point start) {
 }
 
 }  // namespace
+
+Result<ScriptedPlayback> openScriptedPlayback(const std::filesystem::path& pyramid,
+                                              const std::filesystem::path& pathFile,
+                                              SceneOptions sceneOptions) {
+  auto file = io::readCameraPath(pathFile);
+  if (!file) return Error{file.error()};
+  sceneOptions.hysteresis = false;
+  auto scene = TerrainScene::open(pyramid, sceneOptions);
+  if (!scene) return Error{scene.error()};
+  auto path = toCameraPath(
+      *file, [&](double lon, double lat) { return (*scene)->terrainHeightMeters(lon, lat); });
+  if (!path) return makeError(pathFile.string() + ": " + path.error());
+  return ScriptedPlayback{std::move(*scene), std::move(*path)};
+}
 
 double playbackFrameCount(double durationSeconds, double framesPerSecond) {
   return std::floor(durationSeconds * framesPerSecond + 1e-9) + 1;

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <chrono>
+#include <filesystem>
+#include <memory>
 
 #include "app/finest_surface.hpp"
 #include "app/play_log.hpp"
@@ -12,6 +14,19 @@
 #include "render/terrain_renderer.hpp"
 
 namespace globe::app {
+
+// A pyramid's scene and a path file's camera path, as both `globe play` and the soak run them.
+struct ScriptedPlayback {
+  std::unique_ptr<TerrainScene> scene;
+  camera::CameraPath path;
+};
+
+// Reads the path file (.json or .kml) and opens the pyramid with the selection's hysteresis off
+// (each view then depends on its pose only, not on the load order); heights above the terrain
+// are resolved against the pyramid. Errors name the file.
+Result<ScriptedPlayback> openScriptedPlayback(const std::filesystem::path& pyramid,
+                                              const std::filesystem::path& pathFile,
+                                              SceneOptions sceneOptions);
 
 // Frames i = 0, 1, ... with i / fps <= durationSeconds (1e-9 frames of slack for rounding), as
 // a double so that callers can refuse absurd counts before converting.
