@@ -57,6 +57,30 @@ terrain::HeightRange rangeFromJson(const json& j) {
   return {integerOf<int16_t>(j.at(0)), integerOf<int16_t>(j.at(1))};
 }
 
+json conditioningToJson(const SourceConditioning& c) {
+  return {{"noDataSamples", c.noDataSamples},
+          {"seaSamples", c.seaSamples},
+          {"voidSamples", c.voidSamples},
+          {"voidsFilledByInterpolation", c.interpolatedSamples},
+          {"voidsFilledFromCoarserSource", c.fromCoarserSamples},
+          {"voidsLeftNoData", c.unfilledSamples},
+          {"blendedSamples", c.blendedSamples},
+          {"blendMarginDegrees", c.blendMarginDegrees}};
+}
+
+SourceConditioning conditioningFromJson(const json& j) {
+  SourceConditioning c;
+  c.noDataSamples = integerOf<uint64_t>(j.at("noDataSamples"));
+  c.seaSamples = integerOf<uint64_t>(j.at("seaSamples"));
+  c.voidSamples = integerOf<uint64_t>(j.at("voidSamples"));
+  c.interpolatedSamples = integerOf<uint64_t>(j.at("voidsFilledByInterpolation"));
+  c.fromCoarserSamples = integerOf<uint64_t>(j.at("voidsFilledFromCoarserSource"));
+  c.unfilledSamples = integerOf<uint64_t>(j.at("voidsLeftNoData"));
+  c.blendedSamples = integerOf<uint64_t>(j.at("blendedSamples"));
+  c.blendMarginDegrees = j.at("blendMarginDegrees").get<double>();
+  return c;
+}
+
 }  // namespace
 
 uint64_t PyramidManifest::tileCount() const {
@@ -84,7 +108,8 @@ std::string manifestToJson(const PyramidManifest& manifest) {
                        {"rows", source.rows},
                        {"stepDegrees", source.stepDegrees},
                        {"boundsDegrees", boundsToJson(source.bounds)},
-                       {"finestLevel", source.finestLevel}});
+                       {"finestLevel", source.finestLevel},
+                       {"conditioning", conditioningToJson(source.conditioning)}});
   }
   const json j = {
       {"format", "globe-pyramid"},
@@ -96,7 +121,9 @@ std::string manifestToJson(const PyramidManifest& manifest) {
          "vertex (i,j): lon = west + j*width/(N-1), lat = north - i*height/(N-1)"}}},
       {"blockSize", manifest.verticesPerSide},
       {"packTilesPerSide", manifest.packTilesPerSide},
-      {"encoding", "GTOPO30 int16 big-endian metres, -9999 = no data (sea)"},
+      {"encoding",
+       "GTOPO30 int16 big-endian metres: -9999 = water (sea, depth unknown), -32767..-20001 = "
+       "water over a sea floor at sample+20000 m, other values = land"},
       {"noData", -9999},
       {"globeModel", std::string(geo::toString(manifest.globeModel))},
       {"maxLevel", manifest.maxLevel()},
@@ -149,7 +176,10 @@ Result<PyramidManifest> manifestFromJson(std::string_view text, const std::files
           {source.at("path").get<std::string>(), source.at("format").get<std::string>(),
            integerOf<int64_t>(source.at("columns")), integerOf<int64_t>(source.at("rows")),
            source.at("stepDegrees").get<double>(), boundsFromJson(source.at("boundsDegrees")),
-           integerOf<uint32_t>(source.at("finestLevel"))});
+           integerOf<uint32_t>(source.at("finestLevel")), SourceConditioning{}});
+      if (source.contains("conditioning")) {
+        m.sources.back().conditioning = conditioningFromJson(source.at("conditioning"));
+      }
     }
     return m;
   } catch (const json::exception& e) {

@@ -27,6 +27,19 @@ struct LevelInfo {
   std::vector<PackId> packs;         // the pack files of this level, sorted
 };
 
+// What the tiler did to a source's samples before tiling (README: sea, voids, blend).
+struct SourceConditioning {
+  uint64_t noDataSamples = 0;        // in the source as given
+  uint64_t seaSamples = 0;           // written as water
+  uint64_t voidSamples = 0;          // no data inside land
+  uint64_t interpolatedSamples = 0;  // voids filled from their border
+  uint64_t fromCoarserSamples = 0;   // voids filled from a coarser source (delta surface)
+  uint64_t unfilledSamples = 0;      // voids left as no data (nothing to fill them from)
+  uint64_t blendedSamples = 0;       // eased into a coarser source at the edges
+  double blendMarginDegrees = 0;
+  bool operator==(const SourceConditioning&) const = default;
+};
+
 struct SourceInfo {
   std::string path;
   std::string format;
@@ -34,6 +47,7 @@ struct SourceInfo {
   double stepDegrees = 0;  // the finer of the column and row steps
   BoundsDegrees bounds;    // the cells' extent
   uint32_t finestLevel = 0;
+  SourceConditioning conditioning;
 };
 
 struct PyramidManifest {

@@ -18,9 +18,10 @@ void HeightRange::include(const HeightRange& other) {
 HeightRange surfaceHeightRange(const HeightBlock& block) {
   HeightRange range{INT16_MAX, INT16_MIN};
   for (int16_t sample : block.heights) {
-    const int16_t h = sample == kNoDataHeight ? int16_t{0} : sample;
-    range.minimumMeters = std::min(range.minimumMeters, h);
-    range.maximumMeters = std::max(range.maximumMeters, h);
+    const auto low = static_cast<int16_t>(surfaceHeightMeters(sample, SeaSurface::SeaFloor));
+    const auto high = static_cast<int16_t>(surfaceHeightMeters(sample, SeaSurface::Water));
+    range.minimumMeters = std::min(range.minimumMeters, low);
+    range.maximumMeters = std::max(range.maximumMeters, high);
   }
   if (block.heights.empty()) range = HeightRange{};
   return range;

@@ -8,15 +8,49 @@
 
 namespace globe::terrain {
 
-// GTOPO30's no-data value; it marks sea, which the viewer and collision treat as 0 m.
+// Block samples are GTOPO30 heights (int16 metres) with one extension for bathymetry:
+//   -9999                  water, floor depth unknown (GTOPO30's no data: sea)
+//   -32767 .. -20001       water over a sea floor at (sample + 20000) metres, -12767..-1 m
+//   anything else          land at that height, below sea level included (Dead Sea, polders)
+// The tiler decides which samples are water (sea connected to open sea, see README); the viewer
+// draws water as a surface at 0 m (MSL) and collides with it, unless the sea floor is asked for.
 inline constexpr int16_t kNoDataHeight = -9999;
+inline constexpr int16_t kSeaFloorCodeOffset = -20000;
+inline constexpr int16_t kDeepestSeaFloorMeters = -12767;
+inline constexpr int16_t kLowestLandMeters = -12000;  // land heights are clamped above this
+
+constexpr bool isWater(int16_t sample) {
+  return sample == kNoDataHeight || sample <= kSeaFloorCodeOffset - 1;
+}
+
+// Sea floor height of a water sample (0 m when unknown); the land height for land.
+constexpr double seaFloorMeters(int16_t sample) {
+  if (sample == kNoDataHeight) return 0.0;
+  if (sample <= kSeaFloorCodeOffset - 1) return static_cast<double>(sample - kSeaFloorCodeOffset);
+  return static_cast<double>(sample);
+}
+
+// Water sample for a sea floor at floorMeters (rounded; >= -0.5 m or NaN: depth unknown).
+constexpr int16_t encodeWater(double floorMeters) {
+  if (!(floorMeters < -0.5)) return kNoDataHeight;
+  const double clamped = floorMeters < kDeepestSeaFloorMeters ? kDeepestSeaFloorMeters : floorMeters;
+  const auto depth = static_cast<int>(clamped - 0.5);  // round half away from zero (negative)
+  return static_cast<int16_t>(kSeaFloorCodeOffset + depth);
+}
 
 // Vertices per side: 2^k + 1 so that a parent's vertices are every other vertex of its children.
 bool isValidBlockSize(uint32_t verticesPerSide);
 
-// Height of a GTOPO30 sample as a surface height: no-data (sea) is sea level.
-constexpr double surfaceHeightMeters(int16_t sample) {
-  return sample == kNoDataHeight ? 0.0 : static_cast<double>(sample);
+// What the viewer and collision take as the ground over water.
+enum class SeaSurface : uint8_t {
+  Water,     // the water surface at 0 m (default)
+  SeaFloor,  // the sea floor (bathymetry) where known, 0 m where not
+};
+
+// Height of a block sample as a surface height: water is 0 m, or its floor with SeaFloor.
+constexpr double surfaceHeightMeters(int16_t sample, SeaSurface sea = SeaSurface::Water) {
+  if (!isWater(sample)) return static_cast<double>(sample);
+  return sea == SeaSurface::Water ? 0.0 : seaFloorMeters(sample);
 }
 
 struct HeightRange {
@@ -29,16 +63,18 @@ struct HeightRange {
 struct HeightBlock {
   uint32_t verticesPerSide = 0;
   std::vector<int16_t> heights;  // row-major, verticesPerSide^2 samples
+  SeaSurface sea = SeaSurface::Water;  // the surface the view asked for, set when loaded
 
   int16_t at(uint32_t row, uint32_t column) const {
     return heights[static_cast<size_t>(row) * verticesPerSide + column];
   }
   double surfaceHeightMetersAt(uint32_t row, uint32_t column) const {
-    return surfaceHeightMeters(at(row, column));
+    return surfaceHeightMeters(at(row, column), sea);
   }
 };
 
-// Range of the block's surface heights, no-data counted as 0 m.
+// Range of the block's surface heights under either sea surface: the minimum with sea floors, the
+// maximum with water at 0 m, so the range bounds the surface whichever the view draws.
 HeightRange surfaceHeightRange(const HeightBlock& block);
 
 }  // namespace globe::terrain

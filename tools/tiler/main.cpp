@@ -75,6 +75,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "globe-tiler: %s\n", report.error().c_str());
     return 1;
   }
+  for (const std::string& warning : report->warnings) {
+    std::fprintf(stderr, "globe-tiler: warning: %s\n", warning.c_str());
+  }
   const double mb = static_cast<double>(report->sourceBytes) / 1e6;
   std::printf(
       "%s: %llu tiles (%llu packs built, %llu reused) in %s; %.1f MB of source at %.1f MB/s, %.0f "

@@ -107,14 +107,20 @@ Result<int16_t> SourceSampler::sampleSource(const Candidate& c, double longitude
   const int16_t s10 = at(c, **bottom, column0), s11 = at(c, **bottom, column1);
 
   const int16_t nearest = tv < 0.5 ? (tu < 0.5 ? s00 : s01) : (tu < 0.5 ? s10 : s11);
-  if (nearest == terrain::kNoDataHeight) return terrain::kNoDataHeight;
-  // Sea next to land blends towards sea level, as the surface does.
-  const double h =
-      (1 - tv) *
-          ((1 - tu) * terrain::surfaceHeightMeters(s00) + tu * terrain::surfaceHeightMeters(s01)) +
-      tv * ((1 - tu) * terrain::surfaceHeightMeters(s10) + tu * terrain::surfaceHeightMeters(s11));
-  auto rounded = static_cast<int16_t>(std::clamp(std::lround(h), -32767L, 32767L));
-  // -9999 is the no-data marker: a real height that rounds to it moves a metre deeper.
+  auto bilinear = [&](terrain::SeaSurface sea) {
+    auto h = [sea](int16_t sample) { return terrain::surfaceHeightMeters(sample, sea); };
+    return (1 - tv) * ((1 - tu) * h(s00) + tu * h(s01)) + tv * ((1 - tu) * h(s10) + tu * h(s11));
+  };
+  // Water where the nearest sample is water, over the interpolated sea floor (land next to it
+  // counted at its height): the coast stays where the data puts it, the floor stays smooth.
+  if (terrain::isWater(nearest)) {
+    return terrain::encodeWater(std::min(bilinear(terrain::SeaSurface::SeaFloor), 0.0));
+  }
+  // Land next to water blends towards sea level, as the drawn surface does.
+  const double h = bilinear(terrain::SeaSurface::Water);
+  auto rounded = static_cast<int16_t>(
+      std::clamp(std::lround(h), static_cast<long>(terrain::kLowestLandMeters), 32767L));
+  // -9999 is water: a land height that rounds to it moves a metre deeper.
   return rounded == terrain::kNoDataHeight ? static_cast<int16_t>(-10000) : rounded;
 }
 

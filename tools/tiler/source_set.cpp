@@ -12,21 +12,21 @@ namespace {
 
 constexpr double kEdgeSnapDegrees = 1e-9;
 
-// Height of the pole vertex: the highest sample of the row nearest the pole (sea = 0 m when
-// the row has land), so the one polar point is never below any of the samples around it.
-Result<int16_t> poleHeight(const io::RasterSource& raster, int64_t row) {
+}  // namespace
+
+Result<int16_t> polarRowHeight(const io::RasterSource& raster, int64_t row) {
   const io::SampleGrid& grid = raster.grid();
   std::vector<int16_t> samples(static_cast<size_t>(grid.cols));
   if (auto read = raster.readRow(row, 0, grid.cols, samples.data()); !read)
     return Error{read.error()};
   std::optional<int16_t> highest;
   for (int16_t s : samples) {
-    if (s != terrain::kNoDataHeight) highest = std::max(highest.value_or(s), s);
+    if (!terrain::isWater(s)) highest = std::max(highest.value_or(s), s);
   }
-  return highest.value_or(terrain::kNoDataHeight);
+  if (highest) return *highest;
+  // All water: the shallowest, so the pole is never below the water around it.
+  return *std::max_element(samples.begin(), samples.end());
 }
-
-}  // namespace
 
 bool TilerSource::covers(double longitudeDegrees, double latitudeDegrees) const {
   if (latitudeDegrees < extent.south || latitudeDegrees > extent.north) return false;
@@ -36,7 +36,7 @@ bool TilerSource::covers(double longitudeDegrees, double latitudeDegrees) const 
 
 io::SourceInfo TilerSource::info() const {
   return {argument,   std::string(raster->formatName()), grid.cols, grid.rows, stepDegrees, extent,
-          finestLevel};
+          finestLevel, io::SourceConditioning{}};
 }
 
 uint32_t finestLevelForStep(double stepDegrees, uint32_t verticesPerSide) {
@@ -80,12 +80,12 @@ Result<std::vector<TilerSource>> openSources(const std::vector<std::string>& inp
     source.extent.west = std::max(source.extent.west, -180.0);
     source.extent.east = std::min(source.extent.east, 180.0);
     if (source.extent.north >= 90.0) {
-      auto pole = poleHeight(*source.raster, 0);
+      auto pole = polarRowHeight(*source.raster, 0);
       if (!pole) return Error{pole.error()};
       source.northPoleHeight = *pole;
     }
     if (source.extent.south <= -90.0) {
-      auto pole = poleHeight(*source.raster, g.rows - 1);
+      auto pole = polarRowHeight(*source.raster, g.rows - 1);
       if (!pole) return Error{pole.error()};
       source.southPoleHeight = *pole;
     }

@@ -28,6 +28,11 @@ struct TilerSource {
   io::SourceInfo info() const;
 };
 
+// Height of a pole vertex from the source's row nearest the pole: its highest land sample (sea
+// next to land counts as 0 m there), or the shallowest water when the row has no land, so the
+// one polar point is never below any of the samples around it.
+Result<int16_t> polarRowHeight(const io::RasterSource& raster, int64_t row);
+
 // Finest level whose vertex spacing is not coarser than the source's sample step.
 uint32_t finestLevelForStep(double stepDegrees, uint32_t verticesPerSide);
 

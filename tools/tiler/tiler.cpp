@@ -17,6 +17,7 @@
 #include "io/pyramid_manifest.hpp"
 #include "tools/tiler/pack_builder.hpp"
 #include "tools/tiler/progress.hpp"
+#include "tools/tiler/source_conditioning.hpp"
 #include "tools/tiler/source_set.hpp"
 #include "tools/tiler/tiling_plan.hpp"
 
@@ -26,6 +27,8 @@ namespace {
 namespace fs = std::filesystem;
 constexpr const char* kPlanFileName = "tiling-plan.json";
 constexpr uint64_t kMaxPackBytes = uint64_t{1} << 33;
+// Names the sea/void/fill/blend rules: a pyramid resumed under other rules would mix them.
+constexpr const char* kConditioningVersion = "sea-void-fill-blend 1";
 
 // What the manifest needs from one finished pack.
 struct PackSummary {
@@ -68,7 +71,8 @@ std::string planFingerprint(const TilerOptions& options, const std::vector<Tiler
   const nlohmann::json plan = {{"inputs", inputs},
                                {"blockSize", options.verticesPerSide},
                                {"packTilesPerSide", options.packTilesPerSide},
-                               {"globeModel", std::string(geo::toString(options.globeModel))}};
+                               {"globeModel", std::string(geo::toString(options.globeModel))},
+                               {"conditioning", kConditioningVersion}};
   return plan.dump(1) + "\n";
 }
 
@@ -177,13 +181,12 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
   if (options.maxLevel && *options.maxLevel > geo::kMaxLevel) {
     return makeError("--max-level must be at most " + std::to_string(geo::kMaxLevel));
   }
+  TilerReport report;
   auto opened = openSources(options.inputs, {options.verticesPerSide, options.maxLevel});
   if (!opened) return Error{opened.error()};
-  const std::vector<TilerSource>& sources = *opened;
-
+  std::vector<TilerSource>& sources = *opened;
   std::vector<io::BoundsDegrees> extents;
   std::vector<uint32_t> finestLevels;
-  TilerReport report;
   for (const TilerSource& s : sources) {
     extents.push_back(s.extent);
     finestLevels.push_back(s.finestLevel);
@@ -192,6 +195,16 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
   const TilingPlan plan(extents, finestLevels, options.packTilesPerSide);
   if (auto prepared = prepareOutput(options, planFingerprint(options, sources)); !prepared) {
     return Error{prepared.error()};
+  }
+  auto conditioning = conditionSources(sources);
+  if (!conditioning) return Error{conditioning.error()};
+  for (size_t i = 0; i < sources.size(); ++i) {
+    const io::SourceConditioning& c = (*conditioning)[i];
+    if (c.noDataSamples == static_cast<uint64_t>(sources[i].grid.cols * sources[i].grid.rows)) {
+      report.warnings.push_back(sources[i].argument +
+                                ": every sample is no data: tiled as sea, or filled from a "
+                                "coarser source where one says land");
+    }
   }
 
   uint64_t totalTiles = 0;
@@ -207,7 +220,10 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
   manifest.packTilesPerSide = options.packTilesPerSide;
   manifest.globeModel = options.globeModel;
   manifest.levels.resize(plan.maxLevel() + 1);
-  for (const TilerSource& s : sources) manifest.sources.push_back(s.info());
+  for (size_t i = 0; i < sources.size(); ++i) {
+    manifest.sources.push_back(sources[i].info());
+    manifest.sources.back().conditioning = (*conditioning)[i];
+  }
 
   std::atomic<uint64_t> tilesDone{0};
   for (uint32_t level = plan.maxLevel() + 1; level-- > 0;) {

@@ -31,6 +31,7 @@ struct TilerReport {
   uint64_t sourceBytes = 0;
   uint64_t sampledVertices = 0;
   double seconds = 0;
+  std::vector<std::string> warnings;  // one line each, naming the input
 };
 
 Result<TilerReport> runTiler(const TilerOptions& options);

@@ -1,0 +1,111 @@
+#include "dem/harmonic_fill.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace globe::dem {
+namespace {
+
+constexpr double kToleranceMeters = 1e-3;
+
+struct Unknown {
+  std::array<int32_t, 4> neighbours{-1, -1, -1, -1};  // other unknowns
+  double fixedSum = 0;                                  // of the border neighbours' values
+  uint8_t count = 0;                                    // neighbours of either kind
+};
+
+}  // namespace
+
+std::optional<std::vector<double>> solveHarmonic(
+    const DemGrid& grid, const std::vector<uint8_t>& isVoid, const std::vector<size_t>& region,
+    const std::function<double(int64_t, int64_t)>& borderValue) {
+  const auto cols = static_cast<size_t>(grid.cols);
+  std::vector<Unknown> unknowns(region.size());
+  bool anyBorder = false;
+  int64_t minRow = grid.rows, maxRow = -1, minColumn = grid.cols, maxColumn = -1;
+  for (size_t k = 0; k < region.size(); ++k) {
+    const auto row = static_cast<int64_t>(region[k] / cols);
+    const auto column = static_cast<int64_t>(region[k] % cols);
+    minRow = std::min(minRow, row), maxRow = std::max(maxRow, row);
+    minColumn = std::min(minColumn, column), maxColumn = std::max(maxColumn, column);
+    Unknown& u = unknowns[k];
+    uint8_t inner = 0;
+    forEachNeighbour(grid, row, column, [&](int64_t r, int64_t c) {
+      const size_t i = grid.index(r, c);
+      ++u.count;
+      if (isVoid[i] != 0) {
+        const auto at = std::lower_bound(region.begin(), region.end(), i);
+        u.neighbours[inner++] = static_cast<int32_t>(at - region.begin());
+      } else {
+        u.fixedSum += borderValue(r, c);
+        anyBorder = true;
+      }
+    });
+  }
+  if (!anyBorder) return std::nullopt;
+
+  // Initial guess: peel the void from its border inwards, each sample the mean of the neighbours
+  // already known (a good start, so few relaxation sweeps are needed).
+  std::vector<double> values(region.size(), 0.0);
+  std::vector<uint8_t> known(region.size(), 0);
+  std::vector<size_t> front;
+  for (size_t k = 0; k < region.size(); ++k) {
+    if (unknowns[k].count > std::count_if(unknowns[k].neighbours.begin(),
+                                          unknowns[k].neighbours.end(),
+                                          [](int32_t n) { return n >= 0; })) {
+      front.push_back(k);
+    }
+  }
+  while (!front.empty()) {
+    for (size_t k : front) {
+      const Unknown& u = unknowns[k];
+      double sum = u.fixedSum;
+      int fixed = u.count;
+      int used = 0;
+      for (int32_t n : u.neighbours) {
+        if (n < 0) continue;
+        --fixed;
+        if (known[static_cast<size_t>(n)] != 0) sum += values[static_cast<size_t>(n)], ++used;
+      }
+      values[k] = sum / (fixed + used);
+    }
+    for (size_t k : front) known[k] = 1;
+    std::vector<size_t> next;
+    for (size_t k : front) {
+      for (int32_t n : unknowns[k].neighbours) {
+        if (n >= 0 && known[static_cast<size_t>(n)] == 0) {
+          known[static_cast<size_t>(n)] = 2;  // queued
+          next.push_back(static_cast<size_t>(n));
+        }
+      }
+    }
+    std::sort(next.begin(), next.end());
+    for (size_t k : next) known[k] = 0;
+    front = std::move(next);
+  }
+
+  // Successive over-relaxation with the optimal factor for a square of the void's extent.
+  const double extent =
+      static_cast<double>(std::max(maxRow - minRow, maxColumn - minColumn) + 2);
+  const double omega = 2.0 / (1.0 + std::sin(std::numbers::pi / extent));
+  const int maxSweeps = static_cast<int>(std::min(100000.0, 20.0 * extent + 200.0));
+  for (int sweep = 0; sweep < maxSweeps; ++sweep) {
+    double largestChange = 0;
+    for (size_t k = 0; k < region.size(); ++k) {
+      const Unknown& u = unknowns[k];
+      double sum = u.fixedSum;
+      for (int32_t n : u.neighbours) {
+        if (n >= 0) sum += values[static_cast<size_t>(n)];
+      }
+      const double change = omega * (sum / u.count - values[k]);
+      values[k] += change;
+      largestChange = std::max(largestChange, std::abs(change));
+    }
+    if (largestChange < kToleranceMeters) break;
+  }
+  return values;
+}
+
+}  // namespace globe::dem

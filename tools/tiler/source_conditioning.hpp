@@ -1,0 +1,24 @@
+// Conditions the tiler's sources before tiling (dem/condition.hpp): each is read into memory
+// and, from the coarsest to the finest, its sea told from its voids, its voids filled and its
+// edges eased into the coarser sources, using the coarser sources as already conditioned. Each
+// source's raster is then replaced by its conditioned copy, so the sampler sees only these.
+#pragma once
+
+#include <vector>
+
+#include "geo/result.hpp"
+#include "io/pyramid_manifest.hpp"
+#include "tools/tiler/source_set.hpp"
+
+namespace globe::tiler {
+
+// Blend margin: this many of the next coarser source's cells...
+inline constexpr double kBlendMarginCoarserCells = 3.0;
+// ...but at most this fraction of the finer source's smaller side, so a small fine source (one
+// SRTM degree under a 20′ grid) keeps most of its own detail.
+inline constexpr double kBlendMarginMaximumFraction = 0.1;
+
+// sources: finest first (openSources' order). Returns each source's conditioning, same order.
+Result<std::vector<io::SourceConditioning>> conditionSources(std::vector<TilerSource>& sources);
+
+}  // namespace globe::tiler
