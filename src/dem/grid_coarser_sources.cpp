@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "dem/vertex_sample.hpp"
 #include "terrain/height_block.hpp"
 
 namespace globe::dem {
@@ -62,8 +63,7 @@ bool gridCovers(const DemGrid& grid, double longitudeDegrees, double latitudeDeg
 double bilinearSurfaceMeters(const DemGrid& grid, double longitudeDegrees,
                              double latitudeDegrees) {
   const Support s = supportAt(grid, longitudeDegrees, latitudeDegrees);
-  auto h = [&](size_t k) { return terrain::surfaceHeightMeters(s.samples[k]); };
-  return (1 - s.tv) * ((1 - s.tu) * h(0) + s.tu * h(1)) + s.tv * ((1 - s.tu) * h(2) + s.tu * h(3));
+  return terrain::surfaceHeightMeters(interpolateSample(s.samples, s.tu, s.tv));
 }
 
 bool GridCoarserSources::allowSea(double longitudeDegrees, double latitudeDegrees) const {

@@ -14,8 +14,8 @@ namespace globe::dem {
 // Whether the grid's cells (sample centre ± half a step) cover the point.
 bool gridCovers(const DemGrid& grid, double longitudeDegrees, double latitudeDegrees);
 
-// Bilinear surface height (water at 0 m) at a covered point; the grid's edge samples extend to
-// the cells' edge.
+// Surface height (water at 0 m) at a covered point, by the tiler's vertex rule
+// (dem/vertex_sample.hpp); the grid's edge samples extend to the cells' edge.
 double bilinearSurfaceMeters(const DemGrid& grid, double longitudeDegrees, double latitudeDegrees);
 
 class GridCoarserSources final : public CoarserSources {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dem/vertex_sample.hpp"
 #include "terrain/height_block.hpp"
 
 namespace globe::tiler {
@@ -106,22 +107,7 @@ Result<int16_t> SourceSampler::sampleSource(const Candidate& c, double longitude
   const int16_t s00 = at(c, **top, column0), s01 = at(c, **top, column1);
   const int16_t s10 = at(c, **bottom, column0), s11 = at(c, **bottom, column1);
 
-  const int16_t nearest = tv < 0.5 ? (tu < 0.5 ? s00 : s01) : (tu < 0.5 ? s10 : s11);
-  auto bilinear = [&](terrain::SeaSurface sea) {
-    auto h = [sea](int16_t sample) { return terrain::surfaceHeightMeters(sample, sea); };
-    return (1 - tv) * ((1 - tu) * h(s00) + tu * h(s01)) + tv * ((1 - tu) * h(s10) + tu * h(s11));
-  };
-  // Water where the nearest sample is water, over the interpolated sea floor (land next to it
-  // counted at its height): the coast stays where the data puts it, the floor stays smooth.
-  if (terrain::isWater(nearest)) {
-    return terrain::encodeWater(std::min(bilinear(terrain::SeaSurface::SeaFloor), 0.0));
-  }
-  // Land next to water blends towards sea level, as the drawn surface does.
-  const double h = bilinear(terrain::SeaSurface::Water);
-  auto rounded = static_cast<int16_t>(
-      std::clamp(std::lround(h), static_cast<long>(terrain::kLowestLandMeters), 32767L));
-  // -9999 is water: a land height that rounds to it moves a metre deeper.
-  return rounded == terrain::kNoDataHeight ? static_cast<int16_t>(-10000) : rounded;
+  return dem::interpolateSample({s00, s01, s10, s11}, tu, tv);
 }
 
 Result<int16_t> SourceSampler::sample(double longitudeDegrees, double latitudeDegrees) {

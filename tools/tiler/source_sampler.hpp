@@ -1,5 +1,5 @@
-// Samples the tiler's sources at vertex positions: the finest covering source wins, bilinear
-// between its samples, no data where the nearest sample is no data. Caches source rows for one
+// Samples the tiler's sources at vertex positions: the finest covering source wins, its 2×2
+// samples turned into a vertex by dem/vertex_sample.hpp's rule. Caches source rows for one
 // strip of tiles so a strip costs a few row reads per source, not one read per vertex.
 #pragma once
 

@@ -8,6 +8,9 @@
 
 #include "io/atomic_file.hpp"
 #include "io/crc32.hpp"
+#include "terrain/height_block.hpp"
+#include "tools/tiler/source_conditioning.hpp"
+#include "tools/tiler/source_set.hpp"
 #include "tools/tiler/tiler.hpp"
 
 namespace globe::tiler::testing {
@@ -77,24 +80,28 @@ int16_t Oracle::Raster::sample(int64_t row, int64_t column) const {
 }
 
 Oracle::Oracle(const std::vector<std::string>& inputs) {
-  for (const std::string& input : inputs) {
-    auto source = io::openRasterSource(input);
-    if (!source) {
-      ADD_FAILURE() << source.error();
-      continue;
-    }
-    Raster r{(*source)->grid(), {}, 0};
+  // The sources as the tiler conditions them (sea, voids, blend: tested in tests/dem); what this
+  // oracle checks independently is the sampling of those samples into vertices.
+  auto sources = openSources(inputs, {});
+  if (!sources) {
+    ADD_FAILURE() << sources.error();
+    return;
+  }
+  if (auto conditioned = conditionSources(*sources); !conditioned) {
+    ADD_FAILURE() << conditioned.error();
+    return;
+  }
+  for (const TilerSource& source : *sources) {
+    Raster r{source.raster->grid(), {}, 0};
     r.step = std::min(r.grid.columnStepDegrees, r.grid.rowStepDegrees);
     r.samples.resize(static_cast<size_t>(r.grid.cols * r.grid.rows));
     for (int64_t row = 0; row < r.grid.rows; ++row) {
-      auto read = (*source)->readRow(row, 0, r.grid.cols,
-                                     &r.samples[static_cast<size_t>(row * r.grid.cols)]);
+      auto read = source.raster->readRow(row, 0, r.grid.cols,
+                                         &r.samples[static_cast<size_t>(row * r.grid.cols)]);
       if (!read) ADD_FAILURE() << read.error();
     }
     rasters_.push_back(std::move(r));
   }
-  std::stable_sort(rasters_.begin(), rasters_.end(),
-                   [](const Raster& a, const Raster& b) { return a.step < b.step; });
 }
 
 int16_t Oracle::height(double lon, double lat) const {
@@ -106,13 +113,17 @@ int16_t Oracle::height(double lon, double lat) const {
     if (!g.wrapsLongitude && (lon < g.westDegrees() || lon > g.eastDegrees())) continue;
     if (std::abs(lat) == 90.0) {  // the pole: highest sample of the polar row
       const int64_t row = lat > 0 ? 0 : g.rows - 1;
-      int16_t best = -9999;
-      bool any = false;
+      int16_t bestLand = 0, bestWater = INT16_MIN;
+      bool anyLand = false;
       for (int64_t c = 0; c < g.cols; ++c) {
         const int16_t s = r.sample(row, c);
-        if (s != -9999) best = any ? std::max(best, s) : s, any = true;
+        if (terrain::isWater(s)) {
+          bestWater = std::max(bestWater, s);
+        } else {
+          bestLand = anyLand ? std::max(bestLand, s) : s, anyLand = true;
+        }
       }
-      return best;
+      return anyLand ? bestLand : bestWater;
     }
     // The same arithmetic as the tiler: a vertex halfway between samples is a rounding tie.
     double offset = lon - g.firstColumnLongitudeDegrees;
@@ -127,13 +138,33 @@ int16_t Oracle::height(double lon, double lat) const {
     const int64_t r1 = std::min(r0 + 1, g.rows - 1);
     const double tu = u - static_cast<double>(c0), tv = v - static_cast<double>(r0);
     const int16_t nearest = r.sample(tv < 0.5 ? r0 : r1, tu < 0.5 ? c0 : c1);
-    if (nearest == -9999) return -9999;
-    auto h = [&](int64_t row, int64_t col) {
-      const int16_t s = r.sample(row, col);
-      return s == -9999 ? 0.0 : static_cast<double>(s);
+    const int16_t corners[4] = {r.sample(r0, c0), r.sample(r0, c1), r.sample(r1, c0),
+                                r.sample(r1, c1)};
+    int water = 0, measured = 0;
+    for (int16_t s : corners) {
+      water += terrain::isWater(s) ? 1 : 0;
+      measured += terrain::isWater(s) && s != -9999 ? 1 : 0;
+    }
+    // Land and sea floor together (floor 0 m where unknown), or water at 0 m.
+    auto mix = [&](bool floors) {
+      auto h = [&](int k) {
+        const int16_t s = corners[k];
+        return !terrain::isWater(s) ? double(s) : floors ? terrain::seaFloorMeters(s) : 0.0;
+      };
+      // The tiler's arithmetic order, so rounding ties round alike.
+      return (1 - tv) * ((1 - tu) * h(0) + tu * h(1)) + tv * ((1 - tu) * h(2) + tu * h(3));
     };
-    const double value = (1 - tv) * ((1 - tu) * h(r0, c0) + tu * h(r0, c1)) +
-                         tv * ((1 - tu) * h(r1, c0) + tu * h(r1, c1));
+    bool isWaterVertex = terrain::isWater(nearest);
+    double value = mix(false);
+    if (water == 4) {
+      isWaterVertex = true, value = mix(true);
+    } else if (water > 0 && measured > 0) {
+      value = mix(true);
+      isWaterVertex = value < 0;
+    } else if (water == 0) {
+      isWaterVertex = false;
+    }
+    if (isWaterVertex) return value < -0.5 ? terrain::encodeWater(value) : int16_t{-9999};
     const auto rounded = static_cast<int16_t>(std::lround(value));
     return rounded == -9999 ? int16_t{-10000} : rounded;
   }
