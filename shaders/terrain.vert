@@ -14,8 +14,9 @@
 
 layout(location = 0) in vec3 a_offset;  // metres from the tile centre, ECEF axes
 layout(location = 1) in vec3 a_normal;  // unit, ECEF axes
-layout(location = 2) in float a_height; // metres, sea (no data) = 0
-layout(location = 3) in float a_sea;    // 1 = sea (no data or below 0 m)
+layout(location = 2) in float a_height; // metres: land height, or under water the sea floor's
+                                        // (0 = unknown), whether water or floor is drawn
+layout(location = 3) in float a_sea;    // 1 = water (land below sea level is land)
 layout(location = 4) in vec2 a_uv;      // tile-local: (0,0) north-west, (1,1) south-east
 
 uniform mat4 u_modelView;        // view · translate(tile centre), cast from double
@@ -54,7 +55,7 @@ vec3 hypsometric(float heightMeters) {
   return kStopColors[kStops - 1];
 }
 
-// Shallow (and no-data) sea is mid blue, 6 km deep is dark blue.
+// Shallow sea (and water of unknown depth) is mid blue, a 6 km deep floor is dark blue.
 vec3 seaColor(float heightMeters) {
   float depth = clamp(-heightMeters / 6000.0, 0.0, 1.0);
   return mix(vec3(0.16, 0.36, 0.72), vec3(0.03, 0.10, 0.38), sqrt(depth));
@@ -68,7 +69,8 @@ void main() {
   gl_Position.z = (log2(max(1e-6, 1.0 + gl_Position.w)) * 2.0 * u_logDepthScale - 1.0) *
                   gl_Position.w;
 #endif
-  // Sea is lit with the geocentric "up": water stays flat while the sea floor keeps its depth.
+  // Sea is lit with the geocentric "up", whether the water surface at 0 m or the sea floor is
+  // drawn: water stays flat, and the floor's colour (its depth) shows its relief.
   vec3 up = normalize(u_tileCenterEcef + a_offset);
   float upLight = u_ambient + (1.0 - u_ambient) * max(dot(up, u_sunDirection), 0.0);
   float landLight = u_hillShading

@@ -34,8 +34,10 @@ std::string formatPyramidInfoText(const io::PyramidManifest& m, const std::strin
   std::snprintf(
       line, sizeof line,
       "pyramid     %s\nscheme      geographic lat/long quadtree, level 0 = 2x1 tiles of "
-      "180 deg\nblocks      %ux%u vertices, GTOPO30 int16 big-endian, -9999 = no data\n"
-      "globe       %s\nlevels      0..%u\ntiles       %llu\nheights     %d..%d m (sea = 0)\n"
+      "180 deg\nblocks      %ux%u vertices, GTOPO30 int16 big-endian, -9999 and "
+      "-32767..-20001 = water\n"
+      "globe       %s\nlevels      0..%u\ntiles       %llu\nheights     %d..%d m (sea floors "
+      "included)\n"
       "finest      %s\n",
       path.c_str(), m.verticesPerSide, m.verticesPerSide,
       std::string(geo::toString(m.globeModel)).c_str(), m.maxLevel(),

@@ -12,6 +12,7 @@
 #include "app/view_command.hpp"
 #include "geo/ellipsoid.hpp"
 #include "io/pyramid_manifest.hpp"
+#include "terrain/height_block.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"globe: a virtual-globe terrain viewer with real-time camera-terrain collision",
@@ -23,6 +24,12 @@ int main(int argc, char** argv) {
         ->add_option("--globe", globeName,
                      "globe model: wgs84 (default) | sphere (the paper's, r = 6,371,000 m)")
         ->capture_default_str();
+  };
+  bool seaFloor = false;
+  auto addSeaFloor = [&](CLI::App* command) {
+    command->add_flag("--sea-floor", seaFloor,
+                      "draw the sea floor (bathymetry) where the pyramid has it, and let the "
+                      "camera go under water; default: the water surface at 0 m is the ground");
   };
 
   CLI::App* info =
@@ -55,6 +62,7 @@ int main(int argc, char** argv) {
   snapshot->add_option("--max-load-level", maxLoadLevel,
                        "never load tiles deeper than this (shows a view mid-refinement)");
   addGlobe(snapshot);
+  addSeaFloor(snapshot);
 
   CLI::App* query = app.add_subcommand(
       "query", "heights: reads lon,lat lines (degrees) on stdin, prints lon,lat,level,height_m");
@@ -68,6 +76,7 @@ int main(int argc, char** argv) {
   auto* queryLevelOption =
       query->add_option("--level", queryLevel, "query this level (default: the finest there)");
   addGlobe(query);
+  addSeaFloor(query);
 
   CLI::App* view = app.add_subcommand(
       "view",
@@ -89,6 +98,7 @@ int main(int argc, char** argv) {
   view->add_option("--record-dir", viewRecordDir,
                    "where P (globe-path-*.json) and K/F12 (globe-shot-*.png) write (default: .)");
   addGlobe(view);
+  addSeaFloor(view);
 
   CLI::App* play = app.add_subcommand(
       "play",
@@ -107,6 +117,7 @@ int main(int argc, char** argv) {
   play->add_flag("--window", playWindow, "show the playback in a GLFW window (same loop)");
   play->add_option("--video", playVideo, "encode the frames into this MP4 with ffmpeg");
   addGlobe(play);
+  addSeaFloor(play);
 
   CLI11_PARSE(app, argc, argv);
   const auto globeModel = globe::geo::parseGlobeModel(globeName);
@@ -114,6 +125,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "globe: --globe must be wgs84 or sphere, not '%s'\n", globeName.c_str());
     return 2;
   }
+  const auto sea =
+      seaFloor ? globe::terrain::SeaSurface::SeaFloor : globe::terrain::SeaSurface::Water;
 
   if (snapshot->parsed()) {
     auto pose = globe::app::parseCameraArgument(cameraText);
@@ -138,6 +151,7 @@ int main(int argc, char** argv) {
     options.scene.globeModel = *globeModel;
     options.scene.maximumScreenSpaceErrorPixels = *sse;
     options.scene.maximumLoadLevel = maxLoadLevel;
+    options.scene.sea = sea;
     auto report = globe::app::runSnapshot(options);
     if (!report) {
       std::fprintf(stderr, "globe snapshot: %s\n", report.error().c_str());
@@ -152,6 +166,7 @@ int main(int argc, char** argv) {
     globe::app::QueryOptions options;
     options.pyramid = pyramid;
     options.globeModel = *globeModel;
+    options.sea = sea;
     if (mode == "exact") {
       options.mode = globe::collision::HeightMode::Exact;
     } else if (mode != "qotcd") {
@@ -189,6 +204,7 @@ int main(int argc, char** argv) {
     options.log = viewLog;
     options.recordDirectory = viewRecordDir;
     options.scene.globeModel = *globeModel;
+    options.scene.sea = sea;
     if (auto report = globe::app::runView(options); !report) {
       std::fprintf(stderr, "globe view: %s\n", report.error().c_str());
       return 1;
@@ -213,6 +229,7 @@ int main(int argc, char** argv) {
     options.window = playWindow;
     if (!playVideo.empty()) options.video = playVideo;
     options.scene.globeModel = *globeModel;
+    options.scene.sea = sea;
     auto report = globe::app::runPlay(options);
     if (!report) {
       std::fprintf(stderr, "globe play: %s\n", report.error().c_str());

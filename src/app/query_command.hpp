@@ -10,6 +10,7 @@
 #include "collision/height_service.hpp"
 #include "geo/ellipsoid.hpp"
 #include "geo/result.hpp"
+#include "terrain/height_block.hpp"
 
 namespace globe::app {
 
@@ -18,6 +19,7 @@ struct QueryOptions {
   collision::HeightMode mode = collision::HeightMode::Qotcd;
   std::optional<uint32_t> level;
   geo::GlobeModel globeModel = geo::GlobeModel::Wgs84;
+  terrain::SeaSurface sea = terrain::SeaSurface::Water;  // --sea-floor: SeaFloor
 };
 
 struct QueryReport {

@@ -30,7 +30,7 @@ class SceneCatalog final : public terrain::TileCatalog {
   const io::TileLoader& loader_;
 };
 
-// Bilinear height inside a block at a position of its tile (sea = 0 m).
+// Bilinear height inside a block at a position of its tile (water: 0 m, or its sea floor).
 double blockHeightMeters(const terrain::HeightBlock& block, const geo::TileId& tile,
                          double longitudeRadians, double latitudeRadians) {
   const auto rect = geo::GeographicTilingScheme::tileRectangle(tile);
@@ -71,7 +71,7 @@ TerrainScene::~TerrainScene() {
 
 Result<std::unique_ptr<TerrainScene>> TerrainScene::open(const std::filesystem::path& pyramidDir,
                                                          const SceneOptions& options) {
-  auto store = io::TileStore::open(pyramidDir);
+  auto store = io::TileStore::open(pyramidDir, options.sea);
   if (!store) return Error{store.error()};
   return std::unique_ptr<TerrainScene>(new TerrainScene(std::move(*store), options));
 }

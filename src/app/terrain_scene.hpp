@@ -19,6 +19,7 @@
 #include "io/tile_store.hpp"
 #include "render/render_view.hpp"
 #include "render/terrain_renderer.hpp"
+#include "terrain/height_block.hpp"
 #include "terrain/tile_selection.hpp"
 
 namespace globe::app {
@@ -32,6 +33,8 @@ struct SceneOptions {
   uint32_t maximumLoadLevel = geo::kMaxLevel;  // tiles deeper than this are never loaded
   double fovYRadians = 0.7853981633974483;     // 45°
   size_t gpuTileBudget = 4000;  // tiles kept on the GPU, least recently drawn go first
+  // The ground over water for drawing, collision and heights alike (--sea-floor: SeaFloor).
+  terrain::SeaSurface sea = terrain::SeaSurface::Water;
 };
 
 struct FrameInfo {

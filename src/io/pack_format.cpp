@@ -113,16 +113,39 @@ std::vector<std::byte> encodePack(const Pack& pack) {
   return bytes;
 }
 
+std::optional<uint32_t> packFormatVersionOf(std::span<const std::byte> head) {
+  if (head.size() < kPackHeaderBytes || std::memcmp(head.data(), kMagic, 8) != 0) {
+    return std::nullopt;
+  }
+  return loadBigEndian32(&head[8]);
+}
+
+Result<void> checkPackFormatVersion(uint32_t version, const std::filesystem::path& path) {
+  if (version == kPackFormatVersion) return {};
+  if (version < kPackFormatVersion) {
+    return packError(path, "pack format version " + std::to_string(version) +
+                               " was made by an older globe-tiler (samples below 0 m meant sea; "
+                               "version " +
+                               std::to_string(kPackFormatVersion) +
+                               " tells water from land below sea level): the pyramid must be "
+                               "re-tiled with this globe-tiler");
+  }
+  return packError(path, "pack format version " + std::to_string(version) +
+                             " is newer than this globe reads (" +
+                             std::to_string(kPackFormatVersion) + ")");
+}
+
 Result<PackIndex> decodePackIndex(std::span<const std::byte> headAndIndex, uint64_t fileBytes,
                                   const std::filesystem::path& path) {
-  if (headAndIndex.size() < kPackHeaderBytes || std::memcmp(headAndIndex.data(), kMagic, 8) != 0) {
+  const std::optional<uint32_t> version = packFormatVersionOf(headAndIndex);
+  if (!version) {
     return packError(path, "not a globe pack file (bad magic or shorter than its header)");
+  }
+  if (auto supported = checkPackFormatVersion(*version, path); !supported) {
+    return Error{supported.error()};
   }
   uint32_t h[8];
   for (size_t i = 0; i < 8; ++i) h[i] = loadBigEndian32(&headAndIndex[8 + 4 * i]);
-  if (h[0] != kPackFormatVersion) {
-    return packError(path, "pack format version " + std::to_string(h[0]) + " is not supported");
-  }
   PackIndex index{{h[1], h[2], h[3]}, {h[4], h[5]}, {}};
   const PackLayout& layout = index.layout;
   if (layout.tilesPerSide == 0 || layout.tilesPerSide > 1024 ||

@@ -4,8 +4,10 @@
 //              u32 present tile count, u32 reserved                         (40 bytes)
 //   offset 40  index: P×P entries in slot order (slot = localY·P + localX), 16 bytes each:
 //              u64 block offset (0 = tile absent), i16 vertex min, i16 vertex max,
-//              i16 subtree min, i16 subtree max                              (metres, sea = 0)
-//   then       the present blocks, N×N int16 GTOPO30 samples each, rows from the north
+//              i16 subtree min, i16 subtree max     (metres: min with sea floors, max with water
+//                                                        at 0 m, terrain::surfaceHeightRange)
+//   then       the present blocks, N×N int16 samples each (terrain/height_block.hpp: GTOPO30
+//              heights, -9999 and -32767..-20001 water), rows from the north
 //   last       u32 CRC-32 of everything before it
 //
 // A reader parses the header and index once per pack, then loads any block with one read.
@@ -14,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -23,7 +26,9 @@
 
 namespace globe::io {
 
-inline constexpr uint32_t kPackFormatVersion = 1;
+// 2: samples below 0 m are land, water is -9999 or band-coded with its sea floor (version 1
+// read every negative sample as sea: such packs are refused, the pyramid must be re-tiled).
+inline constexpr uint32_t kPackFormatVersion = 2;
 inline constexpr size_t kPackHeaderBytes = 40;
 inline constexpr size_t kPackEntryBytes = 16;
 // decodePack refuses a pack whose in-memory blocks (all P×P slots) would exceed this.
@@ -86,6 +91,13 @@ struct PackIndex {
   PackLayout layout;
   std::vector<PackEntry> entries;
 };
+
+// The format version in a pack's first kPackHeaderBytes bytes, or nullopt when they are not a
+// pack header (too short, another magic).
+std::optional<uint32_t> packFormatVersionOf(std::span<const std::byte> head);
+// Refuses every version but kPackFormatVersion, naming `path`; an older one says the pack was
+// made by an older globe-tiler and must be re-tiled.
+Result<void> checkPackFormatVersion(uint32_t version, const std::filesystem::path& path);
 
 // Parses and validates the header and index (the first layout.indexEndOffset() bytes) of a pack
 // whose file is fileBytes long.

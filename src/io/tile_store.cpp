@@ -38,20 +38,38 @@ Result<void> preadFully(int fd, std::byte* out, size_t bytes, uint64_t offset,
   return {};
 }
 
+// A pyramid of another pack format version is refused as a whole: its first level-0 pack's
+// header says so. Unreadable or damaged packs are left to be reported one by one when read.
+Result<void> checkFormatVersion(const std::filesystem::path& dir, const PyramidManifest& manifest) {
+  if (manifest.levels.empty() || manifest.levels[0].packs.empty()) return {};
+  const std::filesystem::path path = packPath(dir, manifest.levels[0].packs.front());
+  FdCloser file{::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK)};
+  struct stat info {};
+  if (file.fd < 0 || ::fstat(file.fd, &info) != 0 || !S_ISREG(info.st_mode)) return {};
+  std::byte head[kPackHeaderBytes];
+  if (!preadFully(file.fd, head, sizeof head, 0, path)) return {};
+  const std::optional<uint32_t> version = packFormatVersionOf(head);
+  return version ? checkPackFormatVersion(*version, path) : Result<void>{};
+}
+
 }  // namespace
 
-TileStore::TileStore(std::filesystem::path dir, PyramidManifest manifest)
-    : dir_(std::move(dir)), manifest_(std::move(manifest)) {}
+TileStore::TileStore(std::filesystem::path dir, PyramidManifest manifest, terrain::SeaSurface sea)
+    : dir_(std::move(dir)), manifest_(std::move(manifest)), sea_(sea) {}
 
 TileStore::OpenPack::~OpenPack() {
   if (fd >= 0) ::close(fd);
 }
 
-Result<std::unique_ptr<TileStore>> TileStore::open(const std::filesystem::path& pyramidDir) {
+Result<std::unique_ptr<TileStore>> TileStore::open(const std::filesystem::path& pyramidDir,
+                                                   terrain::SeaSurface sea) {
   auto manifest = readManifest(pyramidDir);
   if (!manifest) return Error{manifest.error()};
   for (LevelInfo& level : manifest->levels) std::sort(level.packs.begin(), level.packs.end());
-  return std::unique_ptr<TileStore>(new TileStore(pyramidDir, std::move(*manifest)));
+  if (auto version = checkFormatVersion(pyramidDir, *manifest); !version) {
+    return Error{version.error()};
+  }
+  return std::unique_ptr<TileStore>(new TileStore(pyramidDir, std::move(*manifest), sea));
 }
 
 Result<std::shared_ptr<const TileStore::OpenPack>> TileStore::pack(const PackId& id) {
@@ -147,7 +165,7 @@ Result<terrain::HeightBlock> TileStore::loadBlock(const geo::TileId& tile) {
     return Error{read.error()};
   }
   ++blockReads_;
-  terrain::HeightBlock block{manifest_.verticesPerSide, {}};
+  terrain::HeightBlock block{manifest_.verticesPerSide, {}, sea_};
   block.heights.resize(bytes.size() / 2);
   decodeBlock(bytes, block.heights);
   return block;

@@ -21,17 +21,25 @@ namespace globe::io {
 
 class TileStore {
  public:
-  static Result<std::unique_ptr<TileStore>> open(const std::filesystem::path& pyramidDir);
+  // `sea`: the surface every block loaded from this store reads as the ground over water
+  // (HeightBlock::sea): the one place a viewer's --sea-floor reaches rendering, collision and
+  // heights alike. Refuses a pyramid whose packs have another format version (checked on the
+  // first level-0 pack; every pack is checked again when opened).
+  static Result<std::unique_ptr<TileStore>> open(
+      const std::filesystem::path& pyramidDir,
+      terrain::SeaSurface sea = terrain::SeaSurface::Water);
   ~TileStore() = default;
   TileStore(const TileStore&) = delete;
   TileStore& operator=(const TileStore&) = delete;
 
   const PyramidManifest& manifest() const { return manifest_; }
   const std::filesystem::path& directory() const { return dir_; }
+  terrain::SeaSurface sea() const { return sea_; }
 
   // The tile's index entry, or nullopt when the pyramid has no such tile. Thread-safe.
   Result<std::optional<PackEntry>> entry(const geo::TileId& tile);
-  // Loads a present tile's block with one read (its pack's index is parsed once). Thread-safe.
+  // Loads a present tile's block with one read (its pack's index is parsed once), its `sea` set
+  // to the store's. Thread-safe.
   Result<terrain::HeightBlock> loadBlock(const geo::TileId& tile);
 
   uint64_t blockReads() const { return blockReads_.load(); }
@@ -56,7 +64,7 @@ class TileStore {
     OpenPack& operator=(const OpenPack&) = delete;
     ~OpenPack();
   };
-  TileStore(std::filesystem::path dir, PyramidManifest manifest);
+  TileStore(std::filesystem::path dir, PyramidManifest manifest, terrain::SeaSurface sea);
   // nullptr when the level has no such pack.
   Result<std::shared_ptr<const OpenPack>> pack(const PackId& id);
   Result<std::shared_ptr<const OpenPack>> openPack(const PackId& id);  // with mutex_ held
@@ -64,6 +72,7 @@ class TileStore {
 
   std::filesystem::path dir_;
   PyramidManifest manifest_;
+  terrain::SeaSurface sea_;
   std::mutex mutex_;
   std::map<PackId, std::shared_ptr<const OpenPack>> openPacks_;
   std::map<PackId, std::string> failedPacks_;  // open failed: the error, not retried

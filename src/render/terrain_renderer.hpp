@@ -53,10 +53,10 @@ struct TerrainStyle {
 // light green, 800 m tan, 1500 m brown, 2500 m grey-brown, 3500 m grey, 4500 m+ snow white) or,
 // with imagery set and drapeImagery on, the image (sampled per fragment); it is lit by Lambert on
 // the mesh normal, ambient + (1 − ambient)·max(n·sun, 0), which is the hill-shading. Sea (the
-// vertex sea flag, i.e. no data or below 0 m) is blue, darker with depth down to 6 km, and lit
-// with the geocentric "up" instead of the normal, so water stays flat while the sea floor geometry
-// keeps its real depth; the fragment picks land or sea by the interpolated flag, so coasts stay
-// sharp.
+// vertex sea flag: water samples, terrain::isWater; land below sea level is land) is blue, darker
+// with the sea floor's depth down to 6 km whether the water surface at 0 m or the floor is drawn
+// (terrain::SeaSurface), and lit with the geocentric "up" instead of the normal, so water stays
+// flat; the fragment picks land or sea by the interpolated flag, so coasts stay sharp.
 // Skirts: only on the edges whose same-level neighbour is not drawn this frame
 // (terrain/skirt_edges.hpp); tiles of one level share their edge samples and their meshes overlap
 // by a hair (terrain::kSeamOverlapFraction), so no crack opens there.

@@ -33,7 +33,8 @@ glm::dvec3 ellipsoidNormal(const geo::Ellipsoid& ellipsoid, double longitudeDegr
 struct Vertex {
   glm::dvec3 positionEcef;
   glm::dvec3 normal;
-  double heightMeters;
+  double heightMeters;       // where the vertex is drawn: the block's surface height
+  double colorHeightMeters;  // what its colour shows: the land height, or the sea floor
   float sea;
   float u, v;
 };
@@ -92,9 +93,10 @@ TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
     for (uint32_t j = 0; j < n; ++j) {
       const int16_t sample = block.at(i, j);
       Vertex& vertex = vertices[gridVertexIndex(i, j, n)];
-      vertex.heightMeters = surfaceHeightMeters(sample);
+      vertex.heightMeters = surfaceHeightMeters(sample, block.sea);
+      vertex.colorHeightMeters = seaFloorMeters(sample);
       vertex.positionEcef = vertexEcef(ellipsoid, longitudes[j], latitudes[i], vertex.heightMeters);
-      vertex.sea = (sample == kNoDataHeight || sample < 0) ? 1.0f : 0.0f;
+      vertex.sea = isWater(sample) ? 1.0f : 0.0f;
       vertex.u = static_cast<float>(j) / cells;
       vertex.v = static_cast<float>(i) / cells;
     }
@@ -170,7 +172,7 @@ TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
     const glm::dvec3 offset = vertex.positionEcef - mesh.centerEcefMeters;
     for (int c = 0; c < 3; ++c) mesh.vertices.push_back(static_cast<float>(offset[c]));
     for (int c = 0; c < 3; ++c) mesh.vertices.push_back(static_cast<float>(vertex.normal[c]));
-    mesh.vertices.push_back(static_cast<float>(vertex.heightMeters));
+    mesh.vertices.push_back(static_cast<float>(vertex.colorHeightMeters));
     mesh.vertices.push_back(vertex.sea);
     mesh.vertices.push_back(vertex.u);
     mesh.vertices.push_back(vertex.v);

@@ -17,8 +17,10 @@ namespace globe::terrain {
 // Interleaved vertex layout, kTileVertexFloats floats per vertex:
 //   [0..2] position: offset from TileMesh::centerEcefMeters, metres (ECEF axes)
 //   [3..5] normal: unit, ECEF axes, from the heights (see buildTileMesh)
-//   [6]    height: metres above the ellipsoid; no-data counts as 0 m (sea level)
-//   [7]    sea flag: 1 where the sample is no-data or below 0 m, else 0
+//   [6]    colour height, metres: the land height, or under water the sea floor's (0 m where its
+//          depth is unknown), whichever surface the block's `sea` draws (see buildTileMesh)
+//   [7]    sea flag: 1 where the sample is water (terrain::isWater), else 0; land below sea level
+//          is land
 //   [8..9] imagery uv, TILE-LOCAL: u = column/(N-1) growing east, v = row/(N-1) growing south,
 //          so (0,0) is the tile's north-west corner and (1,1) its south-east corner. A global
 //          equirectangular image maps with u_global = (west+180°+u·width)/360°,
@@ -65,7 +67,7 @@ struct TileMesh {
 };
 
 // The exact double ECEF position buildTileMesh gives grid vertex (row, column) of `grid` at
-// `heightMeters` (use surfaceHeightMeters of the sample): the BlockGrid longitude/latitude in
+// `heightMeters` (use the block's surfaceHeightMetersAt): the BlockGrid longitude/latitude in
 // exact degrees; latitude ±90° lands exactly on the polar axis. Neighbouring tiles' shared
 // vertices are bit-identical (same degrees, same height). Collision can use it to match the mesh.
 glm::dvec3 tileVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGrid& grid,
@@ -80,7 +82,8 @@ glm::dvec3 drawnVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGri
 
 // Builds the mesh of `tile` from its block. A block whose size is not 2^k+1 or whose height array
 // does not hold N² samples gives an empty mesh (no vertices).
-// - Positions: drawnVertexEcefMeters of the surface height (no-data → 0 m), minus the double
+// - Positions: drawnVertexEcefMeters of block.surfaceHeightMetersAt (water at 0 m, or at its sea
+//   floor when block.sea is SeaSurface::SeaFloor: what collision reads too), minus the double
 //   centre, stored as float. Shared edge vertices of neighbouring tiles are therefore bit-identical
 //   in double; the float offsets reconstruct them to about 2^-24 of the tile's extent (< 1 cm from
 //   level 8). Vertices at latitude ±90° are placed exactly on the polar axis (x = y = 0): a pole

@@ -3,11 +3,13 @@
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "tests/io/sea_test_pyramid.hpp"
 #include "tests/tools/tiler/tiler_test_fixture.hpp"
 
 namespace {
@@ -18,12 +20,12 @@ struct Answer {
   std::string errors;
 };
 
-Answer query(const std::string& input, const std::string& options = "") {
+Answer queryPyramid(const std::filesystem::path& pyramid, const std::string& input,
+                    const std::string& options) {
   const auto dir = globe::tiler::testing::freshTempDir("query");
   { std::ofstream(dir / "in.txt") << input; }
-  const std::string command = std::string(GLOBE_EXE) + " query " +
-                              globe::tiler::testing::bundledPyramid().string() + " " + options +
-                              " < " + (dir / "in.txt").string() + " > " +
+  const std::string command = std::string(GLOBE_EXE) + " query " + pyramid.string() + " " +
+                              options + " < " + (dir / "in.txt").string() + " > " +
                               (dir / "out.txt").string() + " 2> " + (dir / "err.txt").string();
   const int status = std::system(command.c_str());
   Answer answer{WIFEXITED(status) ? WEXITSTATUS(status) : -1, {}, {}};
@@ -38,6 +40,10 @@ Answer query(const std::string& input, const std::string& options = "") {
   errors << std::ifstream(dir / "err.txt").rdbuf();
   answer.errors = errors.str();
   return answer;
+}
+
+Answer query(const std::string& input, const std::string& options = "") {
+  return queryPyramid(globe::tiler::testing::bundledPyramid(), input, options);
 }
 
 TEST(GlobeQuery, FujiSummitFromTheFinestLevelQotcdAboveExact) {
@@ -80,6 +86,57 @@ TEST(GlobeQuery, BadLinesAreNamedAndGiveANonZeroExit) {
   const Answer badLevel = query("0,0\n", "--level 40");
   EXPECT_EQ(badLevel.exitCode, 1);
   EXPECT_NE(badLevel.errors.find("levels are 0..14"), std::string::npos) << badLevel.errors;
+}
+
+// Water is 0 m by default and its sea floor with --sea-floor, in both modes; land below sea level
+// and water of unknown depth read the same either way. Queried at cell centres whose four
+// vertices agree (a cell's chord sags 6 cm there: the exact mode is a hair lower).
+TEST(GlobeQuery, SeaFloorOptionReadsTheFloorUnderWater) {
+  namespace sea = globe::io::test;
+  const auto pyramid = globe::tiler::testing::freshTempDir("query-sea") / "pyramid";
+  ASSERT_TRUE(sea::writeSeaTestPyramid(pyramid));
+  struct Place {
+    globe::geo::TileId tile;
+    uint32_t row, column;
+    double water, floor;
+  };
+  const Place places[] = {
+      {sea::kSeaTile, 7, 7, 0, sea::kSeaFloorMeters},
+      {sea::kMixedTile, 6, 1, 0, sea::kSeaFloorMeters},
+      {sea::kMixedTile, 6, 5, 0, 0},
+      {sea::kMixedTile, 6, 9, sea::kMixedLandBelowSeaLevelMeters,
+       sea::kMixedLandBelowSeaLevelMeters},
+      {sea::kMixedTile, 6, 13, sea::kMixedLandMeters, sea::kMixedLandMeters},
+  };
+  std::string input;
+  char line[128];
+  for (const Place& p : places) {
+    const auto centre = sea::cellCentreDegrees(p.tile, p.row, p.column);
+    std::snprintf(line, sizeof line, "%.17g,%.17g\n", centre.longitude, centre.latitude);
+    input += line;
+  }
+  input += "100,-60\n";  // only level 0 there: water of unknown depth
+  for (const char* mode : {"qotcd", "exact"}) {
+    const std::string options = std::string("--mode ") + mode;
+    const Answer water = queryPyramid(pyramid, input, options);
+    const Answer floor = queryPyramid(pyramid, input, options + " --sea-floor");
+    ASSERT_EQ(water.exitCode, 0) << water.errors;
+    ASSERT_EQ(floor.exitCode, 0) << floor.errors;
+    ASSERT_EQ(water.rows.size(), std::size(places) + 1);
+    ASSERT_EQ(floor.rows.size(), std::size(places) + 1);
+    for (size_t k = 0; k < std::size(places); ++k) {
+      SCOPED_TRACE(std::string(mode) + " place " + std::to_string(k));
+      EXPECT_EQ(water.rows[k][2], 10);
+      EXPECT_NEAR(water.rows[k][3], places[k].water, 0.1);
+      EXPECT_NEAR(floor.rows[k][3], places[k].floor, 0.1);
+    }
+    // Level 0 only (exact: 11.25 deg cells, whose chords pass ~30 km below the ellipsoid).
+    EXPECT_EQ(water.rows.back()[2], 0);
+    if (std::string(mode) == "qotcd") {
+      EXPECT_EQ(water.rows.back()[3], 0);
+    }
+    EXPECT_EQ(floor.rows.back()[3], water.rows.back()[3]);
+  }
 }
 
 }  // namespace

@@ -1,10 +1,13 @@
 // TerrainScene: the collision array always knows the ground under the camera, even when the
-// camera looks at the horizon and its nadir is not drawn.
+// camera looks at the horizon and its nadir is not drawn; SceneOptions::sea picks the water
+// surface or the sea floor as the ground.
 #include "app/terrain_scene.hpp"
 
 #include <gtest/gtest.h>
 
+#include "geo/cartographic.hpp"
 #include "render/osmesa_context.hpp"
+#include "tests/io/sea_test_pyramid.hpp"
 #include "tests/tools/tiler/tiler_test_fixture.hpp"
 
 namespace globe::app {
@@ -31,6 +34,32 @@ TEST(TerrainScene, NadirTileJoinsTheCollisionArrayWhenNotDrawn) {
   bool drawn = false;
   for (const geo::TileId& tile : (*scene)->tiles()) drawn = drawn || tile == found.tile->id;
   EXPECT_FALSE(drawn) << "this view does not draw its nadir: the test needs that";
+}
+
+// SceneOptions::sea reaches every block the scene reads: the height under the camera here (the
+// near plane's), the drawn tiles and the collision array alike (they share the scene's store).
+TEST(TerrainScene, TheSeaOptionChoosesTheGroundOverWater) {
+  namespace sea = io::test;
+  const auto pyramid = tiler::testing::freshTempDir("scene-sea") / "pyramid";
+  ASSERT_TRUE(sea::writeSeaTestPyramid(pyramid));
+  const auto open = sea::cellCentreDegrees(sea::kSeaTile, 7, 7);
+  const auto below = sea::cellCentreDegrees(sea::kMixedTile, 6, 9);
+  for (const terrain::SeaSurface surface :
+       {terrain::SeaSurface::Water, terrain::SeaSurface::SeaFloor}) {
+    SceneOptions options;
+    options.sea = surface;
+    auto scene = TerrainScene::open(pyramid, options);
+    ASSERT_TRUE(scene) << scene.error();
+    EXPECT_EQ((*scene)->store().sea(), surface);
+    auto water = (*scene)->terrainHeightMeters(geo::degreesToRadians(open.longitude),
+                                               geo::degreesToRadians(open.latitude));
+    ASSERT_TRUE(water) << water.error();
+    EXPECT_EQ(*water, surface == terrain::SeaSurface::Water ? 0.0 : sea::kSeaFloorMeters);
+    auto land = (*scene)->terrainHeightMeters(geo::degreesToRadians(below.longitude),
+                                              geo::degreesToRadians(below.latitude));
+    ASSERT_TRUE(land) << land.error();
+    EXPECT_EQ(*land, sea::kMixedLandBelowSeaLevelMeters);
+  }
 }
 
 }  // namespace

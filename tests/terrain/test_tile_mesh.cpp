@@ -174,25 +174,83 @@ TEST(TileMesh, SeamOverlapMovesOnlyEdgeVerticesOutwards) {
   }
 }
 
-TEST(TileMesh, NoDataIsSeaLevelAndSea) {
+// Where buildTileMesh puts interior vertex (row, column): its height along the normal.
+double drawnHeightMeters(const TileMesh& mesh, uint32_t row, uint32_t column) {
+  return geo::ecefToCartographic(kWgs84, reconstructed(mesh, gridVertexIndex(row, column, kN)))
+      ->heightMeters;
+}
+
+// One tile mixing every kind of sample: water over a known floor (band-coded), water of unknown
+// depth (-9999), land below sea level, land, and the samples next to the codes' boundaries.
+struct SampleCase {
+  uint32_t row, column;
+  int16_t sample;
+  bool water;
+  double waterSurfaceMeters;  // drawn height by default
+  double seaFloorMeters;      // drawn height with SeaSurface::SeaFloor
+  double colourMeters;        // the height attribute either way
+};
+const SampleCase kMixedCases[] = {
+    {2, 2, 250, false, 250, 250, 250},
+    {2, 5, kNoDataHeight, true, 0, 0, 0},
+    {2, 8, encodeWater(-200), true, 0, -200, -200},
+    {5, 2, -400, false, -400, -400, -400},  // the Dead Sea is land
+    {5, 5, -35, false, -35, -35, -35},
+    {5, 8, -9998, false, -9998, -9998, -9998},
+    {8, 2, -10000, false, -10000, -10000, -10000},
+    {8, 5, -20000, false, -20000, -20000, -20000},  // the band's edge: not water
+    {8, 8, -20001, true, 0, -1, -1},                // the shallowest floor encodable
+    {11, 2, encodeWater(kDeepestSeaFloorMeters), true, 0, -12767, -12767},
+    {11, 5, encodeWater(-0.4), true, 0, 0, 0},  // a floor at 0 m is depth unknown
+    {11, 8, -1, false, -1, -1, -1},
+};
+
+HeightBlock mixedBlock(SeaSurface sea) {
+  HeightBlock block{kN, std::vector<int16_t>(kN * kN, 250), sea};
+  for (const SampleCase& c : kMixedCases)
+    block.heights[gridVertexIndex(c.row, c.column, kN)] = c.sample;
+  return block;
+}
+
+TEST(TileMesh, WaterIsDrawnAtSeaLevelByDefaultAndLandBelowSeaLevelIsLand) {
   const geo::TileId tile{9, 300, 100};
-  HeightBlock block{kN, std::vector<int16_t>(kN * kN, 250)};
-  block.heights[gridVertexIndex(3, 4, kN)] = kNoDataHeight;
-  block.heights[gridVertexIndex(8, 8, kN)] = -35;
-  const TileMesh mesh = buildTileMesh(tile, block, kWgs84, 0.0);
-  const BlockGrid grid{tile, kN};
-  const uint32_t noData = gridVertexIndex(3, 4, kN);
-  EXPECT_EQ(attribute(mesh, noData, kTileVertexHeightOffset), 0.0f);
-  EXPECT_EQ(attribute(mesh, noData, kTileVertexSeaOffset), 1.0f);
-  const glm::dvec3 seaLevel = geo::cartographicToEcef(
-      kWgs84, geo::Cartographic::fromDegrees(grid.longitudeDegrees(4), grid.latitudeDegrees(3), 0));
-  EXPECT_LT(glm::length(reconstructed(mesh, noData) - seaLevel), 0.01);
-  const uint32_t below = gridVertexIndex(8, 8, kN);
-  EXPECT_EQ(attribute(mesh, below, kTileVertexHeightOffset), -35.0f);
-  EXPECT_EQ(attribute(mesh, below, kTileVertexSeaOffset), 1.0f);
-  const uint32_t land = gridVertexIndex(0, 0, kN);
-  EXPECT_EQ(attribute(mesh, land, kTileVertexHeightOffset), 250.0f);
-  EXPECT_EQ(attribute(mesh, land, kTileVertexSeaOffset), 0.0f);
+  const TileMesh mesh = buildTileMesh(tile, mixedBlock(SeaSurface::Water), kWgs84, 0.0);
+  for (const SampleCase& c : kMixedCases) {
+    SCOPED_TRACE(::testing::Message() << "sample " << c.sample);
+    const uint32_t v = gridVertexIndex(c.row, c.column, kN);
+    EXPECT_EQ(isWater(c.sample), c.water);
+    EXPECT_NEAR(drawnHeightMeters(mesh, c.row, c.column), c.waterSurfaceMeters, 0.01);
+    EXPECT_EQ(attribute(mesh, v, kTileVertexSeaOffset), c.water ? 1.0f : 0.0f);
+    EXPECT_EQ(attribute(mesh, v, kTileVertexHeightOffset), static_cast<float>(c.colourMeters));
+  }
+}
+
+TEST(TileMesh, WithTheSeaFloorWaterIsDrawnAtItsFloorAndKeepsItsSeaFlag) {
+  const geo::TileId tile{9, 300, 100};
+  const TileMesh mesh = buildTileMesh(tile, mixedBlock(SeaSurface::SeaFloor), kWgs84, 0.0);
+  for (const SampleCase& c : kMixedCases) {
+    SCOPED_TRACE(::testing::Message() << "sample " << c.sample);
+    const uint32_t v = gridVertexIndex(c.row, c.column, kN);
+    EXPECT_NEAR(drawnHeightMeters(mesh, c.row, c.column), c.seaFloorMeters, 0.01);
+    EXPECT_EQ(attribute(mesh, v, kTileVertexSeaOffset), c.water ? 1.0f : 0.0f);
+    EXPECT_EQ(attribute(mesh, v, kTileVertexHeightOffset), static_cast<float>(c.colourMeters));
+    // The mesh and collision read the same surface.
+    EXPECT_EQ(mixedBlock(SeaSurface::SeaFloor).surfaceHeightMetersAt(c.row, c.column),
+              c.seaFloorMeters);
+  }
+}
+
+TEST(TileMesh, SkirtsHangBelowTheSurfaceTheBlockDraws) {
+  const geo::TileId tile{9, 300, 100};
+  for (const SeaSurface sea : {SeaSurface::Water, SeaSurface::SeaFloor}) {
+    HeightBlock block{kN, std::vector<int16_t>(kN * kN, encodeWater(-3000)), sea};
+    const TileMesh mesh = buildTileMesh(tile, block, kWgs84, 500.0);
+    const double surface = sea == SeaSurface::Water ? 0.0 : -3000.0;
+    const glm::dvec3 skirt = reconstructed(mesh, skirtVertexIndex(TileEdge::North, 8, kN));
+    const glm::dvec3 top = reconstructed(mesh, gridVertexIndex(0, 8, kN));
+    EXPECT_NEAR(geo::ecefToCartographic(kWgs84, top)->heightMeters, surface, 0.01);
+    EXPECT_NEAR(geo::ecefToCartographic(kWgs84, skirt)->heightMeters, surface - 500.0, 0.01);
+  }
 }
 
 TEST(TileMesh, UvIsTileLocal) {

@@ -9,6 +9,7 @@
 #include "app/camera_argument.hpp"
 #include "app/playback_soak.hpp"
 #include "geo/ellipsoid.hpp"
+#include "terrain/height_block.hpp"
 
 namespace {
 
@@ -63,6 +64,10 @@ int main(int argc, char** argv) {
   app.add_option("--gpu-tiles", options.scene.gpuTileBudget, "meshes kept on the (OSMesa) GPU")
       ->capture_default_str();
   app.add_option("--globe", globeName, "wgs84 | sphere")->capture_default_str();
+  bool seaFloor = false;
+  app.add_flag("--sea-floor", seaFloor,
+               "the sea floor (bathymetry) is the ground where the pyramid has it, as globe play "
+               "--sea-floor; default: the water surface at 0 m");
   CLI11_PARSE(app, argc, argv);
 
   const auto globeModel = globe::geo::parseGlobeModel(globeName);
@@ -86,6 +91,8 @@ int main(int argc, char** argv) {
   options.widthPixels = size->first;
   options.heightPixels = size->second;
   options.scene.globeModel = *globeModel;
+  options.scene.sea =
+      seaFloor ? globe::terrain::SeaSurface::SeaFloor : globe::terrain::SeaSurface::Water;
   options.scene.cacheBudgetBytes = static_cast<size_t>(*cache * 1024 * 1024);
   options.checkpoints = {10'000, 100'000, 1'000'000};
   const auto report = globe::app::runSoak(options, print);

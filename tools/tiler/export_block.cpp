@@ -3,6 +3,7 @@
 #include "io/gtopo30.hpp"
 #include "io/tile_store.hpp"
 #include "terrain/block_grid.hpp"
+#include "terrain/height_block.hpp"
 
 namespace globe::tiler {
 
@@ -18,11 +19,15 @@ Result<void> exportBlock(const std::filesystem::path& pyramidDir, const geo::Til
   io::Gtopo30Header& h = raster.header;
   h.rows = h.cols = n;
   h.bandRowBytes = h.totalRowBytes = int64_t{n} * 2;
-  // The block's vertices are GTOPO30 samples: ULXMAP/ULYMAP name the centre of vertex (0, 0).
+  // The block's vertices are the samples: ULXMAP/ULYMAP name the centre of vertex (0, 0).
   h.ulxMapDegrees = grid.longitudeDegrees(0);
   h.ulyMapDegrees = grid.latitudeDegrees(0);
   h.xDimDegrees = h.yDimDegrees = terrain::vertexSpacingDegrees(tile.level, n);
+  // Strict GTOPO30: water is no data (-9999), its sea floor (band-coded in blocks) is dropped.
   raster.heights = std::move(block->heights);
+  for (int16_t& sample : raster.heights) {
+    if (terrain::isWater(sample)) sample = terrain::kNoDataHeight;
+  }
   return io::writeGtopo30(outputStem, raster);
 }
 

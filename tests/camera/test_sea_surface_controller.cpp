@@ -1,0 +1,164 @@
+// The camera over water, on blocks loaded through the tile store as the viewer loads them: by
+// default the water surface at 0 m is the ground (a camera diving into the sea stops at its eye
+// clearance above it); with the sea floor (--sea-floor) it goes under water down to the floor.
+// Land below sea level is land in both. The controller's ground is the drawn mesh's.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <deque>
+#include <filesystem>
+#include <string>
+
+#include <glm/geometric.hpp>
+
+#include "camera/camera_controller.hpp"
+#include "collision/collision_response.hpp"
+#include "collision/exact_surface.hpp"
+#include "geo/ecef.hpp"
+#include "io/tile_store.hpp"
+#include "terrain/tile_mesh.hpp"
+#include "tests/io/sea_test_pyramid.hpp"
+
+namespace globe::camera {
+namespace {
+
+namespace fs = std::filesystem;
+using terrain::SeaSurface;
+constexpr double kDt = 1.0 / 30.0;
+const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
+
+// A place to dive into, and the ground there under either sea surface.
+struct Spot {
+  const char* name;
+  geo::TileId tile;
+  uint32_t row, column;  // the cell whose centre the camera dives at
+  double waterSurfaceMeters;
+  double seaFloorMeters;
+};
+const Spot kSpots[] = {
+    {"open sea", io::test::kSeaTile, 7, 7, 0.0, io::test::kSeaFloorMeters},
+    {"water over a known floor beside land", io::test::kMixedTile, 6, 1, 0.0,
+     io::test::kSeaFloorMeters},
+    {"water of unknown depth", io::test::kMixedTile, 6, 5, 0.0, 0.0},
+    {"land below sea level", io::test::kMixedTile, 6, 9, io::test::kMixedLandBelowSeaLevelMeters,
+     io::test::kMixedLandBelowSeaLevelMeters},
+    {"land", io::test::kMixedTile, 6, 13, io::test::kMixedLandMeters, io::test::kMixedLandMeters},
+};
+
+class SeaSurfaceController : public ::testing::TestWithParam<SeaSurface> {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("globe_sea_controller_" + std::to_string(::getpid()) + "_" +
+                                        std::to_string(static_cast<int>(GetParam())));
+    fs::remove_all(dir_);
+    ASSERT_TRUE(io::test::writeSeaTestPyramid(dir_));
+    // The blocks as the viewer gets them: from a store opened with the view's sea surface.
+    auto store = io::TileStore::open(dir_, GetParam());
+    ASSERT_TRUE(store) << store.error();
+    std::vector<collision::ArrayTile> tiles;
+    for (uint32_t dy = 0; dy < 2; ++dy) {
+      for (uint32_t dx = 0; dx < 2; ++dx) {
+        const geo::TileId id{io::test::kSeaTestLevel, io::test::kSeaTile.x + dx,
+                             io::test::kSeaTile.y + dy};
+        auto block = (*store)->loadBlock(id);
+        ASSERT_TRUE(block) << block.error();
+        blocks_.push_back(std::move(*block));
+        tiles.push_back(collision::makeArrayTile(id, blocks_.back()));
+      }
+    }
+    array_.assign(std::move(tiles));
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  double expectedGround(const Spot& spot) const {
+    return GetParam() == SeaSurface::Water ? spot.waterSurfaceMeters : spot.seaFloorMeters;
+  }
+  static geo::Cartographic above(const Spot& spot, double heightMeters) {
+    const auto centre = io::test::cellCentreDegrees(spot.tile, spot.row, spot.column);
+    return geo::Cartographic::fromDegrees(centre.longitude, centre.latitude, heightMeters);
+  }
+
+  fs::path dir_;
+  std::deque<terrain::HeightBlock> blocks_;  // stable addresses for the array's tiles
+  collision::RenderingTileArray array_;
+};
+
+TEST_P(SeaSurfaceController, TheDrawnMeshAndCollisionStandOnTheSameGround) {
+  for (const Spot& spot : kSpots) {
+    SCOPED_TRACE(spot.name);
+    const geo::Cartographic at = above(spot, 0.0);
+    const auto exact =
+        collision::exactSurfaceHeight(array_, kWgs84, at.longitudeRadians, at.latitudeRadians);
+    ASSERT_TRUE(exact);
+    EXPECT_NEAR(exact->heightMeters, expectedGround(spot), 0.1);  // a cell's chord sags 6 cm
+    // The mesh's vertex at the cell's north-west corner is at the block's surface height.
+    const terrain::HeightBlock& block =
+        *array_.lookupIndexed(at.longitudeRadians, at.latitudeRadians).tile->block;
+    const terrain::TileMesh mesh = terrain::buildTileMesh(spot.tile, block, kWgs84, 0.0);
+    const float* offset = &mesh.vertices[size_t{terrain::gridVertexIndex(spot.row, spot.column,
+                                                                         block.verticesPerSide)} *
+                                         terrain::kTileVertexFloats];
+    const auto corner = geo::ecefToCartographic(
+        kWgs84, mesh.centerEcefMeters + glm::dvec3(offset[0], offset[1], offset[2]));
+    ASSERT_TRUE(corner);
+    EXPECT_NEAR(corner->heightMeters, expectedGround(spot), 0.01);
+  }
+}
+
+TEST_P(SeaSurfaceController, ACameraDivingStraightDownStopsAtTheGroundItsClearanceAbove) {
+  const double clearance = ControllerSettings{}.clearance.eyeMeters;
+  for (const Spot& spot : kSpots) {
+    SCOPED_TRACE(spot.name);
+    const double ground = expectedGround(spot);
+    // By velocity: 90 m/s down for 10 s, from 300 m above the water surface.
+    CameraController controller({above(spot, 300.0), 0.0, -1.5, 0.0});
+    const glm::dvec3 down = -geo::geodeticSurfaceNormal(kWgs84, above(spot, 0.0));
+    ASSERT_TRUE(controller.setVelocity(90.0 * down));
+    double lowest = 1e9;
+    for (int frame = 0; frame < 300; ++frame) {
+      const CollisionState& state = controller.update(kDt, array_, kWgs84);
+      lowest = std::min(lowest, controller.pose().position.heightMeters);
+      ASSERT_TRUE(state.terrainFound);
+      EXPECT_NEAR(state.terrainHeightMeters, ground, 0.1);
+    }
+    EXPECT_GE(lowest, ground + clearance - collision::kContactSkinMeters - 0.1);
+    EXPECT_NEAR(controller.pose().position.heightMeters, ground + clearance, 0.1);
+
+    // By proposed poses: 25 m lower each frame, far below the floor in the end.
+    CameraController proposed({above(spot, 300.0), 0.0, -1.5, 0.0});
+    lowest = 1e9;
+    for (int frame = 1; frame <= 120; ++frame) {
+      ASSERT_TRUE(proposed.propose({above(spot, 300.0 - 25.0 * frame), 0.0, -1.5, 0.0}));
+      proposed.update(kDt, array_, kWgs84);
+      lowest = std::min(lowest, proposed.pose().position.heightMeters);
+    }
+    EXPECT_GE(lowest, ground + clearance - collision::kContactSkinMeters - 0.1);
+    EXPECT_NEAR(proposed.pose().position.heightMeters, ground + clearance, 0.1);
+  }
+}
+
+TEST_P(SeaSurfaceController, OnlyTheSeaFloorLetsTheCameraUnderWater) {
+  const Spot& sea = kSpots[0];
+  CameraController controller({above(sea, 50.0), 0.0, -1.5, 0.0});
+  for (int frame = 1; frame <= 60; ++frame) {
+    ASSERT_TRUE(controller.propose({above(sea, 50.0 - 10.0 * frame), 0.0, -1.5, 0.0}));
+    controller.update(kDt, array_, kWgs84);
+  }
+  const double height = controller.pose().position.heightMeters;
+  if (GetParam() == SeaSurface::Water) {
+    EXPECT_GT(height, 1.9) << "the water surface is the ground";
+  } else {
+    EXPECT_LT(height, -150.0) << "under water";
+    EXPECT_GT(height, io::test::kSeaFloorMeters + 1.9) << "above the floor";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Sea, SeaSurfaceController,
+                         ::testing::Values(SeaSurface::Water, SeaSurface::SeaFloor),
+                         [](const auto& param) {
+                           return std::string(param.param == SeaSurface::Water ? "WaterSurface"
+                                                                               : "SeaFloor");
+                         });
+
+}  // namespace
+}  // namespace globe::camera
