@@ -4,17 +4,64 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <utility>
+
+#include "dem/nested_relaxation.hpp"
 
 namespace globe::dem {
 namespace {
 
 constexpr double kToleranceMeters = 1e-3;
+constexpr size_t kNestedMinimumSamples = 1024;
 
 struct Unknown {
   std::array<int32_t, 4> neighbours{-1, -1, -1, -1};  // other unknowns
   double fixedSum = 0;                                  // of the border neighbours' values
   uint8_t count = 0;                                    // neighbours of either kind
 };
+
+// The void and its border ring as a dense local grid, relaxed from coarse to fine.
+std::vector<double> solveDense(const DemGrid& grid, const std::vector<uint8_t>& isVoid,
+                               const std::vector<size_t>& region,
+                               const std::function<double(int64_t, int64_t)>& borderValue,
+                               int64_t minRow, int64_t maxRow, int64_t minColumn,
+                               int64_t maxColumn) {
+  const int64_t row0 = std::max<int64_t>(minRow - 1, 0);
+  const int64_t column0 = std::max<int64_t>(minColumn - 1, 0);
+  LocalGrid local;
+  local.rows = std::min(maxRow + 1, grid.rows - 1) - row0 + 1;
+  local.cols = std::min(maxColumn + 1, grid.cols - 1) - column0 + 1;
+  const auto cells = static_cast<size_t>(local.rows * local.cols);
+  local.kind.assign(cells, CellKind::Outside);
+  local.value.assign(cells, 0.0);
+  auto localIndex = [&](int64_t r, int64_t c) {
+    return static_cast<size_t>((r - row0) * local.cols + (c - column0));
+  };
+  const auto cols = static_cast<size_t>(grid.cols);
+  for (size_t i : region) {
+    const auto row = static_cast<int64_t>(i / cols), column = static_cast<int64_t>(i % cols);
+    local.kind[localIndex(row, column)] = CellKind::Unknown;
+  }
+  for (size_t i : region) {
+    const auto row = static_cast<int64_t>(i / cols), column = static_cast<int64_t>(i % cols);
+    for (auto [r, c] : {std::pair{row - 1, column}, {row + 1, column}, {row, column - 1},
+                        {row, column + 1}}) {
+      if (r < 0 || r >= grid.rows || c < 0 || c >= grid.cols) continue;
+      const size_t k = localIndex(r, c);
+      if (isVoid[grid.index(r, c)] == 0 && local.kind[k] == CellKind::Outside) {
+        local.kind[k] = CellKind::Fixed;
+        local.value[k] = borderValue(r, c);
+      }
+    }
+  }
+  solveMultigrid(local, kToleranceMeters / 10);
+  std::vector<double> values(region.size());
+  for (size_t k = 0; k < region.size(); ++k) {
+    values[k] = local.value[localIndex(static_cast<int64_t>(region[k] / cols),
+                                       static_cast<int64_t>(region[k] % cols))];
+  }
+  return values;
+}
 
 }  // namespace
 
@@ -45,6 +92,13 @@ std::optional<std::vector<double>> solveHarmonic(
     });
   }
   if (!anyBorder) return std::nullopt;
+
+  // Large voids: solved densely over their bounding box by nested relaxation (a void across the
+  // antimeridian of a wrapping grid keeps the sparse path below).
+  const bool crossesSeam = grid.wrapsLongitude && (minColumn == 0 || maxColumn == grid.cols - 1);
+  if (region.size() > kNestedMinimumSamples && !crossesSeam) {
+    return solveDense(grid, isVoid, region, borderValue, minRow, maxRow, minColumn, maxColumn);
+  }
 
   // Initial guess: peel the void from its border inwards, each sample the mean of the neighbours
   // already known (a good start, so few relaxation sweeps are needed).

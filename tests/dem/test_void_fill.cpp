@@ -41,6 +41,25 @@ TEST(VoidFill, APlaneIsFilledExactly) {
   }
 }
 
+TEST(VoidFill, AHugeVoidIsFilledExactlyByMultigrid) {
+  // 640,000 samples in one void (the dense multigrid path): a plane still comes back exactly.
+  auto plane = [](int64_t r, int64_t c) { return static_cast<int16_t>(2000 + 3 * r - 2 * c); };
+  DemGrid grid = makeGrid(840, 840, plane, 0.001);
+  std::vector<uint8_t> isVoid(grid.samples.size(), 0);
+  for (int64_t r = 20; r < 820; ++r) {
+    for (int64_t c = 20; c < 820; ++c) {
+      isVoid[grid.index(r, c)] = 1;
+      grid.samples[grid.index(r, c)] = terrain::kNoDataHeight;
+    }
+  }
+  EXPECT_EQ(fillVoids(grid, isVoid, nullptr).interpolatedSamples, 640000U);
+  int worst = 0;
+  for (int64_t r = 0; r < 840; ++r) {
+    for (int64_t c = 0; c < 840; ++c) worst = std::max(worst, std::abs(grid.at(r, c) - plane(r, c)));
+  }
+  EXPECT_LE(worst, 1);
+}
+
 TEST(VoidFill, InterpolatedValuesStayWithinTheBorderRange) {
   // A rough border (a cone plus noise-like ripples): every filled value within the border's range.
   auto rough = [](int64_t r, int64_t c) {
@@ -48,8 +67,9 @@ TEST(VoidFill, InterpolatedValuesStayWithinTheBorderRange) {
     return static_cast<int16_t>(3000 - 40 * d + 90 * std::sin(0.9 * static_cast<double>(r)) *
                                                     std::cos(1.3 * static_cast<double>(c)));
   };
+  for (double radius : {9.0, 24.0}) {  // the sparse and the dense (multigrid) solver
   DemGrid grid = makeGrid(50, 80, rough);
-  const auto isVoid = disc(grid, 25, 40, 9);
+  const auto isVoid = disc(grid, 25, 40, radius);
   int16_t low = INT16_MAX, high = INT16_MIN;
   for (int64_t r = 0; r < grid.rows; ++r) {
     for (int64_t c = 0; c < grid.cols; ++c) {
@@ -71,6 +91,7 @@ TEST(VoidFill, InterpolatedValuesStayWithinTheBorderRange) {
     if (!isVoid[i]) continue;
     EXPECT_GE(grid.samples[i], low);
     EXPECT_LE(grid.samples[i], high);
+  }
   }
 }
 
