@@ -6,7 +6,7 @@
 #include <numbers>
 #include <utility>
 
-#include "dem/nested_relaxation.hpp"
+#include "dem/multigrid_solver.hpp"
 
 namespace globe::dem {
 namespace {

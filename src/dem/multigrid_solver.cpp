@@ -1,4 +1,4 @@
-#include "dem/nested_relaxation.hpp"
+#include "dem/multigrid_solver.hpp"
 
 #include <algorithm>
 #include <array>
