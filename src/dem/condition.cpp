@@ -33,9 +33,9 @@ ConditionStats conditionGrid(DemGrid& grid, const CoarserSources* coarser,
   if (stats.voidSamples > 0) stats.fill = fillVoids(grid, isVoid, coarser, options.fill);
   if (coarser != nullptr && options.blendMarginDegrees > 0) {
     const CoverageTest noOther = [](double, double) { return false; };
-    stats.blendedSamples =
-        blendIntoCoarser(grid, *coarser, options.sameOrFinerCovers ? options.sameOrFinerCovers : noOther,
-                         options.blendMarginDegrees);
+    stats.blendedSamples = blendIntoCoarser(
+        grid, *coarser, options.sameOrFinerCovers ? options.sameOrFinerCovers : noOther,
+        options.blendMarginDegrees);
   }
   return stats;
 }

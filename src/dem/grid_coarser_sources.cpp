@@ -30,12 +30,13 @@ Support supportAt(const DemGrid& grid, double longitudeDegrees, double latitudeD
   } else {
     u = std::clamp(u, 0.0, static_cast<double>(grid.cols - 1));
   }
-  const double v = std::clamp((grid.firstRowLatitudeDegrees - latitudeDegrees) / grid.rowStepDegrees,
-                              0.0, static_cast<double>(grid.rows - 1));
+  const double v =
+      std::clamp((grid.firstRowLatitudeDegrees - latitudeDegrees) / grid.rowStepDegrees, 0.0,
+                 static_cast<double>(grid.rows - 1));
   const auto c0 = static_cast<int64_t>(std::floor(u));
   const auto r0 = static_cast<int64_t>(std::floor(v));
-  const int64_t c1 = grid.wrapsLongitude ? wrapColumn(c0 + 1, grid.cols)
-                                         : std::min(c0 + 1, grid.cols - 1);
+  const int64_t c1 =
+      grid.wrapsLongitude ? wrapColumn(c0 + 1, grid.cols) : std::min(c0 + 1, grid.cols - 1);
   const int64_t r1 = std::min(r0 + 1, grid.rows - 1);
   const int64_t c0w = grid.wrapsLongitude ? wrapColumn(c0, grid.cols) : c0;
   Support s;
@@ -60,8 +61,7 @@ bool gridCovers(const DemGrid& grid, double longitudeDegrees, double latitudeDeg
   return longitudeDegrees >= west && longitudeDegrees <= east;
 }
 
-double bilinearSurfaceMeters(const DemGrid& grid, double longitudeDegrees,
-                             double latitudeDegrees) {
+double bilinearSurfaceMeters(const DemGrid& grid, double longitudeDegrees, double latitudeDegrees) {
   const Support s = supportAt(grid, longitudeDegrees, latitudeDegrees);
   return terrain::surfaceHeightMeters(interpolateSample(s.samples, s.tu, s.tv));
 }
@@ -78,7 +78,8 @@ bool GridCoarserSources::allowSea(double longitudeDegrees, double latitudeDegree
       const int64_t r = std::clamp<int64_t>(s.row0 + dr, 0, grid->rows - 1);
       for (int64_t dc = -1; dc <= 2 && land; ++dc) {
         int64_t c = s.column0 + dc;
-        c = grid->wrapsLongitude ? wrapColumn(c, grid->cols) : std::clamp<int64_t>(c, 0, grid->cols - 1);
+        c = grid->wrapsLongitude ? wrapColumn(c, grid->cols)
+                                 : std::clamp<int64_t>(c, 0, grid->cols - 1);
         const int16_t sample = grid->at(r, c);
         land = !terrain::isWater(sample) && sample > 0;
       }

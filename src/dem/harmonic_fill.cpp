@@ -16,8 +16,8 @@ constexpr size_t kNestedMinimumSamples = 1024;
 
 struct Unknown {
   std::array<int32_t, 4> neighbours{-1, -1, -1, -1};  // other unknowns
-  double fixedSum = 0;                                  // of the border neighbours' values
-  uint8_t count = 0;                                    // neighbours of either kind
+  double fixedSum = 0;                                // of the border neighbours' values
+  uint8_t count = 0;                                  // neighbours of either kind
 };
 
 // The void and its border ring as a dense local grid, relaxed from coarse to fine.
@@ -44,8 +44,8 @@ std::vector<double> solveDense(const DemGrid& grid, const std::vector<uint8_t>& 
   }
   for (size_t i : region) {
     const auto row = static_cast<int64_t>(i / cols), column = static_cast<int64_t>(i % cols);
-    for (auto [r, c] : {std::pair{row - 1, column}, {row + 1, column}, {row, column - 1},
-                        {row, column + 1}}) {
+    for (auto [r, c] :
+         {std::pair{row - 1, column}, {row + 1, column}, {row, column - 1}, {row, column + 1}}) {
       if (r < 0 || r >= grid.rows || c < 0 || c >= grid.cols) continue;
       const size_t k = localIndex(r, c);
       if (isVoid[grid.index(r, c)] == 0 && local.kind[k] == CellKind::Outside) {
@@ -141,8 +141,7 @@ std::optional<std::vector<double>> solveHarmonic(
   }
 
   // Successive over-relaxation with the optimal factor for a square of the void's extent.
-  const double extent =
-      static_cast<double>(std::max(maxRow - minRow, maxColumn - minColumn) + 2);
+  const double extent = static_cast<double>(std::max(maxRow - minRow, maxColumn - minColumn) + 2);
   const double omega = 2.0 / (1.0 + std::sin(std::numbers::pi / extent));
   const int maxSweeps = static_cast<int>(std::min(100000.0, 20.0 * extent + 200.0));
   for (int sweep = 0; sweep < maxSweeps; ++sweep) {

@@ -30,7 +30,8 @@ struct Level {
     double sum = 0;
     const auto n = neighbours(i);
     for (size_t k = 0; k < 4; ++k) {
-      if (n[k] >= 0 && unknown[static_cast<size_t>(n[k])]) sum += weight[static_cast<size_t>(i)][k] * x[static_cast<size_t>(n[k])];
+      if (n[k] >= 0 && unknown[static_cast<size_t>(n[k])])
+        sum += weight[static_cast<size_t>(i)][k] * x[static_cast<size_t>(n[k])];
     }
     return sum;
   }
@@ -92,7 +93,8 @@ struct Hierarchy {
   std::vector<Level> levels;
 };
 
-void vCycle(const Hierarchy& h, size_t depth, std::vector<double>& x, const std::vector<double>& b) {
+void vCycle(const Hierarchy& h, size_t depth, std::vector<double>& x,
+            const std::vector<double>& b) {
   const Level& level = h.levels[depth];
   if (depth + 1 == h.levels.size()) {
     level.smooth(x, b, 50 + 4 * static_cast<int>(std::max(level.rows, level.cols)));
@@ -178,7 +180,8 @@ void solveMultigrid(LocalGrid& grid, double toleranceMeters) {
     const std::vector<double> r = top.residual(x, b);
     double worst = 0;
     for (size_t u = 0; u < cells; ++u) {
-      if (top.unknown[u] && top.diagonal[u] > 0) worst = std::max(worst, std::abs(r[u]) / top.diagonal[u]);
+      if (top.unknown[u] && top.diagonal[u] > 0)
+        worst = std::max(worst, std::abs(r[u]) / top.diagonal[u]);
     }
     if (worst < toleranceMeters) break;
   }

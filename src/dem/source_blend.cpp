@@ -29,7 +29,8 @@ uint64_t blendIntoCoarser(DemGrid& grid, const CoarserSources& coarser,
   const double east = grid.longitudeDegrees(grid.cols - 1) + grid.columnStepDegrees / 2;
   const double north = grid.latitudeDegrees(0) + grid.rowStepDegrees / 2;
   const double south = grid.latitudeDegrees(grid.rows - 1) - grid.rowStepDegrees / 2;
-  const double outsideLongitude = grid.columnStepDegrees / 2, outsideLatitude = grid.rowStepDegrees / 2;
+  const double outsideLongitude = grid.columnStepDegrees / 2,
+               outsideLatitude = grid.rowStepDegrees / 2;
 
   // An edge blends where the point just beyond it lies in a coarser source and in no finer one.
   auto blendsAt = [&](double longitude, double latitude) {

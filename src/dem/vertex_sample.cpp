@@ -9,8 +9,8 @@ namespace globe::dem {
 namespace {
 
 int16_t landSample(double heightMeters) {
-  const auto rounded = static_cast<int16_t>(std::clamp(
-      std::lround(heightMeters), static_cast<long>(terrain::kLowestLandMeters), 32767L));
+  const auto rounded = static_cast<int16_t>(
+      std::clamp(std::lround(heightMeters), static_cast<long>(terrain::kLowestLandMeters), 32767L));
   // -9999 is water: a land height that rounds to it moves a metre deeper.
   return rounded == terrain::kNoDataHeight ? static_cast<int16_t>(-10000) : rounded;
 }
@@ -35,8 +35,8 @@ int16_t interpolateSample(const std::array<int16_t, 4>& samples, double tu, doub
   if (measuredFloor) {
     return floorOrLand < 0.0 ? terrain::encodeWater(floorOrLand) : landSample(floorOrLand);
   }
-  const int16_t nearest = tv < 0.5 ? (tu < 0.5 ? samples[0] : samples[1])
-                                   : (tu < 0.5 ? samples[2] : samples[3]);
+  const int16_t nearest =
+      tv < 0.5 ? (tu < 0.5 ? samples[0] : samples[1]) : (tu < 0.5 ? samples[2] : samples[3]);
   if (terrain::isWater(nearest)) return terrain::kNoDataHeight;
   return landSample(bilinear(terrain::SeaSurface::Water));
 }

@@ -57,8 +57,8 @@ FillStats fillVoids(DemGrid& grid, const std::vector<uint8_t>& isVoid,
       for (size_t k = 0; k < region.size() && coarse; ++k) {
         const auto row = static_cast<int64_t>(region[k] / static_cast<size_t>(grid.cols));
         const auto column = static_cast<int64_t>(region[k] % static_cast<size_t>(grid.cols));
-        const auto h = coarser->heightMeters(grid.longitudeDegrees(column),
-                                             grid.latitudeDegrees(row));
+        const auto h =
+            coarser->heightMeters(grid.longitudeDegrees(column), grid.latitudeDegrees(row));
         if (h) {
           (*coarse)[k] = *h;
         } else {
@@ -73,7 +73,8 @@ FillStats fillVoids(DemGrid& grid, const std::vector<uint8_t>& isVoid,
     auto borderValue = [&](int64_t row, int64_t column) -> double {
       const double fine = terrain::surfaceHeightMeters(grid.at(row, column));
       if (!fromCoarser) return fine;
-      const auto h = coarser->heightMeters(grid.longitudeDegrees(column), grid.latitudeDegrees(row));
+      const auto h =
+          coarser->heightMeters(grid.longitudeDegrees(column), grid.latitudeDegrees(row));
       return h ? fine - *h : 0.0;
     };
     std::optional<std::vector<double>> solved = solveHarmonic(grid, isVoid, region, borderValue);

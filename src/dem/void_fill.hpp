@@ -20,10 +20,10 @@ struct FillOptions {
 };
 
 struct FillStats {
-  uint64_t voids = 0;                    // connected void regions
-  uint64_t interpolatedSamples = 0;      // filled from the border alone
-  uint64_t fromCoarserSamples = 0;       // filled from the coarser source (delta surface)
-  uint64_t unfilledSamples = 0;          // a void with no border (the whole grid is void)
+  uint64_t voids = 0;                // connected void regions
+  uint64_t interpolatedSamples = 0;  // filled from the border alone
+  uint64_t fromCoarserSamples = 0;   // filled from the coarser source (delta surface)
+  uint64_t unfilledSamples = 0;      // a void with no border (the whole grid is void)
 };
 
 // Fills the samples with isVoid[i] set (one flag per sample); each void is a 4-connected region.

@@ -33,7 +33,8 @@ constexpr double seaFloorMeters(int16_t sample) {
 // Water sample for a sea floor at floorMeters (rounded; >= -0.5 m or NaN: depth unknown).
 constexpr int16_t encodeWater(double floorMeters) {
   if (!(floorMeters < -0.5)) return kNoDataHeight;
-  const double clamped = floorMeters < kDeepestSeaFloorMeters ? kDeepestSeaFloorMeters : floorMeters;
+  const double clamped =
+      floorMeters < kDeepestSeaFloorMeters ? kDeepestSeaFloorMeters : floorMeters;
   const auto depth = static_cast<int>(clamped - 0.5);  // round half away from zero (negative)
   return static_cast<int16_t>(kSeaFloorCodeOffset + depth);
 }
@@ -62,7 +63,7 @@ struct HeightRange {
 // Vertex (row, column): row 0 is the north edge, column 0 the west edge.
 struct HeightBlock {
   uint32_t verticesPerSide = 0;
-  std::vector<int16_t> heights;  // row-major, verticesPerSide^2 samples
+  std::vector<int16_t> heights;        // row-major, verticesPerSide^2 samples
   SeaSurface sea = SeaSurface::Water;  // the surface the view asked for, set when loaded
 
   int16_t at(uint32_t row, uint32_t column) const {

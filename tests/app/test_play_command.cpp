@@ -273,3 +273,70 @@ TEST(GlobePlayFormats, TheBundledKmlTourPlaysAndAVideoIsEncoded) {
 
 }  // namespace
 }  // namespace globe::app
+
+namespace globe::app {
+namespace {
+
+// A path that dives into two of the Fuji SRTM tile's former voids (the summit crater's rim, 45
+// samples; the largest, 314 samples in the Southern Alps) and skims the filled surface 1 m up:
+// the camera never goes below the drawn surface, nor more than 3 m below the filled one (the
+// finest tiles), where it used to follow a void's pit down to sea level.
+TEST(GlobePlayVoids, ADiveIntoFormerVoidsStaysOnTheFilledSurface) {
+  const fs::path dir = freshTempDir("play-voids");
+  auto store = io::TileStore::open(bundledPyramid());
+  ASSERT_TRUE(store) << store.error();
+  FinestSurface surface(**store, geo::Ellipsoid::wgs84());
+  auto ground = [&](double lon, double lat) {
+    auto h = surface.heightMeters(geo::degreesToRadians(lon), geo::degreesToRadians(lat));
+    EXPECT_TRUE(h) << h.error();
+    return h ? *h : 0.0;
+  };
+  io::CameraPathFile path;
+  path.interpolation = "smooth";
+  path.keyframes = {
+      {0.0, 138.700, 35.330, 5000, 20, -30, 0},
+      {1.5, 138.7156, 35.3614, ground(138.7156, 35.3614) - 200, 60, -20, 0},  // into the void
+      {2.5, 138.7200, 35.3625, ground(138.7200, 35.3625) + 1, 90, -20, 0},
+      {3.5, 138.7300, 35.3606, ground(138.7300, 35.3606) + 1, 90, -20, 0},     // the filled summit
+      {5.5, 138.2112, 35.7666, ground(138.2112, 35.7666) - 100, 300, -20, 0},  // the largest void
+      {6.5, 138.2446, 35.7545, ground(138.2446, 35.7545) + 1, 110, -20, 0},
+  };
+  ASSERT_TRUE(io::writeCameraPathJson(dir / "voids.json", path));
+  const PlayRun run = runGlobe(bundledPyramid().string() + " " + (dir / "voids.json").string() +
+                               " --fps 10 --no-frames --out " + (dir / "out").string());
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const auto rows = readLog(dir / "out" / "log.csv");
+  ASSERT_EQ(rows.size(), 66u);
+  double lowestClearance = 1e9, lowestBelowFilled = 1e9;
+  int overSummitVoid = 0, overAlpsVoid = 0;
+  for (const auto& row : rows) {
+    const double lon = number(row, "lon_deg"), lat = number(row, "lat_deg");
+    const double clearance = number(row, "clearance_m");
+    const double aboveFilled = number(row, "height_m") - ground(lon, lat);
+    EXPECT_GE(clearance, 0.0) << "frame " << row.at("frame");
+    EXPECT_GE(aboveFilled, -3.0) << "frame " << row.at("frame") << " at " << lon << "," << lat;
+    lowestClearance = std::min(lowestClearance, clearance);
+    lowestBelowFilled = std::min(lowestBelowFilled, aboveFilled);
+    const bool overSummit = std::abs(lon - 138.7156) < 0.003 && std::abs(lat - 35.3614) < 0.003;
+    const bool overAlps = std::abs(lon - 138.2112) < 0.01 && std::abs(lat - 35.7666) < 0.01;
+    overSummitVoid += overSummit;
+    overAlpsVoid += overAlps;
+    // Over the former voids the ground is the mountain (their borders: 2,338-3,582 m and
+    // 1,580-2,643 m), not the sea-level pit the voids used to be drawn as.
+    if (overSummit) {
+      EXPECT_GT(number(row, "terrain_height_m"), 2000.0) << "frame " << row.at("frame");
+    }
+    if (overAlps) {
+      EXPECT_GT(number(row, "terrain_height_m"), 1200.0) << "frame " << row.at("frame");
+    }
+  }
+  EXPECT_GT(overSummitVoid, 0) << "the path passes over the summit's former void";
+  EXPECT_GT(overAlpsVoid, 0) << "the path passes over the Southern Alps' former void";
+  std::printf(
+      "voids: lowest clearance %.3f m over the drawn surface, lowest %.3f m above the "
+      "filled surface\n",
+      lowestClearance, lowestBelowFilled);
+}
+
+}  // namespace
+}  // namespace globe::app

@@ -14,7 +14,8 @@ constexpr int16_t kNoData = terrain::kNoDataHeight;
 
 // A coarse grid (0.05°) over the fine test grids, flat at `height` metres.
 DemGrid flatCoarse(int16_t height) {
-  return makeGrid(20, 20, [=](int64_t, int64_t) { return height; }, 0.05, 9.8, 45.2);
+  return makeGrid(
+      20, 20, [=](int64_t, int64_t) { return height; }, 0.05, 9.8, 45.2);
 }
 
 TEST(SeaClassification, NoDataTouchingTheBorderIsSeaAndEnclosedNoDataIsAVoid) {
@@ -35,9 +36,8 @@ TEST(SeaClassification, NoDataTouchingTheBorderIsSeaAndEnclosedNoDataIsAVoid) {
 
 TEST(SeaClassification, NoDataConnectedToTheBorderIsAVoidWhereTheCoarserSourceSaysLand) {
   // A no-data gash from the border into a mountain; the coarser grid says 800 m everywhere.
-  const DemGrid grid = makeGrid(30, 30, [](int64_t r, int64_t c) -> int16_t {
-    return r == 15 && c < 20 ? kNoData : 900;
-  });
+  const DemGrid grid = makeGrid(
+      30, 30, [](int64_t r, int64_t c) -> int16_t { return r == 15 && c < 20 ? kNoData : 900; });
   const DemGrid coarse = flatCoarse(800);
   const GridCoarserSources coarser({&coarse});
   const SeaClassification result = classifySea(grid, &coarser);
@@ -49,9 +49,8 @@ TEST(SeaClassification, NoDataConnectedToTheBorderIsAVoidWhereTheCoarserSourceSa
 
 TEST(SeaClassification, SrtmZeroMetreSeaIsSeaOnlyWhereTheCoarserSourceAllowsIt) {
   // South half exactly 0 m (how SRTM writes the sea), north half land.
-  const DemGrid grid = makeGrid(30, 30, [](int64_t r, int64_t) -> int16_t {
-    return r >= 15 ? 0 : 120;
-  });
+  const DemGrid grid =
+      makeGrid(30, 30, [](int64_t r, int64_t) -> int16_t { return r >= 15 ? 0 : 120; });
   const DemGrid sea = flatCoarse(-30);
   const DemGrid land = flatCoarse(40);
   const GridCoarserSources seaSource({&sea});

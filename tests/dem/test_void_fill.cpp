@@ -55,7 +55,8 @@ TEST(VoidFill, AHugeVoidIsFilledExactlyByMultigrid) {
   EXPECT_EQ(fillVoids(grid, isVoid, nullptr).interpolatedSamples, 640000U);
   int worst = 0;
   for (int64_t r = 0; r < 840; ++r) {
-    for (int64_t c = 0; c < 840; ++c) worst = std::max(worst, std::abs(grid.at(r, c) - plane(r, c)));
+    for (int64_t c = 0; c < 840; ++c)
+      worst = std::max(worst, std::abs(grid.at(r, c) - plane(r, c)));
   }
   EXPECT_LE(worst, 1);
 }
@@ -64,34 +65,35 @@ TEST(VoidFill, InterpolatedValuesStayWithinTheBorderRange) {
   // A rough border (a cone plus noise-like ripples): every filled value within the border's range.
   auto rough = [](int64_t r, int64_t c) {
     const double d = std::hypot(static_cast<double>(r - 25), static_cast<double>(c - 40));
-    return static_cast<int16_t>(3000 - 40 * d + 90 * std::sin(0.9 * static_cast<double>(r)) *
-                                                    std::cos(1.3 * static_cast<double>(c)));
+    return static_cast<int16_t>(3000 - 40 * d +
+                                90 * std::sin(0.9 * static_cast<double>(r)) *
+                                    std::cos(1.3 * static_cast<double>(c)));
   };
   for (double radius : {9.0, 24.0}) {  // the sparse and the dense (multigrid) solver
-  DemGrid grid = makeGrid(50, 80, rough);
-  const auto isVoid = disc(grid, 25, 40, radius);
-  int16_t low = INT16_MAX, high = INT16_MIN;
-  for (int64_t r = 0; r < grid.rows; ++r) {
-    for (int64_t c = 0; c < grid.cols; ++c) {
-      if (isVoid[grid.index(r, c)]) continue;
-      bool border = false;
-      for (auto [dr, dc] : {std::pair{-1, 0}, {1, 0}, {0, -1}, {0, 1}}) {
-        const int64_t rr = r + dr, cc = c + dc;
-        if (rr >= 0 && rr < grid.rows && cc >= 0 && cc < grid.cols && isVoid[grid.index(rr, cc)])
-          border = true;
+    DemGrid grid = makeGrid(50, 80, rough);
+    const auto isVoid = disc(grid, 25, 40, radius);
+    int16_t low = INT16_MAX, high = INT16_MIN;
+    for (int64_t r = 0; r < grid.rows; ++r) {
+      for (int64_t c = 0; c < grid.cols; ++c) {
+        if (isVoid[grid.index(r, c)]) continue;
+        bool border = false;
+        for (auto [dr, dc] : {std::pair{-1, 0}, {1, 0}, {0, -1}, {0, 1}}) {
+          const int64_t rr = r + dr, cc = c + dc;
+          if (rr >= 0 && rr < grid.rows && cc >= 0 && cc < grid.cols && isVoid[grid.index(rr, cc)])
+            border = true;
+        }
+        if (border) low = std::min(low, grid.at(r, c)), high = std::max(high, grid.at(r, c));
       }
-      if (border) low = std::min(low, grid.at(r, c)), high = std::max(high, grid.at(r, c));
     }
-  }
-  for (size_t i = 0; i < isVoid.size(); ++i) {
-    if (isVoid[i]) grid.samples[i] = terrain::kNoDataHeight;
-  }
-  fillVoids(grid, isVoid, nullptr);
-  for (size_t i = 0; i < isVoid.size(); ++i) {
-    if (!isVoid[i]) continue;
-    EXPECT_GE(grid.samples[i], low);
-    EXPECT_LE(grid.samples[i], high);
-  }
+    for (size_t i = 0; i < isVoid.size(); ++i) {
+      if (isVoid[i]) grid.samples[i] = terrain::kNoDataHeight;
+    }
+    fillVoids(grid, isVoid, nullptr);
+    for (size_t i = 0; i < isVoid.size(); ++i) {
+      if (!isVoid[i]) continue;
+      EXPECT_GE(grid.samples[i], low);
+      EXPECT_LE(grid.samples[i], high);
+    }
   }
 }
 
@@ -100,11 +102,15 @@ TEST(VoidFill, LargeVoidsFollowTheCoarserSourceShiftedToMeetTheBorder) {
   // comes back to within a metre or two; by interpolation alone it would miss the ridge.
   auto ridge = [](double lon) { return 1500.0 + 600.0 * std::sin((lon - 10.0) * 12.0); };
   const DemGrid coarse = makeGrid(
-      20, 20, [&](int64_t, int64_t c) { return static_cast<int16_t>(std::lround(ridge(9.8 + 0.05 * static_cast<double>(c)))); },
+      20, 20,
+      [&](int64_t, int64_t c) {
+        return static_cast<int16_t>(std::lround(ridge(9.8 + 0.05 * static_cast<double>(c))));
+      },
       0.05, 9.8, 45.2);
   const GridCoarserSources coarser({&coarse});
   DemGrid truth = makeGrid(60, 60, [&](int64_t r, int64_t c) {
-    const double lon = 10.0 + 0.01 * static_cast<double>(c), lat = 45.0 - 0.01 * static_cast<double>(r);
+    const double lon = 10.0 + 0.01 * static_cast<double>(c),
+                 lat = 45.0 - 0.01 * static_cast<double>(r);
     return static_cast<int16_t>(std::lround(bilinearSurfaceMeters(coarse, lon, lat) + 25.0));
   });
   const auto isVoid = disc(truth, 30, 30, 20);
@@ -134,7 +140,8 @@ TEST(VoidFill, AVoidWithNoBorderTakesTheCoarserSourceOrStays) {
   DemGrid alone = grid;
   EXPECT_EQ(fillVoids(alone, all, nullptr).unfilledSamples, 100U);
   EXPECT_EQ(alone.at(5, 5), terrain::kNoDataHeight);
-  const DemGrid coarse = makeGrid(20, 20, [](int64_t, int64_t) { return int16_t{640}; }, 0.05, 9.8, 45.2);
+  const DemGrid coarse = makeGrid(
+      20, 20, [](int64_t, int64_t) { return int16_t{640}; }, 0.05, 9.8, 45.2);
   const GridCoarserSources coarser({&coarse});
   EXPECT_EQ(fillVoids(grid, all, &coarser).fromCoarserSamples, 100U);
   EXPECT_EQ(grid.at(5, 5), 640);
@@ -143,7 +150,9 @@ TEST(VoidFill, AVoidWithNoBorderTakesTheCoarserSourceOrStays) {
 TEST(VoidFill, IsDeterministicAndWrapsAroundTheAntimeridian) {
   // A global 10° grid with a void across the ±180° seam, filled twice: the same bytes, and the
   // fill uses the samples on both sides of the seam.
-  auto f = [](int64_t r, int64_t c) { return static_cast<int16_t>(100 * r + (c < 18 ? c : 36 - c)); };
+  auto f = [](int64_t r, int64_t c) {
+    return static_cast<int16_t>(100 * r + (c < 18 ? c : 36 - c));
+  };
   DemGrid grid = makeGrid(18, 36, f, 10.0, -175.0, 85.0);
   grid.wrapsLongitude = true;
   std::vector<uint8_t> isVoid(grid.samples.size(), 0);

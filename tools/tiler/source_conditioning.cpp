@@ -53,7 +53,8 @@ Result<std::shared_ptr<dem::DemGrid>> readWhole(const TilerSource& source) {
   grid->wrapsLongitude = g.wrapsLongitude;
   grid->samples.resize(static_cast<size_t>(g.cols) * static_cast<size_t>(g.rows));
   for (int64_t row = 0; row < g.rows; ++row) {
-    if (auto read = source.raster->readRow(row, 0, g.cols, grid->samples.data() + grid->index(row, 0));
+    if (auto read =
+            source.raster->readRow(row, 0, g.cols, grid->samples.data() + grid->index(row, 0));
         !read) {
       return Error{read.error()};
     }
@@ -106,10 +107,14 @@ Result<std::vector<io::SourceConditioning>> conditionSources(std::vector<TilerSo
     };
     const dem::ConditionStats stats =
         dem::conditionGrid(**grid, coarser.empty() ? nullptr : &coarserSources, options);
-    report[i] = {stats.noDataSamples,          stats.seaSamples,
-                 stats.voidSamples,            stats.fill.interpolatedSamples,
-                 stats.fill.fromCoarserSamples, stats.fill.unfilledSamples,
-                 stats.blendedSamples,         options.blendMarginDegrees};
+    report[i] = {stats.noDataSamples,
+                 stats.seaSamples,
+                 stats.voidSamples,
+                 stats.fill.interpolatedSamples,
+                 stats.fill.fromCoarserSamples,
+                 stats.fill.unfilledSamples,
+                 stats.blendedSamples,
+                 options.blendMarginDegrees};
     grids[i] = *grid;
   }
   for (size_t i = 0; i < sources.size(); ++i) {

@@ -35,7 +35,7 @@ bool TilerSource::covers(double longitudeDegrees, double latitudeDegrees) const 
 }
 
 io::SourceInfo TilerSource::info() const {
-  return {argument,   std::string(raster->formatName()), grid.cols, grid.rows, stepDegrees, extent,
+  return {argument,    std::string(raster->formatName()), grid.cols, grid.rows, stepDegrees, extent,
           finestLevel, io::SourceConditioning{}};
 }
 

@@ -33,8 +33,14 @@ dem::DemGrid readRaw(const std::string& path) {
   auto source = io::openRasterSource(path);
   EXPECT_TRUE(source) << source.error();
   const io::SampleGrid& g = (*source)->grid();
-  dem::DemGrid grid{g.cols, g.rows, g.firstColumnLongitudeDegrees, g.firstRowLatitudeDegrees,
-                    g.columnStepDegrees, g.rowStepDegrees, g.wrapsLongitude, {}};
+  dem::DemGrid grid{g.cols,
+                    g.rows,
+                    g.firstColumnLongitudeDegrees,
+                    g.firstRowLatitudeDegrees,
+                    g.columnStepDegrees,
+                    g.rowStepDegrees,
+                    g.wrapsLongitude,
+                    {}};
   grid.samples.resize(static_cast<size_t>(g.cols * g.rows));
   for (int64_t r = 0; r < g.rows; ++r) {
     EXPECT_TRUE((*source)->readRow(r, 0, g.cols, grid.samples.data() + grid.index(r, 0)));
@@ -92,7 +98,8 @@ TEST(TilerConditioning, FujiVoidsAreFilledWhereTheWorldGridSaysLand) {
     // Vertices whose nearest SRTM sample is a void (no data): measured samples at or below 0 m
     // (a harbour behind its breakwater) are the data's own word.
     const auto row = std::lround((raw.firstRowLatitudeDegrees - lat) / raw.rowStepDegrees);
-    const auto column = std::lround((lon - raw.firstColumnLongitudeDegrees) / raw.columnStepDegrees);
+    const auto column =
+        std::lround((lon - raw.firstColumnLongitudeDegrees) / raw.columnStepDegrees);
     if (raw.at(row, column) != terrain::kNoDataHeight) continue;
     if (dem::bilinearSurfaceMeters(world, lon, lat) <= 300.0) continue;
     ++checked;
@@ -126,7 +133,8 @@ TEST(TilerConditioning, EachFilledHeightIsWithinItsVoidBorderRange) {
   std::vector<uint8_t> seen(raw.samples.size(), 0);
   size_t voids = 0, filledSamples = 0;
   for (size_t start = 0; start < raw.samples.size(); ++start) {
-    if (raw.samples[start] != terrain::kNoDataHeight || seen[start] || terrain::isWater(filled[start]))
+    if (raw.samples[start] != terrain::kNoDataHeight || seen[start] ||
+        terrain::isWater(filled[start]))
       continue;
     // One void (4-connected), its border in the raw data, and the 20′ surface over it.
     std::vector<size_t> region{start};
@@ -134,8 +142,8 @@ TEST(TilerConditioning, EachFilledHeightIsWithinItsVoidBorderRange) {
     double low = 1e9, high = -1e9, coarseLow = 1e9, coarseHigh = -1e9;
     for (size_t k = 0; k < region.size(); ++k) {
       const auto row = int64_t(region[k]) / raw.cols, column = int64_t(region[k]) % raw.cols;
-      const double c = dem::bilinearSurfaceMeters(world, raw.longitudeDegrees(column),
-                                                  raw.latitudeDegrees(row));
+      const double c =
+          dem::bilinearSurfaceMeters(world, raw.longitudeDegrees(column), raw.latitudeDegrees(row));
       coarseLow = std::min(coarseLow, c), coarseHigh = std::max(coarseHigh, c);
       for (auto [dr, dc] : {std::pair<int64_t, int64_t>{-1, 0}, {1, 0}, {0, -1}, {0, 1}}) {
         const int64_t rr = row + dr, cc = column + dc;
@@ -144,7 +152,8 @@ TEST(TilerConditioning, EachFilledHeightIsWithinItsVoidBorderRange) {
         if (raw.samples[i] == terrain::kNoDataHeight) {
           if (!seen[i]) seen[i] = 1, region.push_back(i);
         } else {
-          low = std::min(low, double(raw.samples[i])), high = std::max(high, double(raw.samples[i]));
+          low = std::min(low, double(raw.samples[i])),
+          high = std::max(high, double(raw.samples[i]));
         }
       }
     }
@@ -158,7 +167,8 @@ TEST(TilerConditioning, EachFilledHeightIsWithinItsVoidBorderRange) {
       const auto row = int64_t(i) / raw.cols, column = int64_t(i) % raw.cols;
       const double margin = 0.1001;
       const double lon = raw.longitudeDegrees(column), lat = raw.latitudeDegrees(row);
-      if (lon < 138.0 + margin || lon > 139.0 - margin || lat < 35.0 + margin || lat > 36.0 - margin)
+      if (lon < 138.0 + margin || lon > 139.0 - margin || lat < 35.0 + margin ||
+          lat > 36.0 - margin)
         continue;
       ++filledSamples;
       EXPECT_FALSE(terrain::isWater(filled[i])) << lon << "," << lat;
@@ -177,8 +187,8 @@ TEST(TilerConditioning, NoWallWhereTheFujiTileMeetsTheWorldGrid) {
   ASSERT_TRUE(store) << store.error();
   const double west = 138.0 - 1.0 / 2400, east = 139.0 + 1.0 / 2400;  // the cells' extent
   const double south = 35.0 - 1.0 / 2400, north = 36.0 + 1.0 / 2400;
-  const Lattice lattice = readLattice(**store, kFujiLevel, west - 0.005, south - 0.005,
-                                      east + 0.005, north + 0.005);
+  const Lattice lattice =
+      readLattice(**store, kFujiLevel, west - 0.005, south - 0.005, east + 0.005, north + 0.005);
   auto inside = [&](double lon, double lat) {
     return lon >= west && lon <= east && lat >= south && lat <= north;
   };
@@ -189,7 +199,8 @@ TEST(TilerConditioning, NoWallWhereTheFujiTileMeetsTheWorldGrid) {
       const auto other = lattice.at(index.first + dr, index.second + dc);
       if (!other) continue;
       const bool a = inside(lattice.longitude(index.second), lattice.latitude(index.first));
-      const bool b = inside(lattice.longitude(index.second + dc), lattice.latitude(index.first + dr));
+      const bool b =
+          inside(lattice.longitude(index.second + dc), lattice.latitude(index.first + dr));
       const double step =
           std::abs(terrain::surfaceHeightMeters(sample) - terrain::surfaceHeightMeters(*other));
       if (a && b) insideSteps.push_back(step);
@@ -208,9 +219,10 @@ TEST(TilerConditioning, NoWallWhereTheFujiTileMeetsTheWorldGrid) {
   const double p999 = insideSteps[k];
   RecordProperty("worstStepAcrossMeters", std::to_string(worstAcross));
   RecordProperty("p999StepInsideMeters", std::to_string(p999));
-  std::printf("Fuji edge: worst step across %.1f m (%.1f m where one side is water), p99.9 "
-              "inside %.1f m\n",
-              worstAcross, worstCoast, p999);
+  std::printf(
+      "Fuji edge: worst step across %.1f m (%.1f m where one side is water), p99.9 "
+      "inside %.1f m\n",
+      worstAcross, worstCoast, p999);
   EXPECT_LE(worstAcross, p999);
 }
 
@@ -225,7 +237,8 @@ TEST(TilerConditioning, SrtmZeroMetreSeaIsWater) {
     const double lon = lattice.longitude(index.second), lat = lattice.latitude(index.first);
     if (lon < 138.01 || lon > 138.99 || lat < 35.01 || lat > 35.99) continue;
     const auto row = std::lround((raw.firstRowLatitudeDegrees - lat) / raw.rowStepDegrees);
-    const auto column = std::lround((lon - raw.firstColumnLongitudeDegrees) / raw.columnStepDegrees);
+    const auto column =
+        std::lround((lon - raw.firstColumnLongitudeDegrees) / raw.columnStepDegrees);
     if (raw.at(row, column) != 0) continue;
     ++zero;
     if (terrain::isWater(sample)) ++water;
