@@ -340,3 +340,38 @@ TEST(GlobePlayVoids, ADiveIntoFormerVoidsStaysOnTheFilledSurface) {
 
 }  // namespace
 }  // namespace globe::app
+
+namespace globe::app {
+namespace {
+
+// Real data: a dive to 500 m below sea level over the Suruga trough, south of the Fuji tile
+// (ETOPO20 measures the floor there at about -790 m). By default the camera stops on the water
+// surface; with --sea-floor it goes under water, above the floor.
+TEST(GlobePlaySea, TheCameraStopsAtTheWaterSurfaceUnlessTheSeaFloorIsShown) {
+  const fs::path dir = freshTempDir("play-sea");
+  io::CameraPathFile path;
+  path.interpolation = "linear";
+  path.keyframes = {{0.0, 138.55, 34.60, 2000, 0, -30, 0}, {2.0, 138.55, 34.60, -500, 0, -30, 0}};
+  ASSERT_TRUE(io::writeCameraPathJson(dir / "dive.json", path));
+  auto lowest = [&](const std::string& name, const std::string& options) {
+    const PlayRun run =
+        runGlobe(bundledPyramid().string() + " " + (dir / "dive.json").string() +
+                 " --fps 10 --no-frames --out " + (dir / name).string() + " " + options);
+    EXPECT_EQ(run.exitCode, 0) << run.output;
+    double low = 1e9;
+    for (const auto& row : readLog(dir / name / "log.csv")) {
+      EXPECT_GE(number(row, "clearance_m"), 0.0) << name << " frame " << row.at("frame");
+      low = std::min(low, number(row, "height_m"));
+    }
+    return low;
+  };
+  const double water = lowest("water", "");
+  const double floor = lowest("floor", "--sea-floor");
+  std::printf("lowest camera: %.2f m on the water, %.2f m with the sea floor\n", water, floor);
+  EXPECT_GE(water, 0.9);  // the controller's 1 m floor above the water at 0 m
+  EXPECT_LE(water, 5.0);
+  EXPECT_LT(floor, -450.0);  // under water, as the path asks
+}
+
+}  // namespace
+}  // namespace globe::app

@@ -247,6 +247,42 @@ TEST(TilerConditioning, SrtmZeroMetreSeaIsWater) {
   EXPECT_GE(double(water), 0.98 * double(zero)) << water << " of " << zero;
 }
 
+TEST(TilerConditioning, TheKattegatAtZeroMetresIsWater) {
+  // N57E011 is mostly sea written as exactly 0 m; tiled with the 20′ grid, that sea is water.
+  const std::string kattegat = std::string(GLOBE_SOURCE_DIR) + "/tests/data/dem/N57E011.DEM";
+  const auto dir = testing::freshTempDir("kattegat");
+  TilerOptions options;
+  options.inputs = {kWorld, kattegat};
+  options.outputDir = dir / "pyramid";
+  options.progress = false;
+  ASSERT_TRUE(runTiler(options));
+  auto store = io::TileStore::open(options.outputDir);
+  ASSERT_TRUE(store) << store.error();
+  const dem::DemGrid raw = readRaw(kattegat);
+  const Lattice lattice = readLattice(**store, kFujiLevel, 11.0, 57.0, 12.0, 58.0);
+  size_t zero = 0, water = 0, land = 0, landAsWater = 0;
+  for (const auto& [index, sample] : lattice.samples) {
+    const double lon = lattice.longitude(index.second), lat = lattice.latitude(index.first);
+    if (lon < 11.01 || lon > 11.99 || lat < 57.01 || lat > 57.99) continue;
+    const auto row = std::lround((raw.firstRowLatitudeDegrees - lat) / raw.rowStepDegrees);
+    const auto column =
+        std::lround((lon - raw.firstColumnLongitudeDegrees) / raw.columnStepDegrees);
+    const int16_t source = raw.at(row, column);
+    if (source == 0) {
+      ++zero;
+      water += terrain::isWater(sample) ? 1 : 0;
+    } else if (source > 5) {
+      ++land;
+      landAsWater += terrain::isWater(sample) ? 1 : 0;
+    }
+  }
+  std::printf("Kattegat: %zu of %zu 0 m vertices water; %zu of %zu land vertices water\n", water,
+              zero, landAsWater, land);
+  EXPECT_GT(zero, 500000U);
+  EXPECT_GE(double(water), 0.95 * double(zero));
+  EXPECT_LE(double(landAsWater), 0.001 * double(land));
+}
+
 TEST(TilerConditioning, ASourceThatIsAllNoDataIsReported) {
   const auto dir = testing::freshTempDir("all-no-data");
   io::Gtopo30Raster raster;
