@@ -1,45 +1,19 @@
 #include "tools/tiler/source_conditioning.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <memory>
+#include <mutex>
+#include <thread>
 
 #include "dem/condition.hpp"
 #include "dem/grid_coarser_sources.hpp"
+#include "tools/tiler/conditioned_raster.hpp"
 
 namespace globe::tiler {
 namespace {
 
 constexpr double kSameStepTolerance = 1e-6;
-
-// A conditioned source in memory, read like the original.
-class ConditionedRaster final : public io::RasterSource {
- public:
-  ConditionedRaster(std::unique_ptr<io::RasterSource> original, std::shared_ptr<dem::DemGrid> grid)
-      : original_(std::move(original)), grid_(std::move(grid)) {}
-  const std::string& path() const override { return original_->path(); }
-  std::string_view formatName() const override { return original_->formatName(); }
-  const io::SampleGrid& grid() const override { return original_->grid(); }
-  Result<void> readRow(int64_t row, int64_t firstColumn, int64_t count,
-                       int16_t* out) const override {
-    const io::SampleGrid& g = original_->grid();
-    if (row < 0 || row >= g.rows || count < 0 ||
-        (!g.wrapsLongitude && (firstColumn < 0 || firstColumn + count > g.cols))) {
-      return makeError(path() + ": row " + std::to_string(row) + " columns " +
-                       std::to_string(firstColumn) + "+" + std::to_string(count) +
-                       " outside the raster");
-    }
-    for (int64_t k = 0; k < count; ++k) {
-      int64_t column = (firstColumn + k) % g.cols;
-      if (column < 0) column += g.cols;
-      out[k] = grid_->at(row, column);
-    }
-    return {};
-  }
-
- private:
-  std::unique_ptr<io::RasterSource> original_;
-  std::shared_ptr<dem::DemGrid> grid_;
-};
 
 Result<std::shared_ptr<dem::DemGrid>> readWhole(const TilerSource& source) {
   const io::SampleGrid& g = source.grid;
@@ -68,36 +42,46 @@ bool extentsMeet(const io::BoundsDegrees& a, const io::BoundsDegrees& b) {
 
 }  // namespace
 
-Result<std::vector<io::SourceConditioning>> conditionSources(std::vector<TilerSource>& sources) {
-  std::vector<std::shared_ptr<dem::DemGrid>> grids(sources.size());
-  std::vector<io::SourceConditioning> report(sources.size());
-  // Coarsest first: a source is conditioned against coarser ones that already are.
-  for (size_t i = sources.size(); i-- > 0;) {
+Result<std::vector<io::SourceConditioning>> conditionSources(std::vector<TilerSource>& sources,
+                                                             const ConditioningOptions& options) {
+  const size_t count = sources.size();
+  auto sameStep = [&](size_t a, size_t b) {
+    return sources[a].stepDegrees <= sources[b].stepDegrees * (1 + kSameStepTolerance) &&
+           sources[b].stepDegrees <= sources[a].stepDegrees * (1 + kSameStepTolerance);
+  };
+  // coarser[i]: the sources coarser than i that reach it, finest first.
+  std::vector<std::vector<size_t>> coarser(count);
+  std::vector<uint8_t> neededAsCoarser(count, 0);
+  for (size_t i = 0; i < count; ++i) {
+    for (size_t j = i + 1; j < count; ++j) {
+      if (sources[j].stepDegrees <= sources[i].stepDegrees * (1 + kSameStepTolerance)) continue;
+      if (!sources[j].grid.wrapsLongitude && !sources[i].grid.wrapsLongitude &&
+          !extentsMeet(sources[j].extent, sources[i].extent)) {
+        continue;
+      }
+      coarser[i].push_back(j);
+      neededAsCoarser[j] = 1;
+    }
+  }
+
+  std::vector<std::shared_ptr<dem::DemGrid>> grids(count);
+  std::vector<io::SourceConditioning> report(count);
+  auto conditionOne = [&](size_t i) -> Result<void> {
     const TilerSource& source = sources[i];
     auto grid = readWhole(source);
     if (!grid) return Error{grid.error()};
-
-    std::vector<const dem::DemGrid*> coarser;  // finest first
-    double nextCoarserStep = 0;
-    for (size_t j = i + 1; j < sources.size(); ++j) {
-      if (sources[j].stepDegrees <= source.stepDegrees * (1 + kSameStepTolerance)) continue;
-      if (!sources[j].grid.wrapsLongitude && !source.grid.wrapsLongitude &&
-          !extentsMeet(sources[j].extent, source.extent)) {
-        continue;
-      }
-      if (coarser.empty()) nextCoarserStep = sources[j].stepDegrees;
-      coarser.push_back(grids[j].get());
-    }
-    const dem::GridCoarserSources coarserSources(coarser);
-
-    dem::ConditionOptions options;
-    if (!coarser.empty()) {
+    std::vector<const dem::DemGrid*> coarserGrids;
+    for (size_t j : coarser[i]) coarserGrids.push_back(grids[j].get());
+    const dem::GridCoarserSources coarserSources(coarserGrids);
+    dem::ConditionOptions conditionOptions;
+    if (!coarser[i].empty()) {
       const double side = std::min(source.extent.east - source.extent.west,
                                    source.extent.north - source.extent.south);
-      options.blendMarginDegrees =
-          std::min(kBlendMarginCoarserCells * nextCoarserStep, kBlendMarginMaximumFraction * side);
+      conditionOptions.blendMarginDegrees =
+          std::min(kBlendMarginCoarserCells * sources[coarser[i].front()].stepDegrees,
+                   kBlendMarginMaximumFraction * side);
     }
-    options.sameOrFinerCovers = [&sources, i](double longitude, double latitude) {
+    conditionOptions.sameOrFinerCovers = [&sources, i](double longitude, double latitude) {
       for (size_t j = 0; j < sources.size(); ++j) {
         if (j == i) continue;
         if (sources[j].stepDegrees > sources[i].stepDegrees * (1 + kSameStepTolerance)) break;
@@ -105,8 +89,8 @@ Result<std::vector<io::SourceConditioning>> conditionSources(std::vector<TilerSo
       }
       return false;
     };
-    const dem::ConditionStats stats =
-        dem::conditionGrid(**grid, coarser.empty() ? nullptr : &coarserSources, options);
+    const dem::ConditionStats stats = dem::conditionGrid(
+        **grid, coarserGrids.empty() ? nullptr : &coarserSources, conditionOptions);
     report[i] = {stats.noDataSamples,
                  stats.seaSamples,
                  stats.voidSamples,
@@ -114,21 +98,68 @@ Result<std::vector<io::SourceConditioning>> conditionSources(std::vector<TilerSo
                  stats.fill.fromCoarserSamples,
                  stats.fill.unfilledSamples,
                  stats.blendedSamples,
-                 options.blendMarginDegrees};
+                 conditionOptions.blendMarginDegrees};
     grids[i] = *grid;
-  }
-  for (size_t i = 0; i < sources.size(); ++i) {
-    sources[i].raster = std::make_unique<ConditionedRaster>(std::move(sources[i].raster), grids[i]);
-    // The poles' one value, from the conditioned polar rows.
-    if (sources[i].northPoleHeight) {
-      auto pole = polarRowHeight(*sources[i].raster, 0);
-      if (!pole) return Error{pole.error()};
-      sources[i].northPoleHeight = *pole;
+    return {};
+  };
+
+  // Coarsest first, a group of equally fine sources at a time (they do not depend on each
+  // other, so a group runs in parallel).
+  uint64_t bytesInMemory = 0;
+  for (size_t end = count; end > 0;) {
+    size_t begin = end - 1;
+    while (begin > 0 && sameStep(begin - 1, end - 1)) --begin;
+    std::atomic<size_t> next{begin};
+    std::mutex mutex;
+    std::string firstError;
+    auto work = [&] {
+      for (size_t i; (i = next++) < end;) {
+        if (auto done = conditionOne(i); !done) {
+          std::lock_guard lock(mutex);
+          if (firstError.empty()) firstError = done.error();
+          return;
+        }
+      }
+    };
+    const unsigned workers =
+        static_cast<unsigned>(std::min<size_t>(std::max(1U, options.threads), end - begin));
+    std::vector<std::thread> threads;
+    for (unsigned w = 1; w < workers; ++w) threads.emplace_back(work);
+    work();
+    for (std::thread& t : threads) t.join();
+    if (!firstError.empty()) return makeError(firstError);
+
+    // Read like the originals from now on: in memory within the budget (and always when a finer
+    // source still needs them), otherwise from a spilled copy.
+    for (size_t i = begin; i < end; ++i) {
+      const uint64_t bytes = grids[i]->samples.size() * sizeof(int16_t);
+      const bool spill = !neededAsCoarser[i] && !options.spillDirectory.empty() &&
+                         bytesInMemory + bytes > options.memoryBudgetBytes;
+      if (spill) {
+        auto spilled =
+            makeSpilledRaster(std::move(sources[i].raster), *grids[i], options.spillDirectory);
+        if (!spilled) return Error{spilled.error()};
+        sources[i].raster = std::move(*spilled);
+        grids[i].reset();
+      } else {
+        bytesInMemory += bytes;
+        sources[i].raster = makeMemoryRaster(std::move(sources[i].raster), grids[i]);
+      }
     }
-    if (sources[i].southPoleHeight) {
-      auto pole = polarRowHeight(*sources[i].raster, sources[i].grid.rows - 1);
+    end = begin;
+  }
+
+  for (TilerSource& source : sources) {
+    // The poles' one value, from the conditioned polar rows.
+    if (source.northPoleHeight) {
+      auto pole = polarRowHeight(*source.raster, 0);
       if (!pole) return Error{pole.error()};
-      sources[i].southPoleHeight = *pole;
+      source.northPoleHeight = *pole;
+    }
+    if (source.southPoleHeight) {
+      auto pole = polarRowHeight(*source.raster, source.grid.rows - 1);
+      if (!pole) return Error{pole.error()};
+      source.southPoleHeight = *pole;
     }
   }
   return report;

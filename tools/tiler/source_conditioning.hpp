@@ -4,6 +4,8 @@
 // source's raster is then replaced by its conditioned copy, so the sampler sees only these.
 #pragma once
 
+#include <cstdint>
+#include <filesystem>
 #include <vector>
 
 #include "geo/result.hpp"
@@ -18,7 +20,16 @@ inline constexpr double kBlendMarginCoarserCells = 3.0;
 // SRTM degree under a 20′ grid) keeps most of its own detail.
 inline constexpr double kBlendMarginMaximumFraction = 0.1;
 
+struct ConditioningOptions {
+  unsigned threads = 1;  // equally fine sources are conditioned in parallel
+  // Conditioned sources beyond this many bytes of samples are spilled to unlinked files here
+  // (none when empty), except those a finer source still reads as its coarser one.
+  std::filesystem::path spillDirectory;
+  uint64_t memoryBudgetBytes = uint64_t{512} << 20;
+};
+
 // sources: finest first (openSources' order). Returns each source's conditioning, same order.
-Result<std::vector<io::SourceConditioning>> conditionSources(std::vector<TilerSource>& sources);
+Result<std::vector<io::SourceConditioning>> conditionSources(
+    std::vector<TilerSource>& sources, const ConditioningOptions& options = {});
 
 }  // namespace globe::tiler

@@ -196,7 +196,12 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
   if (auto prepared = prepareOutput(options, planFingerprint(options, sources)); !prepared) {
     return Error{prepared.error()};
   }
-  auto conditioning = conditionSources(sources);
+  const unsigned threads =
+      options.threads != 0 ? options.threads : std::max(1U, std::thread::hardware_concurrency());
+  ConditioningOptions conditioningOptions;
+  conditioningOptions.threads = threads;
+  conditioningOptions.spillDirectory = options.outputDir;
+  auto conditioning = conditionSources(sources, conditioningOptions);
   if (!conditioning) return Error{conditioning.error()};
   for (size_t i = 0; i < sources.size(); ++i) {
     const io::SourceConditioning& c = (*conditioning)[i];
@@ -212,8 +217,6 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
   ProgressBar progress(totalTiles, options.progress && ::isatty(STDERR_FILENO) != 0);
   const io::PackLayout layout{options.packTilesPerSide, options.verticesPerSide};
   const PackJob job{options, layout, plan, sources};
-  const unsigned threads =
-      options.threads != 0 ? options.threads : std::max(1U, std::thread::hardware_concurrency());
 
   io::PyramidManifest manifest;
   manifest.verticesPerSide = options.verticesPerSide;

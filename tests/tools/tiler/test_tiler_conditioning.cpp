@@ -283,6 +283,37 @@ TEST(TilerConditioning, TheKattegatAtZeroMetresIsWater) {
   EXPECT_LE(double(landAsWater), 0.001 * double(land));
 }
 
+TEST(TilerConditioning, SpilledAndParallelConditioningReadsTheSameAsInMemory) {
+  // A zero memory budget spills every source no finer one needs (Fuji, W002N52) to unlinked
+  // files; two threads condition equally fine sources together. The samples read back alike.
+  auto inMemory = openSources(bundledInputs(), {});
+  auto spilled = openSources(bundledInputs(), {});
+  ASSERT_TRUE(inMemory && spilled);
+  ASSERT_TRUE(conditionSources(*inMemory));
+  ConditioningOptions options;
+  options.threads = 2;
+  options.spillDirectory = testing::freshTempDir("spill");
+  options.memoryBudgetBytes = 0;
+  auto report = conditionSources(*spilled, options);
+  ASSERT_TRUE(report) << report.error();
+  EXPECT_TRUE(std::filesystem::is_empty(options.spillDirectory)) << "spill files are unlinked";
+  for (size_t i = 0; i < inMemory->size(); ++i) {
+    const io::SampleGrid& g = (*inMemory)[i].grid;
+    std::vector<int16_t> a(static_cast<size_t>(g.cols)), b(a.size());
+    for (int64_t r = 0; r < g.rows; ++r) {
+      ASSERT_TRUE((*inMemory)[i].raster->readRow(r, 0, g.cols, a.data()));
+      ASSERT_TRUE((*spilled)[i].raster->readRow(r, 0, g.cols, b.data()));
+      ASSERT_EQ(a, b) << (*inMemory)[i].argument << " row " << r;
+    }
+    // Wrapped reads across the antimeridian go through the same path.
+    if (g.wrapsLongitude) {
+      ASSERT_TRUE((*inMemory)[i].raster->readRow(3, g.cols - 2, 5, a.data()));
+      ASSERT_TRUE((*spilled)[i].raster->readRow(3, g.cols - 2, 5, b.data()));
+      EXPECT_TRUE(std::equal(a.begin(), a.begin() + 5, b.begin()));
+    }
+  }
+}
+
 TEST(TilerConditioning, ASourceThatIsAllNoDataIsReported) {
   const auto dir = testing::freshTempDir("all-no-data");
   io::Gtopo30Raster raster;
