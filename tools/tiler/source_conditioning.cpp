@@ -4,6 +4,7 @@
 #include <atomic>
 #include <memory>
 #include <mutex>
+#include <new>
 #include <thread>
 
 #include "dem/condition.hpp"
@@ -14,6 +15,8 @@ namespace globe::tiler {
 namespace {
 
 constexpr double kSameStepTolerance = 1e-6;
+// About 8 GiB at the conditioning's ~8 bytes a sample: a 43200×21600 world in one file fits.
+constexpr uint64_t kMaxConditionedSamples = uint64_t{1} << 30;
 
 Result<std::shared_ptr<dem::DemGrid>> readWhole(const TilerSource& source) {
   const io::SampleGrid& g = source.grid;
@@ -25,7 +28,14 @@ Result<std::shared_ptr<dem::DemGrid>> readWhole(const TilerSource& source) {
   grid->columnStepDegrees = g.columnStepDegrees;
   grid->rowStepDegrees = g.rowStepDegrees;
   grid->wrapsLongitude = g.wrapsLongitude;
-  grid->samples.resize(static_cast<size_t>(g.cols) * static_cast<size_t>(g.rows));
+  const auto samples = static_cast<uint64_t>(g.cols) * static_cast<uint64_t>(g.rows);
+  if (samples > kMaxConditionedSamples) {
+    return makeError(source.argument + ": " + std::to_string(samples) +
+                     " samples is more than the " + std::to_string(kMaxConditionedSamples) +
+                     " one input may have (each input is conditioned in memory); split it into "
+                     "tiles (e.g. gdal_retile.py) and give them all");
+  }
+  grid->samples.resize(static_cast<size_t>(samples));
   for (int64_t row = 0; row < g.rows; ++row) {
     if (auto read =
             source.raster->readRow(row, 0, g.cols, grid->samples.data() + grid->index(row, 0));
@@ -66,7 +76,7 @@ Result<std::vector<io::SourceConditioning>> conditionSources(std::vector<TilerSo
 
   std::vector<std::shared_ptr<dem::DemGrid>> grids(count);
   std::vector<io::SourceConditioning> report(count);
-  auto conditionOne = [&](size_t i) -> Result<void> {
+  auto conditionUnguarded = [&](size_t i) -> Result<void> {
     const TilerSource& source = sources[i];
     auto grid = readWhole(source);
     if (!grid) return Error{grid.error()};
@@ -101,6 +111,16 @@ Result<std::vector<io::SourceConditioning>> conditionSources(std::vector<TilerSo
                  conditionOptions.blendMarginDegrees};
     grids[i] = *grid;
     return {};
+  };
+  auto conditionOne = [&](size_t i) -> Result<void> {
+    try {
+      return conditionUnguarded(i);
+    } catch (const std::bad_alloc&) {
+      return makeError(sources[i].argument +
+                       ": not enough memory to condition it (about 8 "
+                       "bytes a sample); split it into tiles (e.g. gdal_retile.py) and give them "
+                       "all");
+    }
   };
 
   // Coarsest first, a group of equally fine sources at a time (they do not depend on each

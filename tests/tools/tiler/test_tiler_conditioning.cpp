@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <map>
 
 #include "dem/grid_coarser_sources.hpp"
@@ -312,6 +313,25 @@ TEST(TilerConditioning, SpilledAndParallelConditioningReadsTheSameAsInMemory) {
       EXPECT_TRUE(std::equal(a.begin(), a.begin() + 5, b.begin()));
     }
   }
+}
+
+TEST(TilerConditioning, AnInputTooLargeToConditionIsAClearError) {
+  // A VRT declaring 40000×30000 samples (no data behind it): refused before anything is read.
+  const auto dir = testing::freshTempDir("huge");
+  const auto vrt = dir / "huge.vrt";
+  std::ofstream(vrt) << R"(<VRTDataset rasterXSize="40000" rasterYSize="30000">
+  <SRS>EPSG:4326</SRS>
+  <GeoTransform>0, 0.00025, 0, 10, 0, -0.00025</GeoTransform>
+  <VRTRasterBand dataType="Int16" band="1"><NoDataValue>-32768</NoDataValue></VRTRasterBand>
+</VRTDataset>)";
+  TilerOptions options;
+  options.inputs = {vrt.string()};
+  options.outputDir = dir / "pyramid";
+  options.progress = false;
+  auto report = runTiler(options);
+  ASSERT_FALSE(report);
+  EXPECT_NE(report.error().find("huge.vrt"), std::string::npos) << report.error();
+  EXPECT_NE(report.error().find("split it into tiles"), std::string::npos) << report.error();
 }
 
 TEST(TilerConditioning, ASourceThatIsAllNoDataIsReported) {
