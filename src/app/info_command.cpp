@@ -60,6 +60,17 @@ std::string formatPyramidInfoText(const io::PyramidManifest& m, const std::strin
                   static_cast<long long>(s.rows), s.stepDegrees, s.stepDegrees * 3600.0,
                   s.finestLevel, boundsText(s.bounds).c_str());
     out += line;
+    const io::SourceConditioning& c = s.conditioning;
+    std::snprintf(line, sizeof line,
+                  "    sea %llu samples; voids %llu (%llu interpolated, %llu from a coarser "
+                  "source, %llu left); %llu blended within %.4g deg of its edges\n",
+                  static_cast<unsigned long long>(c.seaSamples),
+                  static_cast<unsigned long long>(c.voidSamples),
+                  static_cast<unsigned long long>(c.interpolatedSamples),
+                  static_cast<unsigned long long>(c.fromCoarserSamples),
+                  static_cast<unsigned long long>(c.unfilledSamples),
+                  static_cast<unsigned long long>(c.blendedSamples), c.blendMarginDegrees);
+    out += line;
   }
   return out;
 }
@@ -87,7 +98,16 @@ std::string formatPyramidInfoJson(const io::PyramidManifest& m, const std::strin
                        {"rows", s.rows},
                        {"stepDegrees", s.stepDegrees},
                        {"finestLevel", s.finestLevel},
-                       {"boundsDegrees", boundsJson(s.bounds)}});
+                       {"boundsDegrees", boundsJson(s.bounds)},
+                       {"conditioning",
+                        {{"noDataSamples", s.conditioning.noDataSamples},
+                         {"seaSamples", s.conditioning.seaSamples},
+                         {"voidSamples", s.conditioning.voidSamples},
+                         {"voidsFilledByInterpolation", s.conditioning.interpolatedSamples},
+                         {"voidsFilledFromCoarserSource", s.conditioning.fromCoarserSamples},
+                         {"voidsLeftNoData", s.conditioning.unfilledSamples},
+                         {"blendedSamples", s.conditioning.blendedSamples},
+                         {"blendMarginDegrees", s.conditioning.blendMarginDegrees}}}});
   }
   const json j = {{"pyramid", path},
                   {"blockSize", m.verticesPerSide},

@@ -45,6 +45,13 @@ TEST(GlobeInfo, JsonListsLevelsTilesBoundsAndHeights) {
   EXPECT_NEAR(j["finestBoundsDegrees"]["west"].get<double>(), 138.0, 0.05);
   EXPECT_NEAR(j["finestBoundsDegrees"]["north"].get<double>(), 36.0, 0.05);
   EXPECT_EQ(j["sources"].size(), 3u);
+  // The Fuji SRTM tile (finest first): its voids filled, its 0 m sea written as water.
+  const auto& fuji = j["sources"][0]["conditioning"];
+  EXPECT_EQ(fuji["voidSamples"].get<uint64_t>(),
+            fuji["voidsFilledByInterpolation"].get<uint64_t>() +
+                fuji["voidsFilledFromCoarserSource"].get<uint64_t>());
+  EXPECT_GT(fuji["voidSamples"].get<uint64_t>(), 2000u);
+  EXPECT_GT(fuji["seaSamples"].get<uint64_t>(), 50000u);
 }
 
 TEST(GlobeInfo, TextHasOneLinePerLevel) {
@@ -52,6 +59,7 @@ TEST(GlobeInfo, TextHasOneLinePerLevel) {
   ASSERT_EQ(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("levels      0..14"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("E138N35_FUJI.DEM"), std::string::npos);
+  EXPECT_NE(run.output.find("from a coarser source, 0 left"), std::string::npos) << run.output;
 }
 
 TEST(GlobeInfo, NotAPyramidIsAClearError) {
