@@ -6,16 +6,12 @@
 #include "terrain/height_block.hpp"
 
 namespace globe::dem {
-namespace {
-
 int16_t landSample(double heightMeters) {
   const auto rounded = static_cast<int16_t>(
       std::clamp(std::lround(heightMeters), static_cast<long>(terrain::kLowestLandMeters), 32767L));
   // -9999 is water: a land height that rounds to it moves a metre deeper.
   return rounded == terrain::kNoDataHeight ? static_cast<int16_t>(-10000) : rounded;
 }
-
-}  // namespace
 
 int16_t interpolateSample(const std::array<int16_t, 4>& samples, double tu, double tv) {
   auto bilinear = [&](terrain::SeaSurface sea) {

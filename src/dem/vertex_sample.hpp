@@ -17,4 +17,7 @@ namespace globe::dem {
 // samples: north-west, north-east, south-west, south-east; tu, tv in [0, 1] eastwards/southwards.
 int16_t interpolateSample(const std::array<int16_t, 4>& samples, double tu, double tv);
 
+// A land height as a block sample: rounded, clamped to the land range, never -9999.
+int16_t landSample(double heightMeters);
+
 }  // namespace globe::dem

@@ -169,6 +169,7 @@ Result<std::vector<io::SourceConditioning>> conditionSources(std::vector<TilerSo
     end = begin;
   }
 
+  for (size_t i = 0; i < count; ++i) sources[i].featherMarginDegrees = report[i].blendMarginDegrees;
   for (TilerSource& source : sources) {
     // The poles' one value, from the conditioned polar rows.
     if (source.northPoleHeight) {

@@ -33,26 +33,41 @@ double rowOf(const io::SampleGrid& grid, double latitudeDegrees) {
 
 }  // namespace
 
+double featherWeight(const TilerSource& finer, double longitudeDegrees, double latitudeDegrees) {
+  const io::BoundsDegrees& e = finer.extent;
+  const double dx = std::max({e.west - longitudeDegrees, 0.0, longitudeDegrees - e.east});
+  const double dy = std::max({e.south - latitudeDegrees, 0.0, latitudeDegrees - e.north});
+  const double outside = std::hypot(dx, dy);
+  if (outside <= 0 || outside >= finer.featherMarginDegrees) return 0.0;
+  const double t = outside / finer.featherMarginDegrees;
+  return 1.0 - t * t * (3.0 - 2.0 * t);
+}
+
 SourceSampler::SourceSampler(const std::vector<TilerSource>& sources, uint32_t maxFinestLevel,
                              double stripWestDegrees, double stripEastDegrees) {
   for (const TilerSource& source : sources) {
-    if (source.finestLevel > maxFinestLevel) continue;
+    // A source finer than this level still shapes the ground around its edges (the feather).
+    const bool featherOnly = source.finestLevel > maxFinestLevel;
+    if (featherOnly && !(source.featherMarginDegrees > 0)) continue;
+    const double reach =
+        featherOnly || source.featherMarginDegrees > 0 ? source.featherMarginDegrees : 0.0;
     const io::SampleGrid& grid = source.grid;
-    if (!grid.wrapsLongitude &&
-        (source.extent.east < stripWestDegrees || source.extent.west > stripEastDegrees)) {
+    if (!grid.wrapsLongitude && (source.extent.east + reach < stripWestDegrees ||
+                                 source.extent.west - reach > stripEastDegrees)) {
       continue;
     }
     // Columns needed for every longitude of the strip, one sample of margin each side.
     const int64_t first = floorToInt(columnOf(grid, stripWestDegrees)) - 1;
     const double spanColumns = (stripEastDegrees - stripWestDegrees) / grid.columnStepDegrees;
     int64_t count = static_cast<int64_t>(std::ceil(spanColumns)) + 3;
-    Candidate candidate{&source, 0, grid.cols};
+    Candidate candidate{&source, 0, grid.cols, featherOnly};
     if (grid.wrapsLongitude) {
-      if (count < grid.cols) candidate = {&source, wrapColumn(first, grid.cols), count};
+      if (count < grid.cols)
+        candidate = {&source, wrapColumn(first, grid.cols), count, featherOnly};
     } else {
       const int64_t begin = std::clamp<int64_t>(first, 0, grid.cols - 1);
       const int64_t end = std::clamp<int64_t>(first + count, begin + 1, grid.cols);
-      candidate = {&source, begin, end - begin};
+      candidate = {&source, begin, end - begin, featherOnly};
     }
     candidates_.push_back(candidate);
   }
@@ -111,12 +126,35 @@ Result<int16_t> SourceSampler::sampleSource(const Candidate& c, double longitude
 }
 
 Result<int16_t> SourceSampler::sample(double longitudeDegrees, double latitudeDegrees) {
+  const Candidate* chosen = nullptr;
   for (const Candidate& c : candidates_) {
-    if (c.source->covers(longitudeDegrees, latitudeDegrees)) {
-      return sampleSource(c, longitudeDegrees, latitudeDegrees);
+    if (!c.featherOnly && c.source->covers(longitudeDegrees, latitudeDegrees)) {
+      chosen = &c;
+      break;
     }
   }
-  return terrain::kNoDataHeight;
+  if (chosen == nullptr) return terrain::kNoDataHeight;
+  auto value = sampleSource(*chosen, longitudeDegrees, latitudeDegrees);
+  if (!value || terrain::isWater(*value)) return value;
+
+  // Land just outside a finer source eases towards that source's edge (water there at 0 m), so
+  // the two meet where they disagree about the coast instead of leaving a cliff at the edge.
+  const Candidate* nearest = nullptr;
+  double weight = 0;
+  for (const Candidate& c : candidates_) {
+    const TilerSource& finer = *c.source;
+    if (!(finer.featherMarginDegrees > 0) || finer.grid.wrapsLongitude ||
+        !(finer.stepDegrees < chosen->source->stepDegrees)) {
+      continue;
+    }
+    const double w = featherWeight(finer, longitudeDegrees, latitudeDegrees);
+    if (w > weight) weight = w, nearest = &c;
+  }
+  if (nearest == nullptr) return value;
+  auto edge = sampleSource(*nearest, longitudeDegrees, latitudeDegrees);
+  if (!edge) return edge;
+  const double here = terrain::surfaceHeightMeters(*value);
+  return dem::landSample(here + weight * (terrain::surfaceHeightMeters(*edge) - here));
 }
 
 }  // namespace globe::tiler

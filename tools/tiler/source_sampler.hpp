@@ -1,5 +1,6 @@
 // Samples the tiler's sources at vertex positions: the finest covering source wins, its 2×2
-// samples turned into a vertex by dem/vertex_sample.hpp's rule. Caches source rows for one
+// samples turned into a vertex by dem/vertex_sample.hpp's rule; land within a finer source's
+// feather margin outside it eases towards that source's edge. Caches source rows for one
 // strip of tiles so a strip costs a few row reads per source, not one read per vertex.
 #pragma once
 
@@ -11,6 +12,10 @@
 #include "tools/tiler/source_set.hpp"
 
 namespace globe::tiler {
+
+// How much a vertex outside a finer source takes that source's edge: 1 at its edge, easing
+// (smoothstep) to 0 at its feather margin; 0 inside it.
+double featherWeight(const TilerSource& finer, double longitudeDegrees, double latitudeDegrees);
 
 class SourceSampler {
  public:
@@ -30,6 +35,7 @@ class SourceSampler {
     const TilerSource* source;
     int64_t firstColumn;  // of the cached row segments, in [0, cols)
     int64_t columnCount;
+    bool featherOnly = false;  // finer than this level: read only for the feather at its edge
   };
   struct CachedRow {
     std::vector<int16_t> samples;

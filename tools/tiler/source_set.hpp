@@ -23,6 +23,9 @@ struct TilerSource {
   io::BoundsDegrees extent;  // closed: the cells' extent, longitude ignored when wrapping
   // Height shared by every vertex at an exact pole this source covers, so a pole is one point.
   std::optional<int16_t> northPoleHeight, southPoleHeight;
+  // Set by the conditioning: the margin over which this source is eased into coarser ones, inside
+  // its edges, and coarser land outside it towards its edge (0: no coarser source around).
+  double featherMarginDegrees = 0;
 
   bool covers(double longitudeDegrees, double latitudeDegrees) const;
   io::SourceInfo info() const;

@@ -206,10 +206,9 @@ TEST(TilerConditioning, NoWallWhereTheFujiTileMeetsTheWorldGrid) {
           std::abs(terrain::surfaceHeightMeters(sample) - terrain::surfaceHeightMeters(*other));
       if (a && b) insideSteps.push_back(step);
       // Where the SRTM tile says sea at its edge and the 20′ grid beyond says land, the two
-      // disagree about the coast itself; the blend moves land, never the sea (reported, below).
+      // disagree about the coast itself: the grid's land eases down to the water (the feather).
       if (a != b && (terrain::isWater(sample) || terrain::isWater(*other))) {
         worstCoast = std::max(worstCoast, step);
-        continue;
       }
       if (a != b) worstAcross = std::max(worstAcross, step);
     }

@@ -92,7 +92,7 @@ Oracle::Oracle(const std::vector<std::string>& inputs) {
     return;
   }
   for (const TilerSource& source : *sources) {
-    Raster r{source.raster->grid(), {}, 0};
+    Raster r{source.raster->grid(), {}, 0, source.extent, source.featherMarginDegrees};
     r.step = std::min(r.grid.columnStepDegrees, r.grid.rowStepDegrees);
     r.samples.resize(static_cast<size_t>(r.grid.cols * r.grid.rows));
     for (int64_t row = 0; row < r.grid.rows; ++row) {
@@ -111,6 +111,34 @@ int16_t Oracle::height(double lon, double lat) const {
     const double north = g.northDegrees() > 90.0 - 1e-9 ? 90.0 : g.northDegrees();
     if (lat < south || lat > north) continue;
     if (!g.wrapsLongitude && (lon < g.westDegrees() || lon > g.eastDegrees())) continue;
+    const int16_t value = rasterHeight(r, lon, lat);
+    if (terrain::isWater(value)) return value;
+    // Land near a finer raster's edge, outside it, leans towards that edge (smoothstep).
+    const Raster* finer = nullptr;
+    double weight = 0;
+    for (const Raster& f : rasters_) {
+      if (!(f.margin > 0) || f.grid.wrapsLongitude || !(f.step < r.step)) continue;
+      const double dx = std::max({f.extent.west - lon, 0.0, lon - f.extent.east});
+      const double dy = std::max({f.extent.south - lat, 0.0, lat - f.extent.north});
+      const double d = std::hypot(dx, dy);
+      if (d <= 0 || d >= f.margin) continue;
+      const double t = d / f.margin;
+      const double w = 1.0 - t * t * (3.0 - 2.0 * t);
+      if (w > weight) weight = w, finer = &f;
+    }
+    if (finer == nullptr) return value;
+    const int16_t edge = rasterHeight(*finer, lon, lat);
+    const double there = terrain::isWater(edge) ? 0.0 : double(edge);
+    const double mixed = double(value) + weight * (there - double(value));
+    const auto rounded = static_cast<int16_t>(std::clamp(std::lround(mixed), -12000L, 32767L));
+    return rounded == -9999 ? int16_t{-10000} : rounded;
+  }
+  return -9999;
+}
+
+int16_t Oracle::rasterHeight(const Raster& r, double lon, double lat) const {
+  {
+    const io::SampleGrid& g = r.grid;
     if (std::abs(lat) == 90.0) {  // the pole: highest sample of the polar row
       const int64_t row = lat > 0 ? 0 : g.rows - 1;
       int16_t bestLand = 0, bestWater = INT16_MIN;
@@ -168,7 +196,6 @@ int16_t Oracle::height(double lon, double lat) const {
     const auto rounded = static_cast<int16_t>(std::lround(value));
     return rounded == -9999 ? int16_t{-10000} : rounded;
   }
-  return -9999;
 }
 
 }  // namespace globe::tiler::testing

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "io/pyramid_manifest.hpp"
 #include "io/raster_source.hpp"
 
 namespace globe::tiler::testing {
@@ -31,8 +32,12 @@ class Oracle {
     io::SampleGrid grid;
     std::vector<int16_t> samples;
     double step;
+    io::BoundsDegrees extent;  // as the tiler snapped it
+    double margin = 0;         // the feather margin the conditioning chose
     int16_t sample(int64_t row, int64_t column) const;
   };
+  // The vertex one raster gives at a point (clamped to its edge outside it).
+  int16_t rasterHeight(const Raster& r, double lon, double lat) const;
   std::vector<Raster> rasters_;  // finest first
 };
 
