@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "dem/harmonic_fill.hpp"
+#include "dem/minimum_curvature.hpp"
 #include "terrain/height_block.hpp"
 
 namespace globe::dem {
@@ -78,6 +79,10 @@ FillStats fillVoids(DemGrid& grid, const std::vector<uint8_t>& isVoid,
       return h ? fine - *h : 0.0;
     };
     std::optional<std::vector<double>> solved = solveHarmonic(grid, isVoid, region, borderValue);
+    if (solved && static_cast<int64_t>(region.size()) <= options.minimumCurvatureMaxSamples) {
+      solved = solveMinimumCurvature(grid, isVoid, region, borderValue, std::move(*solved),
+                                     options.tension);
+    }
     bool usedCoarser = fromCoarser;
     if (!solved) {
       // No border at all (the whole grid is void): the coarser surface as it is, if any.
