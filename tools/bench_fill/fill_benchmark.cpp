@@ -33,8 +33,10 @@ Result<Run> runOnce(const FillMethod& method, const dem::DemGrid& holed,
     return run;
   }
   dem::DemGrid grid = holed;
+  dem::FillOptions options = fillOptions;
+  if (method.harmonicOnly) options.minimumCurvatureMaxSamples = 0;
   const auto start = std::chrono::steady_clock::now();
-  run.stats = dem::fillVoids(grid, isVoid, method.coarser, fillOptions);
+  run.stats = dem::fillVoids(grid, isVoid, method.coarser, options);
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run.samples = std::move(grid.samples);
   return run;

@@ -22,6 +22,7 @@ struct FillMethod {
   Kind kind = Kind::Globe;
   const dem::CoarserSources* coarser = nullptr;  // Globe: nullptr = interpolation only
   GdalFillOptions gdal;                          // Gdal
+  bool harmonicOnly = false;  // Globe: no minimum-curvature refinement (what it adds, measured)
 };
 
 struct HoleClass {

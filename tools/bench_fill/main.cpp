@@ -28,6 +28,7 @@ using namespace globe;
 using namespace globe::bench_fill;
 
 const std::string kInterpolation = "globe, interpolation";
+const std::string kHarmonic = "globe, harmonic only";
 const std::string kEtopo = "globe + ETOPO20";
 const std::string kSrtm30 = "globe + SRTM30-like";
 const std::string kGdal = "GDAL";
@@ -119,7 +120,7 @@ int main(int argc, char** argv) {
   report.gdalVersion = gdalVersion();
   report.options = options;
   report.gdalMaxSearchDistancePixels = gdal.maxSearchDistancePixels;
-  report.methodLabels = {kInterpolation, kEtopo, kSrtm30, kGdal, kGdalSmoothed};
+  report.methodLabels = {kInterpolation, kHarmonic, kEtopo, kSrtm30, kGdal, kGdalSmoothed};
   report.gdalReferenceLabel = kGdal;
   report.interpolationLabel = kInterpolation;
   report.hardwareThreads = std::thread::hardware_concurrency();
@@ -157,6 +158,7 @@ int main(int argc, char** argv) {
     dem::DemGrid srtm30Grid;
     std::unique_ptr<dem::GridCoarserSources> srtm30;
     std::vector<FillMethod> methods = {{kInterpolation, FillMethod::Kind::Globe, nullptr, {}},
+                                       {kHarmonic, FillMethod::Kind::Globe, nullptr, {}, true},
                                        {kEtopo, FillMethod::Kind::Globe, &etopoSource, {}}};
     if (isSrtm3(*truth)) {
       srtm30Grid = blockAverage(*truth, kSrtm30Factor);
