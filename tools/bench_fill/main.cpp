@@ -17,10 +17,10 @@
 #include "dem/grid_coarser_sources.hpp"
 #include "io/atomic_file.hpp"
 #include "tools/bench_fill/block_average.hpp"
-#include "tools/bench_fill/dem_file.hpp"
 #include "tools/bench_fill/fill_benchmark.hpp"
 #include "tools/bench_fill/gdal_fill.hpp"
 #include "tools/bench_fill/report.hpp"
+#include "tools/tiler/dem_reader.hpp"
 
 namespace {
 
@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   const auto start = std::chrono::steady_clock::now();
 
-  auto etopo = readDemGrid(etopoPath);
+  auto etopo = tiler::readDemGrid(etopoPath);
   if (!etopo) {
     std::fprintf(stderr, "globe-bench-fill: %s\n", etopo.error().c_str());
     return 1;
@@ -136,7 +136,7 @@ int main(int argc, char** argv) {
       "removed truth itself: **optimistic**, an upper bound of what a real 30″ source gives.\n";
 
   for (const std::string& path : tiles) {
-    auto truth = readDemGrid(path);
+    auto truth = tiler::readDemGrid(path);
     if (!truth) {
       std::fprintf(stderr, "globe-bench-fill: %s\n", truth.error().c_str());
       return 1;

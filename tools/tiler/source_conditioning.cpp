@@ -10,41 +10,12 @@
 #include "dem/condition.hpp"
 #include "dem/grid_coarser_sources.hpp"
 #include "tools/tiler/conditioned_raster.hpp"
+#include "tools/tiler/dem_reader.hpp"
 
 namespace globe::tiler {
 namespace {
 
 constexpr double kSameStepTolerance = 1e-6;
-// About 8 GiB at the conditioning's ~8 bytes a sample: a 43200×21600 world in one file fits.
-constexpr uint64_t kMaxConditionedSamples = uint64_t{1} << 30;
-
-Result<std::shared_ptr<dem::DemGrid>> readWhole(const TilerSource& source) {
-  const io::SampleGrid& g = source.grid;
-  auto grid = std::make_shared<dem::DemGrid>();
-  grid->cols = g.cols;
-  grid->rows = g.rows;
-  grid->firstColumnLongitudeDegrees = g.firstColumnLongitudeDegrees;
-  grid->firstRowLatitudeDegrees = g.firstRowLatitudeDegrees;
-  grid->columnStepDegrees = g.columnStepDegrees;
-  grid->rowStepDegrees = g.rowStepDegrees;
-  grid->wrapsLongitude = g.wrapsLongitude;
-  const auto samples = static_cast<uint64_t>(g.cols) * static_cast<uint64_t>(g.rows);
-  if (samples > kMaxConditionedSamples) {
-    return makeError(source.argument + ": " + std::to_string(samples) +
-                     " samples is more than the " + std::to_string(kMaxConditionedSamples) +
-                     " one input may have (each input is conditioned in memory); split it into "
-                     "tiles (e.g. gdal_retile.py) and give them all");
-  }
-  grid->samples.resize(static_cast<size_t>(samples));
-  for (int64_t row = 0; row < g.rows; ++row) {
-    if (auto read =
-            source.raster->readRow(row, 0, g.cols, grid->samples.data() + grid->index(row, 0));
-        !read) {
-      return Error{read.error()};
-    }
-  }
-  return grid;
-}
 
 bool extentsMeet(const io::BoundsDegrees& a, const io::BoundsDegrees& b) {
   return a.west <= b.east && b.west <= a.east && a.south <= b.north && b.south <= a.north;
@@ -78,8 +49,9 @@ Result<std::vector<io::SourceConditioning>> conditionSources(std::vector<TilerSo
   std::vector<io::SourceConditioning> report(count);
   auto conditionUnguarded = [&](size_t i) -> Result<void> {
     const TilerSource& source = sources[i];
-    auto grid = readWhole(source);
-    if (!grid) return Error{grid.error()};
+    auto read = readDemGrid(*source.raster, source.argument);
+    if (!read) return Error{read.error()};
+    auto grid = std::make_shared<dem::DemGrid>(std::move(*read));
     std::vector<const dem::DemGrid*> coarserGrids;
     for (size_t j : coarser[i]) coarserGrids.push_back(grids[j].get());
     const dem::GridCoarserSources coarserSources(coarserGrids);
@@ -100,7 +72,7 @@ Result<std::vector<io::SourceConditioning>> conditionSources(std::vector<TilerSo
       return false;
     };
     const dem::ConditionStats stats = dem::conditionGrid(
-        **grid, coarserGrids.empty() ? nullptr : &coarserSources, conditionOptions);
+        *grid, coarserGrids.empty() ? nullptr : &coarserSources, conditionOptions);
     report[i] = {stats.noDataSamples,
                  stats.seaSamples,
                  stats.voidSamples,
@@ -109,7 +81,7 @@ Result<std::vector<io::SourceConditioning>> conditionSources(std::vector<TilerSo
                  stats.fill.unfilledSamples,
                  stats.blendedSamples,
                  conditionOptions.blendMarginDegrees};
-    grids[i] = *grid;
+    grids[i] = std::move(grid);
     return {};
   };
   auto conditionOne = [&](size_t i) -> Result<void> {

@@ -16,6 +16,7 @@
 #include "terrain/block_grid.hpp"
 #include "terrain/height_block.hpp"
 #include "tests/tools/tiler/tiler_test_fixture.hpp"
+#include "tools/tiler/dem_reader.hpp"
 #include "tools/tiler/source_conditioning.hpp"
 #include "tools/tiler/tiler.hpp"
 
@@ -31,22 +32,9 @@ constexpr uint32_t kFujiLevel = 14;
 
 // A source read into a dem grid, as given.
 dem::DemGrid readRaw(const std::string& path) {
-  auto source = io::openRasterSource(path);
-  EXPECT_TRUE(source) << source.error();
-  const io::SampleGrid& g = (*source)->grid();
-  dem::DemGrid grid{g.cols,
-                    g.rows,
-                    g.firstColumnLongitudeDegrees,
-                    g.firstRowLatitudeDegrees,
-                    g.columnStepDegrees,
-                    g.rowStepDegrees,
-                    g.wrapsLongitude,
-                    {}};
-  grid.samples.resize(static_cast<size_t>(g.cols * g.rows));
-  for (int64_t r = 0; r < g.rows; ++r) {
-    EXPECT_TRUE((*source)->readRow(r, 0, g.cols, grid.samples.data() + grid.index(r, 0)));
-  }
-  return grid;
+  auto grid = readDemGrid(path);
+  EXPECT_TRUE(grid) << grid.error();
+  return grid ? std::move(*grid) : dem::DemGrid{};
 }
 
 // The level-L vertex lattice of a pyramid over a window: heights by global vertex index.
