@@ -47,6 +47,30 @@ Result<std::vector<io::SourceConditioning>> conditionSources(std::vector<TilerSo
 
   std::vector<std::shared_ptr<dem::DemGrid>> grids(count);
   std::vector<io::SourceConditioning> report(count);
+  // From here on a conditioned source is read like the original: in memory within the budget
+  // (and always when a finer source still needs it), otherwise from a spilled copy, decided as
+  // soon as it is conditioned so that a group of many inputs never sits in memory at once.
+  uint64_t bytesInMemory = 0;
+  std::mutex budgetMutex;
+  auto keepOrSpill = [&](size_t i) -> Result<void> {
+    const uint64_t bytes = grids[i]->samples.size() * sizeof(int16_t);
+    bool spill = false;
+    if (!neededAsCoarser[i] && !options.spillDirectory.empty()) {
+      std::lock_guard lock(budgetMutex);
+      spill = bytesInMemory + bytes > options.memoryBudgetBytes;
+      if (!spill) bytesInMemory += bytes;
+    }
+    if (!spill) {
+      sources[i].raster = makeMemoryRaster(std::move(sources[i].raster), grids[i]);
+      return {};
+    }
+    auto spilled =
+        makeSpilledRaster(std::move(sources[i].raster), *grids[i], options.spillDirectory);
+    if (!spilled) return Error{spilled.error()};
+    sources[i].raster = std::move(*spilled);
+    grids[i].reset();
+    return {};
+  };
   auto conditionUnguarded = [&](size_t i) -> Result<void> {
     const TilerSource& source = sources[i];
     auto read = readDemGrid(*source.raster, source.argument);
@@ -82,7 +106,7 @@ Result<std::vector<io::SourceConditioning>> conditionSources(std::vector<TilerSo
                  stats.blendedSamples,
                  conditionOptions.blendMarginDegrees};
     grids[i] = std::move(grid);
-    return {};
+    return keepOrSpill(i);
   };
   auto conditionOne = [&](size_t i) -> Result<void> {
     try {
@@ -97,7 +121,6 @@ Result<std::vector<io::SourceConditioning>> conditionSources(std::vector<TilerSo
 
   // Coarsest first, a group of equally fine sources at a time (they do not depend on each
   // other, so a group runs in parallel).
-  uint64_t bytesInMemory = 0;
   for (size_t end = count; end > 0;) {
     size_t begin = end - 1;
     while (begin > 0 && sameStep(begin - 1, end - 1)) --begin;
@@ -121,23 +144,6 @@ Result<std::vector<io::SourceConditioning>> conditionSources(std::vector<TilerSo
     for (std::thread& t : threads) t.join();
     if (!firstError.empty()) return makeError(firstError);
 
-    // Read like the originals from now on: in memory within the budget (and always when a finer
-    // source still needs them), otherwise from a spilled copy.
-    for (size_t i = begin; i < end; ++i) {
-      const uint64_t bytes = grids[i]->samples.size() * sizeof(int16_t);
-      const bool spill = !neededAsCoarser[i] && !options.spillDirectory.empty() &&
-                         bytesInMemory + bytes > options.memoryBudgetBytes;
-      if (spill) {
-        auto spilled =
-            makeSpilledRaster(std::move(sources[i].raster), *grids[i], options.spillDirectory);
-        if (!spilled) return Error{spilled.error()};
-        sources[i].raster = std::move(*spilled);
-        grids[i].reset();
-      } else {
-        bytesInMemory += bytes;
-        sources[i].raster = makeMemoryRaster(std::move(sources[i].raster), grids[i]);
-      }
-    }
     end = begin;
   }
 

@@ -25,7 +25,7 @@ struct ConditioningOptions {
   // Conditioned sources beyond this many bytes of samples are spilled to unlinked files here
   // (none when empty), except those a finer source still reads as its coarser one.
   std::filesystem::path spillDirectory;
-  uint64_t memoryBudgetBytes = uint64_t{512} << 20;
+  uint64_t memoryBudgetBytes = uint64_t{256} << 20;
 };
 
 // sources: finest first (openSources' order). Returns each source's conditioning, same order.
