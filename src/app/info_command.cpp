@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "io/source_conditioning_json.hpp"
+
 namespace globe::app {
 namespace {
 
@@ -99,15 +101,7 @@ std::string formatPyramidInfoJson(const io::PyramidManifest& m, const std::strin
                        {"stepDegrees", s.stepDegrees},
                        {"finestLevel", s.finestLevel},
                        {"boundsDegrees", boundsJson(s.bounds)},
-                       {"conditioning",
-                        {{"noDataSamples", s.conditioning.noDataSamples},
-                         {"seaSamples", s.conditioning.seaSamples},
-                         {"voidSamples", s.conditioning.voidSamples},
-                         {"voidsFilledByInterpolation", s.conditioning.interpolatedSamples},
-                         {"voidsFilledFromCoarserSource", s.conditioning.fromCoarserSamples},
-                         {"voidsLeftNoData", s.conditioning.unfilledSamples},
-                         {"blendedSamples", s.conditioning.blendedSamples},
-                         {"blendMarginDegrees", s.conditioning.blendMarginDegrees}}}});
+                       {"conditioning", io::conditioningToJson(s.conditioning)}});
   }
   const json j = {{"pyramid", path},
                   {"blockSize", m.verticesPerSide},

@@ -12,7 +12,7 @@ namespace globe::dem {
 namespace {
 
 constexpr double kToleranceMeters = 1e-3;
-constexpr size_t kNestedMinimumSamples = 1024;
+constexpr size_t kDenseMinimumSamples = 1024;
 
 struct Unknown {
   std::array<int32_t, 4> neighbours{-1, -1, -1, -1};  // other unknowns
@@ -20,7 +20,7 @@ struct Unknown {
   uint8_t count = 0;                                  // neighbours of either kind
 };
 
-// The void and its border ring as a dense local grid, relaxed from coarse to fine.
+// The void and its border ring as a dense local grid, solved by multigrid.
 std::vector<double> solveDense(const DemGrid& grid, const std::vector<uint8_t>& isVoid,
                                const std::vector<size_t>& region,
                                const std::function<double(int64_t, int64_t)>& borderValue,
@@ -69,35 +69,41 @@ std::optional<std::vector<double>> solveHarmonic(
     const DemGrid& grid, const std::vector<uint8_t>& isVoid, const std::vector<size_t>& region,
     const std::function<double(int64_t, int64_t)>& borderValue) {
   const auto cols = static_cast<size_t>(grid.cols);
-  std::vector<Unknown> unknowns(region.size());
   bool anyBorder = false;
   int64_t minRow = grid.rows, maxRow = -1, minColumn = grid.cols, maxColumn = -1;
-  for (size_t k = 0; k < region.size(); ++k) {
-    const auto row = static_cast<int64_t>(region[k] / cols);
-    const auto column = static_cast<int64_t>(region[k] % cols);
+  for (size_t i : region) {
+    const auto row = static_cast<int64_t>(i / cols), column = static_cast<int64_t>(i % cols);
     minRow = std::min(minRow, row), maxRow = std::max(maxRow, row);
     minColumn = std::min(minColumn, column), maxColumn = std::max(maxColumn, column);
-    Unknown& u = unknowns[k];
-    uint8_t inner = 0;
     forEachNeighbour(grid, row, column, [&](int64_t r, int64_t c) {
-      const size_t i = grid.index(r, c);
-      ++u.count;
-      if (isVoid[i] != 0) {
-        const auto at = std::lower_bound(region.begin(), region.end(), i);
-        u.neighbours[inner++] = static_cast<int32_t>(at - region.begin());
-      } else {
-        u.fixedSum += borderValue(r, c);
-        anyBorder = true;
-      }
+      anyBorder = anyBorder || isVoid[grid.index(r, c)] == 0;
     });
   }
   if (!anyBorder) return std::nullopt;
 
-  // Large voids: solved densely over their bounding box by nested relaxation (a void across the
+  // Large voids: solved densely over their bounding box by multigrid (a void across the
   // antimeridian of a wrapping grid keeps the sparse path below).
   const bool crossesSeam = grid.wrapsLongitude && (minColumn == 0 || maxColumn == grid.cols - 1);
-  if (region.size() > kNestedMinimumSamples && !crossesSeam) {
+  if (region.size() > kDenseMinimumSamples && !crossesSeam) {
     return solveDense(grid, isVoid, region, borderValue, minRow, maxRow, minColumn, maxColumn);
+  }
+
+  // Small voids: the unknowns' neighbour graph, relaxed in place.
+  std::vector<Unknown> unknowns(region.size());
+  for (size_t k = 0; k < region.size(); ++k) {
+    Unknown& u = unknowns[k];
+    uint8_t inner = 0;
+    forEachNeighbour(grid, static_cast<int64_t>(region[k] / cols),
+                     static_cast<int64_t>(region[k] % cols), [&](int64_t r, int64_t c) {
+                       const size_t i = grid.index(r, c);
+                       ++u.count;
+                       if (isVoid[i] != 0) {
+                         const auto at = std::lower_bound(region.begin(), region.end(), i);
+                         u.neighbours[inner++] = static_cast<int32_t>(at - region.begin());
+                       } else {
+                         u.fixedSum += borderValue(r, c);
+                       }
+                     });
   }
 
   // Initial guess: peel the void from its border inwards, each sample the mean of the neighbours

@@ -75,18 +75,19 @@ SeaClassification classifySea(const DemGrid& grid, const CoarserSources* coarser
     }
   }
 
-  // Open sea: passable samples on the grid's border.
+  // Open sea: passable samples on the grid's border (north and south rows; west and east
+  // columns unless the grid wraps round the globe).
   std::vector<size_t> seeds;
-  for (int64_t row = 0; row < grid.rows; ++row) {
-    for (int64_t column = 0; column < grid.cols; ++column) {
-      const bool border = row == 0 || row == grid.rows - 1 ||
-                          (!grid.wrapsLongitude && (column == 0 || column == grid.cols - 1));
-      if (!border) {
-        if (column == 0 && grid.cols > 2) column = grid.cols - 2;  // jump to the east edge
-        continue;
-      }
-      if (passable[grid.index(row, column)] != 0) seeds.push_back(grid.index(row, column));
-    }
+  auto seed = [&](int64_t row, int64_t column) {
+    if (passable[grid.index(row, column)] != 0) seeds.push_back(grid.index(row, column));
+  };
+  for (int64_t column = 0; column < grid.cols; ++column) {
+    seed(0, column);
+    if (grid.rows > 1) seed(grid.rows - 1, column);
+  }
+  for (int64_t row = 1; row + 1 < grid.rows && !grid.wrapsLongitude; ++row) {
+    seed(row, 0);
+    if (grid.cols > 1) seed(row, grid.cols - 1);
   }
   flood(grid, passable, std::move(seeds), result.classes);
 

@@ -4,15 +4,11 @@
 #include <cmath>
 #include <vector>
 
+#include "dem/vertex_sample.hpp"
 #include "terrain/height_block.hpp"
 
 namespace globe::dem {
 namespace {
-
-double smoothstep(double t) {
-  t = std::clamp(t, 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
-}
 
 double wrapLongitude(double longitudeDegrees) {
   if (longitudeDegrees > 180.0) return longitudeDegrees - 360.0;
@@ -21,6 +17,11 @@ double wrapLongitude(double longitudeDegrees) {
 }
 
 }  // namespace
+
+double smoothstep(double t) {
+  t = std::clamp(t, 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
 
 uint64_t blendIntoCoarser(DemGrid& grid, const CoarserSources& coarser,
                           const CoverageTest& sameOrFinerCovers, double marginDegrees) {
@@ -73,9 +74,7 @@ uint64_t blendIntoCoarser(DemGrid& grid, const CoarserSources& coarser,
       if (!coarse) continue;
       const double weight = smoothstep(distance / marginDegrees);
       const double blended = *coarse + weight * (static_cast<double>(sample) - *coarse);
-      auto value = static_cast<int16_t>(std::clamp(
-          std::round(blended), static_cast<double>(terrain::kLowestLandMeters), 32767.0));
-      if (value == terrain::kNoDataHeight) value = -10000;
+      const int16_t value = landSample(blended);
       if (value != sample) {
         sample = value;
         ++changed;

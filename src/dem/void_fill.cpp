@@ -1,12 +1,11 @@
 #include "dem/void_fill.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <numbers>
 #include <optional>
 
 #include "dem/harmonic_fill.hpp"
 #include "dem/minimum_curvature.hpp"
+#include "dem/vertex_sample.hpp"
 #include "terrain/height_block.hpp"
 
 namespace globe::dem {
@@ -30,14 +29,6 @@ std::vector<size_t> collectRegion(const DemGrid& grid, const std::vector<uint8_t
   }
   std::sort(region.begin(), region.end());
   return region;
-}
-
-int16_t toSample(double heightMeters) {
-  const double clamped = std::clamp(std::round(heightMeters),
-                                    static_cast<double>(terrain::kLowestLandMeters), 32767.0);
-  auto sample = static_cast<int16_t>(clamped);
-  // -9999 is water: a land height that rounds to it moves a metre deeper.
-  return sample == terrain::kNoDataHeight ? static_cast<int16_t>(-10000) : sample;
 }
 
 }  // namespace
@@ -95,7 +86,7 @@ FillStats fillVoids(DemGrid& grid, const std::vector<uint8_t>& isVoid,
     }
     for (size_t k = 0; k < region.size(); ++k) {
       const double height = (*solved)[k] + (usedCoarser ? (*coarse)[k] : 0.0);
-      grid.samples[region[k]] = toSample(height);
+      grid.samples[region[k]] = landSample(height);
     }
     (usedCoarser ? stats.fromCoarserSamples : stats.interpolatedSamples) += region.size();
   }

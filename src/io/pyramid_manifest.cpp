@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "io/source_conditioning_json.hpp"
+
 namespace globe::io {
 namespace {
 
@@ -57,17 +59,6 @@ terrain::HeightRange rangeFromJson(const json& j) {
   return {integerOf<int16_t>(j.at(0)), integerOf<int16_t>(j.at(1))};
 }
 
-json conditioningToJson(const SourceConditioning& c) {
-  return {{"noDataSamples", c.noDataSamples},
-          {"seaSamples", c.seaSamples},
-          {"voidSamples", c.voidSamples},
-          {"voidsFilledByInterpolation", c.interpolatedSamples},
-          {"voidsFilledFromCoarserSource", c.fromCoarserSamples},
-          {"voidsLeftNoData", c.unfilledSamples},
-          {"blendedSamples", c.blendedSamples},
-          {"blendMarginDegrees", c.blendMarginDegrees}};
-}
-
 SourceConditioning conditioningFromJson(const json& j) {
   SourceConditioning c;
   c.noDataSamples = integerOf<uint64_t>(j.at("noDataSamples"));
@@ -82,6 +73,17 @@ SourceConditioning conditioningFromJson(const json& j) {
 }
 
 }  // namespace
+
+nlohmann::json conditioningToJson(const SourceConditioning& c) {
+  return {{"noDataSamples", c.noDataSamples},
+          {"seaSamples", c.seaSamples},
+          {"voidSamples", c.voidSamples},
+          {"voidsFilledByInterpolation", c.interpolatedSamples},
+          {"voidsFilledFromCoarserSource", c.fromCoarserSamples},
+          {"voidsLeftNoData", c.unfilledSamples},
+          {"blendedSamples", c.blendedSamples},
+          {"blendMarginDegrees", c.blendMarginDegrees}};
+}
 
 uint64_t PyramidManifest::tileCount() const {
   uint64_t count = 0;

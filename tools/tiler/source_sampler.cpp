@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dem/source_blend.hpp"
 #include "dem/vertex_sample.hpp"
 #include "terrain/height_block.hpp"
 
@@ -39,8 +40,7 @@ double featherWeight(const TilerSource& finer, double longitudeDegrees, double l
   const double dy = std::max({e.south - latitudeDegrees, 0.0, latitudeDegrees - e.north});
   const double outside = std::hypot(dx, dy);
   if (outside <= 0 || outside >= finer.featherMarginDegrees) return 0.0;
-  const double t = outside / finer.featherMarginDegrees;
-  return 1.0 - t * t * (3.0 - 2.0 * t);
+  return 1.0 - dem::smoothstep(outside / finer.featherMarginDegrees);
 }
 
 SourceSampler::SourceSampler(const std::vector<TilerSource>& sources, uint32_t maxFinestLevel,
@@ -49,8 +49,7 @@ SourceSampler::SourceSampler(const std::vector<TilerSource>& sources, uint32_t m
     // A source finer than this level still shapes the ground around its edges (the feather).
     const bool featherOnly = source.finestLevel > maxFinestLevel;
     if (featherOnly && !(source.featherMarginDegrees > 0)) continue;
-    const double reach =
-        featherOnly || source.featherMarginDegrees > 0 ? source.featherMarginDegrees : 0.0;
+    const double reach = source.featherMarginDegrees;
     const io::SampleGrid& grid = source.grid;
     if (!grid.wrapsLongitude && (source.extent.east + reach < stripWestDegrees ||
                                  source.extent.west - reach > stripEastDegrees)) {
@@ -68,6 +67,10 @@ SourceSampler::SourceSampler(const std::vector<TilerSource>& sources, uint32_t m
       const int64_t begin = std::clamp<int64_t>(first, 0, grid.cols - 1);
       const int64_t end = std::clamp<int64_t>(first + count, begin + 1, grid.cols);
       candidate = {&source, begin, end - begin, featherOnly};
+    }
+    // Sources whose edges shape the ground around them (the feather), listed once per strip.
+    if (source.featherMarginDegrees > 0 && !grid.wrapsLongitude) {
+      featherCandidates_.push_back(candidates_.size());
     }
     candidates_.push_back(candidate);
   }
@@ -141,13 +144,10 @@ Result<int16_t> SourceSampler::sample(double longitudeDegrees, double latitudeDe
   // the two meet where they disagree about the coast instead of leaving a cliff at the edge.
   const Candidate* nearest = nullptr;
   double weight = 0;
-  for (const Candidate& c : candidates_) {
-    const TilerSource& finer = *c.source;
-    if (!(finer.featherMarginDegrees > 0) || finer.grid.wrapsLongitude ||
-        !(finer.stepDegrees < chosen->source->stepDegrees)) {
-      continue;
-    }
-    const double w = featherWeight(finer, longitudeDegrees, latitudeDegrees);
+  for (size_t index : featherCandidates_) {
+    const Candidate& c = candidates_[index];
+    if (!(c.source->stepDegrees < chosen->source->stepDegrees)) continue;
+    const double w = featherWeight(*c.source, longitudeDegrees, latitudeDegrees);
     if (w > weight) weight = w, nearest = &c;
   }
   if (nearest == nullptr) return value;

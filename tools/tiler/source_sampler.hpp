@@ -48,6 +48,7 @@ class SourceSampler {
              int64_t column) const;
 
   std::vector<Candidate> candidates_;
+  std::vector<size_t> featherCandidates_;  // indices into candidates_
   std::map<std::pair<size_t, int64_t>, CachedRow> rows_;
   uint64_t rowReads_ = 0;
 };
