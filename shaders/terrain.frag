@@ -1,6 +1,7 @@
 // Terrain fragment shader: the interpolated lit land or sea colour (terrain.vert), by the sea flag,
-// times the draped imagery when GLOBE_IMAGERY is defined, and the logarithmic depth (per fragment,
-// or per vertex in terrain.vert when GLOBE_VERTEX_LOG_DEPTH is defined).
+// times the draped imagery when GLOBE_IMAGERY is defined, then GLOBE_LAYERS (1..4) tiled imagery
+// layers composited over it, bottom first, and the logarithmic depth (per
+// fragment, or per vertex in terrain.vert when GLOBE_VERTEX_LOG_DEPTH is defined).
 #version 330 core
 
 in vec3 v_landColor;
@@ -10,16 +11,60 @@ in float v_sea;
 in vec2 v_imageryUv;
 uniform sampler2D u_imagery;   // global equirectangular, row 0 at +90 deg
 #endif
+#ifdef GLOBE_LAYERS
+in vec4 v_drape;               // xy: tile uv, z: land light, w: sea light
+// Imagery tiles, premultiplied alpha (render/imagery_textures.cpp), row 0 = v 0. Four samplers
+// rather than an array: GLSL 3.30 indexes sampler arrays only with constant expressions.
+// The count is compiled in (one program per count): llvmpipe runs texture fetches under uniform
+// branches anyway, so "if (count > k)" cost as much as drawing every layer.
+uniform sampler2D u_layer0;
+#if GLOBE_LAYERS > 1
+uniform sampler2D u_layer1;
+#endif
+#if GLOBE_LAYERS > 2
+uniform sampler2D u_layer2;
+#endif
+#if GLOBE_LAYERS > 3
+uniform sampler2D u_layer3;
+#endif
+uniform vec4 u_layerTransform[GLOBE_LAYERS];  // imagery uv = xy + tile uv · zw
+uniform float u_layerOpacity[GLOBE_LAYERS];
+uniform bool u_lightImagery;                  // false: imagery keeps its own (baked-in) shading
+#endif
 in float v_logDepth;
 
 uniform float u_logDepthScale; // 1 / log2(1 + far)
 
 out vec4 o_color;
 
+#ifdef GLOBE_LAYERS
+// "Over" with a premultiplied texel: colour·(1 − a) + rgb, a = alpha · opacity, which is
+// mix(colour, straight rgb, a). Premultiplied so that filtering next to transparent texels does
+// not bleed their (meaningless) colour in.
+vec3 drape(vec3 color, sampler2D layer, int k, float light) {
+  vec4 texel = texture(layer, u_layerTransform[k].xy + v_drape.xy * u_layerTransform[k].zw) *
+               u_layerOpacity[k];
+  return texel.rgb * light + color * (1.0 - texel.a);
+}
+#endif
+
 void main() {
   vec3 color = v_sea > 0.5 ? v_seaColor : v_landColor;
 #ifdef GLOBE_IMAGERY
   color *= texture(u_imagery, v_imageryUv).rgb;
+#endif
+#ifdef GLOBE_LAYERS
+  float light = u_lightImagery ? (v_sea > 0.5 ? v_drape.w : v_drape.z) : 1.0;
+  color = drape(color, u_layer0, 0, light);
+#if GLOBE_LAYERS > 1
+  color = drape(color, u_layer1, 1, light);
+#endif
+#if GLOBE_LAYERS > 2
+  color = drape(color, u_layer2, 2, light);
+#endif
+#if GLOBE_LAYERS > 3
+  color = drape(color, u_layer3, 3, light);
+#endif
 #endif
   o_color = vec4(color, 1.0);
 #ifndef GLOBE_VERTEX_LOG_DEPTH

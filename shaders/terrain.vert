@@ -3,7 +3,9 @@
 // terrain.frag. With GLOBE_VERTEX_LOG_DEPTH defined (the renderer's variant for tiles far from the
 // camera), the same logarithmic depth is written per vertex into gl_Position.z instead, so the
 // fragment shader keeps early depth testing. With GLOBE_IMAGERY defined (imagery draped), the
-// colours are the light only and the image gives the colour in terrain.frag.
+// colours are the light only and the image gives the colour in terrain.frag. With GLOBE_LAYERS
+// defined (tiled imagery layers, composited over that colour in terrain.frag), one more varying
+// carries the tile uv and the land and sea light, for imagery lit like the terrain.
 //
 // Colour and light are computed here, not per fragment: llvmpipe shades several fragments per
 // vertex even near the ground, and the normals are per vertex anyway, so per-fragment lighting
@@ -33,6 +35,9 @@ out vec3 v_seaColor;   // lit with "up" (the light only, with imagery)
 out float v_sea;       // 1 = sea; the fragment thresholds it at 0.5
 #ifdef GLOBE_IMAGERY
 out vec2 v_imageryUv;
+#endif
+#ifdef GLOBE_LAYERS
+out vec4 v_drape;      // xy: tile uv, z: land light, w: sea light
 #endif
 out float v_logDepth;  // 1 + eye distance w
 
@@ -83,6 +88,9 @@ void main() {
 #else
   v_landColor = hypsometric(a_height) * landLight;
   v_seaColor = seaColor(a_height) * upLight;
+#endif
+#ifdef GLOBE_LAYERS
+  v_drape = vec4(a_uv, landLight, upLight);
 #endif
   v_sea = a_sea;
 }

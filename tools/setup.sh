@@ -1,24 +1,32 @@
 #!/usr/bin/env bash
 # One-command set-up: installs the Debian packages, builds globe, tiles the bundled real data
-# (whole-globe ETOPO20 + a GTOPO30 crop of eastern England + the Mount Fuji SRTM3 tile) into
-# ./pyramid, prints what it holds, renders two views headless into out/, queries the height of
-# Mount Fuji's summit and plays the bundled demo path over Fuji into out/play (frames, log,
-# video when ffmpeg is installed; in a window as well when a display exists).
+# (whole-globe ETOPO20 + a GTOPO30 crop of eastern England + the Mount Fuji SRTM3 tile + Zion
+# National Park's SRTM 3") into ./pyramid and the bundled imagery (the 5400x2700 Blue Marble and
+# the Landsat 8 scene over Zion) into two imagery layers in ./layers, prints what they hold,
+# renders views headless into out/, queries the height of Mount Fuji's summit and plays the
+# bundled demo flight over Zion with both layers into out/play (frames, log, video when ffmpeg is
+# installed; in a window as well when a display exists).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build build -j"$(nproc)"
-./build/tools/tiler/globe-tiler -o pyramid data/dem/ETOPO20.DEM data/dem/W002N52.DEM data/dem/E138N35_FUJI.DEM
+./build/tools/tiler/globe-tiler -o pyramid data/dem/ETOPO20.DEM data/dem/W002N52.DEM \
+  data/dem/E138N35_FUJI.DEM data/dem/zion-srtm3.tif
+./build/tools/tiler/globe-tiler imagery -o layers/blue-marble --bounds -180,-90,180,90 \
+  data/imagery/world.topo.bathy.200412.3x5400x2700.jpg
+./build/tools/tiler/globe-tiler imagery -o layers/zion data/imagery/zion-landsat8-rgb.tif
 ./build/src/app/globe info pyramid
+LAYERS=(--layer layers/blue-marble --layer layers/zion)
 mkdir -p out
+./build/src/app/globe snapshot pyramid --camera 138,30,20000000 "${LAYERS[@]}" -o out/globe.png
+./build/src/app/globe snapshot pyramid --camera -112.93,37.16,4500,330,-20,0 "${LAYERS[@]}" -o out/zion.png
 ./build/src/app/globe snapshot pyramid --camera 138.60,35.20,6000,30,-15,0 -o out/fuji_oblique.png
-./build/src/app/globe snapshot pyramid --camera 138,30,20000000 -o out/globe.png
 echo "138.7275,35.3606" | ./build/src/app/globe query pyramid
-echo "Images in out/. Interactive: ./build/src/app/globe view pyramid (needs a display)"
-PLAY=(./build/src/app/globe play pyramid data/paths/fuji-demo.json --out out/play --size 640x360)
-if command -v ffmpeg >/dev/null 2>&1; then PLAY+=(--video out/play/fuji.mp4); fi
+echo "Images in out/. Interactive: ./build/src/app/globe view pyramid ${LAYERS[*]} (needs a display)"
+PLAY=(./build/src/app/globe play pyramid data/paths/zion-demo.json "${LAYERS[@]}" --out out/play --size 640x360)
+if command -v ffmpeg >/dev/null 2>&1; then PLAY+=(--video out/play/zion.mp4); fi
 # In a window when a display works; headless (OSMesa) otherwise. Same frames either way.
 if [ -n "${DISPLAY:-}" ] && "${PLAY[@]}" --window; then :; else "${PLAY[@]}"; fi
 echo "Demo flight: frames in out/play/frames/, per-frame log out/play/log.csv, summary out/play/summary.txt"
-if [ -f out/play/fuji.mp4 ]; then echo "Video: out/play/fuji.mp4"; fi
+if [ -f out/play/zion.mp4 ]; then echo "Video: out/play/zion.mp4"; fi

@@ -32,6 +32,29 @@ int main(int argc, char** argv) {
                       "camera go under water; default: the water surface at 0 m is the ground");
   };
 
+  std::vector<std::string> layerTexts;
+  bool lighting = false;
+  auto addLayers = [&](CLI::App* command) {
+    command->add_option("--layer", layerTexts,
+                        "imagery layer directory made by `globe-tiler imagery`, optionally "
+                        "DIR,OPACITY (0..1); repeat for more, bottom layer first");
+    command->add_flag("--lighting", lighting,
+                      "hill-shade the imagery too (off by default: imagery has its own shadows)");
+  };
+  // --layer and --lighting into the scene options; false (after printing why) on a bad --layer.
+  auto applyLayers = [&](const char* command, globe::app::SceneOptions& scene) {
+    for (const std::string& text : layerTexts) {
+      auto layer = globe::app::parseLayerArgument(text);
+      if (!layer) {
+        std::fprintf(stderr, "globe %s: %s\n", command, layer.error().c_str());
+        return false;
+      }
+      scene.layers.push_back(*layer);
+    }
+    scene.lightImagery = lighting;
+    return true;
+  };
+
   CLI::App* info =
       app.add_subcommand("info", "print a pyramid's levels, tile counts, bounds and heights");
   std::string pyramid;
@@ -63,6 +86,7 @@ int main(int argc, char** argv) {
                        "never load tiles deeper than this (shows a view mid-refinement)");
   addGlobe(snapshot);
   addSeaFloor(snapshot);
+  addLayers(snapshot);
 
   CLI::App* query = app.add_subcommand(
       "query", "heights: reads lon,lat lines (degrees) on stdin, prints lon,lat,level,height_m");
@@ -99,6 +123,7 @@ int main(int argc, char** argv) {
                    "where P (globe-path-*.json) and K/F12 (globe-shot-*.png) write (default: .)");
   addGlobe(view);
   addSeaFloor(view);
+  addLayers(view);
 
   CLI::App* play = app.add_subcommand(
       "play",
@@ -118,6 +143,7 @@ int main(int argc, char** argv) {
   play->add_option("--video", playVideo, "encode the frames into this MP4 with ffmpeg");
   addGlobe(play);
   addSeaFloor(play);
+  addLayers(play);
 
   CLI11_PARSE(app, argc, argv);
   const auto globeModel = globe::geo::parseGlobeModel(globeName);
@@ -152,6 +178,7 @@ int main(int argc, char** argv) {
     options.scene.maximumScreenSpaceErrorPixels = *sse;
     options.scene.maximumLoadLevel = maxLoadLevel;
     options.scene.sea = sea;
+    if (!applyLayers("snapshot", options.scene)) return 2;
     auto report = globe::app::runSnapshot(options);
     if (!report) {
       std::fprintf(stderr, "globe snapshot: %s\n", report.error().c_str());
@@ -205,6 +232,7 @@ int main(int argc, char** argv) {
     options.recordDirectory = viewRecordDir;
     options.scene.globeModel = *globeModel;
     options.scene.sea = sea;
+    if (!applyLayers("view", options.scene)) return 2;
     if (auto report = globe::app::runView(options); !report) {
       std::fprintf(stderr, "globe view: %s\n", report.error().c_str());
       return 1;
@@ -230,6 +258,7 @@ int main(int argc, char** argv) {
     if (!playVideo.empty()) options.video = playVideo;
     options.scene.globeModel = *globeModel;
     options.scene.sea = sea;
+    if (!applyLayers("play", options.scene)) return 2;
     auto report = globe::app::runPlay(options);
     if (!report) {
       std::fprintf(stderr, "globe play: %s\n", report.error().c_str());

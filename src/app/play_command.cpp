@@ -165,6 +165,7 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
     const auto drawStart = Clock::now();
     const render::FrameStats stats = scene.draw(**renderer);
     record.tilesDrawn = stats.tilesDrawn;
+    record.imageryTextureBytes = stats.imageryBytesResident;
     std::vector<uint8_t> pixels;
     if (options.writeFrames) {
       pixels = render::readPixelsRgba(width, height);
@@ -206,6 +207,9 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
     partial.keep();
   }
   report.summary = summarize(records);
+  if (!options.scene.layers.empty()) {
+    report.summary.imageryTextureBudgetBytes = options.scene.imageryBudget.textureBytes;
+  }
   char header[512];
   std::snprintf(header, sizeof header, "globe play %s: %dx%d at %g fps%s\n",
                 options.pathFile.string().c_str(), width, height, fps,

@@ -104,6 +104,7 @@ PlaySummary summarize(const std::vector<FrameRecord>& frames) {
       s.minimumClearanceFrame = r.frame;
     }
     totals.push_back(r.timings.totalMs);
+    s.peakImageryTextureBytes = std::max(s.peakImageryTextureBytes, r.imageryTextureBytes);
   }
   s.medianFrameMs = quantile(totals, 0.5);
   s.p90FrameMs = quantile(totals, 0.9);
@@ -142,11 +143,17 @@ std::string formatSummary(const PlaySummary& s, const std::vector<FrameRecord>& 
                        low.pose.position.longitudeDegrees(), low.pose.position.latitudeDegrees(),
                        low.terrainHeightMeters);
   }
-  std::snprintf(text + n, sizeof text - static_cast<size_t>(n),
-                "time per frame: median %.1f ms, p90 %.1f ms, max %.1f ms (median select %.1f, "
-                "load %.1f, draw %.1f ms)\n",
-                s.medianFrameMs, s.p90FrameMs, s.maximumFrameMs, s.medianSelectMs, s.medianLoadMs,
-                s.medianDrawMs);
+  n += std::snprintf(text + n, sizeof text - static_cast<size_t>(n),
+                     "time per frame: median %.1f ms, p90 %.1f ms, max %.1f ms (median select "
+                     "%.1f, load %.1f, draw %.1f ms)\n",
+                     s.medianFrameMs, s.p90FrameMs, s.maximumFrameMs, s.medianSelectMs,
+                     s.medianLoadMs, s.medianDrawMs);
+  if (s.imageryTextureBudgetBytes > 0) {
+    std::snprintf(text + n, sizeof text - static_cast<size_t>(n),
+                  "imagery textures: peak %.1f MiB of a %.1f MiB budget\n",
+                  static_cast<double>(s.peakImageryTextureBytes) / (1 << 20),
+                  static_cast<double>(s.imageryTextureBudgetBytes) / (1 << 20));
+  }
   return text;
 }
 

@@ -38,6 +38,7 @@ struct FrameRecord {
   bool collided = false;           // any response this frame
   collision::Response response = collision::Response::None;
   size_t tilesDrawn = 0;
+  uint64_t imageryTextureBytes = 0;  // imagery textures on the GPU after the frame's draw
   FrameTimings timings;
 };
 
@@ -56,6 +57,8 @@ struct PlaySummary {
   int minimumClearanceFrame = -1;
   double medianFrameMs = 0, p90FrameMs = 0, maximumFrameMs = 0;
   double medianSelectMs = 0, medianLoadMs = 0, medianDrawMs = 0;
+  uint64_t peakImageryTextureBytes = 0;
+  uint64_t imageryTextureBudgetBytes = 0;  // set by the player; 0: no imagery layers
 };
 PlaySummary summarize(const std::vector<FrameRecord>& frames);
 std::string formatSummary(const PlaySummary& summary, const std::vector<FrameRecord>& frames);

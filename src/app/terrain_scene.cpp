@@ -65,6 +65,7 @@ TerrainScene::TerrainScene(std::unique_ptr<io::TileStore> store, const SceneOpti
       loader_(std::make_unique<io::TileLoader>(*store_, runner_, cache_)) {}
 
 TerrainScene::~TerrainScene() {
+  imagery_.reset();
   loader_.reset();  // waits for running loads before the runner goes
   runner_.shutdown();
 }
@@ -73,7 +74,13 @@ Result<std::unique_ptr<TerrainScene>> TerrainScene::open(const std::filesystem::
                                                          const SceneOptions& options) {
   auto store = io::TileStore::open(pyramidDir, options.sea);
   if (!store) return Error{store.error()};
-  return std::unique_ptr<TerrainScene>(new TerrainScene(std::move(*store), options));
+  std::unique_ptr<TerrainScene> scene(new TerrainScene(std::move(*store), options));
+  if (!options.layers.empty()) {
+    auto layers = ImageryLayers::open(options.layers, scene->runner_, options.imageryBudget);
+    if (!layers) return Error{layers.error()};
+    scene->imagery_ = std::move(*layers);
+  }
+  return scene;
 }
 
 Result<void> TerrainScene::uploadIfNeeded(const geo::TileId& tile,
@@ -185,6 +192,7 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
     }
     if (!requests.empty()) loader_->request(requests);
   }
+  updateImagery(frame.positionEcefMeters, renderer, info);
   // Free GPU memory of tiles not drawn for a while, oldest first, once over the budget.
   if (gpuLastUsedFrame_.size() > options_.gpuTileBudget) {
     std::vector<std::pair<uint64_t, geo::TileId>> byAge;
@@ -202,16 +210,42 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   info.selection = selection.counters;
   info.tilesSelected = tiles_.size();
   info.requests = requests.size();
-  info.complete = requests.empty() && loader_->counters().inFlight == 0;
+  info.complete = requests.empty() && loader_->counters().inFlight == 0 && info.imagery.complete;
   return info;
 }
 
+void TerrainScene::updateImagery(const glm::dvec3& cameraEcefMeters,
+                                 render::TerrainRenderer& renderer, FrameInfo& info) {
+  if (!imagery_) return;
+  if (!imageryStyleSet_) {
+    render::TerrainStyle style = renderer.style();
+    style.lightImagery = options_.lightImagery;
+    renderer.setStyle(style);
+    imageryStyleSet_ = true;
+  }
+  auto frame = imagery_->update(
+      tiles_, store_->manifest().verticesPerSide, options_.maximumScreenSpaceErrorPixels,
+      options_.maximumImageryLoadLevel, cameraEcefMeters, ellipsoid_, renderer, drapes_);
+  if (frame) {
+    info.imagery = *frame;
+    return;
+  }
+  // A texture that cannot be uploaded: the terrain's own colours rather than no picture.
+  std::fprintf(stderr, "globe: imagery: %s\n", frame.error().c_str());
+  drapes_.assign(tiles_.size(), render::TileDrapes{});
+}
+
 render::FrameStats TerrainScene::draw(render::TerrainRenderer& renderer) const {
+  if (imagery_) return renderer.draw(view_, tiles_, drapes_);
   return renderer.draw(view_, tiles_);
 }
 
 void TerrainScene::waitForLoads(std::chrono::milliseconds timeout) const {
-  if (loader_->counters().inFlight > 0) loader_->waitForCompletion(timeout);
+  if (loader_->counters().inFlight > 0) {
+    loader_->waitForCompletion(timeout);
+  } else if (imagery_) {
+    imagery_->waitForLoads(timeout);
+  }
 }
 
 Result<FrameInfo> TerrainScene::updateUntilComplete(const camera::CameraPose& pose, int widthPixels,

@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "app/imagery_layers.hpp"
 #include "camera/camera_pose.hpp"
 #include "collision/rendering_tile_array.hpp"
 #include "geo/ellipsoid.hpp"
@@ -35,6 +36,10 @@ struct SceneOptions {
   size_t gpuTileBudget = 4000;  // tiles kept on the GPU, least recently drawn go first
   // The ground over water for drawing, collision and heights alike (--sea-floor: SeaFloor).
   terrain::SeaSurface sea = terrain::SeaSurface::Water;
+  std::vector<LayerOptions> layers;  // imagery draped over the terrain, bottom layer first
+  ImageryBudget imageryBudget;
+  uint32_t maximumImageryLoadLevel = geo::kMaxLevel;  // imagery deeper than this is never loaded
+  bool lightImagery = false;  // --lighting: hill-shade the imagery too (it has its own shadows)
 };
 
 struct FrameInfo {
@@ -45,6 +50,7 @@ struct FrameInfo {
   size_t uploaded = 0;             // meshes built and uploaded this frame
   bool complete = false;           // nothing loadable is missing: the image is final
   double terrainHeightMeters = 0;  // under the camera, from the finest resident block
+  ImageryFrame imagery;            // the layers' part of this frame (complete counts it)
 };
 
 class TerrainScene {
@@ -57,6 +63,10 @@ class TerrainScene {
   io::TileStore& store() { return *store_; }
   const io::TileLoader& loader() const { return *loader_; }
   const io::BlockCache& cache() const { return cache_; }
+  // The imagery layers, or null without --layer.
+  const ImageryLayers* imagery() const { return imagery_.get(); }
+  // Per tile of tiles(), the imagery drawn on it (empty without layers).
+  const std::vector<render::TileDrapes>& drapes() const { return drapes_; }
   const SceneOptions& options() const { return options_; }
 
   // Selects and streams the tiles for this pose; uploads what arrived to the renderer.
@@ -80,6 +90,8 @@ class TerrainScene {
 
  private:
   TerrainScene(std::unique_ptr<io::TileStore> store, const SceneOptions& options);
+  void updateImagery(const glm::dvec3& cameraEcefMeters, render::TerrainRenderer& renderer,
+                     FrameInfo& info);
   Result<void> uploadIfNeeded(const geo::TileId& tile, const terrain::HeightBlock& block,
                               render::TerrainRenderer& renderer);
 
@@ -89,6 +101,9 @@ class TerrainScene {
   io::BlockCache cache_;
   io::ThreadPoolRunner runner_;
   std::unique_ptr<io::TileLoader> loader_;
+  std::unique_ptr<ImageryLayers> imagery_;
+  std::vector<render::TileDrapes> drapes_;  // per tile of tiles_, with imagery
+  bool imageryStyleSet_ = false;
   std::vector<geo::TileId> tiles_;
   std::vector<std::shared_ptr<const terrain::HeightBlock>>
       blocks_;  // keep the array's blocks alive

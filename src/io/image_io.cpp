@@ -1,4 +1,4 @@
-// Image decoding with stb_image and PNG encoding with stb_image_write (implementations come
+// Image decoding with stb_image and PNG/JPEG encoding with stb_image_write (implementations come
 // precompiled from libstb), written atomically.
 #include "io/image_io.hpp"
 
@@ -23,7 +23,59 @@ void appendBytes(void* context, void* data, int size) {
   out->insert(out->end(), bytes, bytes + size);
 }
 
+bool wellFormed(const ImageRgba& image) {
+  return image.widthPixels > 0 && image.heightPixels > 0 &&
+         image.pixels.size() ==
+             static_cast<size_t>(image.widthPixels) * static_cast<size_t>(image.heightPixels) * 4;
+}
+
 }  // namespace
+
+Result<ImageRgba> decodeImageRgba(std::span<const std::byte> bytes, const std::string& name) {
+  if (bytes.size() > static_cast<size_t>(std::numeric_limits<int>::max())) {
+    return makeError(name + ": image too large");
+  }
+  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+  const int size = static_cast<int>(bytes.size());
+  int width = 0, height = 0, channels = 0;
+  if (stbi_info_from_memory(data, size, &width, &height, &channels) == 0) {
+    return makeError(name + ": not a readable image: " + stbi_failure_reason());
+  }
+  if (width <= 0 || height <= 0 || width > kMaxDecodedImageSide || height > kMaxDecodedImageSide) {
+    return makeError(name + ": image size " + std::to_string(width) + "x" + std::to_string(height) +
+                     " out of range 1.." + std::to_string(kMaxDecodedImageSide));
+  }
+  stbi_uc* decoded = stbi_load_from_memory(data, size, &width, &height, &channels, 4);
+  if (decoded == nullptr)
+    return makeError(name + ": cannot decode image: " + stbi_failure_reason());
+  ImageRgba image;
+  image.widthPixels = width;
+  image.heightPixels = height;
+  image.pixels.assign(decoded, decoded + static_cast<size_t>(width) * height * 4);
+  stbi_image_free(decoded);
+  return image;
+}
+
+Result<std::vector<std::byte>> encodeJpeg(const ImageRgba& image, int quality) {
+  if (!wellFormed(image)) return makeError("cannot encode JPEG: malformed RGBA image");
+  if (quality < 1 || quality > 100) return makeError("JPEG quality must be 1..100");
+  std::vector<std::byte> jpeg;
+  if (stbi_write_jpg_to_func(appendBytes, &jpeg, image.widthPixels, image.heightPixels, 4,
+                             image.pixels.data(), quality) == 0) {
+    return makeError("JPEG encoding failed");
+  }
+  return jpeg;
+}
+
+Result<std::vector<std::byte>> encodePng(const ImageRgba& image) {
+  if (!wellFormed(image)) return makeError("cannot encode PNG: malformed RGBA image");
+  std::vector<std::byte> png;
+  if (stbi_write_png_to_func(appendBytes, &png, image.widthPixels, image.heightPixels, 4,
+                             image.pixels.data(), image.widthPixels * 4) == 0) {
+    return makeError("PNG encoding failed");
+  }
+  return png;
+}
 
 Result<ImageRgba> loadImageRgba(const std::filesystem::path& path) {
   auto bytes = readWholeFile(path, kMaxImageFileBytes);

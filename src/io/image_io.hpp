@@ -1,9 +1,12 @@
-// RGBA8 images on disk: any format stb_image reads (JPEG, PNG, ...) in, PNG out (atomically).
+// RGBA8 images: any format stb_image reads (JPEG, PNG, ...) in, from files or memory; PNG out
+// (atomically), JPEG and PNG to memory.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "geo/result.hpp"
@@ -25,5 +28,14 @@ Result<ImageRgba> loadImageRgba(const std::filesystem::path& path);
 // rgba holds width·height·4 bytes, rows top-down.
 Result<void> writePngAtomically(const std::filesystem::path& path, std::span<const uint8_t> rgba,
                                 int widthPixels, int heightPixels);
+
+// Decodes an image held in memory (an imagery tile) to RGBA8; refuses images larger than
+// kMaxDecodedImageSide on a side before decoding. Errors name `name`.
+inline constexpr int kMaxDecodedImageSide = 4096;
+Result<ImageRgba> decodeImageRgba(std::span<const std::byte> bytes, const std::string& name);
+
+// Encodes to JPEG (alpha ignored; quality 1..100) or PNG (RGBA) in memory.
+Result<std::vector<std::byte>> encodeJpeg(const ImageRgba& image, int quality);
+Result<std::vector<std::byte>> encodePng(const ImageRgba& image);
 
 }  // namespace globe::io

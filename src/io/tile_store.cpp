@@ -171,4 +171,17 @@ Result<terrain::HeightBlock> TileStore::loadBlock(const geo::TileId& tile) {
   return block;
 }
 
+Result<std::optional<terrain::HeightBlock>> TileStore::load(const geo::TileId& tile) {
+  auto present = entry(tile);
+  if (!present) return Error{present.error()};
+  if (!*present) return std::optional<terrain::HeightBlock>{};
+  auto block = loadBlock(tile);
+  if (!block) return Error{block.error()};
+  return std::optional<terrain::HeightBlock>{std::move(*block)};
+}
+
+std::string TileStore::location(const geo::TileId& tile) const {
+  return packPath(dir_, packOf(tile, manifest_.packTilesPerSide)).string();
+}
+
 }  // namespace globe::io

@@ -15,11 +15,13 @@
 #include "geo/tile_id.hpp"
 #include "io/pack_format.hpp"
 #include "io/pyramid_manifest.hpp"
+#include "io/tile_source.hpp"
 #include "terrain/height_block.hpp"
 
 namespace globe::io {
 
-class TileStore {
+// The height-block source of the loader (TileSource<HeightBlock>).
+class TileStore final : public TileSource<terrain::HeightBlock> {
  public:
   // `sea`: the surface every block loaded from this store reads as the ground over water
   // (HeightBlock::sea): the one place a viewer's --sea-floor reaches rendering, collision and
@@ -28,7 +30,7 @@ class TileStore {
   static Result<std::unique_ptr<TileStore>> open(
       const std::filesystem::path& pyramidDir,
       terrain::SeaSurface sea = terrain::SeaSurface::Water);
-  ~TileStore() = default;
+  ~TileStore() override = default;
   TileStore(const TileStore&) = delete;
   TileStore& operator=(const TileStore&) = delete;
 
@@ -41,6 +43,13 @@ class TileStore {
   // Loads a present tile's block with one read (its pack's index is parsed once), its `sea` set
   // to the store's. Thread-safe.
   Result<terrain::HeightBlock> loadBlock(const geo::TileId& tile);
+
+  // TileSource: the entry first, so that a tile beyond the pyramid's coverage (nullopt) is told
+  // apart from a pack that is missing or damaged (an error); then loadBlock.
+  Result<std::optional<terrain::HeightBlock>> load(const geo::TileId& tile) override;
+  std::string location(const geo::TileId& tile) const override;
+  std::vector<std::string> takeNewSourceErrors() override { return takeNewPackErrors(); }
+  void forgetSourceFailures() override { forgetFailedPacks(); }
 
   uint64_t blockReads() const { return blockReads_.load(); }
   uint64_t packIndexReads() const { return packIndexReads_.load(); }

@@ -16,6 +16,7 @@
 
 #include "render/gl_object.hpp"
 #include "render/gpu_tile.hpp"
+#include "render/imagery_textures.hpp"
 #include "render/shader_directory.hpp"
 #include "render/shader_program.hpp"
 #include "terrain/skirt_edges.hpp"
@@ -38,24 +39,36 @@ struct TerrainRenderer::Impl {
     GLint modelView = -1, projection = -1, tileCenter = -1, imageryRect = -1;
     GLint sunDirection = -1, ambient = -1, hillShading = -1, imagery = -1;
     GLint logDepthScale = -1;
+    GLint layerTransform = -1, layerOpacity = -1, lightImagery = -1;
+    std::array<GLint, kMaxDrapeLayers> layerSamplers{-1, -1, -1, -1};
   };
 
-  // [imagery][depth]: imagery 1 = draped (GLOBE_IMAGERY); depth 0 = logarithmic depth per
+  // [imagery][layers][depth]: imagery 1 = the global image draped (GLOBE_IMAGERY); layers n =
+  // n drape layers over it (GLOBE_LAYERS n: one program per count, because llvmpipe pays for
+  // texture fetches under uniform branches it cannot skip); depth 0 = logarithmic depth per
   // fragment (gl_FragDepth), 1 = per vertex (keeps early-z).
   struct Program {
     ShaderProgram program;
     Uniforms uniforms;
+  };
+  // A tile's layers as drawn: resident textures only, none under an opaque one.
+  struct BoundDrapes {
+    std::array<GLuint, kMaxDrapeLayers> textures{};
+    std::array<glm::vec4, kMaxDrapeLayers> transforms{};
+    std::array<float, kMaxDrapeLayers> opacities{};
+    uint32_t count = 0;
   };
   struct DrawItem {
     double nearestMeters;
     const GpuTile* gpu;
     geo::TileId tile;
     terrain::SkirtEdgeMask skirts;
+    BoundDrapes drapes;
   };
 
   TerrainRendererOptions options;
   TerrainStyle style;
-  Program programs[2][2];
+  Program programs[2][kMaxDrapeLayers + 1][2];
   std::vector<DrawItem> drawItems[2];  // per-frame scratch, kept to avoid reallocating
   std::unordered_set<geo::TileId> drawnIds;
   GlObject indexBuffer;
@@ -65,11 +78,58 @@ struct TerrainRenderer::Impl {
   uint64_t indexBytes = 0;
   GlObject imagery;
   uint64_t imageryBytes = 0;
+  ImageryTextures imageryTiles;
   std::unordered_map<geo::TileId, GpuTile> tiles;
   uint64_t tileBytes = 0;
 
-  uint64_t gpuBytes() const { return tileBytes + indexBytes + imageryBytes; }
+  BoundDrapes resolveDrapes(const TileDrapes* drapes, FrameStats& stats) const;
+  void bindDrapes(const BoundDrapes& drapes, const Uniforms& u) const;
+  uint64_t gpuBytes() const {
+    return tileBytes + indexBytes + imageryBytes + imageryTiles.bytesResident();
+  }
 };
+
+// The tile's resident drape layers, bottom first. Layers under an opaque one (every texel
+// opaque, opacity 1) cannot show and are left out: fewer texture fetches per fragment. Layers
+// whose texture is not resident are skipped (the ones above still draw) and counted.
+TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(const TileDrapes* drapes,
+                                                                        FrameStats& stats) const {
+  BoundDrapes bound;
+  const uint32_t count = drapes == nullptr ? 0 : std::min(drapes->count, kMaxDrapeLayers);
+  for (uint32_t k = 0; k < count; ++k) {
+    const TileDrape& drape = drapes->layers[k];
+    const GLuint texture = imageryTiles.find(drape.layer, drape.imageryTile);
+    if (texture == 0) {
+      ++stats.drapesMissing;
+      continue;
+    }
+    // NaN and negative opacities draw nothing.
+    const float opacity = drape.opacity > 0.0f ? std::min(drape.opacity, 1.0f) : 0.0f;
+    if (opacity >= 1.0f && imageryTiles.isOpaque(drape.layer, drape.imageryTile)) {
+      bound.count = 0;
+    }
+    bound.textures[bound.count] = texture;
+    bound.transforms[bound.count] = drape.uvTransform;
+    bound.opacities[bound.count] = opacity;
+    ++bound.count;
+  }
+  stats.drapesDrawn += bound.count;
+  return bound;
+}
+
+// Binds the layers to units 1.. and sets their uniforms.
+void TerrainRenderer::Impl::bindDrapes(const BoundDrapes& drapes, const Uniforms& u) const {
+  for (uint32_t k = 0; k < drapes.count; ++k) {
+    glActiveTexture(GL_TEXTURE1 + k);
+    glBindTexture(GL_TEXTURE_2D, drapes.textures[k]);
+  }
+  glActiveTexture(GL_TEXTURE0);
+  if (drapes.count > 0) {
+    const auto n = static_cast<GLsizei>(drapes.count);
+    glUniform4fv(u.layerTransform, n, glm::value_ptr(drapes.transforms[0]));
+    glUniform1fv(u.layerOpacity, n, drapes.opacities.data());
+  }
+}
 
 TerrainRenderer::TerrainRenderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 TerrainRenderer::~TerrainRenderer() = default;
@@ -82,16 +142,21 @@ Result<std::unique_ptr<TerrainRenderer>> TerrainRenderer::create(
   }
   auto impl = std::make_unique<Impl>();
   impl->options = options;
+  impl->imageryTiles = ImageryTextures(options.maxImageryAnisotropy);
   if (impl->options.shaderDirectory.empty())
     impl->options.shaderDirectory = defaultShaderDirectory();
   const auto& dir = impl->options.shaderDirectory;
-  for (int variant = 0; variant < 4; ++variant) {
-    const int imagery = variant / 2, depth = variant % 2;
-    const std::string defines = std::string(imagery == 1 ? "#define GLOBE_IMAGERY 1\n" : "") +
-                                (depth == 1 ? "#define GLOBE_VERTEX_LOG_DEPTH 1\n" : "");
+  constexpr int kLayerVariants = kMaxDrapeLayers + 1;
+  for (int variant = 0; variant < 2 * kLayerVariants * 2; ++variant) {
+    const int imagery = variant / (2 * kLayerVariants), layers = variant / 2 % kLayerVariants,
+              depth = variant % 2;
+    const std::string defines =
+        std::string(imagery == 1 ? "#define GLOBE_IMAGERY 1\n" : "") +
+        (layers > 0 ? "#define GLOBE_LAYERS " + std::to_string(layers) + "\n" : "") +
+        (depth == 1 ? "#define GLOBE_VERTEX_LOG_DEPTH 1\n" : "");
     auto program = loadShaderProgram(dir / "terrain.vert", dir / "terrain.frag", defines);
     if (!program) return makeError(program.error());
-    Impl::Program& target = impl->programs[imagery][depth];
+    Impl::Program& target = impl->programs[imagery][layers][depth];
     target.program = std::move(*program);
     const ShaderProgram& p = target.program;
     Impl::Uniforms& u = target.uniforms;
@@ -104,10 +169,21 @@ Result<std::unique_ptr<TerrainRenderer>> TerrainRenderer::create(
     u.hillShading = p.uniformLocation("u_hillShading");
     u.imagery = p.uniformLocation("u_imagery");
     u.logDepthScale = p.uniformLocation("u_logDepthScale");
+    u.layerTransform = p.uniformLocation("u_layerTransform");
+    u.layerOpacity = p.uniformLocation("u_layerOpacity");
+    u.lightImagery = p.uniformLocation("u_lightImagery");
+    for (uint32_t k = 0; k < kMaxDrapeLayers; ++k) {
+      u.layerSamplers[k] = p.uniformLocation(("u_layer" + std::to_string(k)).c_str());
+    }
     if (u.modelView < 0 || u.projection < 0 || u.logDepthScale < 0) {
       return makeError((dir / "terrain.vert").string() +
                        " + terrain.frag: the program lacks "
                        "u_modelView, u_projection or u_logDepthScale");
+    }
+    if (layers > 0 && (u.layerTransform < 0 || u.layerOpacity < 0)) {
+      return makeError((dir / "terrain.vert").string() +
+                       " + terrain.frag: the GLOBE_LAYERS program lacks u_layerTransform or "
+                       "u_layerOpacity");
     }
   }
 
@@ -225,10 +301,34 @@ void TerrainRenderer::clearImagery() {
 
 bool TerrainRenderer::hasImagery() const { return static_cast<bool>(impl_->imagery); }
 
+Result<void> TerrainRenderer::uploadImageryTile(uint32_t layer, const geo::TileId& tile,
+                                                std::span<const uint8_t> rgba, int widthPixels,
+                                                int heightPixels) {
+  return impl_->imageryTiles.upload(layer, tile, rgba, widthPixels, heightPixels);
+}
+bool TerrainRenderer::hasImageryTile(uint32_t layer, const geo::TileId& tile) const {
+  return impl_->imageryTiles.contains(layer, tile);
+}
+bool TerrainRenderer::evictImageryTile(uint32_t layer, const geo::TileId& tile) {
+  return impl_->imageryTiles.evict(layer, tile);
+}
+void TerrainRenderer::evictAllImageryTiles() { impl_->imageryTiles.clear(); }
+uint64_t TerrainRenderer::imageryBytesResident() const {
+  return impl_->imageryTiles.bytesResident();
+}
+uint32_t TerrainRenderer::imageryTilesResident() const {
+  return impl_->imageryTiles.tilesResident();
+}
+
 void TerrainRenderer::setStyle(const TerrainStyle& style) { impl_->style = style; }
 const TerrainStyle& TerrainRenderer::style() const { return impl_->style; }
 
 FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::TileId> tiles) {
+  return draw(view, tiles, {});
+}
+
+FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::TileId> tiles,
+                                 std::span<const TileDrapes> drapes) {
   Impl& impl = *impl_;
   const TerrainStyle& style = impl.style;
   FrameStats stats;
@@ -238,7 +338,8 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
   // depth test rejects hidden fragments early. Near tiles go first: they occlude the far ones.
   for (auto& items : impl.drawItems) items.clear();
   impl.drawnIds.clear();
-  for (const geo::TileId& tile : tiles) {
+  for (size_t i = 0; i < tiles.size(); ++i) {
+    const geo::TileId& tile = tiles[i];
     const auto found = impl.tiles.find(tile);
     if (found == impl.tiles.end()) {
       ++stats.tilesMissing;
@@ -250,7 +351,9 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
         0.0, glm::distance(view.cameraEcefMeters, gpu.centerEcefMeters) - gpu.radiusMeters);
     const bool far =
         nearest >= kVertexDepthMinMeters && nearest >= kVertexDepthRadii * gpu.radiusMeters;
-    impl.drawItems[far ? 1 : 0].push_back({nearest, &gpu, tile, 0});
+    const TileDrapes* tileDrapes = i < drapes.size() ? &drapes[i] : nullptr;
+    impl.drawItems[far ? 1 : 0].push_back(
+        {nearest, &gpu, tile, 0, impl.resolveDrapes(tileDrapes, stats)});
   }
   // Skirts face the tiles that are really drawn (resident ones), known once all are listed.
   if (impl.options.skirts) {
@@ -279,6 +382,8 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
                             ? glm::vec3(view.sunDirectionEcef / sunLength)
                             : glm::vec3(0.0f);
   const bool useImagery = style.drapeImagery && impl.imagery;
+  // Without drapes the programs without GLOBE_LAYERS draw, exactly as before layers existed.
+  const bool useLayers = !drapes.empty();
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, useImagery ? impl.imagery.get() : 0);
   const double farMeters = view.farMeters > 1.0 ? view.farMeters : kDefaultFarMeters;
@@ -287,20 +392,34 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
   for (int variant = 0; variant < 2; ++variant) {
     auto& items = impl.drawItems[variant];
     if (items.empty()) continue;
+    // By layer count (one program each), then front to back.
     std::sort(items.begin(), items.end(), [](const Impl::DrawItem& a, const Impl::DrawItem& b) {
+      if (a.drapes.count != b.drapes.count) return a.drapes.count < b.drapes.count;
       return a.nearestMeters < b.nearestMeters;
     });
-    const Impl::Program& program = impl.programs[useImagery ? 1 : 0][variant];
-    const Impl::Uniforms& u = program.uniforms;
-    glUseProgram(program.program.id());
-    glUniformMatrix4fv(u.projection, 1, GL_FALSE, glm::value_ptr(projection));
-    glUniform3fv(u.sunDirection, 1, glm::value_ptr(sun));
-    glUniform1f(u.ambient, style.ambient);
-    glUniform1i(u.hillShading, style.hillShading ? 1 : 0);
-    if (u.imagery >= 0) glUniform1i(u.imagery, 0);
-    glUniform1f(u.logDepthScale, logDepthScale);
-
+    const Impl::Uniforms* current = nullptr;
+    uint32_t currentLayers = kMaxDrapeLayers + 1;
     for (const Impl::DrawItem& item : items) {
+      if (item.drapes.count != currentLayers) {
+        currentLayers = item.drapes.count;
+        const Impl::Program& program =
+            impl.programs[useImagery ? 1 : 0][useLayers ? currentLayers : 0][variant];
+        current = &program.uniforms;
+        const Impl::Uniforms& u = *current;
+        glUseProgram(program.program.id());
+        glUniformMatrix4fv(u.projection, 1, GL_FALSE, glm::value_ptr(projection));
+        glUniform3fv(u.sunDirection, 1, glm::value_ptr(sun));
+        glUniform1f(u.ambient, style.ambient);
+        glUniform1i(u.hillShading, style.hillShading ? 1 : 0);
+        if (u.imagery >= 0) glUniform1i(u.imagery, 0);
+        glUniform1f(u.logDepthScale, logDepthScale);
+        // Units 1..4 (unit 0 holds the global image).
+        for (uint32_t k = 0; k < currentLayers; ++k) {
+          glUniform1i(u.layerSamplers[k], static_cast<GLint>(1 + k));
+        }
+        if (u.lightImagery >= 0) glUniform1i(u.lightImagery, style.lightImagery ? 1 : 0);
+      }
+      const Impl::Uniforms& u = *current;
       const GpuTile& gpu = *item.gpu;
       // Camera-relative in double: the ~6.4e6 m translation cancels before the cast to float.
       const glm::dmat4 modelViewDouble =
@@ -310,6 +429,7 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
       const glm::vec3 center(gpu.centerEcefMeters);
       glUniform3fv(u.tileCenter, 1, glm::value_ptr(center));
       if (useImagery) glUniform4fv(u.imageryRect, 1, glm::value_ptr(gpu.imageryRect));
+      if (item.drapes.count > 0) impl.bindDrapes(item.drapes, u);
       glBindVertexArray(gpu.vertexArray.get());
       // The grid and only the skirts this tile needs (terrain/skirt_edges.hpp), in one call.
       std::array<terrain::IndexRange, 3> ranges;
@@ -329,11 +449,20 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
     }
   }
   glBindVertexArray(0);
+  if (useLayers) {
+    for (uint32_t k = 0; k < kMaxDrapeLayers; ++k) {
+      glActiveTexture(GL_TEXTURE1 + k);
+      glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    glActiveTexture(GL_TEXTURE0);
+  }
   glBindTexture(GL_TEXTURE_2D, 0);
   glUseProgram(0);
 
   stats.gpuBytesResident = impl.gpuBytes();
   stats.tilesResident = static_cast<uint32_t>(impl.tiles.size());
+  stats.imageryTilesResident = impl.imageryTiles.tilesResident();
+  stats.imageryBytesResident = impl.imageryTiles.bytesResident();
   return stats;
 }
 

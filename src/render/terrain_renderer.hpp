@@ -13,6 +13,7 @@
 #include "geo/tile_id.hpp"
 #include "render/frame_stats.hpp"
 #include "render/render_view.hpp"
+#include "render/tile_drape.hpp"
 #include "terrain/tile_mesh.hpp"
 
 namespace globe::render {
@@ -22,12 +23,21 @@ struct TerrainRendererOptions {
       shaderDirectory;            // holds terrain.vert/.frag; empty: defaultShaderDirectory()
   uint32_t verticesPerSide = 17;  // every uploaded mesh must have this block size
   bool skirts = true;             // every uploaded mesh must have skirts iff this is set
+  // Anisotropic filtering of imagery tiles, at most this many samples (where the GL has
+  // GL_EXT/ARB_texture_filter_anisotropic; 1 = off). Sharp oblique views; free on GPUs, but
+  // llvmpipe takes it on a slow path (any setting above 1): 300 tiles, 1280x720, looking at the
+  // horizon (tests/render/test_imagery_layers.cpp), one layer ~11 → 25-50 ms a frame, four layers
+  // ~16 → 70-150 ms, on a busy 2-core machine.
+  float maxImageryAnisotropy = 1.0f;
 };
 
 struct TerrainStyle {
   bool drapeImagery = true;  // use the imagery set by setImagery (if any) instead of the ramp
   bool hillShading = true;   // light land with the mesh normals; off: with the ellipsoid "up"
   float ambient = 0.3f;      // light on faces turned away from the sun, 0..1
+  // Drape layers (draw with drapes) times the terrain's light too; off: imagery keeps its own
+  // baked-in shading and shows its texels' colours exactly.
+  bool lightImagery = false;
   glm::vec3 backgroundRgb{0.0f, 0.0f, 0.0f};  // space
 };
 
@@ -57,6 +67,10 @@ struct TerrainStyle {
 // with the sea floor's depth down to 6 km whether the water surface at 0 m or the floor is drawn
 // (terrain::SeaSurface), and lit with the geocentric "up" instead of the normal, so water stays
 // flat; the fragment picks land or sea by the interpolated flag, so coasts stay sharp.
+// Drape layers (draw with drapes, shaders built with GLOBE_LAYERS): over that colour (the global
+// image included, when set and drapeImagery is on), each layer bottom to top per fragment:
+// colour = mix(colour, texel.rgb · light, texel.a · opacity), light = 1 unless lightImagery
+// (then the land or sea light above). Imagery covers sea too. Texels are stored premultiplied.
 // Skirts: only on the edges whose same-level neighbour is not drawn this frame
 // (terrain/skirt_edges.hpp); tiles of one level share their edge samples and their meshes overlap
 // by a hair (terrain::kSeamOverlapFraction), so no crack opens there.
@@ -84,14 +98,31 @@ class TerrainRenderer {
   void clearImagery();
   bool hasImagery() const;
 
+  // Uploads (or replaces) one imagery tile's texture: RGBA8 with straight alpha, rows top-down
+  // (row 0 = the tile's north edge, v 0), usually 256x256; mipmapped (glGenerateMipmap),
+  // trilinear, anisotropic where GL_EXT/ARB_texture_filter_anisotropic is available, clamped to
+  // edge.
+  Result<void> uploadImageryTile(uint32_t layer, const geo::TileId& tile,
+                                 std::span<const uint8_t> rgba, int widthPixels, int heightPixels);
+  bool hasImageryTile(uint32_t layer, const geo::TileId& tile) const;
+  bool evictImageryTile(uint32_t layer, const geo::TileId& tile);  // false: was not resident
+  void evictAllImageryTiles();
+  uint64_t imageryBytesResident() const;  // imagery tile textures incl. mip chains (4/3)
+  uint32_t imageryTilesResident() const;
+
   void setStyle(const TerrainStyle& style);
   const TerrainStyle& style() const;
 
   // Clears colour and depth and draws the listed tiles (missing ones are counted and skipped)
   // into the current framebuffer's (0, 0, width, height) viewport.
   FrameStats draw(const RenderView& view, std::span<const geo::TileId> tiles);
+  // The same with drapes[i] over tiles[i] (drapes.size() == tiles.size(); empty: exactly the
+  // draw above; tiles past the end of a shorter span get none). A drape layer whose texture is
+  // not uploaded is skipped and counted (FrameStats::drapesMissing).
+  FrameStats draw(const RenderView& view, std::span<const geo::TileId> tiles,
+                  std::span<const TileDrapes> drapes);
 
-  uint64_t gpuBytesResident() const;
+  uint64_t gpuBytesResident() const;  // meshes, index buffer, global image and imagery tiles
   uint32_t tilesResident() const;
   uint32_t indicesPerTile() const;  // triangles per tile = indicesPerTile() / 3
 

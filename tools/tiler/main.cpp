@@ -6,6 +6,7 @@
 
 #include "geo/ellipsoid.hpp"
 #include "tools/tiler/export_block.hpp"
+#include "tools/tiler/imagery_command.hpp"
 #include "tools/tiler/progress.hpp"
 #include "tools/tiler/tiler.hpp"
 
@@ -35,10 +36,15 @@ int runExport(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "export") return runExport(argc, argv);
+  if (argc > 1 && std::string(argv[1]) == "imagery") {
+    return globe::tiler::runImageryCommand(argc - 1, argv + 1);
+  }
 
   CLI::App app{
       "Builds a tile pyramid (lat/long quadtree of N×N GTOPO30-encoded blocks) from GTOPO30 "
-      ".DEM/.HDR files or any raster GDAL opens.\nAlso: globe-tiler export PYRAMID L X Y OUT_STEM",
+      ".DEM/.HDR files or any raster GDAL opens.\nAlso: globe-tiler export PYRAMID L X Y "
+      "OUT_STEM\n      "
+      "globe-tiler imagery -o LAYER_DIR INPUT... (imagery layers; see globe-tiler imagery --help)",
       "globe-tiler"};
   globe::tiler::TilerOptions options;
   std::string output, globeName = "wgs84";

@@ -1,0 +1,242 @@
+#include "app/imagery_layers.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <tuple>
+
+#include "geo/ecef.hpp"
+#include "geo/tiling_scheme.hpp"
+#include "terrain/imagery_level.hpp"
+
+namespace globe::app {
+
+struct ImageryLayers::Layer {
+  LayerOptions options;
+  std::unique_ptr<io::ImageryStore> store;
+  std::unique_ptr<io::ImagerySource> source;
+  io::ImageryCache cache;
+  std::unique_ptr<io::ImageryLoader> loader;
+  std::unordered_map<geo::TileId, uint64_t> textureLastUsedFrame;  // textures on the GPU
+  std::unordered_map<geo::TileId, bool> present;  // the layer's index, asked once per tile
+
+  Layer(LayerOptions layerOptions, std::unique_ptr<io::ImageryStore> layerStore,
+        io::TaskRunner& runner, size_t decodedBytes)
+      : options(std::move(layerOptions)),
+        store(std::move(layerStore)),
+        source(std::make_unique<io::ImagerySource>(*store)),
+        cache(decodedBytes),
+        loader(std::make_unique<io::ImageryLoader>(*source, runner, cache)) {}
+  ~Layer() { loader.reset(); }  // waits for its running loads before the store goes
+
+  // Whether the layer has the tile; an unreadable pack counts as "no" (reported once, by the
+  // store) so the view draws a coarser tile instead.
+  bool has(const geo::TileId& tile) {
+    if (auto it = present.find(tile); it != present.end()) return it->second;
+    auto answer = store->hasTile(tile);
+    const bool has = answer && *answer;
+    present.emplace(tile, has);
+    return has;
+  }
+};
+
+Result<LayerOptions> parseLayerArgument(const std::string& text) {
+  LayerOptions layer;
+  const size_t comma = text.rfind(',');
+  std::string directory = text;
+  if (comma != std::string::npos) {
+    const std::string opacity = text.substr(comma + 1);
+    char* end = nullptr;
+    const double value = std::strtod(opacity.c_str(), &end);
+    if (opacity.empty() || end != opacity.c_str() + opacity.size() || !std::isfinite(value) ||
+        value < 0 || value > 1) {
+      return makeError("--layer " + text + ": the opacity after the comma must be 0..1, not '" +
+                       opacity + "'");
+    }
+    layer.opacity = static_cast<float>(value);
+    directory = text.substr(0, comma);
+  }
+  if (directory.empty()) return makeError("--layer " + text + ": no layer directory");
+  layer.directory = directory;
+  return layer;
+}
+
+ImageryLayers::ImageryLayers(std::vector<std::unique_ptr<Layer>> layers,
+                             const ImageryBudget& budget)
+    : layers_(std::move(layers)), budget_(budget) {}
+
+ImageryLayers::~ImageryLayers() = default;
+
+Result<std::unique_ptr<ImageryLayers>> ImageryLayers::open(std::span<const LayerOptions> layers,
+                                                           io::TaskRunner& runner,
+                                                           const ImageryBudget& budget) {
+  if (layers.size() > render::kMaxDrapeLayers) {
+    return makeError("at most " + std::to_string(render::kMaxDrapeLayers) + " layers, not " +
+                     std::to_string(layers.size()));
+  }
+  std::vector<std::unique_ptr<Layer>> opened;
+  for (const LayerOptions& options : layers) {
+    auto store = io::ImageryStore::open(options.directory);
+    if (!store) return Error{store.error()};
+    opened.push_back(
+        std::make_unique<Layer>(options, std::move(*store), runner, budget.decodedBytes));
+  }
+  return std::unique_ptr<ImageryLayers>(new ImageryLayers(std::move(opened), budget));
+}
+
+Result<void> ImageryLayers::preload(Layer& layer, uint32_t index,
+                                    render::TerrainRenderer& renderer) {
+  for (uint32_t x = 0; x < geo::GeographicTilingScheme::tilesX(0); ++x) {
+    const geo::TileId root{0, x, 0};
+    auto image = layer.source->load(root);
+    if (!image) return Error{image.error()};
+    if (!*image) continue;  // the layer covers nothing of this half
+    layer.present[root] = true;
+    if (auto uploaded = renderer.uploadImageryTile(index, root, (*image)->pixels,
+                                                   (*image)->widthPixels, (*image)->heightPixels);
+        !uploaded) {
+      return uploaded;
+    }
+    layer.textureLastUsedFrame[root] = frame_;
+  }
+  return {};
+}
+
+Result<ImageryFrame> ImageryLayers::update(
+    std::span<const geo::TileId> tiles, uint32_t verticesPerSide,
+    double maximumScreenSpaceErrorPixels, uint32_t maximumLoadLevel,
+    const glm::dvec3& cameraEcefMeters, const geo::Ellipsoid& ellipsoid,
+    render::TerrainRenderer& renderer, std::vector<render::TileDrapes>& drapes) {
+  ++frame_;
+  ImageryFrame frame;
+  drapes.assign(tiles.size(), render::TileDrapes{});
+  if (!preloaded_) {
+    for (uint32_t index = 0; index < layers_.size(); ++index) {
+      if (auto done = preload(*layers_[index], index, renderer); !done) {
+        return Error{done.error()};
+      }
+    }
+    preloaded_ = true;
+  }
+  // Priority: nearer terrain tiles first (the distance to the rectangle's centre on the
+  // ellipsoid is plenty to order loads).
+  std::vector<double> priority(tiles.size());
+  for (size_t i = 0; i < tiles.size(); ++i) {
+    const auto rect = geo::GeographicTilingScheme::tileRectangle(tiles[i]);
+    const glm::dvec3 center =
+        geo::cartographicToEcef(ellipsoid, {rect.westRadians + rect.widthRadians() / 2,
+                                            rect.southRadians + rect.heightRadians() / 2, 0.0});
+    priority[i] = -glm::length(center - cameraEcefMeters);
+  }
+
+  for (uint32_t index = 0; index < layers_.size(); ++index) {
+    Layer& layer = *layers_[index];
+    layer.cache.beginFrame();
+    const io::PollResult polled = layer.loader->poll();
+    frame.arrived += polled.arrived.size();
+    for (const io::LoadError& error : polled.errors) {
+      std::fprintf(stderr, "globe: imagery %s; drawing a coarser tile there\n",
+                   error.message.c_str());
+    }
+    for (const std::string& error : layer.source->takeNewSourceErrors()) {
+      std::fprintf(stderr, "globe: imagery %s; drawing coarser tiles there\n", error.c_str());
+    }
+    const uint32_t tileSize = layer.store->manifest().tileSizePixels;
+    const uint32_t maxLevel = layer.store->manifest().maxLevel();
+    std::vector<io::LoadRequest> wanted;
+    std::vector<geo::TileId> wantedTiles;
+    for (size_t i = 0; i < tiles.size(); ++i) {
+      const geo::TileId& tile = tiles[i];
+      const uint32_t level = terrain::imageryLevelFor(tile.level, verticesPerSide, tileSize,
+                                                      maximumScreenSpaceErrorPixels, maxLevel);
+      // The tile this terrain tile wants: the deepest the layer has at or above that level.
+      geo::TileId want = terrain::ancestorAt(tile, level);
+      while (!layer.has(want) && want.level > 0) want = want.parent();
+      if (!layer.has(want)) continue;  // the layer does not cover this tile
+      const geo::TileId target = terrain::ancestorAt(want, std::min(want.level, maximumLoadLevel));
+      wantedTiles.push_back(target);
+      // Drawn with the nearest ancestor (or itself) that has a texture or a decoded image.
+      geo::TileId drawn = want;
+      bool found = false;
+      for (;;) {
+        if (renderer.hasImageryTile(index, drawn)) {
+          found = true;
+        } else if (auto image = layer.cache.get(drawn)) {
+          if (auto uploaded = renderer.uploadImageryTile(index, drawn, image->pixels,
+                                                         image->widthPixels, image->heightPixels);
+              !uploaded) {
+            return Error{uploaded.error()};
+          }
+          ++frame.uploaded;
+          found = true;
+        }
+        if (found || drawn.level == 0) break;
+        drawn = drawn.parent();
+      }
+      // A tile whose load failed (reported once) stays drawn through its ancestor.
+      const io::TileState state = layer.loader->state(target);
+      if (drawn.level < target.level && state != io::TileState::Failed &&
+          state != io::TileState::Absent) {
+        frame.complete = false;
+        wanted.push_back({target, priority[i]});
+      }
+      if (!found) continue;
+      if (drawn != want) ++frame.fallbacks;
+      layer.textureLastUsedFrame[drawn] = frame_;
+      render::TileDrapes& tileDrapes = drapes[i];
+      tileDrapes.layers[tileDrapes.count++] = render::TileDrape{
+          index, drawn, terrain::uvTransformInAncestor(tile, drawn), layer.options.opacity};
+      ++frame.drapes;
+    }
+    layer.cache.touch(wantedTiles);
+    layer.loader->request(wanted);
+    frame.requests += wanted.size();
+    if (layer.loader->counters().inFlight > 0) frame.complete = false;
+  }
+  evictTextures(renderer);
+  return frame;
+}
+
+void ImageryLayers::evictTextures(render::TerrainRenderer& renderer) {
+  if (renderer.imageryBytesResident() <= budget_.textureBytes) return;
+  // Least recently drawn first; never this frame's, never a level-0 root (the last fallback).
+  std::vector<std::tuple<uint64_t, uint32_t, geo::TileId>> byAge;
+  for (uint32_t index = 0; index < layers_.size(); ++index) {
+    for (const auto& [tile, last] : layers_[index]->textureLastUsedFrame) {
+      if (last < frame_ && tile.level > 0) byAge.emplace_back(last, index, tile);
+    }
+  }
+  std::sort(byAge.begin(), byAge.end());
+  for (const auto& [last, index, tile] : byAge) {
+    if (renderer.imageryBytesResident() <= budget_.textureBytes) break;
+    renderer.evictImageryTile(index, tile);
+    layers_[index]->textureLastUsedFrame.erase(tile);
+  }
+}
+
+io::LoaderCounters ImageryLayers::counters() const {
+  io::LoaderCounters sum;
+  for (const auto& layer : layers_) {
+    const io::LoaderCounters c = layer->loader->counters();
+    sum.requested += c.requested;
+    sum.started += c.started;
+    sum.completed += c.completed;
+    sum.absent += c.absent;
+    sum.failed += c.failed;
+    sum.cancelled += c.cancelled;
+    sum.pending += c.pending;
+    sum.inFlight += c.inFlight;
+  }
+  return sum;
+}
+
+void ImageryLayers::waitForLoads(std::chrono::milliseconds timeout) const {
+  for (const auto& layer : layers_) {
+    if (layer->loader->counters().inFlight > 0) {
+      layer->loader->waitForCompletion(timeout);
+      return;
+    }
+  }
+}
+
+}  // namespace globe::app

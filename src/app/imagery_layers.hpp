@@ -1,0 +1,90 @@
+// The viewer's imagery layers: per drawn terrain tile and layer, the imagery tile whose texel
+// fits the tile (terrain/imagery_level.hpp), streamed through the same loader, cache and
+// priorities as the height blocks, uploaded as textures, and drawn through its nearest loaded
+// ancestor (scale/bias) until it arrives, so a tile is never drawn untextured.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "geo/ellipsoid.hpp"
+#include "geo/result.hpp"
+#include "geo/tile_id.hpp"
+#include "io/imagery_source.hpp"
+#include "io/task_runner.hpp"
+#include "render/terrain_renderer.hpp"
+#include "render/tile_drape.hpp"
+
+namespace globe::app {
+
+struct LayerOptions {
+  std::filesystem::path directory;  // made by `globe-tiler imagery`
+  float opacity = 1.0f;             // 0..1
+};
+
+// Parses --layer's "DIR" or "DIR,OPACITY" (opacity 0..1); errors name the argument.
+Result<LayerOptions> parseLayerArgument(const std::string& text);
+
+struct ImageryBudget {
+  size_t decodedBytes = 64u << 20;   // decoded tiles waiting for (or kept after) upload, per layer
+  size_t textureBytes = 256u << 20;  // textures on the GPU, mip chains included, all layers
+};
+
+struct ImageryFrame {
+  size_t requests = 0;   // imagery tiles wanted and not yet loaded
+  size_t arrived = 0;    // decoded tiles that arrived this frame
+  size_t uploaded = 0;   // textures uploaded this frame
+  size_t fallbacks = 0;  // drapes drawn with an ancestor's texture while their own loads
+  size_t drapes = 0;     // (terrain tile, layer) pairs drawn with a texture
+  bool complete = true;  // every drape uses its own imagery tile and nothing is loading
+};
+
+class ImageryLayers {
+ public:
+  // Opens every layer (errors name the directory); bottom layer first.
+  static Result<std::unique_ptr<ImageryLayers>> open(std::span<const LayerOptions> layers,
+                                                     io::TaskRunner& runner,
+                                                     const ImageryBudget& budget);
+  ~ImageryLayers();
+  ImageryLayers(const ImageryLayers&) = delete;
+  ImageryLayers& operator=(const ImageryLayers&) = delete;
+
+  bool empty() const { return layers_.empty(); }
+  size_t size() const { return layers_.size(); }
+
+  // One frame: drapes[i] for tiles[i]. Loads are prioritised by the terrain tile's distance to
+  // the camera. Each layer's level-0 tiles are loaded and uploaded once, before anything else,
+  // so every covered tile has a texture to fall back on.
+  // Imagery tiles deeper than maximumLoadLevel are never loaded: their ancestor at that level is
+  // drawn instead (as a view mid-refinement would), and the frame counts as complete.
+  Result<ImageryFrame> update(std::span<const geo::TileId> tiles, uint32_t verticesPerSide,
+                              double maximumScreenSpaceErrorPixels, uint32_t maximumLoadLevel,
+                              const glm::dvec3& cameraEcefMeters, const geo::Ellipsoid& ellipsoid,
+                              render::TerrainRenderer& renderer,
+                              std::vector<render::TileDrapes>& drapes);
+
+  // Loader counters summed over the layers.
+  io::LoaderCounters counters() const;
+  // Blocks until some layer's load completes or the timeout passes.
+  void waitForLoads(std::chrono::milliseconds timeout) const;
+
+ private:
+  struct Layer;
+  ImageryLayers(std::vector<std::unique_ptr<Layer>> layers, const ImageryBudget& budget);
+  Result<void> preload(Layer& layer, uint32_t index, render::TerrainRenderer& renderer);
+  void evictTextures(render::TerrainRenderer& renderer);
+
+  std::vector<std::unique_ptr<Layer>> layers_;
+  ImageryBudget budget_;
+  uint64_t frame_ = 0;
+  bool preloaded_ = false;
+};
+
+}  // namespace globe::app

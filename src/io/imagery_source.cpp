@@ -1,0 +1,28 @@
+#include "io/imagery_source.hpp"
+
+namespace globe::io {
+
+template class TileCache<ImageRgba>;
+template class PayloadLoader<ImageRgba>;
+
+Result<std::optional<ImageRgba>> ImagerySource::load(const geo::TileId& tile) {
+  auto encoded = store_.loadEncoded(tile);
+  if (!encoded) return Error{encoded.error()};
+  if (!*encoded) return std::optional<ImageRgba>{};
+  auto image = decodeImageRgba(**encoded, location(tile));
+  if (!image) return Error{image.error()};
+  const auto size = static_cast<int>(store_.manifest().tileSizePixels);
+  if (image->widthPixels != size || image->heightPixels != size) {
+    return makeError(location(tile) + ": " + tileName(tile) + " is " +
+                     std::to_string(image->widthPixels) + "x" +
+                     std::to_string(image->heightPixels) + " pixels, the layer's tiles are " +
+                     std::to_string(size) + "x" + std::to_string(size));
+  }
+  return std::optional<ImageRgba>{std::move(*image)};
+}
+
+std::string ImagerySource::location(const geo::TileId& tile) const {
+  return store_.packFileOf(tile).string();
+}
+
+}  // namespace globe::io

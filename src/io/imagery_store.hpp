@@ -1,0 +1,77 @@
+// Read access to an imagery layer on disk: each pack's index is read once, then every tile is one
+// read with its CRC checked. Same spirit as TileStore.
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "geo/result.hpp"
+#include "geo/tile_id.hpp"
+#include "io/image_pack.hpp"
+#include "io/layer_manifest.hpp"
+
+namespace globe::io {
+
+class ImageryStore {
+ public:
+  static Result<std::unique_ptr<ImageryStore>> open(const std::filesystem::path& layerDir);
+  ~ImageryStore() = default;
+  ImageryStore(const ImageryStore&) = delete;
+  ImageryStore& operator=(const ImageryStore&) = delete;
+
+  const LayerManifest& manifest() const { return manifest_; }
+  const std::filesystem::path& directory() const { return dir_; }
+
+  // Whether the layer has this tile (reads the pack's index on first use). Thread-safe.
+  Result<bool> hasTile(const geo::TileId& tile);
+  // The tile's encoded bytes (JPEG or PNG) with one read, CRC checked; nullopt when the layer
+  // has no such tile. Thread-safe.
+  Result<std::optional<std::vector<std::byte>>> loadEncoded(const geo::TileId& tile);
+  // Where a tile lives (its pack file path), for error messages.
+  std::filesystem::path packFileOf(const geo::TileId& tile) const;
+
+  // The first error of each pack found missing or damaged since the last call, each pack once.
+  std::vector<std::string> takeNewPackErrors();
+  // Lets failed packs be opened (again, from their current file) and reported again.
+  void forgetFailedPacks();
+
+  uint64_t tileReads() const { return tileReads_.load(); }
+  uint64_t packIndexReads() const { return packIndexReads_.load(); }
+
+ private:
+  // Owns its descriptor, so a pack evicted from the cache stays readable while a reader uses it.
+  struct OpenPack {
+    int fd = -1;
+    ImagePackIndex index;
+    OpenPack(int descriptor, ImagePackIndex packIndex)
+        : fd(descriptor), index(std::move(packIndex)) {}
+    OpenPack(const OpenPack&) = delete;
+    OpenPack& operator=(const OpenPack&) = delete;
+    ~OpenPack();
+  };
+  ImageryStore(std::filesystem::path dir, LayerManifest manifest);
+  // nullptr when the layer has no such pack.
+  Result<std::shared_ptr<const OpenPack>> pack(const PackId& id);
+  Result<std::shared_ptr<const OpenPack>> openPack(const PackId& id);  // with mutex_ held
+  void notePackError(const PackId& id, const std::string& message);    // with mutex_ held
+
+  std::filesystem::path dir_;
+  LayerManifest manifest_;
+  std::mutex mutex_;
+  std::map<PackId, std::shared_ptr<const OpenPack>> openPacks_;
+  std::map<PackId, std::string> failedPacks_;
+  std::set<PackId> reportedPacks_;
+  std::vector<std::string> newPackErrors_;
+  std::atomic<uint64_t> tileReads_{0};
+  std::atomic<uint64_t> packIndexReads_{0};
+};
+
+}  // namespace globe::io

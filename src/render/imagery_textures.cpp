@@ -1,0 +1,153 @@
+// Imagery tile textures: premultiplied upload, mip chain, anisotropy, byte accounting.
+#include "render/imagery_textures.hpp"
+
+#include <algorithm>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace globe::render {
+namespace {
+
+// GL_EXT/ARB_texture_filter_anisotropic (core in 4.6); glad is generated for core 3.3 without
+// extensions, so the enums are spelled out here.
+constexpr GLenum kTextureMaxAnisotropy = 0x84FE;
+constexpr GLenum kMaxTextureMaxAnisotropy = 0x84FF;
+
+bool hasExtension(std::string_view name) {
+  GLint count = 0;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+  for (GLint k = 0; k < count; ++k) {
+    const auto* extension = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(k)));
+    if (extension != nullptr && name == extension) return true;
+  }
+  return false;
+}
+
+std::string tileName(uint32_t layer, const geo::TileId& tile) {
+  return "layer " + std::to_string(layer) + " tile " + std::to_string(tile.level) + "/" +
+         std::to_string(tile.x) + "/" + std::to_string(tile.y);
+}
+
+}  // namespace
+
+ImageryTextures::ImageryTextures(float maxAnisotropy) {
+  if (maxAnisotropy > 1.0f && (hasExtension("GL_EXT_texture_filter_anisotropic") ||
+                               hasExtension("GL_ARB_texture_filter_anisotropic"))) {
+    GLfloat maximum = 1.0f;
+    glGetFloatv(kMaxTextureMaxAnisotropy, &maximum);
+    maxAnisotropy_ = std::clamp(maximum, 1.0f, maxAnisotropy);
+  }
+}
+
+Result<void> ImageryTextures::upload(uint32_t layer, const geo::TileId& tile,
+                                     std::span<const uint8_t> rgba, int widthPixels,
+                                     int heightPixels) {
+  GLint maxSize = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+  if (widthPixels < 1 || heightPixels < 1 || widthPixels > maxSize || heightPixels > maxSize) {
+    return makeError("terrain renderer: imagery " + tileName(layer, tile) + ": size " +
+                     std::to_string(widthPixels) + "x" + std::to_string(heightPixels) +
+                     " out of range (GL_MAX_TEXTURE_SIZE " + std::to_string(maxSize) + ")");
+  }
+  const uint64_t baseBytes = uint64_t(widthPixels) * uint64_t(heightPixels) * 4;
+  if (rgba.size() != baseBytes) {
+    return makeError("terrain renderer: imagery " + tileName(layer, tile) + ": " +
+                     std::to_string(rgba.size()) + " bytes, a " + std::to_string(widthPixels) +
+                     "x" + std::to_string(heightPixels) + " RGBA image has " +
+                     std::to_string(baseBytes));
+  }
+  // Premultiplied alpha; opaque tiles (JPEG imagery) go up as they are.
+  std::vector<uint8_t> premultiplied;
+  const uint8_t* pixels = rgba.data();
+  bool opaque = true;
+  for (size_t k = 3; k < rgba.size(); k += 4) {
+    if (rgba[k] == 255) continue;
+    opaque = false;
+    premultiplied.assign(rgba.begin(), rgba.end());
+    for (size_t p = 0; p < premultiplied.size(); p += 4) {
+      const unsigned alpha = premultiplied[p + 3];
+      for (size_t c = 0; c < 3; ++c) {
+        premultiplied[p + c] = static_cast<uint8_t>((premultiplied[p + c] * alpha + 127) / 255);
+      }
+    }
+    pixels = premultiplied.data();
+    break;
+  }
+
+  const ImageryTextureKey key{layer, tile};
+  auto found = textures_.find(key);
+  if (found != textures_.end() &&
+      (found->second.widthPixels != widthPixels || found->second.heightPixels != heightPixels)) {
+    evict(layer, tile);
+    found = textures_.end();
+  }
+  const bool replacing = found != textures_.end();
+  Texture texture;
+  if (!replacing) texture.name = makeGlTexture();
+  const GLuint name = replacing ? found->second.name.get() : texture.name.get();
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, name);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  if (replacing) {
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, widthPixels, heightPixels, GL_RGBA, GL_UNSIGNED_BYTE,
+                    pixels);
+  } else {
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, widthPixels, heightPixels, 0, GL_RGBA,
+                 GL_UNSIGNED_BYTE, pixels);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    // Clamped: a tile's edge texels are exactly at its edge (pixel-is-area), so neighbouring
+    // tiles meet without sampling each other or wrapping to the far side.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    if (maxAnisotropy_ > 1.0f)
+      glTexParameterf(GL_TEXTURE_2D, kTextureMaxAnisotropy, maxAnisotropy_);
+  }
+  glGenerateMipmap(GL_TEXTURE_2D);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
+    if (replacing) evict(layer, tile);
+    return makeError("terrain renderer: GL error " + std::to_string(error) + " uploading imagery " +
+                     tileName(layer, tile));
+  }
+  if (replacing) found->second.opaque = opaque;
+  if (!replacing) {
+    texture.opaque = opaque;
+    texture.widthPixels = widthPixels;
+    texture.heightPixels = heightPixels;
+    texture.bytes = mipmappedTextureBytes(widthPixels, heightPixels);
+    bytes_ += texture.bytes;
+    textures_.emplace(key, std::move(texture));
+  }
+  return {};
+}
+
+bool ImageryTextures::contains(uint32_t layer, const geo::TileId& tile) const {
+  return textures_.contains({layer, tile});
+}
+
+bool ImageryTextures::isOpaque(uint32_t layer, const geo::TileId& tile) const {
+  const auto found = textures_.find({layer, tile});
+  return found != textures_.end() && found->second.opaque;
+}
+
+GLuint ImageryTextures::find(uint32_t layer, const geo::TileId& tile) const {
+  const auto found = textures_.find({layer, tile});
+  return found == textures_.end() ? 0u : found->second.name.get();
+}
+
+bool ImageryTextures::evict(uint32_t layer, const geo::TileId& tile) {
+  const auto found = textures_.find({layer, tile});
+  if (found == textures_.end()) return false;
+  bytes_ -= found->second.bytes;
+  textures_.erase(found);
+  return true;
+}
+
+void ImageryTextures::clear() {
+  textures_.clear();
+  bytes_ = 0;
+}
+
+}  // namespace globe::render

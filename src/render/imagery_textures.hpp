@@ -1,0 +1,69 @@
+// GPU textures of imagery tiles keyed by (layer, tile): upload with premultiplied alpha and a mip
+// chain, look-up for drawing, eviction and the byte count (mip chain included).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <unordered_map>
+
+#include "geo/result.hpp"
+#include "geo/tile_id.hpp"
+#include "render/gl_object.hpp"
+
+namespace globe::render {
+
+struct ImageryTextureKey {
+  uint32_t layer = 0;
+  geo::TileId tile{};
+  bool operator==(const ImageryTextureKey&) const = default;
+};
+
+struct ImageryTextureKeyHash {
+  size_t operator()(const ImageryTextureKey& key) const noexcept {
+    return std::hash<geo::TileId>{}(key.tile) ^ (size_t{key.layer} * 0x9e3779b97f4a7c15ULL);
+  }
+};
+
+// Needs the GL context current on the calling thread for its whole life (like TerrainRenderer).
+class ImageryTextures {
+ public:
+  // Filters anisotropically up to maxAnisotropy samples where GL_EXT/ARB_texture_filter_anisotropic
+  // is available (1: never); the context must be current.
+  explicit ImageryTextures(float maxAnisotropy = 1.0f);
+
+  // Uploads (or replaces) one tile: RGBA8 with straight alpha, rows top-down (row 0 = v 0). Stored
+  // premultiplied so that bilinear filtering and the mip chain do not bleed the colour of
+  // transparent texels; mipmapped, trilinear (+ anisotropic where available), clamped to edge.
+  Result<void> upload(uint32_t layer, const geo::TileId& tile, std::span<const uint8_t> rgba,
+                      int widthPixels, int heightPixels);
+  bool contains(uint32_t layer, const geo::TileId& tile) const;
+  // The texture name, 0 when not resident.
+  GLuint find(uint32_t layer, const geo::TileId& tile) const;
+  // Whether a resident tile has no texel with alpha < 255 (layers under it cannot show).
+  bool isOpaque(uint32_t layer, const geo::TileId& tile) const;
+  bool evict(uint32_t layer, const geo::TileId& tile);
+  void clear();
+
+  uint64_t bytesResident() const { return bytes_; }
+  uint32_t tilesResident() const { return static_cast<uint32_t>(textures_.size()); }
+  float maxAnisotropy() const { return maxAnisotropy_; }  // 1: not available
+
+ private:
+  struct Texture {
+    GlObject name;
+    int widthPixels = 0;
+    int heightPixels = 0;
+    uint64_t bytes = 0;
+    bool opaque = true;
+  };
+  std::unordered_map<ImageryTextureKey, Texture, ImageryTextureKeyHash> textures_;
+  uint64_t bytes_ = 0;
+  float maxAnisotropy_ = 1.0f;
+};
+
+// RGBA8 texture bytes with the full mip chain: 4/3 of the base level.
+constexpr uint64_t mipmappedTextureBytes(int widthPixels, int heightPixels) {
+  return uint64_t(widthPixels) * uint64_t(heightPixels) * 4 * 4 / 3;
+}
+
+}  // namespace globe::render

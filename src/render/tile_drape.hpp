@@ -1,0 +1,33 @@
+// Which imagery textures a terrain tile is drawn with: up to kMaxDrapeLayers layers, bottom first,
+// each an uploaded imagery tile (TerrainRenderer::uploadImageryTile) and a uv transform into it.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include <glm/vec4.hpp>
+
+#include "geo/tile_id.hpp"
+
+namespace globe::render {
+
+inline constexpr uint32_t kMaxDrapeLayers = 4;
+
+struct TileDrape {
+  uint32_t layer = 0;         // which layer (texture namespace), any small number
+  geo::TileId imageryTile{};  // an uploaded imagery texture of that layer
+  // imagery uv = xy + tile uv · zw; tile uv (0,0) is the terrain tile's north-west corner,
+  // imagery uv (0,0) the imagery tile's (row 0 = v 0). A descendant terrain tile drawn with an
+  // ancestor's imagery gets its sub-rectangle (e.g. the NE child of the imagery tile: 0.5, 0, 0.5,
+  // 0.5).
+  glm::vec4 uvTransform{0.0f, 0.0f, 1.0f, 1.0f};
+  float opacity = 1.0f;  // multiplies the texel alpha
+};
+
+// Per drawn terrain tile, bottom layer first; layers[count..] are ignored.
+struct TileDrapes {
+  std::array<TileDrape, kMaxDrapeLayers> layers{};
+  uint32_t count = 0;
+};
+
+}  // namespace globe::render

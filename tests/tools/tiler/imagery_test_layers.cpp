@@ -1,0 +1,53 @@
+#include "tests/tools/tiler/imagery_test_layers.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <map>
+
+#include "tests/tools/tiler/tiler_test_fixture.hpp"
+#include "tools/tiler/tiler.hpp"
+
+namespace globe::tiler::testing {
+
+std::filesystem::path bundledData(const std::string& relativePath) {
+  return std::filesystem::path(GLOBE_SOURCE_DIR) / relativePath;
+}
+
+const std::filesystem::path& imageryLayer(const std::string& name, const std::string& arguments) {
+  static std::map<std::string, std::filesystem::path> layers;
+  if (auto it = layers.find(name); it != layers.end()) return it->second;
+  const auto dir = freshTempDir("layer-" + name) / "layer";
+  const std::string command = std::string(GLOBE_TILER_EXE) + " imagery -q -o " + dir.string() +
+                              " " + arguments + " > /dev/null";
+  if (std::system(command.c_str()) != 0) ADD_FAILURE() << "failed: " << command;
+  return layers.emplace(name, dir).first->second;
+}
+
+const std::filesystem::path& blueMarbleLayer() {
+  return imageryLayer(
+      "blue-marble",
+      "--bounds -180,-90,180,90 " +
+          bundledData("data/imagery/world.topo.bathy.200412.3x5400x2700.jpg").string());
+}
+
+const std::filesystem::path& zionLayer() {
+  return imageryLayer("zion", bundledData("data/imagery/zion-landsat8-rgb.tif").string());
+}
+
+const std::filesystem::path& zionPyramid() {
+  static const std::filesystem::path dir = [] {
+    auto out = freshTempDir("zion-pyramid") / "pyramid";
+    TilerOptions options;
+    options.inputs = {bundledData("data/dem/ETOPO20.DEM").string(),
+                      bundledData("data/dem/zion-srtm3.tif").string()};
+    options.outputDir = out;
+    options.progress = false;
+    auto report = runTiler(options);
+    if (!report) ADD_FAILURE() << report.error();
+    return out;
+  }();
+  return dir;
+}
+
+}  // namespace globe::tiler::testing

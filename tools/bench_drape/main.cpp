@@ -1,0 +1,155 @@
+// globe-bench-drape: the frame time of steady views with imagery layers against the same views
+// without, in one process and one GL context (OSMesa), rounds interleaved so that both sides see
+// the same machine load. A table printer, not a timed test.
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/camera_argument.hpp"
+#include "app/terrain_scene.hpp"
+#include "io/atomic_file.hpp"
+#include "render/osmesa_context.hpp"
+#include "render/read_pixels.hpp"
+
+namespace {
+
+using namespace globe;
+using Clock = std::chrono::steady_clock;
+
+struct Side {
+  std::unique_ptr<render::TerrainRenderer> renderer;
+  std::unique_ptr<app::TerrainScene> scene;
+  std::vector<double> frameMs;
+  uint64_t triangles = 0, imageryBytes = 0;
+  size_t drapes = 0;
+};
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0;
+  std::nth_element(values.begin(), values.begin() + static_cast<long>(values.size() / 2),
+                   values.end());
+  return values[values.size() / 2];
+}
+
+Result<Side> openSide(const std::string& pyramid, const std::vector<app::LayerOptions>& layers,
+                      const camera::CameraPose& pose, int width, int height) {
+  Side side;
+  auto renderer = render::TerrainRenderer::create({});
+  if (!renderer) return Error{renderer.error()};
+  side.renderer = std::move(*renderer);
+  app::SceneOptions options;
+  options.hysteresis = false;
+  options.layers = layers;
+  auto scene = app::TerrainScene::open(pyramid, options);
+  if (!scene) return Error{scene.error()};
+  side.scene = std::move(*scene);
+  auto frame = side.scene->updateUntilComplete(pose, width, height, *side.renderer,
+                                               std::chrono::seconds(300));
+  if (!frame) return Error{frame.error()};
+  side.drapes = frame->imagery.drapes;
+  return side;
+}
+
+// One steady frame as the viewer runs it: update (selection, polls), draw, glFinish.
+double timeFrame(Side& side, const camera::CameraPose& pose, int width, int height) {
+  const auto start = Clock::now();
+  side.scene->update(pose, width, height, *side.renderer);
+  const render::FrameStats stats = side.scene->draw(*side.renderer);
+  render::finishGl();
+  side.triangles = stats.triangles;
+  side.imageryBytes = stats.imageryBytesResident;
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App cli{"Frame time of steady views with imagery layers against without (OSMesa)",
+               "globe-bench-drape"};
+  std::string pyramid, out, sizeText = "1280x720";
+  std::vector<std::string> layerTexts, views;
+  int rounds = 7, framesPerRound = 5;
+  cli.add_option("--pyramid", pyramid, "terrain pyramid")->required();
+  cli.add_option("--layer", layerTexts, "imagery layer DIR[,OPACITY], bottom first")->required();
+  cli.add_option("--view", views, "NAME=LON,LAT,HEIGHT,HEADING,PITCH,ROLL (repeatable)")
+      ->required();
+  cli.add_option("--size", sizeText, "WxH pixels")->capture_default_str();
+  cli.add_option("--rounds", rounds, "interleaved rounds per view")->capture_default_str();
+  cli.add_option("--frames", framesPerRound, "frames per side per round")->capture_default_str();
+  cli.add_option("--out", out, "also write the table (Markdown) to this file");
+  CLI11_PARSE(cli, argc, argv);
+
+  auto size = app::parseSizeArgument(sizeText);
+  if (!size) {
+    std::fprintf(stderr, "globe-bench-drape: %s\n", size.error().c_str());
+    return 2;
+  }
+  const auto [width, height] = *size;
+  std::vector<app::LayerOptions> layers;
+  for (const std::string& text : layerTexts) {
+    auto layer = app::parseLayerArgument(text);
+    if (!layer) {
+      std::fprintf(stderr, "globe-bench-drape: %s\n", layer.error().c_str());
+      return 2;
+    }
+    layers.push_back(*layer);
+  }
+  auto context = render::OsMesaContext::create(width, height);
+  if (!context) {
+    std::fprintf(stderr, "globe-bench-drape: %s\n", context.error().c_str());
+    return 1;
+  }
+
+  std::string table =
+      "| view | frames per side | without: median ms | with imagery: median ms | ratio | "
+      "triangles | drapes | imagery textures MiB |\n|---|---|---|---|---|---|---|---|\n";
+  for (const std::string& view : views) {
+    const size_t equals = view.find('=');
+    if (equals == std::string::npos) {
+      std::fprintf(stderr, "globe-bench-drape: --view %s: expected NAME=CAMERA\n", view.c_str());
+      return 2;
+    }
+    const std::string name = view.substr(0, equals);
+    auto pose = app::parseCameraArgument(view.substr(equals + 1));
+    if (!pose) {
+      std::fprintf(stderr, "globe-bench-drape: --view %s: %s\n", view.c_str(),
+                   pose.error().c_str());
+      return 2;
+    }
+    auto without = openSide(pyramid, {}, *pose, width, height);
+    auto with = without ? openSide(pyramid, layers, *pose, width, height) : Result<Side>(Error{});
+    if (!without || !with) {
+      std::fprintf(stderr, "globe-bench-drape: %s: %s\n", name.c_str(),
+                   (!without ? without.error() : with.error()).c_str());
+      return 1;
+    }
+    for (int round = 0; round < rounds; ++round) {
+      for (int f = 0; f < framesPerRound; ++f) {
+        without->frameMs.push_back(timeFrame(*without, *pose, width, height));
+      }
+      for (int f = 0; f < framesPerRound; ++f) {
+        with->frameMs.push_back(timeFrame(*with, *pose, width, height));
+      }
+    }
+    const double a = median(without->frameMs), b = median(with->frameMs);
+    char row[512];
+    std::snprintf(row, sizeof row, "| %s | %zu | %.1f | %.1f | %.2f | %llu | %zu | %.1f |\n",
+                  name.c_str(), with->frameMs.size(), a, b, b / a,
+                  static_cast<unsigned long long>(with->triangles), with->drapes,
+                  static_cast<double>(with->imageryBytes) / (1 << 20));
+    table += row;
+    std::fputs(row, stdout);
+    std::fflush(stdout);
+  }
+  if (!out.empty()) {
+    if (auto written = io::writeFileAtomically(out, table); !written) {
+      std::fprintf(stderr, "globe-bench-drape: %s\n", written.error().c_str());
+      return 1;
+    }
+  }
+  return 0;
+}

@@ -1,0 +1,397 @@
+#include "tools/tiler/imagery_input.hpp"
+
+#include <cpl_conv.h>
+#include <gdal.h>
+#include <gdal_alg.h>
+#include <ogr_srs_api.h>
+#include <tinyxml2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "geo/tile_id.hpp"
+
+namespace globe::tiler {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kTmsFileName = "tilemapresource.xml";
+
+struct DatasetCloser {
+  void operator()(void* dataset) const { GDALClose(dataset); }
+};
+using Dataset = std::unique_ptr<void, DatasetCloser>;
+
+std::string lastGdalError() {
+  const char* message = CPLGetLastErrorMsg();
+  return message != nullptr && *message != '\0' ? message : "no driver recognises it";
+}
+
+io::BoundsDegrees clampToGlobe(io::BoundsDegrees b) {
+  return {std::max(b.west, -180.0), std::max(b.south, -90.0), std::min(b.east, 180.0),
+          std::min(b.north, 90.0)};
+}
+
+// Splits a footprint that crosses ±180° into the part on the globe and the part beyond.
+void setFootprint(ImageryInput& input, io::BoundsDegrees raw) {
+  if (raw.east - raw.west > 360) raw.east = raw.west + 360;
+  input.extent = clampToGlobe(raw);
+  if (raw.east > 180) {
+    input.wrappedExtent = clampToGlobe({raw.west - 360, raw.south, raw.east - 360, raw.north});
+    input.wrapShiftDegrees = 360;
+  } else if (raw.west < -180) {
+    input.wrappedExtent = clampToGlobe({raw.west + 360, raw.south, raw.east + 360, raw.north});
+    input.wrapShiftDegrees = -360;
+  }
+}
+
+std::string crsName(OGRSpatialReferenceH srs) {
+  if (srs == nullptr) return "EPSG:4326 (assumed)";
+  const char* authority = OSRGetAuthorityName(srs, nullptr);
+  const char* code = OSRGetAuthorityCode(srs, nullptr);
+  if (authority != nullptr && code != nullptr) return std::string(authority) + ":" + code;
+  char* wkt = nullptr;
+  OSRExportToWkt(srs, &wkt);
+  std::string text = wkt != nullptr ? wkt : "";
+  CPLFree(wkt);
+  return text.size() > 80 ? text.substr(0, 80) + "..." : text;
+}
+
+std::string wgs84Wkt() {
+  OGRSpatialReferenceH srs = OSRNewSpatialReference(nullptr);
+  OSRImportFromEPSG(srs, 4326);
+  char* wkt = nullptr;
+  OSRExportToWkt(srs, &wkt);
+  std::string text = wkt != nullptr ? wkt : "";
+  CPLFree(wkt);
+  OSRDestroySpatialReference(srs);
+  return text;
+}
+
+std::string formatDouble(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.10g", value);
+  return text;
+}
+
+// Each band's 2 % and 98 % percentiles from GDAL's exact histogram (nodata excluded).
+Result<ImageryStretch> percentileStretch(GDALRasterBandH band, const std::string& name) {
+  double range[2] = {0, 0};
+  if (GDALComputeRasterMinMax(band, FALSE, range) != CE_None) {
+    return makeError(name +
+                     ": cannot compute the band's range for --scale auto: " + lastGdalError());
+  }
+  if (range[1] <= range[0]) return ImageryStretch{range[0], range[0] + 1};
+  constexpr int kBuckets = 4096;
+  std::vector<GUIntBig> histogram(kBuckets);
+  const double step = (range[1] - range[0]) / (kBuckets - 1);
+  if (GDALGetRasterHistogramEx(band, range[0] - step / 2, range[1] + step / 2, kBuckets,
+                               histogram.data(), FALSE, FALSE, nullptr, nullptr) != CE_None) {
+    return makeError(name +
+                     ": cannot compute the band's histogram for --scale auto: " + lastGdalError());
+  }
+  GUIntBig total = 0;
+  for (GUIntBig count : histogram) total += count;
+  auto percentile = [&](double fraction) {
+    GUIntBig seen = 0;
+    for (int i = 0; i < kBuckets; ++i) {
+      seen += histogram[static_cast<size_t>(i)];
+      if (static_cast<double>(seen) >= fraction * static_cast<double>(total)) {
+        return range[0] + i * step;
+      }
+    }
+    return range[1];
+  };
+  ImageryStretch stretch{percentile(0.02), percentile(0.98)};
+  if (stretch.maximum <= stretch.minimum) stretch.maximum = stretch.minimum + 1;
+  return stretch;
+}
+
+// Chooses the colour and alpha bands from GDAL's colour interpretation.
+Result<void> chooseBands(GDALDatasetH dataset, const std::string& name,
+                         const ImageryInputOptions& options, ImageryInput& input) {
+  const int count = GDALGetRasterCount(dataset);
+  if (count < 1) return makeError(name + ": has no raster bands");
+  int red = 0, green = 0, blue = 0;
+  for (int b = 1; b <= count; ++b) {
+    switch (GDALGetRasterColorInterpretation(GDALGetRasterBand(dataset, b))) {
+      case GCI_RedBand:
+        red = red != 0 ? red : b;
+        break;
+      case GCI_GreenBand:
+        green = green != 0 ? green : b;
+        break;
+      case GCI_BlueBand:
+        blue = blue != 0 ? blue : b;
+        break;
+      case GCI_AlphaBand:
+        input.alphaBand = input.alphaBand != 0 ? input.alphaBand : b;
+        break;
+      default:
+        break;
+    }
+  }
+  GDALRasterBandH first = GDALGetRasterBand(dataset, 1);
+  std::string bands;
+  if (red != 0 && green != 0 && blue != 0) {
+    input.colourBands = {red, green, blue};
+    bands = "RGB";
+  } else if (GDALGetRasterColorInterpretation(first) == GCI_PaletteIndex &&
+             GDALGetRasterColorTable(first) != nullptr) {
+    input.colourBands = {1};
+    input.palette = true;
+    bands = "palette";
+  } else if (count - (input.alphaBand != 0 ? 1 : 0) >= 3) {
+    // GDAL's convention when bands carry no colour interpretation (NAIP: gray, undefined...).
+    input.colourBands = {1, 2, 3};
+    if (input.alphaBand != 0 && input.alphaBand <= 3) {
+      return makeError(name + ": band " + std::to_string(input.alphaBand) +
+                       " is alpha but there is no red/green/blue colour interpretation");
+    }
+    bands = "bands 1,2,3 as RGB";
+  } else {
+    input.colourBands = {1};
+    bands = "grey";
+  }
+  if (input.alphaBand != 0) {
+    bands += " + alpha (band " + std::to_string(input.alphaBand) + ")";
+  } else {
+    const int flags = GDALGetMaskFlags(GDALGetRasterBand(dataset, input.colourBands[0]));
+    if ((flags & GMF_ALL_VALID) == 0) {
+      bands += (flags & GMF_NODATA) != 0 ? ", nodata transparent" : ", mask transparent";
+    }
+  }
+  if (count > static_cast<int>(input.colourBands.size()) + (input.alphaBand != 0 ? 1 : 0)) {
+    bands += " (other bands unused, none is alpha)";
+  }
+  input.info.bands = bands;
+
+  bool deep = false;
+  for (int b : input.colourBands) {
+    deep = deep || GDALGetRasterDataType(GDALGetRasterBand(dataset, b)) != GDT_Byte;
+  }
+  if (input.palette || !deep) {
+    if (options.scale || options.scaleAuto) input.info.stretch = "none (8-bit input)";
+    return {};
+  }
+  const char* type =
+      GDALGetDataTypeName(GDALGetRasterDataType(GDALGetRasterBand(dataset, input.colourBands[0])));
+  if (options.scale) {
+    input.stretches.assign(input.colourBands.size(), *options.scale);
+    input.info.stretch = "linear " + formatDouble(options.scale->minimum) + ".." +
+                         formatDouble(options.scale->maximum) + " to 0..255";
+  } else if (options.scaleAuto) {
+    input.info.stretch = "2-98% per band:";
+    for (int b : input.colourBands) {
+      auto stretch = percentileStretch(GDALGetRasterBand(dataset, b), name);
+      if (!stretch) return Error{stretch.error()};
+      input.stretches.push_back(*stretch);
+      input.info.stretch +=
+          " " + formatDouble(stretch->minimum) + ".." + formatDouble(stretch->maximum);
+    }
+  } else {
+    return makeError(name + ": " + type +
+                     " bands need a stretch to 8 bits: give --scale MIN,MAX (linear, every band) "
+                     "or --scale auto (each band's 2-98 % percentiles)");
+  }
+  return {};
+}
+
+Result<ImageryInput> describeRaster(const std::string& argument,
+                                    const ImageryInputOptions& options) {
+  ImageryInput input;
+  input.argument = argument;
+  Dataset dataset(
+      GDALOpenEx(argument.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+  if (!dataset) {
+    std::error_code error;
+    if (!fs::exists(argument, error)) return makeError(argument + ": no such file");
+    return makeError(argument + ": not a raster GDAL can open: " + lastGdalError());
+  }
+  GDALDatasetH ds = dataset.get();
+  const int columns = GDALGetRasterXSize(ds), rows = GDALGetRasterYSize(ds);
+  input.info.path = argument;
+  input.info.driver = GDALGetDriverShortName(GDALGetDatasetDriver(ds));
+  input.info.columns = columns;
+  input.info.rows = rows;
+  if (auto bands = chooseBands(ds, argument, options, input); !bands) return Error{bands.error()};
+
+  double geo[6];
+  const bool hasGeoTransform = GDALGetGeoTransform(ds, geo) == CE_None;
+  const bool hasGcps = GDALGetGCPCount(ds) > 0;
+  const bool hasRpc = GDALGetMetadata(ds, "RPC") != nullptr;
+  OGRSpatialReferenceH srs = GDALGetSpatialRef(ds);
+  if (!hasGeoTransform && !hasGcps && !hasRpc) {
+    if (!options.bounds) {
+      return makeError(argument +
+                       ": has no georeference (no geotransform, world file, GCPs or RPCs): give "
+                       "--bounds W,S,E,N for an image in plain longitude/latitude");
+    }
+    const io::BoundsDegrees& b = *options.bounds;
+    input.assignedGeoTransform = std::array<double, 6>{
+        b.west, (b.east - b.west) / columns, 0, b.north, 0, -(b.north - b.south) / rows};
+    setFootprint(input, b);
+    input.pixelDegrees = std::min((b.east - b.west) / columns, (b.north - b.south) / rows);
+    input.info.crs = "EPSG:4326 (--bounds)";
+  } else {
+    if (srs == nullptr && !hasRpc) {
+      // A world file carries no CRS: accept it as longitude/latitude when it fits the globe.
+      const double east = geo[0] + geo[1] * columns, south = geo[3] + geo[5] * rows;
+      if (!hasGeoTransform || geo[2] != 0 || geo[4] != 0 || geo[0] < -180.001 || east > 180.001 ||
+          geo[3] > 90.001 || south < -90.001) {
+        return makeError(argument +
+                         ": has a georeference but no coordinate reference system (add a .prj or "
+                         "use gdal_translate -a_srs)");
+      }
+      input.assumedSrsWkt = wgs84Wkt();
+    }
+    input.info.crs = crsName(srs);
+    const std::string dst = "DST_SRS=" + wgs84Wkt();
+    const std::string src = "SRC_SRS=" + input.assumedSrsWkt;
+    const char* transformerOptions[] = {
+        dst.c_str(), input.assumedSrsWkt.empty() ? nullptr : src.c_str(), nullptr};
+    void* transformer =
+        GDALCreateGenImgProjTransformer2(ds, nullptr, const_cast<char**>(transformerOptions));
+    if (transformer == nullptr) {
+      return makeError(argument + ": cannot transform to longitude/latitude: " + lastGdalError());
+    }
+    double outGeo[6];
+    double extent[4];
+    int outColumns = 0, outRows = 0;
+    const CPLErr suggested = GDALSuggestedWarpOutput2(ds, GDALGenImgProjTransform, transformer,
+                                                      outGeo, &outColumns, &outRows, extent, 0);
+    GDALDestroyGenImgProjTransformer(transformer);
+    if (suggested != CE_None) {
+      return makeError(argument +
+                       ": cannot find its footprint in longitude/latitude: " + lastGdalError());
+    }
+    setFootprint(input, {extent[0], extent[1], extent[2], extent[3]});
+    input.pixelDegrees = outGeo[1];
+  }
+  if (!(input.pixelDegrees > 0) || input.extent.west >= input.extent.east ||
+      input.extent.south >= input.extent.north) {
+    return makeError(argument + ": its footprint in longitude/latitude is empty or off the globe");
+  }
+  return input;
+}
+
+Result<ImageryInput> describeTms(const std::string& argument) {
+  const fs::path xmlPath = fs::path(argument) / kTmsFileName;
+  tinyxml2::XMLDocument document;
+  if (document.LoadFile(xmlPath.c_str()) != tinyxml2::XML_SUCCESS) {
+    return makeError(xmlPath.string() + ": cannot read: " + document.ErrorStr());
+  }
+  auto fail = [&](const std::string& what) {
+    return makeError(xmlPath.string() + ": " + what +
+                     " (a geodetic TMS of 256-pixel tiles in "
+                     "EPSG:4326 is needed)");
+  };
+  const tinyxml2::XMLElement* map = document.FirstChildElement("TileMap");
+  if (map == nullptr) return fail("no <TileMap>");
+  const tinyxml2::XMLElement* srs = map->FirstChildElement("SRS");
+  const tinyxml2::XMLElement* format = map->FirstChildElement("TileFormat");
+  const tinyxml2::XMLElement* sets = map->FirstChildElement("TileSets");
+  const tinyxml2::XMLElement* origin = map->FirstChildElement("Origin");
+  const tinyxml2::XMLElement* box = map->FirstChildElement("BoundingBox");
+  if (srs == nullptr || srs->GetText() == nullptr || std::string(srs->GetText()) != "EPSG:4326") {
+    return fail("SRS is not EPSG:4326");
+  }
+  if (format == nullptr || format->IntAttribute("width") != 256 ||
+      format->IntAttribute("height") != 256 || format->Attribute("extension") == nullptr) {
+    return fail("TileFormat is not 256x256 with an extension");
+  }
+  if (sets == nullptr || sets->Attribute("profile") == nullptr ||
+      std::string(sets->Attribute("profile")) != "geodetic") {
+    return fail("TileSets profile is not geodetic");
+  }
+  if (origin == nullptr || origin->DoubleAttribute("x") != -180 ||
+      origin->DoubleAttribute("y") != -90) {
+    return fail("Origin is not (-180, -90)");
+  }
+  ImageryInput input;
+  input.kind = ImageryInput::Kind::Tms;
+  input.argument = argument;
+  input.tmsExtension = format->Attribute("extension");
+  int maxOrder = -1;
+  for (const auto* set = sets->FirstChildElement("TileSet"); set != nullptr;
+       set = set->NextSiblingElement("TileSet")) {
+    const int order = set->IntAttribute("order", -1);
+    const char* href = set->Attribute("href");
+    if (order < 0 || order > static_cast<int>(geo::kMaxLevel) || href == nullptr ||
+        std::string(href) != std::to_string(order)) {
+      return fail("a TileSet whose order/href is not a level number");
+    }
+    maxOrder = std::max(maxOrder, order);
+  }
+  if (maxOrder < 0) return fail("no TileSet");
+  input.tmsMaxLevel = static_cast<uint32_t>(maxOrder);
+  input.extent = box == nullptr
+                     ? io::BoundsDegrees{-180, -90, 180, 90}
+                     : clampToGlobe({box->DoubleAttribute("minx"), box->DoubleAttribute("miny"),
+                                     box->DoubleAttribute("maxx"), box->DoubleAttribute("maxy")});
+  input.pixelDegrees = 180.0 / 256 / std::ldexp(1.0, maxOrder);
+  input.info.path = argument;
+  input.info.driver = "TMS";
+  input.info.columns = int64_t{512} << maxOrder;
+  input.info.rows = int64_t{256} << maxOrder;
+  input.info.crs = "EPSG:4326";
+  input.info.bands = std::string("tiles as is (") + input.tmsExtension + ")";
+  return input;
+}
+
+}  // namespace
+
+bool overlapsFootprint(const ImageryInput& input, double westDegrees, double southDegrees,
+                       double eastDegrees, double northDegrees) {
+  auto overlaps = [&](const io::BoundsDegrees& e) {
+    return westDegrees < e.east && eastDegrees > e.west && southDegrees < e.north &&
+           northDegrees > e.south;
+  };
+  return overlaps(input.extent) || (input.wrappedExtent && overlaps(*input.wrappedExtent));
+}
+
+uint32_t imageryFinestLevel(double pixelDegrees) {
+  uint32_t level = 0;
+  // 1e-9 relative: a source whose pixel is exactly a level's texel (a TMS tree) lands on it.
+  while (level < geo::kMaxLevel &&
+         180.0 / 256 / std::ldexp(1.0, static_cast<int>(level)) > pixelDegrees * (1 + 1e-9)) {
+    ++level;
+  }
+  return level;
+}
+
+Result<std::vector<ImageryInput>> describeImageryInputs(const std::vector<std::string>& arguments,
+                                                        const ImageryInputOptions& options) {
+  GDALAllRegister();
+  std::vector<ImageryInput> inputs;
+  uint32_t deepest = 0;
+  for (size_t i = 0; i < arguments.size(); ++i) {
+    std::error_code error;
+    const bool tms = fs::is_directory(arguments[i], error) &&
+                     fs::exists(fs::path(arguments[i]) / kTmsFileName, error);
+    auto input = tms ? describeTms(arguments[i]) : describeRaster(arguments[i], options);
+    if (!input) return Error{input.error()};
+    input->order = i;
+    input->naturalLevel = tms ? input->tmsMaxLevel : imageryFinestLevel(input->pixelDegrees);
+    deepest = std::max(deepest, input->naturalLevel);
+    inputs.push_back(std::move(*input));
+  }
+  for (ImageryInput& input : inputs) {
+    input.finestLevel = input.naturalLevel;
+    // --max-level: the finest inputs go exactly that deep, none deeper.
+    if (options.maxLevel) {
+      input.finestLevel = input.naturalLevel >= deepest
+                              ? *options.maxLevel
+                              : std::min(input.naturalLevel, *options.maxLevel);
+    }
+    input.info.pixelDegrees = input.pixelDegrees;
+    input.info.bounds = input.extent;
+    input.info.finestLevel = input.finestLevel;
+  }
+  return inputs;
+}
+
+}  // namespace globe::tiler
