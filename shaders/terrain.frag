@@ -12,7 +12,10 @@ in vec2 v_imageryUv;
 uniform sampler2D u_imagery;   // global equirectangular, row 0 at +90 deg
 #endif
 #ifdef GLOBE_LAYERS
-in vec4 v_drape;               // xy: tile uv, z: land light, w: sea light
+in vec2 v_layerUv[GLOBE_LAYERS];  // imagery uv of each layer (terrain.vert)
+#ifdef GLOBE_LIGHT_IMAGERY
+in vec2 v_light;                  // land light, sea light: --lighting shades the imagery too
+#endif
 // Imagery tiles, premultiplied alpha (render/imagery_textures.cpp), row 0 = v 0. Four samplers
 // rather than an array: GLSL 3.30 indexes sampler arrays only with constant expressions.
 // The count is compiled in (one program per count): llvmpipe runs texture fetches under uniform
@@ -27,9 +30,7 @@ uniform sampler2D u_layer2;
 #if GLOBE_LAYERS > 3
 uniform sampler2D u_layer3;
 #endif
-uniform vec4 u_layerTransform[GLOBE_LAYERS];  // imagery uv = xy + tile uv · zw
 uniform float u_layerOpacity[GLOBE_LAYERS];
-uniform bool u_lightImagery;                  // false: imagery keeps its own (baked-in) shading
 #endif
 in float v_logDepth;
 
@@ -42,8 +43,7 @@ out vec4 o_color;
 // mix(colour, straight rgb, a). Premultiplied so that filtering next to transparent texels does
 // not bleed their (meaningless) colour in.
 vec3 drape(vec3 color, sampler2D layer, int k, float light) {
-  vec4 texel = texture(layer, u_layerTransform[k].xy + v_drape.xy * u_layerTransform[k].zw) *
-               u_layerOpacity[k];
+  vec4 texel = texture(layer, v_layerUv[k]) * u_layerOpacity[k];
   return texel.rgb * light + color * (1.0 - texel.a);
 }
 #endif
@@ -54,7 +54,11 @@ void main() {
   color *= texture(u_imagery, v_imageryUv).rgb;
 #endif
 #ifdef GLOBE_LAYERS
-  float light = u_lightImagery ? (v_sea > 0.5 ? v_drape.w : v_drape.z) : 1.0;
+#ifdef GLOBE_LIGHT_IMAGERY
+  float light = v_sea > 0.5 ? v_light.y : v_light.x;
+#else
+  float light = 1.0;  // imagery keeps its own (baked-in) shading
+#endif
   color = drape(color, u_layer0, 0, light);
 #if GLOBE_LAYERS > 1
   color = drape(color, u_layer1, 1, light);

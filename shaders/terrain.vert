@@ -3,9 +3,9 @@
 // terrain.frag. With GLOBE_VERTEX_LOG_DEPTH defined (the renderer's variant for tiles far from the
 // camera), the same logarithmic depth is written per vertex into gl_Position.z instead, so the
 // fragment shader keeps early depth testing. With GLOBE_IMAGERY defined (imagery draped), the
-// colours are the light only and the image gives the colour in terrain.frag. With GLOBE_LAYERS
-// defined (tiled imagery layers, composited over that colour in terrain.frag), one more varying
-// carries the tile uv and the land and sea light, for imagery lit like the terrain.
+// colours are the light only and the image gives the colour in terrain.frag. With GLOBE_LAYERS = n
+// (n tiled imagery layers, composited over that colour in terrain.frag), each layer's imagery uv
+// travels as a varying, and with GLOBE_LIGHT_IMAGERY (--lighting) the land and sea light too.
 //
 // Colour and light are computed here, not per fragment: llvmpipe shades several fragments per
 // vertex even near the ground, and the normals are per vertex anyway, so per-fragment lighting
@@ -37,7 +37,11 @@ out float v_sea;       // 1 = sea; the fragment thresholds it at 0.5
 out vec2 v_imageryUv;
 #endif
 #ifdef GLOBE_LAYERS
-out vec4 v_drape;      // xy: tile uv, z: land light, w: sea light
+uniform vec4 u_layerTransform[GLOBE_LAYERS];  // imagery uv = xy + tile uv · zw
+out vec2 v_layerUv[GLOBE_LAYERS];  // per vertex: a varying is cheaper than the FMA per fragment
+#ifdef GLOBE_LIGHT_IMAGERY
+out vec2 v_light;                  // land light, sea light
+#endif
 #endif
 out float v_logDepth;  // 1 + eye distance w
 
@@ -90,7 +94,12 @@ void main() {
   v_seaColor = seaColor(a_height) * upLight;
 #endif
 #ifdef GLOBE_LAYERS
-  v_drape = vec4(a_uv, landLight, upLight);
+  for (int k = 0; k < GLOBE_LAYERS; ++k) {
+    v_layerUv[k] = u_layerTransform[k].xy + a_uv * u_layerTransform[k].zw;
+  }
+#ifdef GLOBE_LIGHT_IMAGERY
+  v_light = vec2(landLight, upLight);
+#endif
 #endif
   v_sea = a_sea;
 }

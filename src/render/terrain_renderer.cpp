@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <map>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -39,7 +41,7 @@ struct TerrainRenderer::Impl {
     GLint modelView = -1, projection = -1, tileCenter = -1, imageryRect = -1;
     GLint sunDirection = -1, ambient = -1, hillShading = -1, imagery = -1;
     GLint logDepthScale = -1;
-    GLint layerTransform = -1, layerOpacity = -1, lightImagery = -1;
+    GLint layerTransform = -1, layerOpacity = -1;
     std::array<GLint, kMaxDrapeLayers> layerSamplers{-1, -1, -1, -1};
   };
 
@@ -68,8 +70,9 @@ struct TerrainRenderer::Impl {
 
   TerrainRendererOptions options;
   TerrainStyle style;
-  Program programs[2][kMaxDrapeLayers + 1][2];
-  std::vector<DrawItem> drawItems[2];  // per-frame scratch, kept to avoid reallocating
+  std::map<uint32_t, Program> programs;  // by variant key (programKey)
+  std::vector<DrawItem> drawItems[2];
+  bool programErrorReported = false;  // per-frame scratch, kept to avoid reallocating
   std::unordered_set<geo::TileId> drawnIds;
   GlObject indexBuffer;
   GLenum indexType = GL_UNSIGNED_SHORT;
@@ -82,6 +85,9 @@ struct TerrainRenderer::Impl {
   std::unordered_map<geo::TileId, GpuTile> tiles;
   uint64_t tileBytes = 0;
 
+  // The program for this variant, compiled on first use and kept.
+  Result<const Program*> program(bool globalImage, uint32_t layers, bool vertexDepth,
+                                 bool lightImagery);
   BoundDrapes resolveDrapes(const TileDrapes* drapes, FrameStats& stats) const;
   void bindDrapes(const BoundDrapes& drapes, const Uniforms& u) const;
   uint64_t gpuBytes() const {
@@ -117,6 +123,53 @@ TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(const Ti
   return bound;
 }
 
+Result<const TerrainRenderer::Impl::Program*> TerrainRenderer::Impl::program(bool globalImage,
+                                                                             uint32_t layers,
+                                                                             bool vertexDepth,
+                                                                             bool lightImagery) {
+  lightImagery = lightImagery && layers > 0;
+  const uint32_t key =
+      (globalImage ? 1u : 0u) | (vertexDepth ? 2u : 0u) | (lightImagery ? 4u : 0u) | (layers << 3);
+  if (auto found = programs.find(key); found != programs.end()) return &found->second;
+  const auto& dir = options.shaderDirectory;
+  const std::string defines =
+      std::string(globalImage ? "#define GLOBE_IMAGERY 1\n" : "") +
+      (layers > 0 ? "#define GLOBE_LAYERS " + std::to_string(layers) + "\n" : "") +
+      (lightImagery ? "#define GLOBE_LIGHT_IMAGERY 1\n" : "") +
+      (vertexDepth ? "#define GLOBE_VERTEX_LOG_DEPTH 1\n" : "");
+  auto loaded = loadShaderProgram(dir / "terrain.vert", dir / "terrain.frag", defines);
+  if (!loaded) return Error{loaded.error()};
+  Program target;
+  target.program = std::move(*loaded);
+  const ShaderProgram& p = target.program;
+  Uniforms& u = target.uniforms;
+  u.modelView = p.uniformLocation("u_modelView");
+  u.projection = p.uniformLocation("u_projection");
+  u.tileCenter = p.uniformLocation("u_tileCenterEcef");
+  u.imageryRect = p.uniformLocation("u_imageryRect");
+  u.sunDirection = p.uniformLocation("u_sunDirection");
+  u.ambient = p.uniformLocation("u_ambient");
+  u.hillShading = p.uniformLocation("u_hillShading");
+  u.imagery = p.uniformLocation("u_imagery");
+  u.logDepthScale = p.uniformLocation("u_logDepthScale");
+  u.layerTransform = p.uniformLocation("u_layerTransform");
+  u.layerOpacity = p.uniformLocation("u_layerOpacity");
+  for (uint32_t k = 0; k < kMaxDrapeLayers; ++k) {
+    u.layerSamplers[k] = p.uniformLocation(("u_layer" + std::to_string(k)).c_str());
+  }
+  if (u.modelView < 0 || u.projection < 0 || u.logDepthScale < 0) {
+    return makeError((dir / "terrain.vert").string() +
+                     " + terrain.frag: the program lacks "
+                     "u_modelView, u_projection or u_logDepthScale");
+  }
+  if (layers > 0 && (u.layerTransform < 0 || u.layerOpacity < 0)) {
+    return makeError((dir / "terrain.vert").string() +
+                     " + terrain.frag: the GLOBE_LAYERS program lacks u_layerTransform or "
+                     "u_layerOpacity");
+  }
+  return &programs.emplace(key, std::move(target)).first->second;
+}
+
 // Binds the layers to units 1.. and sets their uniforms.
 void TerrainRenderer::Impl::bindDrapes(const BoundDrapes& drapes, const Uniforms& u) const {
   for (uint32_t k = 0; k < drapes.count; ++k) {
@@ -145,45 +198,12 @@ Result<std::unique_ptr<TerrainRenderer>> TerrainRenderer::create(
   impl->imageryTiles = ImageryTextures(options.maxImageryAnisotropy);
   if (impl->options.shaderDirectory.empty())
     impl->options.shaderDirectory = defaultShaderDirectory();
-  const auto& dir = impl->options.shaderDirectory;
-  constexpr int kLayerVariants = kMaxDrapeLayers + 1;
-  for (int variant = 0; variant < 2 * kLayerVariants * 2; ++variant) {
-    const int imagery = variant / (2 * kLayerVariants), layers = variant / 2 % kLayerVariants,
-              depth = variant % 2;
-    const std::string defines =
-        std::string(imagery == 1 ? "#define GLOBE_IMAGERY 1\n" : "") +
-        (layers > 0 ? "#define GLOBE_LAYERS " + std::to_string(layers) + "\n" : "") +
-        (depth == 1 ? "#define GLOBE_VERTEX_LOG_DEPTH 1\n" : "");
-    auto program = loadShaderProgram(dir / "terrain.vert", dir / "terrain.frag", defines);
-    if (!program) return makeError(program.error());
-    Impl::Program& target = impl->programs[imagery][layers][depth];
-    target.program = std::move(*program);
-    const ShaderProgram& p = target.program;
-    Impl::Uniforms& u = target.uniforms;
-    u.modelView = p.uniformLocation("u_modelView");
-    u.projection = p.uniformLocation("u_projection");
-    u.tileCenter = p.uniformLocation("u_tileCenterEcef");
-    u.imageryRect = p.uniformLocation("u_imageryRect");
-    u.sunDirection = p.uniformLocation("u_sunDirection");
-    u.ambient = p.uniformLocation("u_ambient");
-    u.hillShading = p.uniformLocation("u_hillShading");
-    u.imagery = p.uniformLocation("u_imagery");
-    u.logDepthScale = p.uniformLocation("u_logDepthScale");
-    u.layerTransform = p.uniformLocation("u_layerTransform");
-    u.layerOpacity = p.uniformLocation("u_layerOpacity");
-    u.lightImagery = p.uniformLocation("u_lightImagery");
-    for (uint32_t k = 0; k < kMaxDrapeLayers; ++k) {
-      u.layerSamplers[k] = p.uniformLocation(("u_layer" + std::to_string(k)).c_str());
-    }
-    if (u.modelView < 0 || u.projection < 0 || u.logDepthScale < 0) {
-      return makeError((dir / "terrain.vert").string() +
-                       " + terrain.frag: the program lacks "
-                       "u_modelView, u_projection or u_logDepthScale");
-    }
-    if (layers > 0 && (u.layerTransform < 0 || u.layerOpacity < 0)) {
-      return makeError((dir / "terrain.vert").string() +
-                       " + terrain.frag: the GLOBE_LAYERS program lacks u_layerTransform or "
-                       "u_layerOpacity");
+  // The programs without layers up front (a bad shader directory fails here); layered ones when
+  // a frame first needs them.
+  for (int imagery = 0; imagery < 2; ++imagery) {
+    for (int depth = 0; depth < 2; ++depth) {
+      auto program = impl->program(imagery == 1, 0, depth == 1, false);
+      if (!program) return makeError(program.error());
     }
   }
 
@@ -400,10 +420,19 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
     const Impl::Uniforms* current = nullptr;
     uint32_t currentLayers = kMaxDrapeLayers + 1;
     for (const Impl::DrawItem& item : items) {
-      if (item.drapes.count != currentLayers) {
+      if (item.drapes.count != currentLayers || current == nullptr) {
         currentLayers = item.drapes.count;
-        const Impl::Program& program =
-            impl.programs[useImagery ? 1 : 0][useLayers ? currentLayers : 0][variant];
+        auto found = impl.program(useImagery, currentLayers, variant == 1, style.lightImagery);
+        if (!found) {
+          // Layers this GL cannot compile: the terrain without them, said once.
+          if (!impl.programErrorReported)
+            std::fprintf(stderr, "globe: %s\n", found.error().c_str());
+          impl.programErrorReported = true;
+          found = impl.program(useImagery, 0, variant == 1, false);
+          if (!found) continue;
+          currentLayers = 0;
+        }
+        const Impl::Program& program = **found;
         current = &program.uniforms;
         const Impl::Uniforms& u = *current;
         glUseProgram(program.program.id());
@@ -417,7 +446,6 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
         for (uint32_t k = 0; k < currentLayers; ++k) {
           glUniform1i(u.layerSamplers[k], static_cast<GLint>(1 + k));
         }
-        if (u.lightImagery >= 0) glUniform1i(u.lightImagery, style.lightImagery ? 1 : 0);
       }
       const Impl::Uniforms& u = *current;
       const GpuTile& gpu = *item.gpu;
@@ -429,7 +457,7 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
       const glm::vec3 center(gpu.centerEcefMeters);
       glUniform3fv(u.tileCenter, 1, glm::value_ptr(center));
       if (useImagery) glUniform4fv(u.imageryRect, 1, glm::value_ptr(gpu.imageryRect));
-      if (item.drapes.count > 0) impl.bindDrapes(item.drapes, u);
+      if (currentLayers > 0) impl.bindDrapes(item.drapes, u);
       glBindVertexArray(gpu.vertexArray.get());
       // The grid and only the skirts this tile needs (terrain/skirt_edges.hpp), in one call.
       std::array<terrain::IndexRange, 3> ranges;
