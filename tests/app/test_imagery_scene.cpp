@@ -12,11 +12,13 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <set>
 #include <vector>
 
 #include "app/terrain_scene.hpp"
 #include "geo/cartographic.hpp"
 #include "geo/tiling_scheme.hpp"
+#include "render/imagery_textures.hpp"
 #include "render/osmesa_context.hpp"
 #include "render/read_pixels.hpp"
 #include "tests/tools/tiler/imagery_test_layers.hpp"
@@ -284,6 +286,52 @@ TEST(ImageryScene, TilesDrawTheirNearestLoadedAncestorWhileTheirOwnLoads) {
   // Same place, same colours on average (the coarse texture is the same scene, averaged).
   const Rgb a = meanAround(coarse.image, 64, 64, 40), b = meanAround(full.image, 64, 64, 40);
   EXPECT_LE(largestChannelDifference(a, b), 25.0);
+}
+
+// A long low flight over Zion with a small texture budget: after every frame the textures on the
+// GPU stay within the budget, except for what that frame draws and the level-0 roots (the only
+// textures never evicted), while the flight as a whole needs several times the budget.
+TEST(ImageryScene, TextureMemoryStaysWithinTheBudgetOnALongFlight) {
+  auto context = render::OsMesaContext::create(320, 180);
+  ASSERT_TRUE(context) << context.error();
+  auto renderer = render::TerrainRenderer::create({});
+  ASSERT_TRUE(renderer) << renderer.error();
+  SceneOptions options;
+  options.layers = {{tiler::testing::blueMarbleLayer(), 1.0f}, {tiler::testing::zionLayer(), 1.0f}};
+  options.imageryBudget.textureBytes = 4u << 20;
+  auto scene = TerrainScene::open(tiler::testing::zionPyramid(), options);
+  ASSERT_TRUE(scene) << scene.error();
+  const uint64_t tileBytes = render::mipmappedTextureBytes(256, 256);
+  std::set<std::pair<uint32_t, geo::TileId>> everUsed;
+  uint64_t peak = 0;
+  constexpr int kFrames = 48;
+  for (int i = 0; i < kFrames; ++i) {
+    const double t = i / (kFrames - 1.0);
+    const auto pose =
+        camera::CameraPose::fromDegrees(-113.10 + 0.2 * t, 37.15 + 0.3 * t, 3500, 20, -30, 0);
+    auto frame =
+        (*scene)->updateUntilComplete(pose, 320, 180, **renderer, std::chrono::seconds(60));
+    ASSERT_TRUE(frame) << frame.error();
+    const render::FrameStats stats = (*scene)->draw(**renderer);
+    std::set<std::pair<uint32_t, geo::TileId>> used;
+    for (const render::TileDrapes& drapes : (*scene)->drapes()) {
+      for (uint32_t k = 0; k < drapes.count; ++k) {
+        used.insert({drapes.layers[k].layer, drapes.layers[k].imageryTile});
+      }
+    }
+    everUsed.insert(used.begin(), used.end());
+    const uint64_t roots = 2 * 2;  // two level-0 tiles per layer at most
+    EXPECT_LE(stats.imageryBytesResident, std::max<uint64_t>(options.imageryBudget.textureBytes,
+                                                             (used.size() + roots) * tileBytes))
+        << "frame " << i;
+    EXPECT_EQ(stats.imageryBytesResident, (*renderer)->imageryBytesResident());
+    peak = std::max(peak, stats.imageryBytesResident);
+  }
+  EXPECT_GT(everUsed.size() * tileBytes, 3 * options.imageryBudget.textureBytes)
+      << "the flight does not need more than the budget: the test shows nothing";
+  EXPECT_GT(peak, 0u);
+  EXPECT_LT((*renderer)->imageryBytesResident(), everUsed.size() * tileBytes)
+      << "nothing was evicted";
 }
 
 // A view centred on a corner of the imagery quadtree (four imagery tiles meet at the centre

@@ -1,8 +1,8 @@
-// Screenshot regression: eight views of the bundled real data rendered by the real `globe
-// snapshot` program through OSMesa, compared with the committed goldens in tests/render/golden.
-// Tolerance: a pixel differs when a channel is off by more than 24 (of 255); at most 0.5% of the
-// pixels may differ. On failure the actual image and a diff image are written next to the test
-// output. Regenerate the goldens (then look at them!) with:
+// Screenshot regression: twelve views of the bundled real data (four with imagery layers) rendered
+// by the real `globe snapshot` program through OSMesa, compared with the committed goldens in
+// tests/render/golden. Tolerance: a pixel differs when a channel is off by more than 24 (of 255);
+// at most 0.5% of the pixels may differ. On failure the actual image and a diff image are written
+// next to the test output. Regenerate the goldens (then look at them!) with:
 //   GLOBE_UPDATE_GOLDENS=1 ctest --test-dir build -R globe_golden_tests
 #include <gtest/gtest.h>
 
@@ -11,6 +11,7 @@
 
 #include "io/image_io.hpp"
 #include "tests/render/golden_compare.hpp"
+#include "tests/tools/tiler/imagery_test_layers.hpp"
 #include "tests/tools/tiler/tiler_test_fixture.hpp"
 
 namespace globe {
@@ -22,7 +23,8 @@ constexpr double kMaxDifferingFraction = 0.005;
 
 struct GoldenView {
   const char* name;
-  const char* arguments;  // after `globe snapshot PYRAMID`
+  const char* arguments;     // after `globe snapshot PYRAMID`; @bm and @zion name imagery layers
+  bool zionPyramid = false;  // ETOPO20 + Zion's SRTM instead of the bundled pyramid
 };
 
 const GoldenView kViews[] = {
@@ -34,7 +36,24 @@ const GoldenView kViews[] = {
     {"antimeridian_bering", "--camera 180,58,1800000,0,-45,0"},
     {"coast_suruga_bay", "--camera 138.62,34.85,9000,10,-25,0"},
     {"mid_refinement", "--camera 138.60,35.20,6000,30,-15,0 --max-load-level 9"},
+    {"globe_blue_marble", "--camera 138,30,20000000 --layer @bm"},
+    {"fuji_oblique_blue_marble_lit", "--camera 138.60,35.20,6000,30,-15,0 --layer @bm --lighting"},
+    {"zion_oblique_layers", "--camera -112.93,37.16,4500,330,-20,0 --layer @bm --layer @zion",
+     true},
+    {"zion_nadir_half_opacity", "--camera -112.98,37.27,9000 --layer @zion,0.5", true},
 };
+
+// The view's arguments with the layer placeholders replaced by the layers (tiled once).
+std::string expandLayers(std::string arguments) {
+  const std::pair<const char*, const fs::path& (*)()> layers[] = {
+      {"@bm", tiler::testing::blueMarbleLayer}, {"@zion", tiler::testing::zionLayer}};
+  for (const auto& [token, layer] : layers) {
+    for (size_t at = arguments.find(token); at != std::string::npos; at = arguments.find(token)) {
+      arguments.replace(at, std::string(token).size(), layer().string());
+    }
+  }
+  return arguments;
+}
 
 // Names the parameter in test output instead of dumping its bytes.
 void PrintTo(const GoldenView& view, std::ostream* out) { *out << view.name; }
@@ -46,9 +65,11 @@ TEST_P(GoldenImages, MatchesTheCommittedGolden) {
   const fs::path outDir = GLOBE_TEST_OUTPUT_DIR;
   fs::create_directories(outDir);
   const fs::path actualPath = outDir / (std::string(view.name) + ".actual.png");
-  const std::string command = std::string(GLOBE_EXE) + " snapshot " +
-                              tiler::testing::bundledPyramid().string() + " " + view.arguments +
-                              " --size 480x270 -o " + actualPath.string() + " > /dev/null";
+  const fs::path& pyramid =
+      view.zionPyramid ? tiler::testing::zionPyramid() : tiler::testing::bundledPyramid();
+  const std::string command = std::string(GLOBE_EXE) + " snapshot " + pyramid.string() + " " +
+                              expandLayers(view.arguments) + " --size 480x270 -o " +
+                              actualPath.string() + " > /dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   auto actual = io::loadImageRgba(actualPath);
   ASSERT_TRUE(actual) << actual.error();
