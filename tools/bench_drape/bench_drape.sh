@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Frame time of steady views with the bundled imagery layers (Blue Marble + Zion) against the same
+# views without, measured in one process with interleaved rounds (globe-bench-drape). Tiles the
+# bundled data into a scratch directory first. Writes docs/imagery-frame-time.md.
+#
+#   tools/bench_drape/bench_drape.sh [BUILD_DIR]
+set -euo pipefail
+ROOT=$(cd "$(dirname "$0")/../.." && pwd)
+BUILD=${1:-$ROOT/build}
+TILER=$BUILD/tools/tiler/globe-tiler
+BENCH=$BUILD/tools/bench_drape/globe-bench-drape
+OUT_MD=$ROOT/docs/imagery-frame-time.md
+for exe in "$TILER" "$BENCH"; do [ -x "$exe" ] || { echo "build it first: $exe" >&2; exit 1; }; done
+WORK=$(mktemp -d)
+trap 'rm -rf "$WORK"' EXIT
+D=$ROOT/data
+"$TILER" -q -o "$WORK/pyramid" "$D/dem/ETOPO20.DEM" "$D/dem/W002N52.DEM" "$D/dem/E138N35_FUJI.DEM" \
+  "$D/dem/zion-srtm3.tif"
+"$TILER" imagery -q -o "$WORK/blue-marble" --bounds -180,-90,180,90 \
+  "$D/imagery/world.topo.bathy.200412.3x5400x2700.jpg"
+"$TILER" imagery -q -o "$WORK/zion" "$D/imagery/zion-landsat8-rgb.tif"
+ARGS=(--pyramid "$WORK/pyramid" --layer "$WORK/blue-marble" --layer "$WORK/zion"
+      --view fuji_oblique=138.60,35.20,6000,30,-15,0 --view zion_oblique=-112.93,37.16,4500,330,-20,0
+      --view zion_nadir=-112.98,37.27,9000 --view globe=138,30,20000000 --rounds 11 --frames 3)
+"$BENCH" "${ARGS[@]}" --out "$WORK/table.md"
+{
+  echo "# Frame time with imagery layers"
+  echo
+  echo "Steady frames (update + draw + glFinish, 1280x720, OSMesa llvmpipe) of four views with the"
+  echo "bundled Blue Marble and Zion layers against the same views without imagery, in one process"
+  echo "and one GL context, 11 interleaved rounds of 3 frames per side: medians and their ratio."
+  echo "Made by \`tools/bench_drape/bench_drape.sh\` on $(date -u +%Y-%m-%d)."
+  echo
+  cat "$WORK/table.md"
+  echo
+  echo "- commit: $(git -C "$ROOT" rev-parse --short HEAD)$(git -C "$ROOT" diff --quiet || echo ' + uncommitted changes')"
+  echo "- machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) cores; GL: llvmpipe"
+  echo "- drapes: (terrain tile, layer) pairs drawn with a texture; imagery textures: on the GPU, mip chains included"
+} > "$OUT_MD.tmp"
+mv "$OUT_MD.tmp" "$OUT_MD"
+cat "$OUT_MD"
