@@ -4,10 +4,18 @@
 // fragment, or per vertex in terrain.vert when GLOBE_VERTEX_LOG_DEPTH is defined).
 #version 330 core
 
+// GLOBE_OPAQUE_BASE: the bottom layer covers the tile opaquely (terrain.vert).
+#if !defined(GLOBE_OPAQUE_BASE) || defined(GLOBE_LIGHT_IMAGERY)
+#define GLOBE_SEA_FLAG 1
+#endif
+#ifndef GLOBE_OPAQUE_BASE
 in vec3 v_landColor;
 in vec3 v_seaColor;
+#endif
+#ifdef GLOBE_SEA_FLAG
 in float v_sea;
-#ifdef GLOBE_IMAGERY
+#endif
+#if defined(GLOBE_IMAGERY) && !defined(GLOBE_OPAQUE_BASE)
 in vec2 v_imageryUv;
 uniform sampler2D u_imagery;   // global equirectangular, row 0 at +90 deg
 #endif
@@ -49,8 +57,12 @@ vec3 drape(vec3 color, sampler2D layer, int k, float light) {
 #endif
 
 void main() {
+#ifdef GLOBE_OPAQUE_BASE
+  vec3 color = vec3(0.0);  // covered by layer 0 (alpha 1, opacity 1) in every fragment
+#else
   vec3 color = v_sea > 0.5 ? v_seaColor : v_landColor;
-#ifdef GLOBE_IMAGERY
+#endif
+#if defined(GLOBE_IMAGERY) && !defined(GLOBE_OPAQUE_BASE)
   color *= texture(u_imagery, v_imageryUv).rgb;
 #endif
 #ifdef GLOBE_LAYERS

@@ -30,10 +30,19 @@ uniform vec3 u_sunDirection;     // unit, towards the sun, ECEF axes (zero: ambi
 uniform float u_ambient;         // light on faces turned away from the sun
 uniform bool u_hillShading;      // false: light with the ellipsoid "up" only
 
+// GLOBE_OPAQUE_BASE: the bottom layer is opaque over the whole tile, so the terrain's own colour
+// is never seen: it is neither computed nor interpolated (fewer varyings, cheaper triangles).
+#if !defined(GLOBE_OPAQUE_BASE) || defined(GLOBE_LIGHT_IMAGERY)
+#define GLOBE_SEA_FLAG 1
+#endif
+#ifndef GLOBE_OPAQUE_BASE
 out vec3 v_landColor;  // lit (the light only, with imagery)
 out vec3 v_seaColor;   // lit with "up" (the light only, with imagery)
+#endif
+#ifdef GLOBE_SEA_FLAG
 out float v_sea;       // 1 = sea; the fragment thresholds it at 0.5
-#ifdef GLOBE_IMAGERY
+#endif
+#if defined(GLOBE_IMAGERY) && !defined(GLOBE_OPAQUE_BASE)
 out vec2 v_imageryUv;
 #endif
 #ifdef GLOBE_LAYERS
@@ -85,7 +94,8 @@ void main() {
   float landLight = u_hillShading
                         ? u_ambient + (1.0 - u_ambient) * max(dot(a_normal, u_sunDirection), 0.0)
                         : upLight;
-#ifdef GLOBE_IMAGERY
+#if defined(GLOBE_OPAQUE_BASE)
+#elif defined(GLOBE_IMAGERY)
   v_landColor = vec3(landLight);
   v_seaColor = vec3(upLight);
   v_imageryUv = u_imageryRect.xy + a_uv * u_imageryRect.zw;
@@ -101,5 +111,7 @@ void main() {
   v_light = vec2(landLight, upLight);
 #endif
 #endif
+#ifdef GLOBE_SEA_FLAG
   v_sea = a_sea;
+#endif
 }

@@ -2,6 +2,7 @@
 #include "render/imagery_textures.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -60,10 +61,19 @@ Result<void> ImageryTextures::upload(uint32_t layer, const geo::TileId& tile,
   // Premultiplied alpha; opaque tiles (JPEG imagery) go up as they are.
   std::vector<uint8_t> premultiplied;
   const uint8_t* pixels = rgba.data();
-  bool opaque = true;
+  std::array<uint16_t, 16> opaqueCells;
+  opaqueCells.fill(0xffff);
   for (size_t k = 3; k < rgba.size(); k += 4) {
     if (rgba[k] == 255) continue;
-    opaque = false;
+    for (size_t p = 3; p < rgba.size(); p += 4) {
+      if (rgba[p] == 255) continue;
+      const size_t texel = p / 4;
+      const auto row =
+          (texel / static_cast<size_t>(widthPixels)) * 16 / static_cast<size_t>(heightPixels);
+      const auto column =
+          (texel % static_cast<size_t>(widthPixels)) * 16 / static_cast<size_t>(widthPixels);
+      opaqueCells[row] = static_cast<uint16_t>(opaqueCells[row] & ~(1u << column));
+    }
     premultiplied.assign(rgba.begin(), rgba.end());
     for (size_t p = 0; p < premultiplied.size(); p += 4) {
       const unsigned alpha = premultiplied[p + 3];
@@ -111,9 +121,9 @@ Result<void> ImageryTextures::upload(uint32_t layer, const geo::TileId& tile,
     return makeError("terrain renderer: GL error " + std::to_string(error) + " uploading imagery " +
                      tileName(layer, tile));
   }
-  if (replacing) found->second.opaque = opaque;
+  if (replacing) found->second.opaqueCells = opaqueCells;
   if (!replacing) {
-    texture.opaque = opaque;
+    texture.opaqueCells = opaqueCells;
     texture.widthPixels = widthPixels;
     texture.heightPixels = heightPixels;
     texture.bytes = mipmappedTextureBytes(widthPixels, heightPixels);
@@ -127,9 +137,24 @@ bool ImageryTextures::contains(uint32_t layer, const geo::TileId& tile) const {
   return textures_.contains({layer, tile});
 }
 
-bool ImageryTextures::isOpaque(uint32_t layer, const geo::TileId& tile) const {
+bool ImageryTextures::isOpaqueOver(uint32_t layer, const geo::TileId& tile,
+                                   const glm::vec4& uvRect) const {
   const auto found = textures_.find({layer, tile});
-  return found != textures_.end() && found->second.opaque;
+  if (found == textures_.end()) return false;
+  // The cells the rectangle touches, grown by one cell each way (clamped to the tile).
+  auto cell = [](float uv) { return static_cast<int>(std::floor(uv * 16.0f)); };
+  if (!std::isfinite(uvRect.x) || !std::isfinite(uvRect.y) || !std::isfinite(uvRect.z) ||
+      !std::isfinite(uvRect.w)) {
+    return false;
+  }
+  const int c0 = std::max(0, cell(uvRect.x) - 1), c1 = std::min(15, cell(uvRect.x + uvRect.z) + 1);
+  const int r0 = std::max(0, cell(uvRect.y) - 1), r1 = std::min(15, cell(uvRect.y + uvRect.w) + 1);
+  for (int r = r0; r <= r1; ++r) {
+    for (int c = c0; c <= c1; ++c) {
+      if ((found->second.opaqueCells[static_cast<size_t>(r)] & (1u << c)) == 0) return false;
+    }
+  }
+  return true;
 }
 
 GLuint ImageryTextures::find(uint32_t layer, const geo::TileId& tile) const {

@@ -2,7 +2,10 @@
 // chain, look-up for drawing, eviction and the byte count (mip chain included).
 #pragma once
 
+#include <array>
 #include <cstdint>
+
+#include <glm/vec4.hpp>
 #include <span>
 #include <unordered_map>
 
@@ -39,8 +42,11 @@ class ImageryTextures {
   bool contains(uint32_t layer, const geo::TileId& tile) const;
   // The texture name, 0 when not resident.
   GLuint find(uint32_t layer, const geo::TileId& tile) const;
-  // Whether a resident tile has no texel with alpha < 255 (layers under it cannot show).
-  bool isOpaque(uint32_t layer, const geo::TileId& tile) const;
+  // Whether the part of a resident tile that uv rectangle (x, y, width, height in texture
+  // coordinates) draws is opaque: no texel with alpha < 255 in it or within a margin of one
+  // sixteenth of the tile around it (what bilinear filtering and the first four mip levels reach).
+  // Layers under it cannot show there.
+  bool isOpaqueOver(uint32_t layer, const geo::TileId& tile, const glm::vec4& uvRect) const;
   bool evict(uint32_t layer, const geo::TileId& tile);
   void clear();
 
@@ -54,7 +60,8 @@ class ImageryTextures {
     int widthPixels = 0;
     int heightPixels = 0;
     uint64_t bytes = 0;
-    bool opaque = true;
+    // Bit c of row r: the cell (r, c) of a 16×16 grid over the tile has only opaque texels.
+    std::array<uint16_t, 16> opaqueCells{};
   };
   std::unordered_map<ImageryTextureKey, Texture, ImageryTextureKeyHash> textures_;
   uint64_t bytes_ = 0;

@@ -59,6 +59,7 @@ struct TerrainRenderer::Impl {
     std::array<glm::vec4, kMaxDrapeLayers> transforms{};
     std::array<float, kMaxDrapeLayers> opacities{};
     uint32_t count = 0;
+    bool opaqueBase = false;  // layer 0 is opaque everywhere (texels and opacity)
   };
   struct DrawItem {
     double nearestMeters;
@@ -87,7 +88,7 @@ struct TerrainRenderer::Impl {
 
   // The program for this variant, compiled on first use and kept.
   Result<const Program*> program(bool globalImage, uint32_t layers, bool vertexDepth,
-                                 bool lightImagery);
+                                 bool lightImagery, bool opaqueBase = false);
   BoundDrapes resolveDrapes(const TileDrapes* drapes, FrameStats& stats) const;
   void bindDrapes(const BoundDrapes& drapes, const Uniforms& u) const;
   uint64_t gpuBytes() const {
@@ -95,8 +96,9 @@ struct TerrainRenderer::Impl {
   }
 };
 
-// The tile's resident drape layers, bottom first. Layers under an opaque one (every texel
-// opaque, opacity 1) cannot show and are left out: fewer texture fetches per fragment. Layers
+// The tile's resident drape layers, bottom first. Layers under an opaque one (every texel this
+// tile samples opaque, opacity 1) cannot show and are left out: fewer texture fetches per
+// fragment, and the terrain's own colour is not needed (opaqueBase). Layers
 // whose texture is not resident are skipped (the ones above still draw) and counted.
 TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(const TileDrapes* drapes,
                                                                         FrameStats& stats) const {
@@ -111,9 +113,10 @@ TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(const Ti
     }
     // NaN and negative opacities draw nothing.
     const float opacity = drape.opacity > 0.0f ? std::min(drape.opacity, 1.0f) : 0.0f;
-    if (opacity >= 1.0f && imageryTiles.isOpaque(drape.layer, drape.imageryTile)) {
-      bound.count = 0;
-    }
+    const bool opaque = opacity >= 1.0f && imageryTiles.isOpaqueOver(drape.layer, drape.imageryTile,
+                                                                     drape.uvTransform);
+    if (opaque) bound.count = 0;
+    if (bound.count == 0) bound.opaqueBase = opaque;
     bound.textures[bound.count] = texture;
     bound.transforms[bound.count] = drape.uvTransform;
     bound.opacities[bound.count] = opacity;
@@ -123,19 +126,20 @@ TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(const Ti
   return bound;
 }
 
-Result<const TerrainRenderer::Impl::Program*> TerrainRenderer::Impl::program(bool globalImage,
-                                                                             uint32_t layers,
-                                                                             bool vertexDepth,
-                                                                             bool lightImagery) {
+Result<const TerrainRenderer::Impl::Program*> TerrainRenderer::Impl::program(
+    bool globalImage, uint32_t layers, bool vertexDepth, bool lightImagery, bool opaqueBase) {
   lightImagery = lightImagery && layers > 0;
-  const uint32_t key =
-      (globalImage ? 1u : 0u) | (vertexDepth ? 2u : 0u) | (lightImagery ? 4u : 0u) | (layers << 3);
+  opaqueBase = opaqueBase && layers > 0;
+  globalImage = globalImage && !opaqueBase;  // covered anyway
+  const uint32_t key = (globalImage ? 1u : 0u) | (vertexDepth ? 2u : 0u) |
+                       (lightImagery ? 4u : 0u) | (opaqueBase ? 8u : 0u) | (layers << 4);
   if (auto found = programs.find(key); found != programs.end()) return &found->second;
   const auto& dir = options.shaderDirectory;
   const std::string defines =
       std::string(globalImage ? "#define GLOBE_IMAGERY 1\n" : "") +
       (layers > 0 ? "#define GLOBE_LAYERS " + std::to_string(layers) + "\n" : "") +
       (lightImagery ? "#define GLOBE_LIGHT_IMAGERY 1\n" : "") +
+      (opaqueBase ? "#define GLOBE_OPAQUE_BASE 1\n" : "") +
       (vertexDepth ? "#define GLOBE_VERTEX_LOG_DEPTH 1\n" : "");
   auto loaded = loadShaderProgram(dir / "terrain.vert", dir / "terrain.frag", defines);
   if (!loaded) return Error{loaded.error()};
@@ -415,14 +419,19 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
     // By layer count (one program each), then front to back.
     std::sort(items.begin(), items.end(), [](const Impl::DrawItem& a, const Impl::DrawItem& b) {
       if (a.drapes.count != b.drapes.count) return a.drapes.count < b.drapes.count;
+      if (a.drapes.opaqueBase != b.drapes.opaqueBase) return a.drapes.opaqueBase;
       return a.nearestMeters < b.nearestMeters;
     });
     const Impl::Uniforms* current = nullptr;
     uint32_t currentLayers = kMaxDrapeLayers + 1;
+    bool currentOpaqueBase = false;
     for (const Impl::DrawItem& item : items) {
-      if (item.drapes.count != currentLayers || current == nullptr) {
+      if (item.drapes.count != currentLayers || item.drapes.opaqueBase != currentOpaqueBase ||
+          current == nullptr) {
         currentLayers = item.drapes.count;
-        auto found = impl.program(useImagery, currentLayers, variant == 1, style.lightImagery);
+        currentOpaqueBase = item.drapes.opaqueBase;
+        auto found = impl.program(useImagery, currentLayers, variant == 1, style.lightImagery,
+                                  currentOpaqueBase);
         if (!found) {
           // Layers this GL cannot compile: the terrain without them, said once.
           if (!impl.programErrorReported)

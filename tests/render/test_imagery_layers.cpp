@@ -234,6 +234,36 @@ TEST_F(ImageryLayers, OpacityAlphaAndLayerOrderComposite) {
   EXPECT_TRUE(near(swapped.at(east.x, east.y), kRed, 2));
 }
 
+// Where the upper layer's texels that a tile samples are all opaque, the layer under it cannot
+// show and is not sampled (FrameStats::drapesDrawn); where some are transparent it still is.
+TEST_F(ImageryLayers, AnOpaqueLayerHidesTheLayersUnderItOnlyWhereItIsOpaque) {
+  const auto children = kTile.children();  // NW, NE, SW, SE
+  for (const geo::TileId& child : children) uploadFlat(child);
+  uploadImagery(0, kTile, solidImage(kRed));
+  uploadImagery(1, kTile, makeImage([](int column, int) {
+                  // Transparent up to column 95: the east half and a margin of 16 texels around
+                  // it (what filtering and the first mip levels reach) are opaque.
+                  return column < 96 ? Rgba{255, 0, 255, 0} : Rgba{30, 200, 90, 255};
+                }));
+  const RenderView view = viewOnto(kTile, 450e3);
+  const std::vector<geo::TileId> west{children[0]}, east{children[1]};
+  FrameStats stats;
+  const Image westImage = drawDraped(
+      view, west,
+      {drapesOf({{0, kTile, {0.0f, 0.0f, 0.5f, 0.5f}}, {1, kTile, {0.0f, 0.0f, 0.5f, 0.5f}}})},
+      &stats);
+  EXPECT_EQ(stats.drapesDrawn, 2u) << "the west half is transparent: red must show through";
+  const glm::ivec2 w = pixelAt(view, children[0], 0.5, 0.5);
+  EXPECT_TRUE(near(westImage.at(w.x, w.y), kRed, 2));
+  const Image eastImage = drawDraped(
+      view, east,
+      {drapesOf({{0, kTile, {0.5f, 0.0f, 0.5f, 0.5f}}, {1, kTile, {0.5f, 0.0f, 0.5f, 0.5f}}})},
+      &stats);
+  EXPECT_EQ(stats.drapesDrawn, 1u) << "the east half is opaque: the red layer is not sampled";
+  const glm::ivec2 e = pixelAt(view, children[1], 0.5, 0.5);
+  EXPECT_TRUE(near(eastImage.at(e.x, e.y), {30, 200, 90, 255}, 2));
+}
+
 TEST_F(ImageryLayers, LayersDrawOverTheGlobalImage) {
   uploadFlat(kTile);
   const std::vector<uint8_t> global(64 * 32 * 4, 160);
@@ -439,71 +469,6 @@ TEST_F(ImageryLayers, FarViewsSampleTheMipChain) {
 
 // Speed, printed and not asserted: 300 flat level-6 tiles at 1280×720 looking towards the horizon,
 // plain and with 1 and 4 opaque layers, with anisotropic filtering (the default) and without.
-TEST(ImageryLayersSpeed, ObliqueViewWithLayersAt1280x720) {
-  constexpr int kW = 1280, kH = 720;
-  auto context = OsMesaContext::create(kW, kH);
-  ASSERT_TRUE(context.ok()) << context.error();
-  terrain::HeightBlock block;
-  block.verticesPerSide = 17;
-  block.heights.assign(17 * 17, static_cast<int16_t>(kGroundMeters));
-  const auto texels = makeImage([](int column, int row) {
-    return Rgba{static_cast<uint8_t>(column), static_cast<uint8_t>(row), 128, 255};
-  });
-  // 30 km up over the block's middle, looking 400 km ahead: texels stretched towards the horizon.
-  const LocalFrame frame = localFrame(22.0, 0.0);
-  const glm::dvec3 ground =
-      geo::cartographicToEcef(kWgs84, geo::Cartographic::fromDegrees(22.0, 0.0, 0.0));
-  const RenderView view =
-      makeLookAtView(ground + 30e3 * frame.up, ground + 400e3 * frame.north, frame.up,
-                     geo::degreesToRadians(50.0), kW, kH, frame.up + frame.east);
-
-  for (const float anisotropy : {TerrainRendererOptions{}.maxImageryAnisotropy, 1.0f}) {
-    TerrainRendererOptions options;
-    options.maxImageryAnisotropy = anisotropy;
-    auto created = TerrainRenderer::create(options);
-    ASSERT_TRUE(created.ok()) << created.error();
-    TerrainRenderer& renderer = **created;
-    // One texture per layer, shared by all tiles: the sampling cost without 400 MB of uploads.
-    const geo::TileId shared{0, 0, 0};
-    for (uint32_t layer = 0; layer < kMaxDrapeLayers; ++layer) {
-      ASSERT_TRUE(
-          renderer.uploadImageryTile(layer, shared, texels, kImagerySize, kImagerySize).ok());
-    }
-    std::vector<geo::TileId> ids;
-    for (uint32_t y = 20; y < 35; ++y) {
-      for (uint32_t x = 60; x < 80; ++x) {
-        const geo::TileId id{6, x, y};
-        const double skirt = terrain::recommendedSkirtDepthMeters(6, 17, kWgs84);
-        ASSERT_TRUE(renderer.uploadTile(id, terrain::buildTileMesh(id, block, kWgs84, skirt)).ok());
-        ids.push_back(id);
-      }
-    }
-    const std::vector<TileDrapes> one(ids.size(), drapesOf({{0, shared}}));
-    const std::vector<TileDrapes> four(
-        ids.size(), drapesOf({{0, shared}, {1, shared}, {2, shared}, {3, shared}}));
-    auto timeFrames = [&](std::span<const TileDrapes> drapes) {
-      renderer.draw(view, ids, drapes);
-      finishGl();
-      constexpr int kFrames = 5;
-      const auto start = std::chrono::steady_clock::now();
-      for (int k = 0; k < kFrames; ++k) {
-        renderer.draw(view, ids, drapes);
-        finishGl();
-      }
-      return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                 .count() /
-             kFrames;
-    };
-    const double plain = timeFrames({});
-    const double oneLayer = timeFrames(one);
-    const double fourLayers = timeFrames(four);
-    if (anisotropy > 1.0f) savePng(readImage(kW, kH), "imagery_layers_speed_oblique");
-    std::cout << "[imagery layers speed] " << currentGlInfo().renderer << ", " << ids.size()
-              << " tiles " << kW << "x" << kH << ", anisotropy up to " << anisotropy << ": "
-              << plain << " ms/frame plain, " << oneLayer << " with 1 layer, " << fourLayers
-              << " with 4 layers\n";
-  }
-}
 
 }  // namespace
 }  // namespace globe::render::test
