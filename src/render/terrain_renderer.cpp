@@ -199,7 +199,15 @@ Result<std::unique_ptr<TerrainRenderer>> TerrainRenderer::create(
   }
   auto impl = std::make_unique<Impl>();
   impl->options = options;
-  impl->imageryTiles = ImageryTextures(options.maxImageryAnisotropy);
+  float anisotropy = options.maxImageryAnisotropy;
+  if (!(anisotropy > 0.0f)) {  // 0 and NaN: by the GL (terrain_renderer.hpp)
+    const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const std::string renderer = name != nullptr ? name : "";
+    const bool software = renderer.find("llvmpipe") != std::string::npos ||
+                          renderer.find("softpipe") != std::string::npos;
+    anisotropy = software ? 1.0f : 8.0f;
+  }
+  impl->imageryTiles = ImageryTextures(anisotropy);
   if (impl->options.shaderDirectory.empty())
     impl->options.shaderDirectory = defaultShaderDirectory();
   // The programs without layers up front (a bad shader directory fails here); layered ones when

@@ -24,11 +24,10 @@ struct TerrainRendererOptions {
   uint32_t verticesPerSide = 17;  // every uploaded mesh must have this block size
   bool skirts = true;             // every uploaded mesh must have skirts iff this is set
   // Anisotropic filtering of imagery tiles, at most this many samples (where the GL has
-  // GL_EXT/ARB_texture_filter_anisotropic; 1 = off). Sharp oblique views; free on GPUs, but
-  // llvmpipe takes it on a slow path (any setting above 1): 300 tiles, 1280x720, looking at the
-  // horizon (tests/render/test_imagery_layers.cpp), one layer ~11 → 25-50 ms a frame, four layers
-  // ~16 → 70-150 ms, on a busy 2-core machine.
-  float maxImageryAnisotropy = 1.0f;
+  // GL_EXT/ARB_texture_filter_anisotropic; 1 = off). 0 (the default) = 8 on a GPU and off on the
+  // software rasterisers (llvmpipe, softpipe), which take it on a slow path: 300 tiles at
+  // 1280x720 looking at the horizon, one layer ~11 → 25-50 ms a frame, four ~16 → 70-150 ms.
+  float maxImageryAnisotropy = 0.0f;
 };
 
 struct TerrainStyle {
