@@ -16,4 +16,9 @@ std::array<TileId, 4> TileId::children() const {
           TileId{childLevel, west, north + 1}, TileId{childLevel, west + 1, north + 1}};
 }
 
+std::string tileName(const TileId& tile) {
+  return "tile " + std::to_string(tile.level) + "/" + std::to_string(tile.x) + "/" +
+         std::to_string(tile.y);
+}
+
 }  // namespace globe::geo

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <string>
 
 namespace globe::geo {
 
@@ -25,6 +26,9 @@ struct TileId {
   // a kMaxLevel tile are beyond kMaxLevel and therefore not valid tiles.
   std::array<TileId, 4> children() const;
 };
+
+// "tile L/X/Y", as messages name a tile.
+std::string tileName(const TileId& tile);
 
 }  // namespace globe::geo
 

@@ -13,7 +13,7 @@ Result<std::optional<ImageRgba>> ImagerySource::load(const geo::TileId& tile) {
   if (!image) return Error{image.error()};
   const auto size = static_cast<int>(store_.manifest().tileSizePixels);
   if (image->widthPixels != size || image->heightPixels != size) {
-    return makeError(location(tile) + ": " + tileName(tile) + " is " +
+    return makeError(location(tile) + ": " + geo::tileName(tile) + " is " +
                      std::to_string(image->widthPixels) + "x" +
                      std::to_string(image->heightPixels) + " pixels, the layer's tiles are " +
                      std::to_string(size) + "x" + std::to_string(size));

@@ -10,40 +10,13 @@
 #include <utility>
 
 #include "io/big_endian.hpp"
+#include "io/file_reads.hpp"
 
 namespace globe::io {
 namespace {
 
 // Bounded so that a long flight over many packs never runs out of file descriptors.
 constexpr size_t kMaxOpenPacks = 256;
-
-struct FdCloser {
-  int fd;
-  ~FdCloser() {
-    if (fd >= 0) ::close(fd);
-  }
-};
-
-Result<void> preadFully(int fd, std::byte* out, size_t bytes, uint64_t offset,
-                        const std::filesystem::path& path) {
-  size_t done = 0;
-  while (done < bytes) {
-    const ssize_t n = ::pread(fd, out + done, bytes - done, static_cast<off_t>(offset + done));
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      return makeError(
-          path.string() + ": read failed at byte " + std::to_string(offset + done) +
-          (n < 0 ? std::string(": ") + std::strerror(errno) : ": unexpected end of file"));
-    }
-    done += static_cast<size_t>(n);
-  }
-  return {};
-}
-
-std::string tileName(const geo::TileId& tile) {
-  return "tile " + std::to_string(tile.level) + "/" + std::to_string(tile.x) + "/" +
-         std::to_string(tile.y);
-}
 
 }  // namespace
 
@@ -140,7 +113,7 @@ Result<bool> ImageryStore::hasTile(const geo::TileId& tile) {
 }
 
 Result<std::optional<std::vector<std::byte>>> ImageryStore::loadEncoded(const geo::TileId& tile) {
-  if (tile.level > geo::kMaxLevel) return makeError(dir_.string() + ": no " + tileName(tile));
+  if (tile.level > geo::kMaxLevel) return makeError(dir_.string() + ": no " + geo::tileName(tile));
   auto opened = pack(packOf(tile, manifest_.packTilesPerSide));
   if (!opened) return Error{opened.error()};
   if (!*opened) return std::optional<std::vector<std::byte>>();
@@ -155,7 +128,7 @@ Result<std::optional<std::vector<std::byte>>> ImageryStore::loadEncoded(const ge
   if (!checked) {
     std::lock_guard lock(mutex_);
     notePackError(p.index.id, checked.error());
-    return Error{checked.error() + " (" + tileName(tile) + ")"};
+    return Error{checked.error() + " (" + geo::tileName(tile) + ")"};
   }
   ++tileReads_;
   return std::optional<std::vector<std::byte>>(std::move(bytes));

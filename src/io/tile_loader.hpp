@@ -161,11 +161,6 @@ class PayloadLoader {
   LoaderCounters counters_;
 };
 
-inline std::string tileName(const geo::TileId& tile) {
-  return "tile " + std::to_string(tile.level) + "/" + std::to_string(tile.x) + "/" +
-         std::to_string(tile.y);
-}
-
 // Runs on a worker.
 template <class Payload>
 FinishedLoad<Payload> PayloadLoader<Payload>::loadTile(TileSource<Payload>& source,
@@ -174,7 +169,7 @@ FinishedLoad<Payload> PayloadLoader<Payload>::loadTile(TileSource<Payload>& sour
   Finished done{tile, Finished::Outcome::Failed, nullptr, {}, postedAt, {}};
   auto loaded = source.load(tile);
   if (!loaded) {
-    done.error = tileName(tile) + ": " + loaded.error();
+    done.error = geo::tileName(tile) + ": " + loaded.error();
   } else if (!*loaded) {
     done.outcome = Finished::Outcome::Absent;
   } else {

@@ -9,34 +9,13 @@
 #include <cstring>
 #include <utility>
 
+#include "io/file_reads.hpp"
+
 namespace globe::io {
 namespace {
 
 // Bounded so that a long flight over many packs never runs out of file descriptors.
 constexpr size_t kMaxOpenPacks = 256;
-
-struct FdCloser {
-  int fd;
-  ~FdCloser() {
-    if (fd >= 0) ::close(fd);
-  }
-};
-
-Result<void> preadFully(int fd, std::byte* out, size_t bytes, uint64_t offset,
-                        const std::filesystem::path& path) {
-  size_t done = 0;
-  while (done < bytes) {
-    const ssize_t n = ::pread(fd, out + done, bytes - done, static_cast<off_t>(offset + done));
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      return makeError(
-          path.string() + ": read failed at byte " + std::to_string(offset + done) +
-          (n < 0 ? std::string(": ") + std::strerror(errno) : ": unexpected end of file"));
-    }
-    done += static_cast<size_t>(n);
-  }
-  return {};
-}
 
 // A pyramid of another pack format version is refused as a whole: its first level-0 pack's
 // header says so. Unreadable or damaged packs are left to be reported one by one when read.
@@ -149,8 +128,7 @@ Result<std::optional<PackEntry>> TileStore::entry(const geo::TileId& tile) {
 Result<terrain::HeightBlock> TileStore::loadBlock(const geo::TileId& tile) {
   auto opened = pack(packOf(tile, manifest_.packTilesPerSide));
   if (!opened) return Error{opened.error()};
-  const std::string name = "tile " + std::to_string(tile.level) + "/" + std::to_string(tile.x) +
-                           "/" + std::to_string(tile.y);
+  const std::string name = geo::tileName(tile);
   if (!*opened) return makeError(dir_.string() + ": the pyramid has no " + name);
   const OpenPack& p = **opened;
   const PackEntry& e = p.index.entries[slotOf(tile, manifest_.packTilesPerSide)];

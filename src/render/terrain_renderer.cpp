@@ -250,8 +250,7 @@ Result<std::unique_ptr<TerrainRenderer>> TerrainRenderer::create(
 Result<void> TerrainRenderer::uploadTile(const geo::TileId& tile, const terrain::TileMesh& mesh) {
   const auto& options = impl_->options;
   if (mesh.verticesPerSide != options.verticesPerSide || mesh.hasSkirts != options.skirts) {
-    return makeError("terrain renderer: tile " + std::to_string(tile.level) + "/" +
-                     std::to_string(tile.x) + "/" + std::to_string(tile.y) + ": mesh has " +
+    return makeError("terrain renderer: " + geo::tileName(tile) + ": mesh has " +
                      std::to_string(mesh.verticesPerSide) + " vertices per side" +
                      (mesh.hasSkirts ? " with" : " without") + " skirts, renderer expects " +
                      std::to_string(options.verticesPerSide) +
@@ -261,8 +260,7 @@ Result<void> TerrainRenderer::uploadTile(const geo::TileId& tile, const terrain:
       size_t{terrain::tileVertexCount(options.verticesPerSide, options.skirts)} *
       terrain::kTileVertexFloats;
   if (mesh.vertices.size() != expected) {
-    return makeError("terrain renderer: tile " + std::to_string(tile.level) + "/" +
-                     std::to_string(tile.x) + "/" + std::to_string(tile.y) + ": mesh has " +
+    return makeError("terrain renderer: " + geo::tileName(tile) + ": mesh has " +
                      std::to_string(mesh.vertices.size()) + " floats, expected " +
                      std::to_string(expected));
   }

@@ -32,10 +32,6 @@ uint64_t mix(uint64_t key) {
   return key ^ (key >> 31);
 }
 
-std::string tileName(const geo::TileId& t) {
-  return std::to_string(t.level) + "/" + std::to_string(t.x) + "/" + std::to_string(t.y);
-}
-
 bool insideFrustum(const geo::Frustum& frustum, const glm::dvec3& p, double toleranceMeters) {
   for (const geo::Plane& plane : frustum.planes) {
     if (glm::dot(plane.normal, p) + plane.distance < -toleranceMeters) return false;
