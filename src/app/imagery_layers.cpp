@@ -35,9 +35,12 @@ struct ImageryLayers::Layer {
     if (auto it = present.find(tile); it != present.end()) return it->second;
     auto answer = store->hasTile(tile);
     const bool has = answer && *answer;
+    // Bounded: a long flight asks about ever new tiles (the store answers from its index anyway).
+    if (present.size() >= kPresentEntries) present.clear();
     present.emplace(tile, has);
     return has;
   }
+  static constexpr size_t kPresentEntries = 1u << 16;
 };
 
 Result<LayerOptions> parseLayerArgument(const std::string& text) {
@@ -91,7 +94,6 @@ Result<void> ImageryLayers::preload(Layer& layer, uint32_t index,
     auto image = layer.source->load(root);
     if (!image) return Error{image.error()};
     if (!*image) continue;  // the layer covers nothing of this half
-    layer.present[root] = true;
     if (auto uploaded = renderer.uploadImageryTile(index, root, (*image)->pixels,
                                                    (*image)->widthPixels, (*image)->heightPixels);
         !uploaded) {
