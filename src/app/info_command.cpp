@@ -116,4 +116,38 @@ std::string formatPyramidInfoJson(const io::PyramidManifest& m, const std::strin
   return j.dump(2) + "\n";
 }
 
+std::string formatLayerInfoText(const io::LayerManifest& m, const std::string& path) {
+  std::string out;
+  char line[1024];
+  std::snprintf(
+      line, sizeof line,
+      "layer       %s\n"
+      "scheme      geographic lat/long quadtree, level 0 = 2x1 tiles of 180 deg\n"
+      "tiles       %ux%u pixels, JPEG (opaque) or PNG (with alpha), %llu in all\n"
+      "levels      0..%u\n"
+      "finest      %s\n",
+      path.c_str(), m.tileSizePixels, m.tileSizePixels,
+      static_cast<unsigned long long>(m.tileCount()), m.maxLevel(),
+      boundsText(m.levels.empty() ? io::BoundsDegrees{} : m.levels.back().bounds).c_str());
+  out += line;
+  out += "\nlevel      tiles  packs  bounds (deg)\n";
+  for (const io::ImageryLevelInfo& info : m.levels) {
+    std::snprintf(line, sizeof line, "%5u %10llu %6zu  %s\n", info.level,
+                  static_cast<unsigned long long>(info.tileCount), info.packs.size(),
+                  boundsText(info.bounds).c_str());
+    out += line;
+  }
+  out += "\nsources (finest first)\n";
+  for (const io::ImagerySourceInfo& s : m.sources) {
+    std::snprintf(line, sizeof line,
+                  "  %s  %s %lldx%lld, %s, %.6g deg per pixel, finest level %u, bands %s%s%s, %s\n",
+                  s.path.c_str(), s.driver.c_str(), static_cast<long long>(s.columns),
+                  static_cast<long long>(s.rows), s.crs.c_str(), s.pixelDegrees, s.finestLevel,
+                  s.bands.c_str(), s.stretch.empty() ? "" : ", stretch ", s.stretch.c_str(),
+                  boundsText(s.bounds).c_str());
+    out += line;
+  }
+  return out;
+}
+
 }  // namespace globe::app

@@ -1,13 +1,18 @@
-// `globe info PYRAMID [--json]`: levels, tile counts, bounds and height range of a pyramid.
+// `globe info DIR [--json]`: levels, tile counts, bounds and height range of a pyramid, or levels,
+// tile counts, bounds and sources of an imagery layer.
 #pragma once
 
 #include <string>
 
+#include "io/layer_manifest.hpp"
 #include "io/pyramid_manifest.hpp"
 
 namespace globe::app {
 
 std::string formatPyramidInfoText(const io::PyramidManifest& manifest, const std::string& path);
 std::string formatPyramidInfoJson(const io::PyramidManifest& manifest, const std::string& path);
+
+// `globe info LAYER`: an imagery layer's levels, tile counts, bounds and sources.
+std::string formatLayerInfoText(const io::LayerManifest& manifest, const std::string& path);
 
 }  // namespace globe::app

@@ -1,6 +1,7 @@
 // globe: the virtual-globe viewer's command line. Subcommands wire the libraries together.
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <string>
 
@@ -55,11 +56,12 @@ int main(int argc, char** argv) {
     return true;
   };
 
-  CLI::App* info =
-      app.add_subcommand("info", "print a pyramid's levels, tile counts, bounds and heights");
+  CLI::App* info = app.add_subcommand(
+      "info", "print a pyramid's (or an imagery layer's) levels, tile counts, bounds and sources");
   std::string pyramid;
   bool json = false;
-  info->add_option("PYRAMID", pyramid, "pyramid directory made by globe-tiler")->required();
+  info->add_option("DIR", pyramid, "pyramid or imagery layer directory made by globe-tiler")
+      ->required();
   info->add_flag("--json", json, "machine-readable output");
   addGlobe(info);
 
@@ -268,6 +270,20 @@ int main(int argc, char** argv) {
   }
 
   if (info->parsed()) {
+    // An imagery layer (globe-tiler imagery) rather than a pyramid.
+    if (std::filesystem::exists(std::filesystem::path(pyramid) /
+                                globe::io::kLayerManifestFileName) &&
+        !std::filesystem::exists(std::filesystem::path(pyramid) / globe::io::kManifestFileName)) {
+      auto layer = globe::io::readLayerManifest(pyramid);
+      if (!layer) {
+        std::fprintf(stderr, "globe info: %s\n", layer.error().c_str());
+        return 1;
+      }
+      const std::string text = json ? globe::io::layerManifestToJson(*layer) + "\n"
+                                    : globe::app::formatLayerInfoText(*layer, pyramid);
+      std::fputs(text.c_str(), stdout);
+      return 0;
+    }
     auto manifest = globe::io::readManifest(pyramid);
     if (!manifest) {
       std::fprintf(stderr, "globe info: %s\n", manifest.error().c_str());

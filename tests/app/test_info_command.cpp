@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "tests/tools/tiler/imagery_test_layers.hpp"
 #include "tests/tools/tiler/tiler_test_fixture.hpp"
 
 namespace {
@@ -69,6 +70,23 @@ TEST(GlobeInfo, NotAPyramidIsAClearError) {
   EXPECT_NE(run.output.find("manifest.json"), std::string::npos) << run.output;
   const ProcessResult badGlobe = runGlobe("info --globe mars " + dir.string());
   EXPECT_EQ(badGlobe.exitCode, 2) << badGlobe.output;
+}
+
+// An imagery layer directory: its levels, tiles and sources, as text and as layer.json's JSON.
+TEST(GlobeInfo, DescribesAnImageryLayer) {
+  const auto layer = globe::tiler::testing::zionLayer();
+  const ProcessResult text = runGlobe("info " + layer.string());
+  ASSERT_EQ(text.exitCode, 0) << text.output;
+  EXPECT_NE(text.output.find("layer "), std::string::npos) << text.output;
+  EXPECT_NE(text.output.find("256x256 pixels"), std::string::npos) << text.output;
+  EXPECT_NE(text.output.find("levels      0..12"), std::string::npos) << text.output;
+  EXPECT_NE(text.output.find("zion-landsat8-rgb.tif"), std::string::npos) << text.output;
+  EXPECT_NE(text.output.find("EPSG:32612"), std::string::npos) << text.output;
+  const ProcessResult json = runGlobe("info --json " + layer.string());
+  ASSERT_EQ(json.exitCode, 0) << json.output;
+  const auto j = nlohmann::json::parse(json.output);
+  EXPECT_EQ(j["kind"], "imagery");
+  EXPECT_EQ(j["levels"].size(), 13u);
 }
 
 }  // namespace
