@@ -121,15 +121,14 @@ Result<ImageryFrame> ImageryLayers::update(
     preloaded_ = true;
   }
   // Priority: nearer terrain tiles first (the distance to the rectangle's centre on the
-  // ellipsoid is plenty to order loads).
-  std::vector<double> priority(tiles.size());
-  for (size_t i = 0; i < tiles.size(); ++i) {
+  // ellipsoid is plenty to order loads); computed only for tiles that want a load.
+  auto priority = [&](size_t i) {
     const auto rect = geo::GeographicTilingScheme::tileRectangle(tiles[i]);
     const glm::dvec3 center =
         geo::cartographicToEcef(ellipsoid, {rect.westRadians + rect.widthRadians() / 2,
                                             rect.southRadians + rect.heightRadians() / 2, 0.0});
-    priority[i] = -glm::length(center - cameraEcefMeters);
-  }
+    return -glm::length(center - cameraEcefMeters);
+  };
 
   for (uint32_t index = 0; index < layers_.size(); ++index) {
     Layer& layer = *layers_[index];
@@ -180,7 +179,7 @@ Result<ImageryFrame> ImageryLayers::update(
       if (drawn.level < target.level && state != io::TileState::Failed &&
           state != io::TileState::Absent) {
         frame.complete = false;
-        wanted.push_back({target, priority[i]});
+        wanted.push_back({target, priority(i)});
       }
       if (!found) continue;
       if (drawn != want) ++frame.fallbacks;

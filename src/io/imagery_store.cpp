@@ -13,19 +13,10 @@
 #include "io/file_reads.hpp"
 
 namespace globe::io {
-namespace {
-
-// Bounded so that a long flight over many packs never runs out of file descriptors.
-constexpr size_t kMaxOpenPacks = 256;
-
-}  // namespace
+namespace {}  // namespace
 
 ImageryStore::ImageryStore(std::filesystem::path dir, LayerManifest manifest)
     : dir_(std::move(dir)), manifest_(std::move(manifest)) {}
-
-ImageryStore::OpenPack::~OpenPack() {
-  if (fd >= 0) ::close(fd);
-}
 
 Result<std::unique_ptr<ImageryStore>> ImageryStore::open(const std::filesystem::path& layerDir) {
   auto manifest = readLayerManifest(layerDir);
@@ -38,18 +29,10 @@ std::filesystem::path ImageryStore::packFileOf(const geo::TileId& tile) const {
 }
 
 Result<std::shared_ptr<const ImageryStore::OpenPack>> ImageryStore::pack(const PackId& id) {
-  std::lock_guard lock(mutex_);
-  if (auto it = openPacks_.find(id); it != openPacks_.end()) return it->second;
-  if (auto it = failedPacks_.find(id); it != failedPacks_.end()) return makeError(it->second);
   if (id.level >= manifest_.levels.size()) return std::shared_ptr<const OpenPack>();
   const auto& packs = manifest_.levels[id.level].packs;
   if (!std::binary_search(packs.begin(), packs.end(), id)) return std::shared_ptr<const OpenPack>();
-  auto opened = openPack(id);
-  if (!opened) {
-    failedPacks_.emplace(id, opened.error());
-    notePackError(id, opened.error());
-  }
-  return opened;
+  return packs_.get(id, [this](const PackId& p) { return openPack(p); });
 }
 
 Result<std::shared_ptr<const ImageryStore::OpenPack>> ImageryStore::openPack(const PackId& id) {
@@ -81,29 +64,14 @@ Result<std::shared_ptr<const ImageryStore::OpenPack>> ImageryStore::openPack(con
     return makeError(path.string() + ": pack header disagrees with the layer manifest");
   }
   ++packIndexReads_;
-  if (openPacks_.size() >= kMaxOpenPacks) openPacks_.clear();
-  auto opened = std::make_shared<OpenPack>(file.fd, std::move(*index));
+  auto opened = std::make_shared<const OpenPack>(file.fd, std::move(*index));
   file.fd = -1;
-  openPacks_.emplace(id, opened);
-  return std::shared_ptr<const OpenPack>(opened);
+  return opened;
 }
 
-void ImageryStore::notePackError(const PackId& id, const std::string& message) {
-  if (reportedPacks_.insert(id).second) newPackErrors_.push_back(message);
-}
+std::vector<std::string> ImageryStore::takeNewPackErrors() { return packs_.takeNewErrors(); }
 
-std::vector<std::string> ImageryStore::takeNewPackErrors() {
-  std::lock_guard lock(mutex_);
-  return std::exchange(newPackErrors_, {});
-}
-
-void ImageryStore::forgetFailedPacks() {
-  std::lock_guard lock(mutex_);
-  // A pack whose tiles failed to read is opened afresh: a repair usually renames a new file in.
-  for (const PackId& id : reportedPacks_) openPacks_.erase(id);
-  failedPacks_.clear();
-  reportedPacks_.clear();
-}
+void ImageryStore::forgetFailedPacks() { packs_.forgetFailures(); }
 
 Result<bool> ImageryStore::hasTile(const geo::TileId& tile) {
   auto opened = pack(packOf(tile, manifest_.packTilesPerSide));
@@ -126,8 +94,7 @@ Result<std::optional<std::vector<std::byte>>> ImageryStore::loadEncoded(const ge
   auto checked = preadFully(p.fd, bytes.data(), bytes.size(), e.offset, path);
   if (checked) checked = checkImageTile(bytes, e, slot, path);
   if (!checked) {
-    std::lock_guard lock(mutex_);
-    notePackError(p.index.id, checked.error());
+    packs_.noteError(p.index.id, checked.error());
     return Error{checked.error() + " (" + geo::tileName(tile) + ")"};
   }
   ++tileReads_;

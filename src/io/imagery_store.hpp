@@ -17,6 +17,7 @@
 #include "geo/tile_id.hpp"
 #include "io/image_pack.hpp"
 #include "io/layer_manifest.hpp"
+#include "io/open_packs.hpp"
 
 namespace globe::io {
 
@@ -47,29 +48,15 @@ class ImageryStore {
   uint64_t packIndexReads() const { return packIndexReads_.load(); }
 
  private:
-  // Owns its descriptor, so a pack evicted from the cache stays readable while a reader uses it.
-  struct OpenPack {
-    int fd = -1;
-    ImagePackIndex index;
-    OpenPack(int descriptor, ImagePackIndex packIndex)
-        : fd(descriptor), index(std::move(packIndex)) {}
-    OpenPack(const OpenPack&) = delete;
-    OpenPack& operator=(const OpenPack&) = delete;
-    ~OpenPack();
-  };
+  using OpenPack = OpenPackFile<ImagePackIndex>;
   ImageryStore(std::filesystem::path dir, LayerManifest manifest);
   // nullptr when the layer has no such pack.
   Result<std::shared_ptr<const OpenPack>> pack(const PackId& id);
-  Result<std::shared_ptr<const OpenPack>> openPack(const PackId& id);  // with mutex_ held
-  void notePackError(const PackId& id, const std::string& message);    // with mutex_ held
+  Result<std::shared_ptr<const OpenPack>> openPack(const PackId& id);
 
   std::filesystem::path dir_;
   LayerManifest manifest_;
-  std::mutex mutex_;
-  std::map<PackId, std::shared_ptr<const OpenPack>> openPacks_;
-  std::map<PackId, std::string> failedPacks_;
-  std::set<PackId> reportedPacks_;
-  std::vector<std::string> newPackErrors_;
+  OpenPacks<OpenPack> packs_;
   std::atomic<uint64_t> tileReads_{0};
   std::atomic<uint64_t> packIndexReads_{0};
 };

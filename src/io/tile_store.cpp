@@ -14,9 +14,6 @@
 namespace globe::io {
 namespace {
 
-// Bounded so that a long flight over many packs never runs out of file descriptors.
-constexpr size_t kMaxOpenPacks = 256;
-
 // A pyramid of another pack format version is refused as a whole: its first level-0 pack's
 // header says so. Unreadable or damaged packs are left to be reported one by one when read.
 Result<void> checkFormatVersion(const std::filesystem::path& dir, const PyramidManifest& manifest) {
@@ -36,10 +33,6 @@ Result<void> checkFormatVersion(const std::filesystem::path& dir, const PyramidM
 TileStore::TileStore(std::filesystem::path dir, PyramidManifest manifest, terrain::SeaSurface sea)
     : dir_(std::move(dir)), manifest_(std::move(manifest)), sea_(sea) {}
 
-TileStore::OpenPack::~OpenPack() {
-  if (fd >= 0) ::close(fd);
-}
-
 Result<std::unique_ptr<TileStore>> TileStore::open(const std::filesystem::path& pyramidDir,
                                                    terrain::SeaSurface sea) {
   auto manifest = readManifest(pyramidDir);
@@ -52,18 +45,13 @@ Result<std::unique_ptr<TileStore>> TileStore::open(const std::filesystem::path& 
 }
 
 Result<std::shared_ptr<const TileStore::OpenPack>> TileStore::pack(const PackId& id) {
-  std::lock_guard lock(mutex_);
-  if (auto it = openPacks_.find(id); it != openPacks_.end()) return it->second;
-  if (auto it = failedPacks_.find(id); it != failedPacks_.end()) return makeError(it->second);
   if (id.level >= manifest_.levels.size()) return std::shared_ptr<const OpenPack>();
   const auto& packs = manifest_.levels[id.level].packs;
   if (!std::binary_search(packs.begin(), packs.end(), id)) return std::shared_ptr<const OpenPack>();
-  auto opened = openPack(id);
-  if (!opened) {
-    ++packOpenFailures_;
-    failedPacks_.emplace(id, opened.error());
-    notePackError(id, opened.error());
-  }
+  bool failed = false;
+  auto opened = packs_.get(
+      id, [this](const PackId& p) { return openPack(p); }, &failed);
+  if (failed) ++packOpenFailures_;
   return opened;
 }
 
@@ -93,29 +81,14 @@ Result<std::shared_ptr<const TileStore::OpenPack>> TileStore::openPack(const Pac
     return makeError(path.string() + ": pack header disagrees with the manifest");
   }
   ++packIndexReads_;
-  if (openPacks_.size() >= kMaxOpenPacks) openPacks_.clear();
-  auto opened = std::make_shared<OpenPack>(file.fd, std::move(*index));
+  auto opened = std::make_shared<const OpenPack>(file.fd, std::move(*index));
   file.fd = -1;
-  openPacks_.emplace(id, opened);
-  return std::shared_ptr<const OpenPack>(opened);
+  return opened;
 }
 
-void TileStore::notePackError(const PackId& id, const std::string& message) {
-  if (reportedPacks_.insert(id).second) newPackErrors_.push_back(message);
-}
+std::vector<std::string> TileStore::takeNewPackErrors() { return packs_.takeNewErrors(); }
 
-std::vector<std::string> TileStore::takeNewPackErrors() {
-  std::lock_guard lock(mutex_);
-  return std::exchange(newPackErrors_, {});
-}
-
-void TileStore::forgetFailedPacks() {
-  std::lock_guard lock(mutex_);
-  // A pack whose blocks failed to read is opened afresh: a repair usually renames a new file in.
-  for (const PackId& id : reportedPacks_) openPacks_.erase(id);
-  failedPacks_.clear();
-  reportedPacks_.clear();
-}
+void TileStore::forgetFailedPacks() { packs_.forgetFailures(); }
 
 Result<std::optional<PackEntry>> TileStore::entry(const geo::TileId& tile) {
   auto opened = pack(packOf(tile, manifest_.packTilesPerSide));
@@ -138,8 +111,7 @@ Result<terrain::HeightBlock> TileStore::loadBlock(const geo::TileId& tile) {
   if (auto read =
           preadFully(p.fd, bytes.data(), bytes.size(), e.blockOffset, packPath(dir_, p.index.id));
       !read) {
-    std::lock_guard lock(mutex_);
-    notePackError(p.index.id, read.error());
+    packs_.noteError(p.index.id, read.error());
     return Error{read.error()};
   }
   ++blockReads_;

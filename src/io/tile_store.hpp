@@ -13,6 +13,7 @@
 
 #include "geo/result.hpp"
 #include "geo/tile_id.hpp"
+#include "io/open_packs.hpp"
 #include "io/pack_format.hpp"
 #include "io/pyramid_manifest.hpp"
 #include "io/tile_source.hpp"
@@ -64,29 +65,16 @@ class TileStore final : public TileSource<terrain::HeightBlock> {
   void forgetFailedPacks();
 
  private:
-  // Owns its descriptor, so a pack evicted from the cache stays readable while a loader uses it.
-  struct OpenPack {
-    int fd = -1;
-    PackIndex index;
-    OpenPack(int descriptor, PackIndex packIndex) : fd(descriptor), index(std::move(packIndex)) {}
-    OpenPack(const OpenPack&) = delete;
-    OpenPack& operator=(const OpenPack&) = delete;
-    ~OpenPack();
-  };
+  using OpenPack = OpenPackFile<PackIndex>;
   TileStore(std::filesystem::path dir, PyramidManifest manifest, terrain::SeaSurface sea);
   // nullptr when the level has no such pack.
   Result<std::shared_ptr<const OpenPack>> pack(const PackId& id);
-  Result<std::shared_ptr<const OpenPack>> openPack(const PackId& id);  // with mutex_ held
-  void notePackError(const PackId& id, const std::string& message);    // with mutex_ held
+  Result<std::shared_ptr<const OpenPack>> openPack(const PackId& id);
 
   std::filesystem::path dir_;
   PyramidManifest manifest_;
   terrain::SeaSurface sea_;
-  std::mutex mutex_;
-  std::map<PackId, std::shared_ptr<const OpenPack>> openPacks_;
-  std::map<PackId, std::string> failedPacks_;  // open failed: the error, not retried
-  std::set<PackId> reportedPacks_;             // packs whose error was queued for reporting
-  std::vector<std::string> newPackErrors_;
+  OpenPacks<OpenPack> packs_;
   std::atomic<uint64_t> blockReads_{0};
   std::atomic<uint64_t> packIndexReads_{0};
   std::atomic<uint64_t> packOpenFailures_{0};

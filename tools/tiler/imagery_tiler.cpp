@@ -429,17 +429,7 @@ Result<ImageryTilerReport> runImageryTiler(const ImageryTilerOptions& options) {
         finished.notify_all();
       });
     }
-    const std::string label =
-        "level " + std::to_string(level) + "/" + std::to_string(plan.maxLevel());
-    {
-      std::unique_lock lock(mutex);
-      while (running > 0) {
-        finished.wait_for(lock, std::chrono::milliseconds(100));
-        lock.unlock();
-        progress.update(tilesDone, label);
-        lock.lock();
-      }
-    }
+    waitForLevel(progress, mutex, finished, running, tilesDone, level, plan.maxLevel());
     for (std::thread& worker : workers) worker.join();
     if (failed) return makeError(firstError);
     // A pack with no planned tile to render (all empty) is still written, for resuming.

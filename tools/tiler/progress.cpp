@@ -49,4 +49,17 @@ void ProgressBar::draw(uint64_t done, const std::string& label) {
   std::fflush(out_);
 }
 
+void waitForLevel(ProgressBar& progress, std::mutex& mutex, std::condition_variable& finished,
+                  const unsigned& running, const std::atomic<uint64_t>& done, uint32_t level,
+                  uint32_t maxLevel) {
+  const std::string label = "level " + std::to_string(level) + "/" + std::to_string(maxLevel);
+  std::unique_lock lock(mutex);
+  while (running > 0) {
+    finished.wait_for(lock, std::chrono::milliseconds(100));
+    lock.unlock();
+    progress.update(done, label);
+    lock.lock();
+  }
+}
+
 }  // namespace globe::tiler

@@ -1,9 +1,12 @@
 // A one-line progress bar with rate and ETA, redrawn in place on a terminal.
 #pragma once
 
+#include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cstdint>
 #include <cstdio>
+#include <mutex>
 #include <string>
 
 namespace globe::tiler {
@@ -24,6 +27,12 @@ class ProgressBar {
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point lastDraw_;
 };
+
+// Waits until `running` (guarded by `mutex`, changes signalled on `finished`) is 0, redrawing the
+// bar with `done` and "level L/MAX" meanwhile: how both tilers wait for a level's workers.
+void waitForLevel(ProgressBar& progress, std::mutex& mutex, std::condition_variable& finished,
+                  const unsigned& running, const std::atomic<uint64_t>& done, uint32_t level,
+                  uint32_t maxLevel);
 
 // "1:02:03" / "02:03"
 std::string formatDuration(double seconds);

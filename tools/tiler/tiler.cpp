@@ -268,17 +268,7 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
         finished.notify_all();
       });
     }
-    const std::string label =
-        "level " + std::to_string(level) + "/" + std::to_string(plan.maxLevel());
-    {
-      std::unique_lock lock(mutex);
-      while (running > 0) {
-        finished.wait_for(lock, std::chrono::milliseconds(100));
-        lock.unlock();
-        progress.update(tilesDone, label);
-        lock.lock();
-      }
-    }
+    waitForLevel(progress, mutex, finished, running, tilesDone, level, plan.maxLevel());
     for (std::thread& worker : workers) worker.join();
     if (failed) return makeError(firstError);
 

@@ -6,7 +6,6 @@
 #include <map>
 
 #include "tests/tools/tiler/tiler_test_fixture.hpp"
-#include "tools/tiler/tiler.hpp"
 
 namespace globe::tiler::testing {
 
@@ -36,17 +35,9 @@ const std::filesystem::path& zionLayer() {
 }
 
 const std::filesystem::path& zionPyramid() {
-  static const std::filesystem::path dir = [] {
-    auto out = freshTempDir("zion-pyramid") / "pyramid";
-    TilerOptions options;
-    options.inputs = {bundledData("data/dem/ETOPO20.DEM").string(),
-                      bundledData("data/dem/zion-srtm3.tif").string()};
-    options.outputDir = out;
-    options.progress = false;
-    auto report = runTiler(options);
-    if (!report) ADD_FAILURE() << report.error();
-    return out;
-  }();
+  static const std::filesystem::path dir =
+      tilePyramid("zion-pyramid", {bundledData("data/dem/ETOPO20.DEM").string(),
+                                   bundledData("data/dem/zion-srtm3.tif").string()});
   return dir;
 }
 

@@ -47,17 +47,19 @@ std::filesystem::path freshTempDir(const std::string& name) {
 }
 
 const std::filesystem::path& bundledPyramid() {
-  static const std::filesystem::path dir = [] {
-    auto out = freshTempDir("bundled-pyramid") / "pyramid";
-    TilerOptions options;
-    options.inputs = bundledInputs();
-    options.outputDir = out;
-    options.progress = false;
-    auto report = runTiler(options);
-    if (!report) ADD_FAILURE() << report.error();
-    return out;
-  }();
+  static const std::filesystem::path dir = tilePyramid("bundled-pyramid", bundledInputs());
   return dir;
+}
+
+std::filesystem::path tilePyramid(const std::string& name, const std::vector<std::string>& inputs) {
+  auto out = freshTempDir(name) / "pyramid";
+  TilerOptions options;
+  options.inputs = inputs;
+  options.outputDir = out;
+  options.progress = false;
+  auto report = runTiler(options);
+  if (!report) ADD_FAILURE() << report.error();
+  return out;
 }
 
 std::map<std::string, std::pair<uint32_t, size_t>> checksums(const std::filesystem::path& dir) {

@@ -1,0 +1,93 @@
+// The packs a store has open: each opened once (at most kMaxOpenPacks at a time, so a long flight
+// never runs out of descriptors), a pack that failed to open remembered with its error and not
+// retried, and the first error of each pack queued once for the viewer to report. Shared by the
+// height-block and imagery stores. Thread-safe.
+#pragma once
+
+#include <unistd.h>
+
+#include <cstddef>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "geo/result.hpp"
+#include "io/pack_format.hpp"
+
+namespace globe::io {
+
+// An open pack file and its parsed index. Owns its descriptor, so a pack dropped from the open
+// set stays readable while a reader still holds it.
+template <class Index>
+struct OpenPackFile {
+  int fd = -1;
+  Index index;
+  OpenPackFile(int descriptor, Index packIndex) : fd(descriptor), index(std::move(packIndex)) {}
+  OpenPackFile(const OpenPackFile&) = delete;
+  OpenPackFile& operator=(const OpenPackFile&) = delete;
+  ~OpenPackFile() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+template <class Pack>
+class OpenPacks {
+ public:
+  static constexpr size_t kMaxOpenPacks = 256;
+  using Opened = Result<std::shared_ptr<const Pack>>;
+
+  // The pack if open; its remembered error if it failed before; else open(id) (called with the
+  // lock held), whose failure is remembered and queued for reporting. *openedNowFailed is set
+  // when this call's open failed.
+  template <class Open>
+  Opened get(const PackId& id, Open&& open, bool* openedNowFailed = nullptr) {
+    std::lock_guard lock(mutex_);
+    if (auto it = open_.find(id); it != open_.end()) return it->second;
+    if (auto it = failed_.find(id); it != failed_.end()) return makeError(it->second);
+    Opened opened = open(id);
+    if (!opened) {
+      failed_.emplace(id, opened.error());
+      note(id, opened.error());
+      if (openedNowFailed != nullptr) *openedNowFailed = true;
+      return opened;
+    }
+    if (open_.size() >= kMaxOpenPacks) open_.clear();
+    open_.emplace(id, *opened);
+    return opened;
+  }
+
+  // Queues a pack's error (a read that failed after it opened), once per pack.
+  void noteError(const PackId& id, const std::string& message) {
+    std::lock_guard lock(mutex_);
+    note(id, message);
+  }
+  std::vector<std::string> takeNewErrors() {
+    std::lock_guard lock(mutex_);
+    return std::exchange(newErrors_, {});
+  }
+  // A pack that failed is opened afresh next time (a repair usually renames a new file in), and
+  // reported again should it still fail.
+  void forgetFailures() {
+    std::lock_guard lock(mutex_);
+    for (const PackId& id : reported_) open_.erase(id);
+    failed_.clear();
+    reported_.clear();
+  }
+
+ private:
+  void note(const PackId& id, const std::string& message) {
+    if (reported_.insert(id).second) newErrors_.push_back(message);
+  }
+
+  std::mutex mutex_;
+  std::map<PackId, std::shared_ptr<const Pack>> open_;
+  std::map<PackId, std::string> failed_;  // open failed: the error, not retried
+  std::set<PackId> reported_;             // packs whose error was queued for reporting
+  std::vector<std::string> newErrors_;
+};
+
+}  // namespace globe::io
