@@ -11,7 +11,7 @@ namespace globe::io {
 template <>
 struct PayloadBytes<terrain::HeightBlock> {
   static size_t of(const terrain::HeightBlock& block) {
-    return block.heights.size() * sizeof(int16_t);
+    return (block.heights.size() + block.apron.size()) * sizeof(int16_t);
   }
 };
 

@@ -1,6 +1,7 @@
 #include "io/pack_format.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 #include <string>
 
@@ -16,22 +17,44 @@ Error packError(const std::filesystem::path& path, const std::string& problem) {
   return makeError(path.string() + ": " + problem);
 }
 
-void storeEntry(std::byte* out, const PackEntry& entry) {
+void storeEntry(std::byte* out, const PackEntry& entry, uint32_t formatVersion) {
   storeBigEndian64(out, entry.blockOffset);
   storeBigEndian16(out + 8, static_cast<uint16_t>(entry.vertexRange.minimumMeters));
   storeBigEndian16(out + 10, static_cast<uint16_t>(entry.vertexRange.maximumMeters));
   storeBigEndian16(out + 12, static_cast<uint16_t>(entry.subtreeRange.minimumMeters));
   storeBigEndian16(out + 14, static_cast<uint16_t>(entry.subtreeRange.maximumMeters));
+  if (formatVersion >= 3) {
+    storeBigEndian32(out + 16, std::bit_cast<uint32_t>(entry.geometricErrorMeters));
+  }
 }
 
-PackEntry loadEntry(const std::byte* in) {
+PackEntry loadEntry(const std::byte* in, uint32_t formatVersion) {
   PackEntry entry;
   entry.blockOffset = loadBigEndian64(in);
   entry.vertexRange = {static_cast<int16_t>(loadBigEndian16(in + 8)),
                        static_cast<int16_t>(loadBigEndian16(in + 10))};
   entry.subtreeRange = {static_cast<int16_t>(loadBigEndian16(in + 12)),
                         static_cast<int16_t>(loadBigEndian16(in + 14))};
+  if (formatVersion >= 3) {
+    entry.geometricErrorMeters = std::bit_cast<float>(loadBigEndian32(in + 16));
+  }
   return entry;
+}
+
+// Visits a stored block's samples in file order: (N+2)² with the apron (rows and columns -1..N),
+// else N².
+template <class Visit>
+void forEachStoredSample(const PackLayout& layout, Visit visit) {
+  const auto n = static_cast<int>(layout.verticesPerSide);
+  const int first = layout.hasApron() ? -1 : 0;
+  const int end = layout.hasApron() ? n + 1 : n;
+  for (int row = first; row < end; ++row) {
+    for (int column = first; column < end; ++column) {
+      const bool inside = row >= 0 && row < n && column >= 0 && column < n;
+      visit(inside, inside ? static_cast<size_t>(row * n + column)
+                           : terrain::apronIndex(row, column, layout.verticesPerSide));
+    }
+  }
 }
 
 }  // namespace
@@ -56,10 +79,14 @@ std::filesystem::path packPath(const std::filesystem::path& pyramidDir, const Pa
 }
 
 Pack Pack::empty(const PackId& id, const PackLayout& layout) {
-  Pack pack{id, layout, {}, {}};
+  Pack pack{id, layout, {}, {}, {}};
   pack.entries.resize(layout.slotCount());
   pack.heights.assign(layout.slotCount() * layout.verticesPerSide * layout.verticesPerSide,
                       terrain::kNoDataHeight);
+  if (layout.hasApron()) {
+    pack.aprons.assign(layout.slotCount() * terrain::apronSampleCount(layout.verticesPerSide),
+                       terrain::kNoDataHeight);
+  }
   return pack;
 }
 
@@ -73,6 +100,18 @@ std::span<const int16_t> Pack::block(size_t slot) const {
   return {heights.data() + slot * n, n};
 }
 
+std::span<int16_t> Pack::apron(size_t slot) {
+  if (aprons.empty()) return {};
+  const size_t n = terrain::apronSampleCount(layout.verticesPerSide);
+  return {aprons.data() + slot * n, n};
+}
+
+std::span<const int16_t> Pack::apron(size_t slot) const {
+  if (aprons.empty()) return {};
+  const size_t n = terrain::apronSampleCount(layout.verticesPerSide);
+  return {aprons.data() + slot * n, n};
+}
+
 size_t Pack::presentCount() const {
   size_t count = 0;
   for (const PackEntry& entry : entries) count += entry.present() ? 1 : 0;
@@ -84,7 +123,7 @@ std::vector<std::byte> encodePack(const Pack& pack) {
   const size_t present = pack.presentCount();
   std::vector<std::byte> bytes(layout.fileBytes(present));
   std::memcpy(bytes.data(), kMagic, sizeof kMagic);
-  const uint32_t header[] = {kPackFormatVersion,
+  const uint32_t header[] = {layout.formatVersion,
                              pack.id.level,
                              pack.id.x,
                              pack.id.y,
@@ -100,13 +139,14 @@ std::vector<std::byte> encodePack(const Pack& pack) {
     if (entry.present()) {
       entry.blockOffset = offset;
       std::byte* out = &bytes[offset];
-      for (int16_t sample : pack.block(slot)) {
-        storeBigEndian16(out, static_cast<uint16_t>(sample));
+      const std::span<const int16_t> heights = pack.block(slot), apron = pack.apron(slot);
+      forEachStoredSample(layout, [&](bool inside, size_t index) {
+        storeBigEndian16(out, static_cast<uint16_t>(inside ? heights[index] : apron[index]));
         out += 2;
-      }
+      });
       offset += layout.blockBytes();
     }
-    storeEntry(&bytes[kPackHeaderBytes + slot * kPackEntryBytes], entry);
+    storeEntry(&bytes[kPackHeaderBytes + slot * layout.entryBytes()], entry, layout.formatVersion);
   }
   const size_t body = bytes.size() - 4;
   storeBigEndian32(&bytes[body], crc32(std::span(bytes).first(body)));
@@ -121,8 +161,8 @@ std::optional<uint32_t> packFormatVersionOf(std::span<const std::byte> head) {
 }
 
 Result<void> checkPackFormatVersion(uint32_t version, const std::filesystem::path& path) {
-  if (version == kPackFormatVersion) return {};
-  if (version < kPackFormatVersion) {
+  if (version >= kOldestReadPackFormatVersion && version <= kPackFormatVersion) return {};
+  if (version < kOldestReadPackFormatVersion) {
     return packError(path, "pack format version " + std::to_string(version) +
                                " was made by an older globe-tiler (samples below 0 m meant sea; "
                                "version " +
@@ -146,7 +186,7 @@ Result<PackIndex> decodePackIndex(std::span<const std::byte> headAndIndex, uint6
   }
   uint32_t h[8];
   for (size_t i = 0; i < 8; ++i) h[i] = loadBigEndian32(&headAndIndex[8 + 4 * i]);
-  PackIndex index{{h[1], h[2], h[3]}, {h[4], h[5]}, {}};
+  PackIndex index{{h[1], h[2], h[3]}, {h[4], h[5], *version}, {}};
   const PackLayout& layout = index.layout;
   if (layout.tilesPerSide == 0 || layout.tilesPerSide > 1024 ||
       !terrain::isValidBlockSize(layout.verticesPerSide)) {
@@ -165,7 +205,8 @@ Result<PackIndex> decodePackIndex(std::span<const std::byte> headAndIndex, uint6
   index.entries.resize(layout.slotCount());
   uint32_t seen = 0;
   for (size_t slot = 0; slot < layout.slotCount(); ++slot) {
-    PackEntry entry = loadEntry(&headAndIndex[kPackHeaderBytes + slot * kPackEntryBytes]);
+    PackEntry entry =
+        loadEntry(&headAndIndex[kPackHeaderBytes + slot * layout.entryBytes()], *version);
     if (entry.present()) {
       const uint64_t relative = entry.blockOffset - layout.indexEndOffset();
       if (entry.blockOffset < layout.indexEndOffset() || relative % layout.blockBytes() != 0 ||
@@ -181,10 +222,13 @@ Result<PackIndex> decodePackIndex(std::span<const std::byte> headAndIndex, uint6
   return index;
 }
 
-void decodeBlock(std::span<const std::byte> bytes, std::span<int16_t> heights) {
-  for (size_t i = 0; i < heights.size(); ++i) {
-    heights[i] = static_cast<int16_t>(loadBigEndian16(&bytes[2 * i]));
-  }
+void decodeBlock(std::span<const std::byte> bytes, const PackLayout& layout,
+                 std::span<int16_t> heights, std::span<int16_t> apron) {
+  size_t offset = 0;
+  forEachStoredSample(layout, [&](bool inside, size_t index) {
+    (inside ? heights : apron)[index] = static_cast<int16_t>(loadBigEndian16(&bytes[offset]));
+    offset += 2;
+  });
 }
 
 Result<Pack> decodePack(std::span<const std::byte> bytes, const std::filesystem::path& path) {
@@ -209,7 +253,8 @@ Result<Pack> decodePack(std::span<const std::byte> bytes, const std::filesystem:
   for (size_t slot = 0; slot < pack.layout.slotCount(); ++slot) {
     const PackEntry& entry = pack.entries[slot];
     if (entry.present()) {
-      decodeBlock(bytes.subspan(entry.blockOffset, pack.layout.blockBytes()), pack.block(slot));
+      decodeBlock(bytes.subspan(entry.blockOffset, pack.layout.blockBytes()), pack.layout,
+                  pack.block(slot), pack.apron(slot));
     }
   }
   return pack;

@@ -65,15 +65,21 @@ Result<std::shared_ptr<const TileStore::OpenPack>> TileStore::openPack(const Pac
     return makeError(path.string() + ": cannot stat: " + std::strerror(errno));
   }
   if (!S_ISREG(info.st_mode)) return makeError(path.string() + ": not a regular file");
-  const PackLayout layout = manifest_.packLayout();
-  std::vector<std::byte> head(layout.indexEndOffset());
-  if (static_cast<uint64_t>(info.st_size) < head.size()) {
-    return makeError(path.string() + ": truncated pack (" + std::to_string(info.st_size) +
-                     " bytes)");
-  }
-  if (auto read = preadFully(file.fd, head.data(), head.size(), 0, path); !read) {
-    return Error{read.error()};
-  }
+  std::vector<std::byte> head;
+  PackLayout layout = manifest_.packLayout();
+  auto readHead = [&](size_t bytes) -> Result<void> {
+    if (static_cast<uint64_t>(info.st_size) < bytes) {
+      return makeError(path.string() + ": truncated pack (" + std::to_string(info.st_size) +
+                       " bytes)");
+    }
+    head.resize(bytes);
+    return preadFully(file.fd, head.data(), head.size(), 0, path);
+  };
+  // The header's version sets the index's size; decodePackIndex refuses unknown versions.
+  if (auto read = readHead(kPackHeaderBytes); !read) return Error{read.error()};
+  const std::optional<uint32_t> version = packFormatVersionOf(head);
+  if (version && checkPackFormatVersion(*version, path)) layout.formatVersion = *version;
+  if (auto read = readHead(layout.indexEndOffset()); !read) return Error{read.error()};
   auto index = decodePackIndex(head, static_cast<uint64_t>(info.st_size), path);
   if (!index) return Error{index.error()};
   if (index->id != id || index->layout.tilesPerSide != layout.tilesPerSide ||
@@ -115,9 +121,11 @@ Result<terrain::HeightBlock> TileStore::loadBlock(const geo::TileId& tile) {
     return Error{read.error()};
   }
   ++blockReads_;
+  const PackLayout& layout = p.index.layout;
   terrain::HeightBlock block{manifest_.verticesPerSide, {}, sea_};
-  block.heights.resize(bytes.size() / 2);
-  decodeBlock(bytes, block.heights);
+  block.heights.resize(size_t{layout.verticesPerSide} * layout.verticesPerSide);
+  if (layout.hasApron()) block.apron.resize(terrain::apronSampleCount(layout.verticesPerSide));
+  decodeBlock(bytes, layout, block.heights, block.apron);
   return block;
 }
 

@@ -30,6 +30,17 @@ struct BlockGrid {
   double latitudeDegrees(uint32_t row) const {
     return vertexLatitudeDegrees(tile.level, verticesPerSide, globalRow(row));
   }
+
+  // The level's vertex at (row, column) relative to this tile, for row and column in [-1, N]
+  // (the apron ring included): longitudes wrap across ±180°; a row beyond a pole is the vertex
+  // mirrored over the pole (the same distance from it, on the opposite meridian), so it is the
+  // real ground neighbour of the edge vertex. Identical, bit for bit, to what the tile that holds
+  // that vertex computes for it.
+  struct Vertex {
+    double longitudeDegrees;
+    double latitudeDegrees;
+  };
+  Vertex wrappedVertex(int row, int column) const;
 };
 
 }  // namespace globe::terrain

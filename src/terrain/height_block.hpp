@@ -60,17 +60,46 @@ struct HeightRange {
   void include(const HeightRange& other);
 };
 
+// The apron: the ring of samples one vertex outside a block, i.e. the neighbouring tiles' vertices
+// next to its edges (4N + 4 samples), so a block's edge normals can use central differences and
+// agree with its neighbours'. Ring order: the north row (row -1, columns -1..N), the south row
+// (row N, columns -1..N), the west column (column -1, rows 0..N-1), the east column (column N,
+// rows 0..N-1). Beyond a pole the ring holds the vertices mirrored over the pole.
+constexpr size_t apronSampleCount(uint32_t verticesPerSide) {
+  return 4 * size_t{verticesPerSide} + 4;
+}
+// Index into the ring of (row, column), both in [-1, N], on the ring (not inside the block).
+constexpr size_t apronIndex(int row, int column, uint32_t verticesPerSide) {
+  const auto n = static_cast<int>(verticesPerSide);
+  if (row < 0) return static_cast<size_t>(column + 1);
+  if (row >= n) return static_cast<size_t>(n + 2 + column + 1);
+  if (column < 0) return static_cast<size_t>(2 * (n + 2) + row);
+  return static_cast<size_t>(2 * (n + 2) + n + row);
+}
+
 // Vertex (row, column): row 0 is the north edge, column 0 the west edge.
 struct HeightBlock {
   uint32_t verticesPerSide = 0;
   std::vector<int16_t> heights;        // row-major, verticesPerSide^2 samples
   SeaSurface sea = SeaSurface::Water;  // the surface the view asked for, set when loaded
+  // apronSampleCount(verticesPerSide) samples, or empty (pyramids from before pack version 3).
+  std::vector<int16_t> apron{};
 
   int16_t at(uint32_t row, uint32_t column) const {
     return heights[static_cast<size_t>(row) * verticesPerSide + column];
   }
   double surfaceHeightMetersAt(uint32_t row, uint32_t column) const {
     return surfaceHeightMeters(at(row, column), sea);
+  }
+  bool hasApron() const { return apron.size() == apronSampleCount(verticesPerSide); }
+  // Sample (row, column) for row and column in [-1, N]: the block inside, the apron on the ring
+  // (requires hasApron()).
+  int16_t atWithApron(int row, int column) const {
+    const auto n = static_cast<int>(verticesPerSide);
+    if (row >= 0 && row < n && column >= 0 && column < n) {
+      return at(static_cast<uint32_t>(row), static_cast<uint32_t>(column));
+    }
+    return apron[apronIndex(row, column, verticesPerSide)];
   }
 };
 

@@ -17,6 +17,18 @@ double geometricErrorMeters(uint32_t level, uint32_t verticesPerSide,
   return kTerrainQuality * ellipsoid.semiMajorAxisMeters * spacingRadians;
 }
 
+double tileGeometricErrorMeters(uint32_t level, uint32_t verticesPerSide,
+                                const geo::Ellipsoid& ellipsoid,
+                                double measuredGeometricErrorMeters) {
+  const double nominal = geometricErrorMeters(level, verticesPerSide, ellipsoid);
+  if (!(measuredGeometricErrorMeters >= 0.0) || !std::isfinite(measuredGeometricErrorMeters)) {
+    return nominal;
+  }
+  const double a = ellipsoid.semiMajorAxisMeters;
+  const double spacingMeters = nominal / kTerrainQuality;  // a × the spacing in radians
+  return std::min(nominal, measuredGeometricErrorMeters + spacingMeters * spacingMeters / (8 * a));
+}
+
 double screenSpaceErrorPixels(double geometricErrorMeters, double distanceMeters,
                               const SelectionView& view) {
   if (geometricErrorMeters == 0.0) return 0.0;

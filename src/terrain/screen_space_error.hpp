@@ -30,6 +30,14 @@ inline constexpr double kMinimumDistanceMeters = 1.0;
 double geometricErrorMeters(uint32_t level, uint32_t verticesPerSide,
                             const geo::Ellipsoid& ellipsoid);
 
+// The error selection uses for a tile: geometricErrorMeters of its level, or less where the tiler
+// measured less (flat land, open sea): measured + the sag of a chord between the tile's vertices
+// below the curved surface, s²/(8a) for the vertex spacing s along a meridian. A measured error
+// that is NaN, negative or infinite counts as unknown.
+double tileGeometricErrorMeters(uint32_t level, uint32_t verticesPerSide,
+                                const geo::Ellipsoid& ellipsoid,
+                                double measuredGeometricErrorMeters);
+
 // geometricError x viewportHeight / (2 x distance x tan(fovY / 2)): the error's size in pixels
 // at the centre of the screen. distanceMeters is clamped to at least kMinimumDistanceMeters (NaN
 // counts as that close); a geometric error of 0 gives 0.

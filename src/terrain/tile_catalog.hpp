@@ -2,6 +2,7 @@
 // bounds of their subtrees) and which are loaded. The app implements it over io::TileStore.
 #pragma once
 
+#include <limits>
 #include <optional>
 
 #include "geo/tile_id.hpp"
@@ -12,6 +13,9 @@ namespace globe::terrain {
 struct TileSummary {
   // Bounds of the tile's vertices and of all its descendants' (metres, sea = 0 m).
   HeightRange subtreeHeightRange;
+  // How far the tile's surface lies from the finest data under it, as the tiler measured it
+  // (metres); NaN when the pyramid does not say (screen_space_error.hpp).
+  double measuredGeometricErrorMeters = std::numeric_limits<double>::quiet_NaN();
 };
 
 class TileCatalog {

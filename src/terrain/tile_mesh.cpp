@@ -102,14 +102,28 @@ TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
     }
   }
 
-  // Normals: central differences inside, one-sided on the edges.
+  // Normals: central differences, across the edges too with the apron (the neighbours' vertices,
+  // so both tiles compute the same normal for a shared edge vertex); one-sided on the edges of a
+  // block without one.
+  const bool apron = block.hasApron();
+  const auto last = static_cast<int>(n) - 1;
+  auto at = [&](int row, int column) {
+    if (row >= 0 && row <= last && column >= 0 && column <= last) {
+      return vertices[gridVertexIndex(static_cast<uint32_t>(row), static_cast<uint32_t>(column), n)]
+          .positionEcef;
+    }
+    const BlockGrid::Vertex where = grid.wrappedVertex(row, column);
+    return vertexEcef(ellipsoid, where.longitudeDegrees, where.latitudeDegrees,
+                      surfaceHeightMeters(block.atWithApron(row, column), block.sea));
+  };
+  const int reach = apron ? 1 : 0;  // how far past the edge a difference may look
   for (uint32_t i = 0; i < n; ++i) {
     for (uint32_t j = 0; j < n; ++j) {
-      auto at = [&](uint32_t row, uint32_t column) {
-        return vertices[gridVertexIndex(row, column, n)].positionEcef;
-      };
-      const glm::dvec3 towardsSouth = at(std::min(i + 1, n - 1), j) - at(i > 0 ? i - 1 : 0, j);
-      const glm::dvec3 towardsEast = at(i, std::min(j + 1, n - 1)) - at(i, j > 0 ? j - 1 : 0);
+      const auto row = static_cast<int>(i), column = static_cast<int>(j);
+      const glm::dvec3 towardsSouth =
+          at(std::min(row + 1, last + reach), column) - at(std::max(row - 1, -reach), column);
+      const glm::dvec3 towardsEast =
+          at(row, std::min(column + 1, last + reach)) - at(row, std::max(column - 1, -reach));
       const glm::dvec3 cross = glm::cross(towardsSouth, towardsEast);
       const glm::dvec3 up = ellipsoidNormal(ellipsoid, longitudes[j], latitudes[i]);
       const double length = glm::length(cross);

@@ -89,10 +89,11 @@ glm::dvec3 drawnVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGri
 //   level 8). Vertices at latitude ±90° are placed exactly on the polar axis (x = y = 0): a pole
 //   row collapses to one point wherever the row's heights are equal.
 // - Normals: central differences of the double ECEF positions, n = normalize((P[i+1][j] −
-//   P[i−1][j]) × (P[i][j+1] − P[i][j−1])), one-sided on the tile's edges (the block has no
-//   neighbour samples); the along-edge difference uses only shared edge vertices, so it agrees
-//   across the edge, the across-edge one cannot. Where that is degenerate (a collapsed pole row)
-//   or points below the horizon, the ellipsoid normal is used: never NaN.
+//   P[i−1][j]) × (P[i][j+1] − P[i][j−1])), on the tile's edges with the apron's vertices
+//   (BlockGrid::wrappedVertex at the apron's heights), so neighbours of one level compute
+//   identical normals for their shared vertices. A block without an apron (an old pyramid) takes
+//   one-sided differences on its edges. Where that is degenerate (a collapsed pole row) or
+//   points below the horizon, the ellipsoid normal is used: never NaN.
 // - Skirts (skirtDepthMeters > 0): each edge vertex is repeated at height − skirtDepthMeters;
 //   recommendedSkirtDepthMeters gives a depth that closes cracks against coarser neighbours.
 TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,

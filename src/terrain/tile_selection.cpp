@@ -43,6 +43,7 @@ std::unordered_set<geo::TileId> refinedLastFrame(const std::vector<geo::TileId>&
 struct VisibleTile {
   geo::TileId tile;
   double distanceMeters;
+  TileSummary summary;
 };
 
 class Traversal {
@@ -96,7 +97,8 @@ class Traversal {
       return std::nullopt;
     }
     return VisibleTile{
-        tile, distanceLowerBoundMeters(view_.cameraEcefMeters, cameraHeightMeters_, volume)};
+        tile, distanceLowerBoundMeters(view_.cameraEcefMeters, cameraHeightMeters_, volume),
+        summary};
   }
 
   void request(const geo::TileId& tile, double priority) {
@@ -104,16 +106,19 @@ class Traversal {
     result_.requests.push_back({tile, priority});
   }
 
-  double errorPixels(uint32_t level, double distanceMeters) const {
+  double errorPixels(const geo::TileId& tile, const TileSummary& summary,
+                     double distanceMeters) const {
+    const double measured = options_.measuredErrors ? summary.measuredGeometricErrorMeters
+                                                    : std::numeric_limits<double>::quiet_NaN();
     return screenSpaceErrorPixels(
-        geometricErrorMeters(level, options_.verticesPerSide, view_.ellipsoid), distanceMeters,
-        view_);
+        tileGeometricErrorMeters(tile.level, options_.verticesPerSide, view_.ellipsoid, measured),
+        distanceMeters, view_);
   }
 
   // A visible, resident tile: draws itself or is refined into its visible children.
   void descend(const VisibleTile& visible) {
     const geo::TileId& tile = visible.tile;
-    const double error = errorPixels(tile.level, visible.distanceMeters);
+    const double error = errorPixels(tile, visible.summary, visible.distanceMeters);
     const double factor = refined_.contains(tile) ? 1.0 - hysteresis_ : 1.0 + hysteresis_;
     if (!(error > factor * threshold_) || tile.level >= options_.maximumLevel ||
         tile.level >= geo::kMaxLevel) {
@@ -152,7 +157,8 @@ class Traversal {
         ++result_.counters.waitingForSiblings;
       } else {
         // What loading it fixes: this tile's error, seen at the child's distance.
-        request(children[i], errorPixels(tile.level, visibleChildren[i]->distanceMeters));
+        request(children[i],
+                errorPixels(tile, visible.summary, visibleChildren[i]->distanceMeters));
       }
     }
   }

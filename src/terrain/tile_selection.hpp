@@ -27,6 +27,9 @@ struct SelectionOptions {
   uint32_t verticesPerSide = 17;
   // Tiles of this level are never refined.
   uint32_t maximumLevel = geo::kMaxLevel;
+  // Use the tiler's measured geometric errors (TileSummary): flat tiles stop refining early.
+  // Off where imagery is draped: its resolution follows the terrain's level.
+  bool measuredErrors = true;
 };
 
 struct TileRequest {

@@ -44,7 +44,9 @@ BoundsDegrees boundsOf(const std::vector<geo::TileId>& tiles) {
 Result<LevelInfo> writeLevel(const std::filesystem::path& dir, uint32_t level,
                              const std::vector<geo::TileId>& tiles, uint32_t version) {
   const PackId id = packOf(tiles.front(), kPackTiles);
-  Pack pack = Pack::empty(id, {kPackTiles, kN});
+  // Version 2 has its own layout (no aprons, shorter entries); others are written as the current
+  // one with `version` in the header.
+  Pack pack = Pack::empty(id, {kPackTiles, kN, version == 2 ? 2 : kPackFormatVersion});
   LevelInfo info{level, tiles.size(), boundsOf(tiles), {INT16_MAX, INT16_MIN}, {id}};
   for (const geo::TileId& tile : tiles) {
     const size_t slot = slotOf(tile, kPackTiles);

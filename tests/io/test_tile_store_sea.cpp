@@ -2,7 +2,9 @@
 // surface (the one place --sea-floor reaches rendering and collision), and packs of the older
 // format (version 1: negative samples meant sea) are refused by name, asking for re-tiling.
 #include <gtest/gtest.h>
+
 #include <unistd.h>
+#include <cmath>
 
 #include <filesystem>
 #include <string>
@@ -29,6 +31,7 @@ class SeaPyramid : public ::testing::Test {
     ASSERT_TRUE(test::writeSeaTestPyramid(dir_ / "v2"));
     ASSERT_TRUE(test::writeSeaTestPyramid(dir_ / "v1", 1));
     ASSERT_TRUE(test::writeSeaTestPyramid(dir_ / "v3", kPackFormatVersion + 1));
+    ASSERT_TRUE(test::writeSeaTestPyramid(dir_ / "version2", 2));
   }
   void TearDown() override { fs::remove_all(dir_); }
   fs::path dir_;
@@ -53,6 +56,25 @@ TEST_F(SeaPyramid, BlocksCarryTheStoresSeaSurface) {
   auto byDefault = TileStore::open(dir_ / "v2");
   ASSERT_TRUE(byDefault);
   EXPECT_EQ((*byDefault)->sea(), SeaSurface::Water);
+}
+
+TEST_F(SeaPyramid, Version2PacksStillLoadWithoutApronOrMeasuredError) {
+  auto store = TileStore::open(dir_ / "version2");
+  ASSERT_TRUE(store) << store.error();
+  auto block = (*store)->loadBlock(test::kMixedTile);
+  ASSERT_TRUE(block) << block.error();
+  EXPECT_EQ(block->heights, test::seaTestBlock(test::kMixedTile).heights);
+  EXPECT_FALSE(block->hasApron());
+  auto entry = (*store)->entry(test::kMixedTile);
+  ASSERT_TRUE(entry && *entry);
+  EXPECT_TRUE(std::isnan((*entry)->geometricErrorMeters));
+  // The current version's blocks carry the ring around them.
+  auto current = TileStore::open(dir_ / "v2");
+  ASSERT_TRUE(current);
+  auto withApron = (*current)->loadBlock(test::kMixedTile);
+  ASSERT_TRUE(withApron);
+  EXPECT_TRUE(withApron->hasApron());
+  EXPECT_EQ(withApron->heights, block->heights);
 }
 
 TEST_F(SeaPyramid, PackIndexRangesBoundBothSurfaces) {

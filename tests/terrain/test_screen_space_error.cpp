@@ -37,6 +37,24 @@ TEST(GeometricError, IsAQuarterOfTheEquatorialVertexSpacing) {
   EXPECT_TRUE(std::isfinite(geometricErrorMeters(0, 0, wgs84)));
 }
 
+TEST(GeometricError, AMeasuredErrorOnlyLowersItByWhatTheTilerFound) {
+  const geo::Ellipsoid wgs84 = geo::Ellipsoid::wgs84();
+  const double nominal = geometricErrorMeters(5, 17, wgs84);  // ~9.8 km
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const double unknown : {nan, -1.0, inf}) {
+    EXPECT_EQ(tileGeometricErrorMeters(5, 17, wgs84, unknown), nominal) << unknown;
+  }
+  // Flat: only the chord's sag below the curved surface remains (spacing ~39 km: ~30 m).
+  const double spacing = nominal / kTerrainQuality;
+  const double sag = spacing * spacing / (8 * wgs84.semiMajorAxisMeters);
+  EXPECT_NEAR(tileGeometricErrorMeters(5, 17, wgs84, 0.0), sag, 1e-9);
+  EXPECT_NEAR(sag, 30.0, 1.0);
+  EXPECT_NEAR(tileGeometricErrorMeters(5, 17, wgs84, 400.0), 400.0 + sag, 1e-9);
+  // Rougher than the nominal: the nominal stays (the selection refines no more than before).
+  EXPECT_EQ(tileGeometricErrorMeters(5, 17, wgs84, 50'000.0), nominal);
+}
+
 TEST(ScreenSpaceError, ProjectsTheErrorOntoTheViewport) {
   SelectionView view;
   view.viewportHeightPixels = 1080.0;

@@ -1,9 +1,13 @@
 #include "tools/tiler/pack_builder.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
 
 #include "geo/tiling_scheme.hpp"
 #include "terrain/block_grid.hpp"
+#include "terrain/screen_space_error.hpp"
 
 namespace globe::tiler {
 namespace {
@@ -25,12 +29,38 @@ void inheritFromChild(const io::Pack& childPack, const geo::TileId& child, size_
   }
 }
 
+// How far the child's vertices lie from the parent's surface over the child's quadrant, in
+// metres, under either sea surface: the parent's vertices there are the child's even vertices,
+// drawn as two triangles per cell split along the north-west to south-east diagonal
+// (terrain/tile_mesh.hpp's rule).
+double deviationFromParent(std::span<const int16_t> child, uint32_t n) {
+  double worst = 0;
+  for (const terrain::SeaSurface sea :
+       {terrain::SeaSurface::Water, terrain::SeaSurface::SeaFloor}) {
+    auto h = [&](uint32_t i, uint32_t j) {
+      return terrain::surfaceHeightMeters(child[size_t{i} * n + j], sea);
+    };
+    for (uint32_t i = 0; i < n; ++i) {
+      for (uint32_t j = 0; j < n; ++j) {
+        if (i % 2 == 0 && j % 2 == 0) continue;
+        const uint32_t i0 = i & ~1u, j0 = j & ~1u;  // the parent cell's north-west corner
+        const double a = h(i0, j0), b = h(i0, j0 + 2), c = h(i0 + 2, j0), d = h(i0 + 2, j0 + 2);
+        const double v = (i - i0) / 2.0, u = (j - j0) / 2.0;  // 0 or 1/2
+        const double surface =
+            u <= v ? a + v * (c - a) + u * (d - c) : a + u * (b - a) + v * (d - b);
+        worst = std::max(worst, std::abs(h(i, j) - surface));
+      }
+    }
+  }
+  return worst;
+}
+
 }  // namespace
 
 Result<io::Pack> buildPack(const io::PackId& id, const io::PackLayout& layout,
                            const TilingPlan& plan, const std::vector<TilerSource>& sources,
                            const std::map<io::PackId, io::Pack>& childPacks,
-                           PackBuildStats& stats) {
+                           const geo::Ellipsoid& ellipsoid, PackBuildStats& stats) {
   const uint32_t n = layout.verticesPerSide;
   io::Pack pack = io::Pack::empty(id, layout);
   const std::vector<geo::TileId> tiles = plan.tilesInPack(id);
@@ -43,6 +73,19 @@ Result<io::Pack> buildPack(const io::PackId& id, const io::PackLayout& layout,
     const terrain::BlockGrid eastTile{tiles[end - 1], n};
     SourceSampler sampler(sources, id.level, westTile.longitudeDegrees(0),
                           eastTile.longitudeDegrees(n - 1));
+    // The apron holds what the neighbouring tiles hold: their vertices are inherited from the
+    // finest level that has tiles there, i.e. sampled with every source taking part.
+    const double spacing = terrain::vertexSpacingDegrees(id.level, n);
+    SourceSampler apronSampler(sources, plan.maxLevel(), westTile.longitudeDegrees(0) - spacing,
+                               eastTile.longitudeDegrees(n - 1) + spacing);
+    // Beyond a pole the apron lies on the opposite meridians (BlockGrid::wrappedVertex).
+    const bool polar =
+        tiles[begin].y == 0 || tiles[begin].y + 1 == geo::GeographicTilingScheme::tilesY(id.level);
+    std::optional<SourceSampler> overThePole;
+    if (polar) {
+      overThePole.emplace(sources, plan.maxLevel(), westTile.longitudeDegrees(0) + 180.0 - spacing,
+                          eastTile.longitudeDegrees(n - 1) + 180.0 + spacing);
+    }
 
     for (size_t t = begin; t < end; ++t) {
       const geo::TileId& tile = tiles[t];
@@ -52,6 +95,8 @@ Result<io::Pack> buildPack(const io::PackId& id, const io::PackLayout& layout,
       io::PackEntry& entry = pack.entries[slot];
       entry.blockOffset = 1;  // present; encodePack assigns the real offset
       std::optional<terrain::HeightRange> childrenRange;
+      double geometricErrorMeters = 0;   // 0 for a tile of the finest data
+      bool water = false, land = false;  // among the children's vertices
 
       const auto children = tile.children();
       for (size_t q = 0; q < children.size(); ++q) {
@@ -63,8 +108,18 @@ Result<io::Pack> buildPack(const io::PackId& id, const io::PackLayout& layout,
                            std::to_string(children[q].y) + " was not built");
         }
         inheritFromChild(found->second, children[q], q, block, filled, n);
-        const auto& childEntry =
-            found->second.entries[io::slotOf(children[q], layout.tilesPerSide)];
+        const size_t childSlot = io::slotOf(children[q], layout.tilesPerSide);
+        const auto& childEntry = found->second.entries[childSlot];
+        // The child's own error adds up: the parent stands for everything under the child.
+        const double childError = std::isfinite(childEntry.geometricErrorMeters)
+                                      ? std::max(0.0, double{childEntry.geometricErrorMeters})
+                                      : 0.0;
+        const std::span<const int16_t> childBlock = found->second.block(childSlot);
+        geometricErrorMeters =
+            std::max(geometricErrorMeters, deviationFromParent(childBlock, n) + childError);
+        for (const int16_t sample : childBlock) {
+          (terrain::isWater(sample) ? water : land) = true;
+        }
         if (!childrenRange) childrenRange = childEntry.subtreeRange;
         childrenRange->include(childEntry.subtreeRange);
       }
@@ -84,6 +139,29 @@ Result<io::Pack> buildPack(const io::PackId& id, const io::PackLayout& layout,
           ++stats.sampledVertices;
         }
       }
+      std::span<int16_t> apron = pack.apron(slot);
+      const auto side = static_cast<int>(n);
+      for (int row = -1; row <= side; ++row) {
+        for (int column = -1; column <= side; ++column) {
+          if (row >= 0 && row < side && column >= 0 && column < side) continue;
+          const terrain::BlockGrid::Vertex where = grid.wrappedVertex(row, column);
+          const bool beyondPole =
+              (row < 0 && tile.y == 0) ||
+              (row >= side && tile.y + 1 == geo::GeographicTilingScheme::tilesY(tile.level));
+          SourceSampler& apronFrom = beyondPole ? *overThePole : apronSampler;
+          auto height = apronFrom.sample(where.longitudeDegrees, where.latitudeDegrees);
+          if (!height) return Error{height.error()};
+          apron[terrain::apronIndex(row, column, n)] = *height;
+        }
+      }
+      if (water && land) {
+        geometricErrorMeters =
+            std::max(geometricErrorMeters, terrain::geometricErrorMeters(tile.level, n, ellipsoid));
+      }
+      // Rounded up so that the float never understates the error.
+      entry.geometricErrorMeters = std::nextafter(static_cast<float>(geometricErrorMeters),
+                                                  std::numeric_limits<float>::infinity());
+      if (geometricErrorMeters == 0) entry.geometricErrorMeters = 0.0f;
       const terrain::HeightBlock heights{n, std::vector<int16_t>(block.begin(), block.end())};
       entry.vertexRange = terrain::surfaceHeightRange(heights);
       entry.subtreeRange = entry.vertexRange;

@@ -5,6 +5,7 @@
 #include <map>
 #include <vector>
 
+#include "geo/ellipsoid.hpp"
 #include "geo/result.hpp"
 #include "io/pack_format.hpp"
 #include "tools/tiler/source_sampler.hpp"
@@ -21,8 +22,13 @@ struct PackBuildStats {
 };
 
 // childPacks: the finished packs of the next finer level under this pack (absent ones omitted).
+// Each tile's geometric error is how far its surface lies from its children's vertices plus their
+// own error (0 for a tile of the finest data), and at least terrain::geometricErrorMeters of its
+// level where its children hold both water and land: a coastline's shape is in its sea flags,
+// which no height deviation measures.
 Result<io::Pack> buildPack(const io::PackId& id, const io::PackLayout& layout,
                            const TilingPlan& plan, const std::vector<TilerSource>& sources,
-                           const std::map<io::PackId, io::Pack>& childPacks, PackBuildStats& stats);
+                           const std::map<io::PackId, io::Pack>& childPacks,
+                           const geo::Ellipsoid& ellipsoid, PackBuildStats& stats);
 
 }  // namespace globe::tiler

@@ -137,7 +137,8 @@ struct PackJob {
     if (fs::exists(path, error)) {  // an unreadable path (a symlink loop) is rebuilt too
       auto existing = readPack(path);
       if (existing && existing->id == id && existing->layout.tilesPerSide == layout.tilesPerSide &&
-          existing->layout.verticesPerSide == layout.verticesPerSide) {
+          existing->layout.verticesPerSide == layout.verticesPerSide &&
+          existing->layout.formatVersion == io::kPackFormatVersion) {
         reused = true;
         return summarise(*existing);
       }
@@ -155,7 +156,8 @@ struct PackJob {
         }
       }
     }
-    auto pack = buildPack(id, layout, plan, sources, children, stats);
+    auto pack = buildPack(id, layout, plan, sources, children,
+                          geo::ellipsoidFor(options.globeModel), stats);
     if (!pack) return Error{pack.error()};
     fs::create_directories(path.parent_path(), error);
     if (error)

@@ -12,6 +12,7 @@
 #include "io/pyramid_manifest.hpp"
 #include "io/tile_store.hpp"
 #include "terrain/block_grid.hpp"
+#include "tests/tools/tiler/bundled_pyramid_blocks.hpp"
 #include "tests/tools/tiler/tiler_test_fixture.hpp"
 #include "tools/tiler/export_block.hpp"
 
@@ -19,43 +20,6 @@ namespace globe::tiler {
 namespace {
 
 using testing::bundledPyramid;
-
-class BundledPyramid : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    auto manifest = io::readManifest(bundledPyramid());
-    ASSERT_TRUE(manifest) << manifest.error();
-    manifest_ = new io::PyramidManifest(*manifest);
-    blocks_ = new std::map<geo::TileId, std::pair<io::PackEntry, std::vector<int16_t>>>();
-    for (const io::LevelInfo& level : manifest_->levels) {
-      for (const io::PackId& id : level.packs) {
-        const auto path = io::packPath(bundledPyramid(), id);
-        auto bytes = io::readWholeFile(path, 1ULL << 32);
-        ASSERT_TRUE(bytes) << bytes.error();
-        auto pack = io::decodePack(*bytes, path);
-        ASSERT_TRUE(pack) << pack.error();
-        for (size_t slot = 0; slot < pack->entries.size(); ++slot) {
-          if (!pack->entries[slot].present()) continue;
-          const auto block = pack->block(slot);
-          (*blocks_)[io::tileOfSlot(id, slot, pack->layout.tilesPerSide)] = {
-              pack->entries[slot], std::vector<int16_t>(block.begin(), block.end())};
-        }
-      }
-    }
-  }
-  static void TearDownTestSuite() {
-    delete manifest_;
-    delete blocks_;
-  }
-  static const std::vector<int16_t>* find(const geo::TileId& t) {
-    auto it = blocks_->find(t);
-    return it == blocks_->end() ? nullptr : &it->second.second;
-  }
-  static constexpr uint32_t n = 17;
-  static inline io::PyramidManifest* manifest_ = nullptr;
-  static inline std::map<geo::TileId, std::pair<io::PackEntry, std::vector<int16_t>>>* blocks_ =
-      nullptr;
-};
 
 TEST_F(BundledPyramid, ManifestDescribesLevelsAndSources) {
   const io::PyramidManifest& m = *manifest_;

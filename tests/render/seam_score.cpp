@@ -1,0 +1,60 @@
+#include "tests/render/seam_score.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace globe::testing {
+namespace {
+
+constexpr int kNeighbours = 12;
+
+// Rec. 709 luma of pixel (x, y), or of (y, x) when transposed.
+double luma(const io::ImageRgba& image, int x, int y) {
+  const uint8_t* p = &image.pixels[(static_cast<size_t>(y) * image.widthPixels + x) * 4];
+  return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+}
+
+// The worst ratio over the steps between neighbouring columns (or rows when transposed).
+std::pair<double, int> worstLine(const io::ImageRgba& image, bool transposed) {
+  const int lines = transposed ? image.heightPixels : image.widthPixels;
+  const int along = transposed ? image.widthPixels : image.heightPixels;
+  std::vector<double> steps(static_cast<size_t>(std::max(lines - 1, 0)));
+  for (int k = 0; k + 1 < lines; ++k) {
+    double sum = 0;
+    for (int t = 0; t < along; ++t) {
+      sum += transposed ? std::abs(luma(image, t, k + 1) - luma(image, t, k))
+                        : std::abs(luma(image, k + 1, t) - luma(image, k, t));
+    }
+    steps[static_cast<size_t>(k)] = sum / along;
+  }
+  double worst = 0;
+  int where = 0;
+  std::vector<double> around;
+  for (int k = 0; k < static_cast<int>(steps.size()); ++k) {
+    around.clear();
+    for (int m = std::max(0, k - kNeighbours);
+         m <= std::min(static_cast<int>(steps.size()) - 1, k + kNeighbours); ++m) {
+      if (m != k) around.push_back(steps[static_cast<size_t>(m)]);
+    }
+    if (around.empty()) continue;
+    auto middle = around.begin() + static_cast<std::ptrdiff_t>(around.size() / 2);
+    std::nth_element(around.begin(), middle, around.end());
+    if (*middle <= 0) continue;
+    const double ratio = steps[static_cast<size_t>(k)] / *middle;
+    if (ratio > worst) worst = ratio, where = k;
+  }
+  return {worst, where};
+}
+
+}  // namespace
+
+SeamScore seamScore(const io::ImageRgba& image) {
+  SeamScore s;
+  std::tie(s.columns, s.worstColumn) = worstLine(image, false);
+  std::tie(s.rows, s.worstRow) = worstLine(image, true);
+  s.score = std::max(s.columns, s.rows);
+  return s;
+}
+
+}  // namespace globe::testing

@@ -1,0 +1,22 @@
+// A score for lighting seams along straight pixel columns or rows (tile edges in nadir views):
+// per column, the mean absolute brightness step to the next column, divided by the median of
+// the same step over the ±12 neighbouring columns; the maximum over all columns and, on the
+// transposed image, over all rows. Natural terrain without tile edges scores about 1.2-1.6; a
+// faint straight step along a whole column stands out above 2.
+#pragma once
+
+#include "io/image_io.hpp"
+
+namespace globe::testing {
+
+struct SeamScore {
+  double score = 0;     // the larger of the two below
+  double columns = 0;   // the worst column's ratio
+  int worstColumn = 0;  // the step between columns worstColumn and worstColumn + 1
+  double rows = 0;
+  int worstRow = 0;
+};
+
+SeamScore seamScore(const io::ImageRgba& image);
+
+}  // namespace globe::testing

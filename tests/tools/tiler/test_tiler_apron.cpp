@@ -1,0 +1,228 @@
+// The tiler's per-tile extras, checked on the bundled pyramid: each block's apron holds its
+// neighbours' vertices (so meshes of neighbouring tiles get identical edge normals), and each
+// tile's geometric error bounds how far its surface lies from the finer data under it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "geo/ellipsoid.hpp"
+#include "geo/tiling_scheme.hpp"
+#include "terrain/block_grid.hpp"
+#include "terrain/height_block.hpp"
+#include "terrain/screen_space_error.hpp"
+#include "terrain/tile_mesh.hpp"
+#include "tests/tools/tiler/bundled_pyramid_blocks.hpp"
+#include "tests/tools/tiler/tiler_test_fixture.hpp"
+
+namespace globe::tiler {
+namespace {
+
+// Calls visit(row, column) for every position of the apron ring.
+template <class Visit>
+void forEachApronPosition(uint32_t verticesPerSide, Visit visit) {
+  const auto side = static_cast<int>(verticesPerSide);
+  for (int row = -1; row <= side; ++row) {
+    for (int column = -1; column <= side; ++column) {
+      if (row < 0 || row >= side || column < 0 || column >= side) visit(row, column);
+    }
+  }
+}
+
+// The level's global vertex indices of a position (exact: vertex positions are dyadic).
+struct GlobalVertex {
+  int64_t row, column;
+};
+GlobalVertex globalVertexOf(uint32_t level, uint32_t verticesPerSide,
+                            const terrain::BlockGrid::Vertex& where) {
+  const double spacing = terrain::vertexSpacingDegrees(level, verticesPerSide);
+  return {std::llround((90.0 - where.latitudeDegrees) / spacing),
+          std::llround((where.longitudeDegrees + 180.0) / spacing)};
+}
+
+TEST_F(BundledPyramid, ApronHoldsWhatTheNeighbouringTilesHold) {
+  const testing::Oracle oracle(testing::bundledInputs());
+  uint64_t checked = 0, againstNeighbours = 0, mismatches = 0;
+  for (const auto& [tile, block] : *tiles_) {
+    ASSERT_EQ(block.apron.size(), terrain::apronSampleCount(n));
+    const terrain::BlockGrid grid{tile, n};
+    const int64_t columns = int64_t{geo::GeographicTilingScheme::tilesX(tile.level)} * (n - 1);
+    forEachApronPosition(n, [&](int row, int column) {
+      const int16_t apron = block.apron[terrain::apronIndex(row, column, n)];
+      const terrain::BlockGrid::Vertex where = grid.wrappedVertex(row, column);
+      ++checked;
+      const int16_t expected = oracle.height(where.longitudeDegrees, where.latitudeDegrees);
+      if (apron != expected && ++mismatches < 10) {
+        ADD_FAILURE() << "tile " << tile.level << "/" << tile.x << "/" << tile.y << " apron ("
+                      << row << "," << column << "): " << apron << " != oracle " << expected;
+      }
+      // Every tile of the level that holds that vertex holds the same sample.
+      const GlobalVertex v = globalVertexOf(tile.level, n, where);
+      for (int64_t x : {v.column / (n - 1), v.column / (n - 1) - 1}) {
+        for (int64_t y : {v.row / (n - 1), v.row / (n - 1) - 1}) {
+          if (x < 0 || y < 0) continue;
+          const auto tx = static_cast<uint32_t>(x % (columns / (n - 1)));
+          const Block* holder = findBlock({tile.level, tx, static_cast<uint32_t>(y)});
+          const int64_t i = v.row - y * (n - 1);
+          int64_t j = v.column - x * (n - 1);
+          if (holder == nullptr || i < 0 || i >= n || j < 0 || j >= n) continue;
+          ++againstNeighbours;
+          if (holder->samples[static_cast<size_t>(i * n + j)] != apron && ++mismatches < 10) {
+            ADD_FAILURE() << "tile " << tile.level << "/" << tile.x << "/" << tile.y << " apron ("
+                          << row << "," << column << ") differs from tile " << tile.level << "/"
+                          << tx << "/" << y;
+          }
+        }
+      }
+    });
+  }
+  EXPECT_EQ(mismatches, 0u);
+  EXPECT_GT(checked, 1'500'000u);  // ~24,000 tiles
+  EXPECT_GT(againstNeighbours, 1'500'000u);
+}
+
+// The tile's surface at grid position (row, column) in vertex units, with the mesh's diagonal
+// rule, by barycentric interpolation over the triangle that holds the point.
+double surfaceAt(const std::vector<int16_t>& samples, double row, double column) {
+  const auto i = std::min<uint32_t>(static_cast<uint32_t>(row), 15);
+  const auto j = std::min<uint32_t>(static_cast<uint32_t>(column), 15);
+  const double v = row - i, u = column - j;
+  auto h = [&](uint32_t r, uint32_t c) {
+    return terrain::surfaceHeightMeters(samples[r * 17 + c], terrain::SeaSurface::Water);
+  };
+  // South-west triangle (i,j),(i+1,j),(i+1,j+1) where u <= v, else (i,j),(i+1,j+1),(i,j+1).
+  if (u <= v) return (1 - v) * h(i, j) + (v - u) * h(i + 1, j) + u * h(i + 1, j + 1);
+  return (1 - u) * h(i, j) + v * h(i + 1, j + 1) + (u - v) * h(i, j + 1);
+}
+
+TEST_F(BundledPyramid, GeometricErrorBoundsTheChildrenAndAddsUp) {
+  const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
+  uint64_t parents = 0, leaves = 0, coasts = 0;
+  double largest = 0;
+  for (const auto& [tile, block] : *tiles_) {
+    const float error = block.entry.geometricErrorMeters;
+    ASSERT_TRUE(std::isfinite(error) && error >= 0.0f);
+    const auto children = tile.children();
+    if (findBlock(children[0]) == nullptr) {
+      EXPECT_EQ(error, 0.0f) << "a tile of the finest data";
+      ++leaves;
+      continue;
+    }
+    ++parents;
+    largest = std::max(largest, double{error});
+    bool water = false, land = false;
+    for (const geo::TileId& child : children) {
+      for (const int16_t sample : findBlock(child)->samples) {
+        (terrain::isWater(sample) ? water : land) = true;
+      }
+    }
+    if (water && land) {  // a coast: its shape is in the sea flags, so it refines as before
+      ++coasts;
+      EXPECT_GE(double{error}, terrain::geometricErrorMeters(tile.level, n, kWgs84))
+          << tile.level << "/" << tile.x << "/" << tile.y;
+    }
+    for (size_t q = 0; q < 4; ++q) {
+      const Block* child = findBlock(children[q]);
+      ASSERT_NE(child, nullptr);
+      const double rowOffset = (q >= 2 ? 8.0 : 0.0), columnOffset = (q % 2 == 1 ? 8.0 : 0.0);
+      double worst = 0;
+      for (uint32_t i = 0; i < n; ++i) {
+        for (uint32_t j = 0; j < n; ++j) {
+          const double fine =
+              terrain::surfaceHeightMeters(child->samples[i * n + j], terrain::SeaSurface::Water);
+          worst = std::max(worst, std::abs(fine - surfaceAt(block.samples, rowOffset + i / 2.0,
+                                                            columnOffset + j / 2.0)));
+        }
+      }
+      ASSERT_GE(double{error}, worst + double{child->entry.geometricErrorMeters} - 1e-3)
+          << tile.level << "/" << tile.x << "/" << tile.y << " child " << q;
+    }
+  }
+  EXPECT_GT(parents, 5'000u);
+  EXPECT_GT(leaves, 15'000u);
+  EXPECT_GT(largest, 500.0);  // the sea floor and Fuji are anything but flat
+  EXPECT_GT(coasts, 100u);
+}
+
+terrain::HeightBlock heightBlockOf(const BundledPyramid::Block* block) {
+  return {17, block->samples, terrain::SeaSurface::Water, block->apron};
+}
+
+TEST_F(BundledPyramid, NeighboursMeshesHaveIdenticalNormalsOnTheirSharedEdge) {
+  const geo::Ellipsoid ellipsoid = geo::Ellipsoid::wgs84();
+  uint64_t edges = 0;
+  double worstDegrees = 0;
+  auto normalAt = [](const terrain::TileMesh& mesh, uint32_t row, uint32_t column) {
+    const float* v =
+        &mesh.vertices[terrain::gridVertexIndex(row, column, 17) * terrain::kTileVertexFloats +
+                       terrain::kTileVertexNormalOffset];
+    return glm::dvec3(v[0], v[1], v[2]);
+  };
+  for (const auto& [tile, block] : *tiles_) {
+    // Every level, the antimeridian (x wraps), and many tiles elsewhere.
+    if (tile.level > 8 && (tile.x + tile.y) % 7 != 0) continue;
+    const uint32_t nx = geo::GeographicTilingScheme::tilesX(tile.level);
+    const Block* east = findBlock({tile.level, (tile.x + 1) % nx, tile.y});
+    const Block* south = findBlock({tile.level, tile.x, tile.y + 1});
+    if (east == nullptr && south == nullptr) continue;
+    const terrain::TileMesh here =
+        terrain::buildTileMesh(tile, heightBlockOf(&block), ellipsoid, 0);
+    auto compare = [&](const terrain::TileMesh& other, bool eastEdge) {
+      for (uint32_t k = 0; k < n; ++k) {
+        const glm::dvec3 a = eastEdge ? normalAt(here, k, n - 1) : normalAt(here, n - 1, k);
+        const glm::dvec3 b = eastEdge ? normalAt(other, k, 0) : normalAt(other, 0, k);
+        const double cosine =
+            std::clamp(glm::dot(a, b) / (glm::length(a) * glm::length(b)), -1.0, 1.0);
+        worstDegrees = std::max(worstDegrees, std::acos(cosine) * 180.0 / 3.141592653589793);
+      }
+      ++edges;
+    };
+    if (east != nullptr) {
+      compare(terrain::buildTileMesh({tile.level, (tile.x + 1) % nx, tile.y}, heightBlockOf(east),
+                                     ellipsoid, 0),
+              true);
+    }
+    if (south != nullptr) {
+      compare(terrain::buildTileMesh({tile.level, tile.x, tile.y + 1}, heightBlockOf(south),
+                                     ellipsoid, 0),
+              false);
+    }
+  }
+  EXPECT_GT(edges, 5'000u);
+  // Same heights, same positions, same arithmetic: equal to float rounding (at ±180° the
+  // longitude is -180 on one side and +180 on the other: sines differ in the last bit).
+  EXPECT_LT(worstDegrees, 1e-4);
+}
+
+TEST_F(BundledPyramid, WithoutTheApronEdgeNormalsDisagree) {
+  // The contrast that shows the test above can fail: one-sided differences on the edges.
+  const geo::Ellipsoid ellipsoid = geo::Ellipsoid::wgs84();
+  double worstDegrees = 0;
+  for (const auto& [id, block] : *tiles_) {
+    if (id.level != 13) continue;
+    const Block* east = findBlock({id.level, id.x + 1, id.y});
+    if (east == nullptr) continue;
+    terrain::HeightBlock a = heightBlockOf(&block), b = heightBlockOf(east);
+    a.apron.clear();
+    b.apron.clear();
+    const auto meshA = terrain::buildTileMesh(id, a, ellipsoid, 0);
+    const auto meshB = terrain::buildTileMesh({id.level, id.x + 1, id.y}, b, ellipsoid, 0);
+    for (uint32_t k = 0; k < n; ++k) {
+      const float* p =
+          &meshA.vertices[terrain::gridVertexIndex(k, n - 1, n) * terrain::kTileVertexFloats +
+                          terrain::kTileVertexNormalOffset];
+      const float* q =
+          &meshB.vertices[terrain::gridVertexIndex(k, 0, n) * terrain::kTileVertexFloats +
+                          terrain::kTileVertexNormalOffset];
+      const double cosine =
+          std::clamp(double{p[0]} * q[0] + double{p[1]} * q[1] + double{p[2]} * q[2], -1.0, 1.0);
+      worstDegrees = std::max(worstDegrees, std::acos(cosine) * 180.0 / 3.141592653589793);
+    }
+  }
+  EXPECT_GT(worstDegrees, 5.0) << "Fuji's flanks at level 13 are steep enough to show it";
+}
+
+}  // namespace
+}  // namespace globe::tiler
