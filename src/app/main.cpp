@@ -35,14 +35,20 @@ int main(int argc, char** argv) {
 
   std::vector<std::string> layerTexts;
   bool lighting = false;
+  bool measuredLod = false;
   auto addLayers = [&](CLI::App* command) {
     command->add_option("--layer", layerTexts,
                         "imagery layer directory made by `globe-tiler imagery`, optionally "
                         "DIR,OPACITY (0..1); repeat for more, bottom layer first");
     command->add_flag("--lighting", lighting,
                       "hill-shade the imagery too (off by default: imagery has its own shadows)");
+    command->add_flag("--measured-lod", measuredLod,
+                      "experimental: stop refining where the tiler measured the ground smooth "
+                      "(fewer triangles; LOD boundaries can show in the hill-shading); not with "
+                      "--layer");
   };
-  // --layer and --lighting into the scene options; false (after printing why) on a bad --layer.
+  // --layer, --lighting and --measured-lod into the scene options; false (after printing why) on a
+  // bad --layer.
   auto applyLayers = [&](const char* command, globe::app::SceneOptions& scene) {
     for (const std::string& text : layerTexts) {
       auto layer = globe::app::parseLayerArgument(text);
@@ -53,6 +59,7 @@ int main(int argc, char** argv) {
       scene.layers.push_back(*layer);
     }
     scene.lightImagery = lighting;
+    scene.measuredLod = measuredLod;
     return true;
   };
 

@@ -21,7 +21,7 @@ class SceneCatalog final : public terrain::TileCatalog {
   std::optional<terrain::TileSummary> find(const geo::TileId& tile) const override {
     auto entry = store_.entry(tile);
     if (!entry || !*entry) return std::nullopt;  // an unreadable pack draws its parent instead
-    return terrain::TileSummary{(*entry)->subtreeRange};
+    return terrain::TileSummary{(*entry)->subtreeRange, (*entry)->geometricErrorMeters};
   }
   bool isResident(const geo::TileId& tile) const override { return loader_.isResident(tile); }
 
@@ -138,6 +138,8 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   selectionOptions.maximumScreenSpaceErrorPixels = options_.maximumScreenSpaceErrorPixels;
   selectionOptions.verticesPerSide = store_->manifest().verticesPerSide;
   if (!options_.hysteresis) selectionOptions.hysteresisFraction = 0;
+  // Imagery's resolution follows the terrain's level: flat ground keeps refining under it.
+  selectionOptions.measuredErrors = options_.measuredLod && options_.layers.empty();
   const SceneCatalog catalog(*store_, *loader_);
   terrain::SelectionResult selection =
       terrain::selectTiles(selectionView, catalog, selectionOptions,

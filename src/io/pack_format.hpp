@@ -7,7 +7,8 @@
 //              i16 subtree min, i16 subtree max     (metres: min with sea floors, max with water
 //                                                        at 0 m, terrain::surfaceHeightRange),
 //              f32 geometric error (metres: how far the tile's surface, drawn with the mesh's
-//                  diagonal rule, lies from the finest data under it, above or below)
+//                  diagonal rule, lies from its children's vertices, above or below, and at
+//                  least its children's errors: tools/tiler/pack_builder.hpp)
 //   then       the present blocks, (N+2)×(N+2) int16 samples each: the N×N vertices with their
 //              apron (terrain::HeightBlock::apron) around them, rows from the north (row -1)
 //              (terrain/height_block.hpp: GTOPO30 heights, -9999 and -32767..-20001 water)

@@ -26,7 +26,8 @@ double tileGeometricErrorMeters(uint32_t level, uint32_t verticesPerSide,
   }
   const double a = ellipsoid.semiMajorAxisMeters;
   const double spacingMeters = nominal / kTerrainQuality;  // a × the spacing in radians
-  return std::min(nominal, measuredGeometricErrorMeters + spacingMeters * spacingMeters / (8 * a));
+  const double measured = measuredGeometricErrorMeters + spacingMeters * spacingMeters / (8 * a);
+  return std::clamp(measured, kMeasuredErrorFloor * nominal, nominal);
 }
 
 double screenSpaceErrorPixels(double geometricErrorMeters, double distanceMeters,

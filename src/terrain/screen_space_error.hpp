@@ -30,10 +30,17 @@ inline constexpr double kMinimumDistanceMeters = 1.0;
 double geometricErrorMeters(uint32_t level, uint32_t verticesPerSide,
                             const geo::Ellipsoid& ellipsoid);
 
+// How far below the nominal error a measured one may take a tile. The hill-shading shows the
+// terrain's slopes, which a small height deviation can hide: rough ground drawn from vertices
+// 3x further apart on screen than the nominal ~8 px looked blurred and its LOD boundaries showed
+// (tests/render/test_shading_seams.cpp). Half: vertices at most ~16 px apart.
+inline constexpr double kMeasuredErrorFloor = 0.5;
+
 // The error selection uses for a tile: geometricErrorMeters of its level, or less where the tiler
 // measured less (flat land, open sea): measured + the sag of a chord between the tile's vertices
-// below the curved surface, s²/(8a) for the vertex spacing s along a meridian. A measured error
-// that is NaN, negative or infinite counts as unknown.
+// below the curved surface, s²/(8a) for the vertex spacing s along a meridian, but at least
+// kMeasuredErrorFloor x the nominal. A measured error that is NaN, negative or infinite counts as
+// unknown.
 double tileGeometricErrorMeters(uint32_t level, uint32_t verticesPerSide,
                                 const geo::Ellipsoid& ellipsoid,
                                 double measuredGeometricErrorMeters);

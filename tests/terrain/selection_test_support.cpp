@@ -162,7 +162,7 @@ std::optional<TileSummary> PyramidCatalog::find(const geo::TileId& tile) const {
     return std::nullopt;
   }
   if (!*entry) return std::nullopt;
-  return TileSummary{(*entry)->subtreeRange};
+  return TileSummary{(*entry)->subtreeRange, (*entry)->geometricErrorMeters};
 }
 
 bool PyramidCatalog::isResident(const geo::TileId& tile) const {

@@ -45,12 +45,13 @@ TEST(GeometricError, AMeasuredErrorOnlyLowersItByWhatTheTilerFound) {
   for (const double unknown : {nan, -1.0, inf}) {
     EXPECT_EQ(tileGeometricErrorMeters(5, 17, wgs84, unknown), nominal) << unknown;
   }
-  // Flat: only the chord's sag below the curved surface remains (spacing ~39 km: ~30 m).
+  // Flat: the floor (half the nominal). Between: the measured error plus the chord's sag below
+  // the curved surface (spacing ~39 km: ~30 m).
+  EXPECT_EQ(tileGeometricErrorMeters(5, 17, wgs84, 0.0), kMeasuredErrorFloor * nominal);
   const double spacing = nominal / kTerrainQuality;
   const double sag = spacing * spacing / (8 * wgs84.semiMajorAxisMeters);
-  EXPECT_NEAR(tileGeometricErrorMeters(5, 17, wgs84, 0.0), sag, 1e-9);
   EXPECT_NEAR(sag, 30.0, 1.0);
-  EXPECT_NEAR(tileGeometricErrorMeters(5, 17, wgs84, 400.0), 400.0 + sag, 1e-9);
+  EXPECT_NEAR(tileGeometricErrorMeters(5, 17, wgs84, 7000.0), 7000.0 + sag, 1e-9);
   // Rougher than the nominal: the nominal stays (the selection refines no more than before).
   EXPECT_EQ(tileGeometricErrorMeters(5, 17, wgs84, 50'000.0), nominal);
 }

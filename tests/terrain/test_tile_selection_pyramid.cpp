@@ -170,6 +170,7 @@ TEST(TileSelectionPyramid, PolesAndTheAntimeridianAreCoveredWithoutGaps) {
 TEST(TileSelectionPyramid, DrawnTilesMeetTheScreenSpaceErrorCriterion) {
   PyramidCatalog& catalog = PyramidCatalog::bundled();
   SelectionOptions options;
+  options.measuredErrors = false;  // the independent model is the nominal one
   double smallestRefinedRatio = 1e300;
   size_t checkedDrawn = 0;
   for (const double hysteresis : {0.0, 0.25}) {
@@ -201,6 +202,39 @@ TEST(TileSelectionPyramid, DrawnTilesMeetTheScreenSpaceErrorCriterion) {
   // The distance bound is conservative but not loose: refined tiles were truly near the limit.
   EXPECT_GT(smallestRefinedRatio, 0.9);
   std::printf("smallest (independent SSE / limit) of a refined tile: %.3f\n", smallestRefinedRatio);
+}
+
+// The tiler's measured errors (opt-in): where the ground is smoother than the nominal error
+// assumes, tiles stop refining sooner (down to half the nominal error: kMeasuredErrorFloor), and
+// the selection keeps every invariant and covers the view.
+TEST(TileSelectionPyramid, MeasuredErrorsDrawFewerTilesWhereTheGroundIsFlat) {
+  PyramidCatalog& catalog = PyramidCatalog::bundled();
+  struct Case {
+    TestView view;
+    double largestRatio;  // measured / nominal tile count at most
+  };
+  const Case cases[] = {
+      {cameraView(-1.0, 52.6, 800.0, 80.0, 80.0, "east England, low and oblique"), 0.9},
+      {cameraView(-150.0, 20.0, 3000.0, 60.0, 0.0, "open Pacific"), 1.0},
+      {cameraView(138.73, 35.36, 6000.0, 70.0, 30.0, "Fuji's flanks"), 0.8},
+  };
+  for (const Case& c : cases) {
+    SelectionOptions nominal;
+    nominal.measuredErrors = false;
+    const SelectionResult before = selectTiles(c.view.view, catalog, nominal, {});
+    SelectionOptions measured;
+    measured.measuredErrors = true;
+    const SelectionResult after = selectTiles(c.view.view, catalog, measured, {});
+    ASSERT_TRUE(before.complete() && after.complete()) << c.view.name;
+    EXPECT_TRUE(testing::checkInvariants(c.view, catalog, measured, after));
+    EXPECT_TRUE(testing::checkCoverage(c.view, catalog, after));
+    const double ratio =
+        static_cast<double>(after.tiles.size()) / static_cast<double>(before.tiles.size());
+    EXPECT_LE(ratio, c.largestRatio)
+        << c.view.name << ": " << before.tiles.size() << " -> " << after.tiles.size() << " tiles";
+    std::printf("%s: %zu -> %zu tiles\n", c.view.name.c_str(), before.tiles.size(),
+                after.tiles.size());
+  }
 }
 
 // Level-of-detail flips between two frames: tiles drawn in one and refined in the other (tiles

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Level of detail against image error: per view, the triangles drawn, the image error against a
 # 0.5 px reference (the fraction of pixels that match nothing within a 2 px shift,
-# globe-image-error) and the steady frame time, for a baseline build and a new build of globe run
-# interleaved in one run. Each build tiles its own pyramid from the same inputs (the bundled
+# globe-image-error) and the steady frame time, for a baseline build, a new build, and the new
+# build with --measured-lod, run interleaved in one run. Each build tiles its own pyramid from the same inputs (the bundled
 # data/dem, plus the Taunus and Kattegat SRTM tiles from ../shared when present). The reference is
 # the baseline at --sse 0.5. Frame time: a held pose played with `globe play --no-frames`, the
 # median total of the second half of its frames (the view is complete by then).
@@ -41,7 +41,7 @@ SIZE=1280x720
 
 median() { sort -g | awk '{v[NR]=$1} END {if (NR == 0) print "nan"; else if (NR % 2) print v[(NR+1)/2]; else print (v[NR/2]+v[NR/2+1])/2}'; }
 
-steadyFrameMs() {  # build pyramid camera → median total_ms of the second half of 60 held frames
+steadyFrameMs() {  # build pyramid camera [flags] → median total_ms of the second half of 60 frames
   local lon lat h hd p r
   IFS=, read -r lon lat h hd p r <<<"$3"
   cat >"$WORK/hold.json" <<JSON
@@ -50,34 +50,41 @@ steadyFrameMs() {  # build pyramid camera → median total_ms of the second half
  {"t": 2, "lon": $lon, "lat": $lat, "height": $h, "heading": $hd, "pitch": $p, "roll": $r}]}
 JSON
   rm -rf "$WORK/play"
-  "$1/src/app/globe" play "$2" "$WORK/hold.json" --out "$WORK/play" --no-frames --size $SIZE >/dev/null
+  "$1/src/app/globe" play "$2" "$WORK/hold.json" --out "$WORK/play" --no-frames --size $SIZE \
+    ${4:-} >/dev/null
   tail -n +2 "$WORK/play/timing.csv" | awk -F, '{print $7 - $6}' | tail -n 30 | median
 }
 
-printf '| view | triangles base | triangles new | ratio | image error base | image error new | frame ms base | frame ms new | ratio |\n' >"$WORK/table.md"
-printf '|---|---|---|---|---|---|---|---|---|\n' >>"$WORK/table.md"
+printf '| view | side | triangles | vs base | image error | frame ms | vs base |\n' >"$WORK/table.md"
+printf '|---|---|---|---|---|---|---|\n' >>"$WORK/table.md"
 for view in "${VIEWS[@]}"; do
   name=${view%%=*}
   camera=${view#*=}
   "$BASE/src/app/globe" snapshot "$WORK/base-pyramid" --camera "$camera" --size $SIZE --sse 0.5 \
     -o "$WORK/$name.reference.png" >/dev/null
-  for side in base new; do : >"$WORK/$name.$side.ms"; done
+  SIDES=(base new measured)
+  for side in "${SIDES[@]}"; do : >"$WORK/$name.$side.ms"; done
   for ((round = 0; round < ROUNDS; ++round)); do
-    for side in base new; do
-      build=$BASE; [ $side = new ] && build=$NEW
-      out=$("$build/src/app/globe" snapshot "$WORK/$side-pyramid" --camera "$camera" --size $SIZE \
+    for side in "${SIDES[@]}"; do
+      build=$NEW; pyramid=$WORK/new-pyramid; flags=
+      [ $side = base ] && build=$BASE pyramid=$WORK/base-pyramid
+      [ $side = measured ] && flags=--measured-lod
+      out=$("$build/src/app/globe" snapshot "$pyramid" --camera "$camera" --size $SIZE $flags \
         -o "$WORK/$name.$side.png")
       echo "$out" | sed -E 's/.* ([0-9]+) triangles.*/\1/' >"$WORK/$name.$side.triangles"
-      steadyFrameMs "$build" "$WORK/$side-pyramid" "$camera" >>"$WORK/$name.$side.ms"
+      steadyFrameMs "$build" "$pyramid" "$camera" $flags >>"$WORK/$name.$side.ms"
     done
   done
-  tb=$(cat "$WORK/$name.base.triangles"); tn=$(cat "$WORK/$name.new.triangles")
-  eb=$("$IMAGE_ERROR" "$WORK/$name.base.png" "$WORK/$name.reference.png" | cut -f1)
-  en=$("$IMAGE_ERROR" "$WORK/$name.new.png" "$WORK/$name.reference.png" | cut -f1)
-  mb=$(median <"$WORK/$name.base.ms"); mn=$(median <"$WORK/$name.new.ms")
-  awk -v n="$name" -v tb="$tb" -v tn="$tn" -v eb="$eb" -v en="$en" -v mb="$mb" -v mn="$mn" \
-    'BEGIN {printf "| %s | %d | %d | %.2f | %.3f %% | %.3f %% | %.1f | %.1f | %.2f |\n", n, tb, tn, tn / tb, 100 * eb, 100 * en, mb, mn, mn / mb}' \
-    >>"$WORK/table.md"
+  tb=$(cat "$WORK/$name.base.triangles")
+  mb=$(median <"$WORK/$name.base.ms")
+  for side in "${SIDES[@]}"; do
+    t=$(cat "$WORK/$name.$side.triangles")
+    e=$("$IMAGE_ERROR" "$WORK/$name.$side.png" "$WORK/$name.reference.png" | cut -f1)
+    m=$(median <"$WORK/$name.$side.ms")
+    awk -v n="$name" -v s="$side" -v t="$t" -v tb="$tb" -v e="$e" -v m="$m" -v mb="$mb" \
+      'BEGIN {printf "| %s | %s | %d | %.2f | %.3f %% | %.1f | %.2f |\n", n, s, t, t / tb, 100 * e, m, m / mb}' \
+      >>"$WORK/table.md"
+  done
 done
 {
   echo "# Level of detail: triangles, image error and frame time"
@@ -86,8 +93,9 @@ done
   echo "the image error against the baseline's 0.5 px rendering (the fraction of pixels that match"
   echo "no pixel within a 2 px shift, every channel within 24 of 255; the larger of both ways), and"
   echo "the median steady frame time of a held pose (\`globe play --no-frames\`, second half of 60"
-  echo "frames, $ROUNDS interleaved rounds per build). Made by \`tools/bench_render/bench_lod.sh\` on"
-  echo "$(date -u +%Y-%m-%d)."
+  echo "frames, $ROUNDS interleaved rounds per side). Sides: base (the baseline build and its"
+  echo "pyramid), new (this build, its pyramid), measured (this build with \`--measured-lod\`)."
+  echo "Made by \`tools/bench_render/bench_lod.sh\` on $(date -u +%Y-%m-%d)."
   echo
   cat "$WORK/table.md"
   echo

@@ -110,13 +110,13 @@ Result<io::Pack> buildPack(const io::PackId& id, const io::PackLayout& layout,
         inheritFromChild(found->second, children[q], q, block, filled, n);
         const size_t childSlot = io::slotOf(children[q], layout.tilesPerSide);
         const auto& childEntry = found->second.entries[childSlot];
-        // The child's own error adds up: the parent stands for everything under the child.
+        // The parent stands for everything under the child: never less than the child's error.
         const double childError = std::isfinite(childEntry.geometricErrorMeters)
                                       ? std::max(0.0, double{childEntry.geometricErrorMeters})
                                       : 0.0;
         const std::span<const int16_t> childBlock = found->second.block(childSlot);
         geometricErrorMeters =
-            std::max(geometricErrorMeters, deviationFromParent(childBlock, n) + childError);
+            std::max({geometricErrorMeters, deviationFromParent(childBlock, n), childError});
         for (const int16_t sample : childBlock) {
           (terrain::isWater(sample) ? water : land) = true;
         }

@@ -22,10 +22,12 @@ struct PackBuildStats {
 };
 
 // childPacks: the finished packs of the next finer level under this pack (absent ones omitted).
-// Each tile's geometric error is how far its surface lies from its children's vertices plus their
-// own error (0 for a tile of the finest data), and at least terrain::geometricErrorMeters of its
-// level where its children hold both water and land: a coastline's shape is in its sea flags,
-// which no height deviation measures.
+// Each tile's geometric error is how far its surface lies from its children's vertices, and at
+// least its children's own errors (0 for a tile of the finest data), so it never decreases going
+// up; and at least terrain::geometricErrorMeters of its level where its children hold both water
+// and land: a coastline's shape is in its sea flags, which no height deviation measures. (The
+// max, not the sum, of the levels' deviations: the sum bounds the distance to the finest data
+// but doubled the error of rough tiles; tools/bench_render/bench_lod.sh measures the images.)
 Result<io::Pack> buildPack(const io::PackId& id, const io::PackLayout& layout,
                            const TilingPlan& plan, const std::vector<TilerSource>& sources,
                            const std::map<io::PackId, io::Pack>& childPacks,
