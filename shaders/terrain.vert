@@ -20,6 +20,7 @@ layout(location = 2) in float a_height; // metres: land height, or under water t
                                         // (0 = unknown), whether water or floor is drawn
 layout(location = 3) in float a_sea;    // 1 = water (land below sea level is land)
 layout(location = 4) in vec2 a_uv;      // tile-local: (0,0) north-west, (1,1) south-east
+layout(location = 5) in vec3 a_coarseNormal;  // on edges: the next coarser level's normal
 
 uniform mat4 u_modelView;        // view · translate(tile centre), cast from double
 uniform mat4 u_projection;
@@ -29,6 +30,7 @@ uniform float u_logDepthScale;   // 1 / log2(1 + far)
 uniform vec3 u_sunDirection;     // unit, towards the sun, ECEF axes (zero: ambient only)
 uniform float u_ambient;         // light on faces turned away from the sun
 uniform bool u_hillShading;      // false: light with the ellipsoid "up" only
+uniform vec4 u_coarserEdges;     // north, south, west, east: 1 where that neighbour is coarser
 
 // GLOBE_OPAQUE_BASE: the bottom layer is opaque over the whole tile, so the terrain's own colour
 // is never seen: it is neither computed nor interpolated (fewer varyings, cheaper triangles).
@@ -91,8 +93,12 @@ void main() {
   // drawn: water stays flat, and the floor's colour (its depth) shows its relief.
   vec3 up = normalize(u_tileCenterEcef + a_offset);
   float upLight = u_ambient + (1.0 - u_ambient) * max(dot(up, u_sunDirection), 0.0);
+  // An edge that faces a coarser neighbour is lit with that level's normals, so the lighting does
+  // not step at the level change (terrain/tile_mesh.hpp). uv is exactly 0 or 1 on the edges.
+  vec4 onEdge = vec4(a_uv.y == 0.0, a_uv.y == 1.0, a_uv.x == 0.0, a_uv.x == 1.0);
+  vec3 normal = dot(onEdge, u_coarserEdges) > 0.0 ? a_coarseNormal : a_normal;
   float landLight = u_hillShading
-                        ? u_ambient + (1.0 - u_ambient) * max(dot(a_normal, u_sunDirection), 0.0)
+                        ? u_ambient + (1.0 - u_ambient) * max(dot(normal, u_sunDirection), 0.0)
                         : upLight;
 #if defined(GLOBE_OPAQUE_BASE)
 #elif defined(GLOBE_IMAGERY)

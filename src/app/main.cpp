@@ -35,19 +35,18 @@ int main(int argc, char** argv) {
 
   std::vector<std::string> layerTexts;
   bool lighting = false;
-  bool measuredLod = false;
+  bool nominalLod = false;
   auto addLayers = [&](CLI::App* command) {
     command->add_option("--layer", layerTexts,
                         "imagery layer directory made by `globe-tiler imagery`, optionally "
                         "DIR,OPACITY (0..1); repeat for more, bottom layer first");
     command->add_flag("--lighting", lighting,
                       "hill-shade the imagery too (off by default: imagery has its own shadows)");
-    command->add_flag("--measured-lod", measuredLod,
-                      "experimental: stop refining where the tiler measured the ground smooth "
-                      "(fewer triangles; LOD boundaries can show in the hill-shading); not with "
-                      "--layer");
+    command->add_flag("--nominal-lod", nominalLod,
+                      "refine by each level's nominal error, not the tiler's measured one (more "
+                      "triangles where the ground is smooth; as before pack format 3)");
   };
-  // --layer, --lighting and --measured-lod into the scene options; false (after printing why) on a
+  // --layer, --lighting and --nominal-lod into the scene options; false (after printing why) on a
   // bad --layer.
   auto applyLayers = [&](const char* command, globe::app::SceneOptions& scene) {
     for (const std::string& text : layerTexts) {
@@ -59,7 +58,7 @@ int main(int argc, char** argv) {
       scene.layers.push_back(*layer);
     }
     scene.lightImagery = lighting;
-    scene.measuredLod = measuredLod;
+    scene.measuredLod = !nominalLod;
     return true;
   };
 

@@ -40,9 +40,9 @@ struct SceneOptions {
   ImageryBudget imageryBudget;
   uint32_t maximumImageryLoadLevel = geo::kMaxLevel;  // imagery deeper than this is never loaded
   bool lightImagery = false;  // --lighting: hill-shade the imagery too (it has its own shadows)
-  // --measured-lod: the tiler's measured geometric errors (terrain::SelectionOptions::
-  // measuredErrors); ignored with imagery layers.
-  bool measuredLod = false;
+  // The tiler's measured geometric errors (terrain::SelectionOptions::measuredErrors), unless
+  // --nominal-lod; not with imagery layers.
+  bool measuredLod = true;
 };
 
 struct FrameInfo {

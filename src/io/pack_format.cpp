@@ -41,13 +41,13 @@ PackEntry loadEntry(const std::byte* in, uint32_t formatVersion) {
   return entry;
 }
 
-// Visits a stored block's samples in file order: (N+2)² with the apron (rows and columns -1..N),
-// else N².
+// Visits a stored block's samples in file order: (N+2w)² with the apron (rows and columns
+// -w..N+w-1, w = terrain::kApronWidth), else N².
 template <class Visit>
 void forEachStoredSample(const PackLayout& layout, Visit visit) {
   const auto n = static_cast<int>(layout.verticesPerSide);
-  const int first = layout.hasApron() ? -1 : 0;
-  const int end = layout.hasApron() ? n + 1 : n;
+  const int first = layout.hasApron() ? -terrain::kApronWidth : 0;
+  const int end = layout.hasApron() ? n + terrain::kApronWidth : n;
   for (int row = first; row < end; ++row) {
     for (int column = first; column < end; ++column) {
       const bool inside = row >= 0 && row < n && column >= 0 && column < n;

@@ -9,8 +9,9 @@
 //              f32 geometric error (metres: how far the tile's surface, drawn with the mesh's
 //                  diagonal rule, lies from its children's vertices, above or below, and at
 //                  least its children's errors: tools/tiler/pack_builder.hpp)
-//   then       the present blocks, (N+2)×(N+2) int16 samples each: the N×N vertices with their
-//              apron (terrain::HeightBlock::apron) around them, rows from the north (row -1)
+//   then       the present blocks, (N+4)×(N+4) int16 samples each: the N×N vertices with their
+//              apron (terrain::HeightBlock::apron, 2 vertices wide) around them, rows from the
+//              north (row -2)
 //              (terrain/height_block.hpp: GTOPO30 heights, -9999 and -32767..-20001 water)
 //   last       u32 CRC-32 of everything before it
 //
@@ -65,9 +66,9 @@ struct PackLayout {
   uint32_t formatVersion = kPackFormatVersion;
 
   bool hasApron() const { return formatVersion >= 3; }
-  // Samples per stored block: N², or (N+2)² with the apron.
+  // Samples per stored block: N², or (N+2w)² with the apron (w = terrain::kApronWidth).
   size_t blockSamples() const {
-    const size_t side = size_t{verticesPerSide} + (hasApron() ? 2 : 0);
+    const size_t side = size_t{verticesPerSide} + (hasApron() ? 2 * terrain::kApronWidth : 0);
     return side * side;
   }
   size_t blockBytes() const { return blockSamples() * 2; }

@@ -53,6 +53,7 @@ GpuTile uploadGpuTile(const geo::TileId& tile, const terrain::TileMesh& mesh, GL
   floatAttribute(kAttributeHeight, 1, terrain::kTileVertexHeightOffset);
   floatAttribute(kAttributeSea, 1, terrain::kTileVertexSeaOffset);
   floatAttribute(kAttributeUv, 2, terrain::kTileVertexUvOffset);
+  floatAttribute(kAttributeCoarseNormal, 3, terrain::kTileVertexCoarseNormalOffset);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer);  // recorded in the vertex array
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);

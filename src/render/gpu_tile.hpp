@@ -19,6 +19,7 @@ inline constexpr GLuint kAttributeNormal = 1;
 inline constexpr GLuint kAttributeHeight = 2;
 inline constexpr GLuint kAttributeSea = 3;
 inline constexpr GLuint kAttributeUv = 4;
+inline constexpr GLuint kAttributeCoarseNormal = 5;
 
 struct GpuTile {
   GlObject vertexArray;

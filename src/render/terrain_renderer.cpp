@@ -40,7 +40,7 @@ struct TerrainRenderer::Impl {
   struct Uniforms {
     GLint modelView = -1, projection = -1, tileCenter = -1, imageryRect = -1;
     GLint sunDirection = -1, ambient = -1, hillShading = -1, imagery = -1;
-    GLint logDepthScale = -1;
+    GLint logDepthScale = -1, coarserEdges = -1;
     GLint layerTransform = -1, layerOpacity = -1;
     std::array<GLint, kMaxDrapeLayers> layerSamplers{-1, -1, -1, -1};
   };
@@ -67,6 +67,7 @@ struct TerrainRenderer::Impl {
     geo::TileId tile;
     terrain::SkirtEdgeMask skirts;
     BoundDrapes drapes;
+    terrain::SkirtEdgeMask coarser = 0;  // edges facing a coarser neighbour
   };
 
   TerrainRendererOptions options;
@@ -156,6 +157,7 @@ Result<const TerrainRenderer::Impl::Program*> TerrainRenderer::Impl::program(
   u.hillShading = p.uniformLocation("u_hillShading");
   u.imagery = p.uniformLocation("u_imagery");
   u.logDepthScale = p.uniformLocation("u_logDepthScale");
+  u.coarserEdges = p.uniformLocation("u_coarserEdges");
   u.layerTransform = p.uniformLocation("u_layerTransform");
   u.layerOpacity = p.uniformLocation("u_layerOpacity");
   for (uint32_t k = 0; k < kMaxDrapeLayers; ++k) {
@@ -390,6 +392,8 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
     for (auto& items : impl.drawItems) {
       for (Impl::DrawItem& item : items) {
         item.skirts = terrain::neededSkirtEdges(item.tile, impl.drawnIds);
+        if (item.skirts != 0)
+          item.coarser = terrain::coarserNeighbourEdges(item.tile, impl.drawnIds);
       }
     }
   }
@@ -472,6 +476,13 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
       const glm::vec3 center(gpu.centerEcefMeters);
       glUniform3fv(u.tileCenter, 1, glm::value_ptr(center));
       if (useImagery) glUniform4fv(u.imageryRect, 1, glm::value_ptr(gpu.imageryRect));
+      // North, south, west, east (TileEdge order): 1 where the neighbour is coarser.
+      auto coarser = [&](terrain::TileEdge edge) {
+        return (item.coarser >> static_cast<uint32_t>(edge)) & 1U ? 1.0f : 0.0f;
+      };
+      glUniform4f(u.coarserEdges, coarser(terrain::TileEdge::North),
+                  coarser(terrain::TileEdge::South), coarser(terrain::TileEdge::West),
+                  coarser(terrain::TileEdge::East));
       if (currentLayers > 0) impl.bindDrapes(item.drapes, u);
       glBindVertexArray(gpu.vertexArray.get());
       // The grid and only the skirts this tile needs (terrain/skirt_edges.hpp), in one call.

@@ -60,21 +60,28 @@ struct HeightRange {
   void include(const HeightRange& other);
 };
 
-// The apron: the ring of samples one vertex outside a block, i.e. the neighbouring tiles' vertices
-// next to its edges (4N + 4 samples), so a block's edge normals can use central differences and
-// agree with its neighbours'. Ring order: the north row (row -1, columns -1..N), the south row
-// (row N, columns -1..N), the west column (column -1, rows 0..N-1), the east column (column N,
-// rows 0..N-1). Beyond a pole the ring holds the vertices mirrored over the pole.
+// The apron: the band of samples kApronWidth vertices wide around a block, i.e. the
+// neighbouring tiles' vertices next to its edges, so a block's edge normals can use central
+// differences that agree with its neighbours' at its own level (1 vertex out) and at the next
+// coarser level (2 vertices out: every other vertex is the parent level's). Band order, rows and
+// columns relative to the block (-w..N+w-1 for width w): the north rows (-w..-1, columns
+// -w..N+w-1), the south rows (N..N+w-1, same columns), then per block row 0..N-1 the west
+// columns (-w..-1) and then per block row the east columns (N..N+w-1). Beyond a pole the band
+// holds the vertices mirrored over the pole.
+inline constexpr int kApronWidth = 2;
 constexpr size_t apronSampleCount(uint32_t verticesPerSide) {
-  return 4 * size_t{verticesPerSide} + 4;
+  const size_t n = verticesPerSide, w = kApronWidth;
+  return (n + 2 * w) * (n + 2 * w) - n * n;
 }
-// Index into the ring of (row, column), both in [-1, N], on the ring (not inside the block).
+// Index into the band of (row, column), both in [-w, N+w-1], outside the block.
 constexpr size_t apronIndex(int row, int column, uint32_t verticesPerSide) {
   const auto n = static_cast<int>(verticesPerSide);
-  if (row < 0) return static_cast<size_t>(column + 1);
-  if (row >= n) return static_cast<size_t>(n + 2 + column + 1);
-  if (column < 0) return static_cast<size_t>(2 * (n + 2) + row);
-  return static_cast<size_t>(2 * (n + 2) + n + row);
+  constexpr int w = kApronWidth;
+  const int span = n + 2 * w;  // a north or south row
+  if (row < 0) return static_cast<size_t>((row + w) * span + column + w);
+  if (row >= n) return static_cast<size_t>((w + row - n) * span + column + w);
+  if (column < 0) return static_cast<size_t>(2 * w * span + row * w + column + w);
+  return static_cast<size_t>(2 * w * span + n * w + row * w + column - n);
 }
 
 // Vertex (row, column): row 0 is the north edge, column 0 the west edge.
@@ -92,8 +99,8 @@ struct HeightBlock {
     return surfaceHeightMeters(at(row, column), sea);
   }
   bool hasApron() const { return apron.size() == apronSampleCount(verticesPerSide); }
-  // Sample (row, column) for row and column in [-1, N]: the block inside, the apron on the ring
-  // (requires hasApron()).
+  // Sample (row, column) for row and column in [-kApronWidth, N+kApronWidth-1]: the block
+  // inside, the apron around it (requires hasApron()).
   int16_t atWithApron(int row, int column) const {
     const auto n = static_cast<int>(verticesPerSide);
     if (row >= 0 && row < n && column >= 0 && column < n) {

@@ -8,6 +8,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "geo/ecef.hpp"
+
 namespace globe::terrain {
 
 double geometricErrorMeters(uint32_t level, uint32_t verticesPerSide,
@@ -19,15 +21,30 @@ double geometricErrorMeters(uint32_t level, uint32_t verticesPerSide,
 
 double tileGeometricErrorMeters(uint32_t level, uint32_t verticesPerSide,
                                 const geo::Ellipsoid& ellipsoid,
-                                double measuredGeometricErrorMeters) {
+                                double measuredGeometricErrorMeters, double faceOn) {
   const double nominal = geometricErrorMeters(level, verticesPerSide, ellipsoid);
-  if (!(measuredGeometricErrorMeters >= 0.0) || !std::isfinite(measuredGeometricErrorMeters)) {
+  if (!(measuredGeometricErrorMeters >= 0.0) || !std::isfinite(measuredGeometricErrorMeters) ||
+      level < kMeasuredErrorMinimumLevel) {
     return nominal;
   }
   const double a = ellipsoid.semiMajorAxisMeters;
   const double spacingMeters = nominal / kTerrainQuality;  // a × the spacing in radians
   const double measured = measuredGeometricErrorMeters + spacingMeters * spacingMeters / (8 * a);
-  return std::clamp(measured, kMeasuredErrorFloor * nominal, nominal);
+  const double floor = std::isnan(faceOn) ? 1.0 : std::clamp(faceOn, kMeasuredErrorFloor, 1.0);
+  return std::clamp(measured, floor * nominal, nominal);
+}
+
+double faceOnFraction(const glm::dvec3& cameraEcefMeters, const std::vector<glm::dvec3>& points,
+                      const geo::Ellipsoid& ellipsoid) {
+  double largest = 0.0;
+  for (const glm::dvec3& p : points) {
+    const glm::dvec3 toCamera = cameraEcefMeters - p;
+    const double length = glm::length(toCamera);
+    if (!(length > 0.0)) return 1.0;  // the camera on the region: as if from above
+    const double cosine = glm::dot(geo::geodeticSurfaceNormal(ellipsoid, p), toCamera) / length;
+    if (cosine > largest) largest = cosine;
+  }
+  return std::isfinite(largest) ? std::min(largest, 1.0) : 1.0;
 }
 
 double screenSpaceErrorPixels(double geometricErrorMeters, double distanceMeters,

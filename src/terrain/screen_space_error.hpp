@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -30,20 +31,31 @@ inline constexpr double kMinimumDistanceMeters = 1.0;
 double geometricErrorMeters(uint32_t level, uint32_t verticesPerSide,
                             const geo::Ellipsoid& ellipsoid);
 
-// How far below the nominal error a measured one may take a tile. The hill-shading shows the
-// terrain's slopes, which a small height deviation can hide: rough ground drawn from vertices
-// 3x further apart on screen than the nominal ~8 px looked blurred and its LOD boundaries showed
-// (tests/render/test_shading_seams.cpp). Half: vertices at most ~16 px apart.
-inline constexpr double kMeasuredErrorFloor = 0.5;
+// How far below the nominal error a measured one may take a tile seen face-on. The hill-shading
+// shows the terrain's slopes, which a small height deviation can hide: seen from above, smooth
+// ground drawn from vertices much further apart than the nominal ~8 px shows its LOD boundaries
+// (tests/render/test_shading_seams.cpp). Seen at a grazing angle, the spacing is foreshortened
+// and what shows is the height error on the silhouettes: there the measured error counts.
+inline constexpr double kMeasuredErrorFloor = 0.25;
+// Tiles coarser than this keep the nominal error: they are few, and their bounding volumes are
+// loose (a refined tile's children cull what the whole tile cannot).
+inline constexpr uint32_t kMeasuredErrorMinimumLevel = 6;
 
 // The error selection uses for a tile: geometricErrorMeters of its level, or less where the tiler
-// measured less (flat land, open sea): measured + the sag of a chord between the tile's vertices
-// below the curved surface, s²/(8a) for the vertex spacing s along a meridian, but at least
-// kMeasuredErrorFloor x the nominal. A measured error that is NaN, negative or infinite counts as
-// unknown.
+// measured less (smooth land, open sea): measured + the sag of a chord between the tile's
+// vertices below the curved surface, s²/(8a) for the vertex spacing s along a meridian, but at
+// least the nominal times max(kMeasuredErrorFloor, faceOn). faceOn in [0, 1]: the cosine between
+// the tile's up and the direction to the camera where it is largest (1: seen from straight
+// above, 0: edge-on); NaN counts as 1. A measured error that is NaN, negative or infinite counts
+// as unknown, and so does any below kMeasuredErrorMinimumLevel: the nominal.
 double tileGeometricErrorMeters(uint32_t level, uint32_t verticesPerSide,
                                 const geo::Ellipsoid& ellipsoid,
-                                double measuredGeometricErrorMeters);
+                                double measuredGeometricErrorMeters, double faceOn = 1.0);
+
+// The largest cosine between the surface's up (the geodetic normal) and the direction to the
+// camera over the points, clamped to [0, 1]: how face-on a region is seen.
+double faceOnFraction(const glm::dvec3& cameraEcefMeters, const std::vector<glm::dvec3>& points,
+                      const geo::Ellipsoid& ellipsoid);
 
 // geometricError x viewportHeight / (2 x distance x tan(fovY / 2)): the error's size in pixels
 // at the centre of the screen. distanceMeters is clamped to at least kMinimumDistanceMeters (NaN

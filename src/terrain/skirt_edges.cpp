@@ -32,6 +32,23 @@ SkirtEdgeMask neededSkirtEdges(const geo::TileId& tile,
   return mask;
 }
 
+SkirtEdgeMask coarserNeighbourEdges(const geo::TileId& tile,
+                                    const std::unordered_set<geo::TileId>& drawn) {
+  SkirtEdgeMask mask = 0;
+  for (uint32_t edge = 0; edge < 4; ++edge) {
+    const auto neighbour = sameLevelNeighbour(tile, static_cast<TileEdge>(edge));
+    if (!neighbour || drawn.contains(*neighbour)) continue;
+    for (geo::TileId up = *neighbour; up.level > 0;) {
+      up = up.parent();
+      if (drawn.contains(up)) {
+        mask |= SkirtEdgeMask{1} << edge;
+        break;
+      }
+    }
+  }
+  return mask;
+}
+
 uint32_t skirtedIndexRanges(uint32_t verticesPerSide, SkirtEdgeMask edges,
                             std::span<IndexRange, 3> out) {
   if (verticesPerSide < 2) return 0;

@@ -27,6 +27,12 @@ std::optional<geo::TileId> sameLevelNeighbour(const geo::TileId& tile, TileEdge 
 SkirtEdgeMask neededSkirtEdges(const geo::TileId& tile,
                                const std::unordered_set<geo::TileId>& drawn);
 
+// The edges of `tile` whose neighbour is drawn coarser: the same-level neighbour is not in
+// `drawn` but one of its ancestors is. Lit with its coarse normals there (tile_mesh.hpp), the
+// tile's edge shades like that neighbour's.
+SkirtEdgeMask coarserNeighbourEdges(const geo::TileId& tile,
+                                    const std::unordered_set<geo::TileId>& drawn);
+
 // One index range of the shared index buffer (in indices, not bytes).
 struct IndexRange {
   uint32_t first = 0;

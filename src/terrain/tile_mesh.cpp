@@ -33,6 +33,7 @@ glm::dvec3 ellipsoidNormal(const geo::Ellipsoid& ellipsoid, double longitudeDegr
 struct Vertex {
   glm::dvec3 positionEcef;
   glm::dvec3 normal;
+  glm::dvec3 coarseNormal;   // the next coarser level's normal here (edge vertices; else normal)
   double heightMeters;       // where the vertex is drawn: the block's surface height
   double colorHeightMeters;  // what its colour shows: the land height, or the sea floor
   float sea;
@@ -116,24 +117,49 @@ TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
     return vertexEcef(ellipsoid, where.longitudeDegrees, where.latitudeDegrees,
                       surfaceHeightMeters(block.atWithApron(row, column), block.sea));
   };
-  const int reach = apron ? 1 : 0;  // how far past the edge a difference may look
+  // The normal at (row, column) from neighbours `step` vertices away: 1 for this level's, 2 for
+  // the next coarser level's (every other vertex is its). Never past the apron.
+  auto normalAt = [&](int row, int column, int step) {
+    const int reach = apron ? step : 0;  // how far past the edge a difference may look
+    const glm::dvec3 towardsSouth =
+        at(std::min(row + step, last + reach), column) - at(std::max(row - step, -reach), column);
+    const glm::dvec3 towardsEast =
+        at(row, std::min(column + step, last + reach)) - at(row, std::max(column - step, -reach));
+    const glm::dvec3 cross = glm::cross(towardsSouth, towardsEast);
+    const glm::dvec3 up = ellipsoidNormal(ellipsoid, longitudes[static_cast<size_t>(column)],
+                                          latitudes[static_cast<size_t>(row)]);
+    const double length = glm::length(cross);
+    const double scale = glm::length(towardsSouth) * glm::length(towardsEast);
+    if (std::isfinite(length) && length > 1e-12 * scale && length > 0.0) {
+      const glm::dvec3 candidate = cross / length;
+      if (glm::dot(candidate, up) > 0.0) return candidate;
+    }
+    return up;
+  };
   for (uint32_t i = 0; i < n; ++i) {
     for (uint32_t j = 0; j < n; ++j) {
+      Vertex& vertex = vertices[gridVertexIndex(i, j, n)];
+      vertex.normal = normalAt(static_cast<int>(i), static_cast<int>(j), 1);
+      vertex.coarseNormal = vertex.normal;
+    }
+  }
+  // Edge vertices also carry the next coarser level's normal there: the coarser mesh's own at its
+  // vertices (every other one), and between them the mean of the two, as the coarser tile's edge
+  // interpolates them. The renderer lights an edge with it where the neighbour is coarser.
+  auto coarseAt = [&](int row, int column) { return normalAt(row, column, 2); };
+  for (uint32_t i = 0; i < n; ++i) {
+    for (uint32_t j = 0; j < n; ++j) {
+      if (i != 0 && i != n - 1 && j != 0 && j != n - 1) continue;
       const auto row = static_cast<int>(i), column = static_cast<int>(j);
-      const glm::dvec3 towardsSouth =
-          at(std::min(row + 1, last + reach), column) - at(std::max(row - 1, -reach), column);
-      const glm::dvec3 towardsEast =
-          at(row, std::min(column + 1, last + reach)) - at(row, std::max(column - 1, -reach));
-      const glm::dvec3 cross = glm::cross(towardsSouth, towardsEast);
-      const glm::dvec3 up = ellipsoidNormal(ellipsoid, longitudes[j], latitudes[i]);
-      const double length = glm::length(cross);
-      const double scale = glm::length(towardsSouth) * glm::length(towardsEast);
-      glm::dvec3 normal = up;
-      if (std::isfinite(length) && length > 1e-12 * scale && length > 0.0) {
-        const glm::dvec3 candidate = cross / length;
-        if (glm::dot(candidate, up) > 0.0) normal = candidate;
+      glm::dvec3 coarse;
+      if (row % 2 == 0 && column % 2 == 0) {
+        coarse = coarseAt(row, column);
+      } else if (row % 2 == 0) {  // on the north or south edge, between two coarser vertices
+        coarse = glm::normalize(coarseAt(row, column - 1) + coarseAt(row, column + 1));
+      } else {  // on the west or east edge
+        coarse = glm::normalize(coarseAt(row - 1, column) + coarseAt(row + 1, column));
       }
-      vertices[gridVertexIndex(i, j, n)].normal = normal;
+      vertices[gridVertexIndex(i, j, n)].coarseNormal = coarse;
     }
   }
 
@@ -190,6 +216,7 @@ TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
     mesh.vertices.push_back(vertex.sea);
     mesh.vertices.push_back(vertex.u);
     mesh.vertices.push_back(vertex.v);
+    for (int c = 0; c < 3; ++c) mesh.vertices.push_back(static_cast<float>(vertex.coarseNormal[c]));
   }
   return mesh;
 }

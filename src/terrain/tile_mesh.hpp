@@ -25,7 +25,11 @@ namespace globe::terrain {
 //          so (0,0) is the tile's north-west corner and (1,1) its south-east corner. A global
 //          equirectangular image maps with u_global = (west+180°+u·width)/360°,
 //          v_global = (90°-north+v·height)/180°; the renderer does that per tile.
-inline constexpr uint32_t kTileVertexFloats = 10;
+//   [10..12] coarse normal: on the tile's edges, the normal the next coarser level's mesh has
+//          there (between its vertices, the normalised mean of the two around); elsewhere the
+//          normal. Lit with it where the neighbour across that edge is coarser, a tile's edge
+//          shades like the neighbour's, so no lighting step shows at a level change.
+inline constexpr uint32_t kTileVertexFloats = 13;
 // How far (in vertex spacings) a mesh's edge vertices are drawn past the tile's rectangle, so
 // neighbouring tiles overlap by a hair instead of meeting at a float-rounded seam: far more than
 // float rounding at any distance the selection draws a tile from (≲ 200 spacings: ~1e-5
@@ -36,6 +40,7 @@ inline constexpr uint32_t kTileVertexNormalOffset = 3;
 inline constexpr uint32_t kTileVertexHeightOffset = 6;
 inline constexpr uint32_t kTileVertexSeaOffset = 7;
 inline constexpr uint32_t kTileVertexUvOffset = 8;
+inline constexpr uint32_t kTileVertexCoarseNormalOffset = 10;
 
 // The four edges of a tile, in the order their skirt vertices are stored.
 enum class TileEdge : uint32_t { North = 0, South = 1, West = 2, East = 3 };

@@ -44,6 +44,7 @@ struct VisibleTile {
   geo::TileId tile;
   double distanceMeters;
   TileSummary summary;
+  double faceOn;  // screen_space_error.hpp: faceOnFraction of its volume
 };
 
 class Traversal {
@@ -96,9 +97,13 @@ class Traversal {
       ++result_.counters.culledByHorizon;
       return std::nullopt;
     }
+    const double faceOn =
+        options_.measuredErrors
+            ? faceOnFraction(view_.cameraEcefMeters, volume.pointsEcefMeters, view_.ellipsoid)
+            : 1.0;
     return VisibleTile{
         tile, distanceLowerBoundMeters(view_.cameraEcefMeters, cameraHeightMeters_, volume),
-        summary};
+        summary, faceOn};
   }
 
   void request(const geo::TileId& tile, double priority) {
@@ -106,19 +111,19 @@ class Traversal {
     result_.requests.push_back({tile, priority});
   }
 
-  double errorPixels(const geo::TileId& tile, const TileSummary& summary,
-                     double distanceMeters) const {
-    const double measured = options_.measuredErrors ? summary.measuredGeometricErrorMeters
+  double errorPixels(const VisibleTile& visible, double distanceMeters) const {
+    const double measured = options_.measuredErrors ? visible.summary.measuredGeometricErrorMeters
                                                     : std::numeric_limits<double>::quiet_NaN();
     return screenSpaceErrorPixels(
-        tileGeometricErrorMeters(tile.level, options_.verticesPerSide, view_.ellipsoid, measured),
+        tileGeometricErrorMeters(visible.tile.level, options_.verticesPerSide, view_.ellipsoid,
+                                 measured, visible.faceOn),
         distanceMeters, view_);
   }
 
   // A visible, resident tile: draws itself or is refined into its visible children.
   void descend(const VisibleTile& visible) {
     const geo::TileId& tile = visible.tile;
-    const double error = errorPixels(tile, visible.summary, visible.distanceMeters);
+    const double error = errorPixels(visible, visible.distanceMeters);
     const double factor = refined_.contains(tile) ? 1.0 - hysteresis_ : 1.0 + hysteresis_;
     if (!(error > factor * threshold_) || tile.level >= options_.maximumLevel ||
         tile.level >= geo::kMaxLevel) {
@@ -157,8 +162,7 @@ class Traversal {
         ++result_.counters.waitingForSiblings;
       } else {
         // What loading it fixes: this tile's error, seen at the child's distance.
-        request(children[i],
-                errorPixels(tile, visible.summary, visibleChildren[i]->distanceMeters));
+        request(children[i], errorPixels(visible, visibleChildren[i]->distanceMeters));
       }
     }
   }

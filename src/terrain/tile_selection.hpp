@@ -27,12 +27,10 @@ struct SelectionOptions {
   uint32_t verticesPerSide = 17;
   // Tiles of this level are never refined.
   uint32_t maximumLevel = geo::kMaxLevel;
-  // Use the tiler's measured geometric errors (TileSummary, tileGeometricErrorMeters): flat
-  // tiles stop refining early. Off by default: until normals are continuous across level
-  // changes, the coarser tiles' LOD boundaries show in the hill-shading of smooth slopes
-  // (seam score 2.0-2.5 on nadir views of Fuji, against 1.4 without). Off where imagery is
-  // draped: its resolution follows the terrain's level.
-  bool measuredErrors = false;
+  // Use the tiler's measured geometric errors (TileSummary, tileGeometricErrorMeters): smooth
+  // tiles stop refining early. The scene turns it off where imagery is draped: its resolution
+  // follows the terrain's level.
+  bool measuredErrors = true;
 };
 
 struct TileRequest {

@@ -54,8 +54,8 @@ class BlockCacheTest : public ::testing::Test {
 
 TEST_F(BlockCacheTest, EntryBytesAreTheSamplesPlusADocumentedOverhead) {
   ASSERT_EQ(blocks_[0]->heights.size(), 17U * 17U);
-  ASSERT_EQ(blocks_[0]->apron.size(), 4U * 17U + 4U);  // the ring around it (pack version 3)
-  EXPECT_EQ(blockBytes(), 19U * 19U * 2U + BlockCache::kEntryOverheadBytes);
+  ASSERT_EQ(blocks_[0]->apron.size(), 21U * 21U - 17U * 17U);  // 2 vertices around (version 3)
+  EXPECT_EQ(blockBytes(), 21U * 21U * 2U + BlockCache::kEntryOverheadBytes);
   BlockCache cache(1 << 20);
   insert(cache, 0);
   insert(cache, 1);

@@ -224,7 +224,7 @@ TEST_F(TileLoaderTest, ATileBeyondThePyramidIsAbsentNotAnErrorAndNotRetried) {
 
 TEST_F(TileLoaderTest, ResidentBytesStayWithinTheBudgetAfterEveryPollExceptPinnedTiles) {
   const auto tiles = fujiRow(24, 5);
-  const size_t block = 19 * 19 * 2 + BlockCache::kEntryOverheadBytes;  // 17² samples and apron
+  const size_t block = 21 * 21 * 2 + BlockCache::kEntryOverheadBytes;  // 17² samples and apron
   BlockCache cache(6 * block);
   TileLoader loader(*store_, runner_, cache);
   // Each frame draws the four resident tiles it last received and wants the next eight.

@@ -61,8 +61,9 @@ glm::dvec3 planePoint(const Camera& c, double distance, double right, double up)
   return c.eye + distance * (c.forward + right * c.right + up * c.up);
 }
 
-// A flat N×N grid over the rectangle, as a tile mesh: offsets from its centre, normals towards
-// the camera, land (green) or sea (blue). Skirt vertices repeat their edge vertex: no area.
+// A flat N×N grid over the rectangle, as a tile mesh: offsets from its centre, normals (and coarse
+// normals) towards the camera, land (green) or sea (blue). Skirt vertices repeat their edge vertex:
+// no area.
 terrain::TileMesh planeMesh(const Camera& c, double distance, const PlaneShape& s, bool sea) {
   terrain::TileMesh mesh;
   mesh.verticesPerSide = kN;
@@ -86,11 +87,12 @@ terrain::TileMesh planeMesh(const Camera& c, double distance, const PlaneShape& 
   }
   for (const glm::dvec3& p : positions) {
     const glm::dvec3 offset = p - mesh.centerEcefMeters;
-    mesh.vertices.insert(
-        mesh.vertices.end(),
-        {static_cast<float>(offset.x), static_cast<float>(offset.y), static_cast<float>(offset.z),
-         static_cast<float>(-c.forward.x), static_cast<float>(-c.forward.y),
-         static_cast<float>(-c.forward.z), 0.0f, sea ? 1.0f : 0.0f, 0.0f, 0.0f});
+    mesh.vertices.insert(mesh.vertices.end(),
+                         {static_cast<float>(offset.x), static_cast<float>(offset.y),
+                          static_cast<float>(offset.z), static_cast<float>(-c.forward.x),
+                          static_cast<float>(-c.forward.y), static_cast<float>(-c.forward.z), 0.0f,
+                          sea ? 1.0f : 0.0f, 0.0f, 0.0f, static_cast<float>(-c.forward.x),
+                          static_cast<float>(-c.forward.y), static_cast<float>(-c.forward.z)});
   }
   return mesh;
 }

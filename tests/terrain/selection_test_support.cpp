@@ -319,7 +319,7 @@ bool checkInvariants(const TestView& view, const TileCatalog& catalog,
     if (!summary) return false;
     const HeightRange& range = summary->subtreeHeightRange;
     const glm::dvec3 camera = view.view.cameraEcefMeters;
-    const auto points = regionSamples(camera, t, range, view.view.ellipsoid, 5, {0.0, 1.0});
+    const auto points = regionSamples(camera, t, range, view.view.ellipsoid, 9, {0.0, 1.0});
     glm::dvec3 centre{0.0};
     for (const glm::dvec3& p : points) centre += p;
     centre /= static_cast<double>(points.size());

@@ -37,23 +37,46 @@ TEST(GeometricError, IsAQuarterOfTheEquatorialVertexSpacing) {
   EXPECT_TRUE(std::isfinite(geometricErrorMeters(0, 0, wgs84)));
 }
 
-TEST(GeometricError, AMeasuredErrorOnlyLowersItByWhatTheTilerFound) {
+TEST(GeometricError, AMeasuredErrorLowersItOnlyAsFarAsTheViewingAngleAllows) {
   const geo::Ellipsoid wgs84 = geo::Ellipsoid::wgs84();
-  const double nominal = geometricErrorMeters(5, 17, wgs84);  // ~9.8 km
+  const double nominal = geometricErrorMeters(7, 17, wgs84);  // ~2.4 km
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
   for (const double unknown : {nan, -1.0, inf}) {
-    EXPECT_EQ(tileGeometricErrorMeters(5, 17, wgs84, unknown), nominal) << unknown;
+    EXPECT_EQ(tileGeometricErrorMeters(7, 17, wgs84, unknown, 0.0), nominal) << unknown;
   }
-  // Flat: the floor (half the nominal). Between: the measured error plus the chord's sag below
-  // the curved surface (spacing ~39 km: ~30 m).
-  EXPECT_EQ(tileGeometricErrorMeters(5, 17, wgs84, 0.0), kMeasuredErrorFloor * nominal);
+  // Seen from straight above (or not said): the nominal, whatever was measured.
+  EXPECT_EQ(tileGeometricErrorMeters(7, 17, wgs84, 0.0, 1.0), nominal);
+  EXPECT_EQ(tileGeometricErrorMeters(7, 17, wgs84, 0.0), nominal);
+  EXPECT_EQ(tileGeometricErrorMeters(7, 17, wgs84, 0.0, nan), nominal);
+  // Edge-on: the measured error plus the chord's sag below the curved surface (spacing ~9.8 km:
+  // ~1.9 m), down to the floor.
   const double spacing = nominal / kTerrainQuality;
   const double sag = spacing * spacing / (8 * wgs84.semiMajorAxisMeters);
-  EXPECT_NEAR(sag, 30.0, 1.0);
-  EXPECT_NEAR(tileGeometricErrorMeters(5, 17, wgs84, 7000.0), 7000.0 + sag, 1e-9);
-  // Rougher than the nominal: the nominal stays (the selection refines no more than before).
-  EXPECT_EQ(tileGeometricErrorMeters(5, 17, wgs84, 50'000.0), nominal);
+  EXPECT_NEAR(sag, 1.9, 0.1);
+  EXPECT_NEAR(tileGeometricErrorMeters(7, 17, wgs84, 1500.0, 0.0), 1500.0 + sag, 1e-9);
+  EXPECT_EQ(tileGeometricErrorMeters(7, 17, wgs84, 0.0, 0.0), kMeasuredErrorFloor * nominal);
+  // In between: the nominal times the cosine, or the measured error if larger.
+  EXPECT_EQ(tileGeometricErrorMeters(7, 17, wgs84, 0.0, 0.5), 0.5 * nominal);
+  EXPECT_NEAR(tileGeometricErrorMeters(7, 17, wgs84, 1500.0, 0.5), 1500.0 + sag, 1e-9);
+  // Coarse levels keep the nominal.
+  EXPECT_EQ(tileGeometricErrorMeters(5, 17, wgs84, 0.0, 0.0), geometricErrorMeters(5, 17, wgs84));
+  // Rougher than the nominal: the nominal stays (never refines more than before).
+  EXPECT_EQ(tileGeometricErrorMeters(7, 17, wgs84, 5000.0, 0.0), nominal);
+}
+
+TEST(GeometricError, FaceOnIsTheLargestCosineToTheCamera) {
+  const geo::Ellipsoid wgs84 = geo::Ellipsoid::wgs84();
+  const glm::dvec3 ground =
+      geo::cartographicToEcef(wgs84, geo::Cartographic::fromDegrees(10, 45, 0));
+  const glm::dvec3 up = geo::geodeticSurfaceNormal(wgs84, ground);
+  EXPECT_NEAR(faceOnFraction(ground + 1000.0 * up, {ground}, wgs84), 1.0, 1e-12);
+  const glm::dvec3 east = glm::normalize(glm::cross(glm::dvec3(0, 0, 1), up));
+  const glm::dvec3 grazing = ground + 1000.0 * east + 100.0 * up;  // ~5.7° above the horizon
+  EXPECT_NEAR(faceOnFraction(grazing, {ground}, wgs84), 100.0 / std::hypot(1000.0, 100.0), 1e-9);
+  EXPECT_EQ(faceOnFraction(ground - 1000.0 * up, {ground}, wgs84), 0.0);  // from below: 0
+  EXPECT_EQ(faceOnFraction(ground, {ground}, wgs84), 1.0);                // on it: as if above
+  EXPECT_NEAR(faceOnFraction(grazing, {ground, grazing - 50.0 * up}, wgs84), 1.0, 1e-6);
 }
 
 TEST(ScreenSpaceError, ProjectsTheErrorOntoTheViewport) {

@@ -51,6 +51,24 @@ TEST(SkirtEdges, OnlyEdgesWithoutADrawnSameLevelNeighbourGetSkirts) {
   EXPECT_EQ(neededSkirtEdges({5, 21, 10}, drawn), bit(TileEdge::North));
 }
 
+TEST(SkirtEdges, CoarserNeighboursAreTheOnesWhoseAncestorIsDrawn) {
+  // Level-6 tile (40, 20): west of it its neighbour's parent is drawn, north its neighbour's
+  // grandparent, east its neighbour's children (finer), south nothing at all.
+  const TileId tile{6, 40, 20};
+  std::unordered_set<TileId> drawn{tile, TileId{6, 39, 20}.parent(),
+                                   TileId{6, 40, 19}.parent().parent()};
+  for (const TileId& child : TileId{6, 41, 20}.children()) drawn.insert(child);
+  EXPECT_EQ(coarserNeighbourEdges(tile, drawn), bit(TileEdge::West) | bit(TileEdge::North));
+  EXPECT_EQ(neededSkirtEdges(tile, drawn), bit(TileEdge::North) | bit(TileEdge::South) |
+                                               bit(TileEdge::West) | bit(TileEdge::East));
+  // A same-level neighbour drawn: not coarser. Beyond a pole: none.
+  drawn.insert({6, 39, 20});
+  EXPECT_EQ(coarserNeighbourEdges(tile, drawn), bit(TileEdge::North));
+  EXPECT_EQ(coarserNeighbourEdges({6, 2, 0}, {TileId{5, 0, 0}}), bit(TileEdge::West));
+  // Across the antimeridian.
+  EXPECT_EQ(coarserNeighbourEdges({6, 0, 20}, {TileId{5, 63, 10}}), bit(TileEdge::West));
+}
+
 TEST(SkirtEdges, PolarRowAndAntimeridianTiles) {
   const uint32_t level = 2;
   const uint32_t columns = geo::GeographicTilingScheme::tilesX(level);

@@ -2,7 +2,7 @@
 # Level of detail against image error: per view, the triangles drawn, the image error against a
 # 0.5 px reference (the fraction of pixels that match nothing within a 2 px shift,
 # globe-image-error) and the steady frame time, for a baseline build, a new build, and the new
-# build with --measured-lod, run interleaved in one run. Each build tiles its own pyramid from the same inputs (the bundled
+# build with --nominal-lod, run interleaved in one run. Each build tiles its own pyramid from the same inputs (the bundled
 # data/dem, plus the Taunus and Kattegat SRTM tiles from ../shared when present). The reference is
 # the baseline at --sse 0.5. Frame time: a held pose played with `globe play --no-frames`, the
 # median total of the second half of its frames (the view is complete by then).
@@ -62,13 +62,13 @@ for view in "${VIEWS[@]}"; do
   camera=${view#*=}
   "$BASE/src/app/globe" snapshot "$WORK/base-pyramid" --camera "$camera" --size $SIZE --sse 0.5 \
     -o "$WORK/$name.reference.png" >/dev/null
-  SIDES=(base new measured)
+  SIDES=(base nominal new)
   for side in "${SIDES[@]}"; do : >"$WORK/$name.$side.ms"; done
   for ((round = 0; round < ROUNDS; ++round)); do
     for side in "${SIDES[@]}"; do
       build=$NEW; pyramid=$WORK/new-pyramid; flags=
       [ $side = base ] && build=$BASE pyramid=$WORK/base-pyramid
-      [ $side = measured ] && flags=--measured-lod
+      [ $side = nominal ] && flags=--nominal-lod
       out=$("$build/src/app/globe" snapshot "$pyramid" --camera "$camera" --size $SIZE $flags \
         -o "$WORK/$name.$side.png")
       echo "$out" | sed -E 's/.* ([0-9]+) triangles.*/\1/' >"$WORK/$name.$side.triangles"
@@ -94,7 +94,7 @@ done
   echo "no pixel within a 2 px shift, every channel within 24 of 255; the larger of both ways), and"
   echo "the median steady frame time of a held pose (\`globe play --no-frames\`, second half of 60"
   echo "frames, $ROUNDS interleaved rounds per side). Sides: base (the baseline build and its"
-  echo "pyramid), new (this build, its pyramid), measured (this build with \`--measured-lod\`)."
+  echo "pyramid), nominal (this build and its pyramid with \`--nominal-lod\`), new (this build)."
   echo "Made by \`tools/bench_render/bench_lod.sh\` on $(date -u +%Y-%m-%d)."
   echo
   cat "$WORK/table.md"

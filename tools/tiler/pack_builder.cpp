@@ -76,15 +76,16 @@ Result<io::Pack> buildPack(const io::PackId& id, const io::PackLayout& layout,
     // The apron holds what the neighbouring tiles hold: their vertices are inherited from the
     // finest level that has tiles there, i.e. sampled with every source taking part.
     const double spacing = terrain::vertexSpacingDegrees(id.level, n);
-    SourceSampler apronSampler(sources, plan.maxLevel(), westTile.longitudeDegrees(0) - spacing,
-                               eastTile.longitudeDegrees(n - 1) + spacing);
+    const double reach = terrain::kApronWidth * spacing;
+    SourceSampler apronSampler(sources, plan.maxLevel(), westTile.longitudeDegrees(0) - reach,
+                               eastTile.longitudeDegrees(n - 1) + reach);
     // Beyond a pole the apron lies on the opposite meridians (BlockGrid::wrappedVertex).
     const bool polar =
         tiles[begin].y == 0 || tiles[begin].y + 1 == geo::GeographicTilingScheme::tilesY(id.level);
     std::optional<SourceSampler> overThePole;
     if (polar) {
-      overThePole.emplace(sources, plan.maxLevel(), westTile.longitudeDegrees(0) + 180.0 - spacing,
-                          eastTile.longitudeDegrees(n - 1) + 180.0 + spacing);
+      overThePole.emplace(sources, plan.maxLevel(), westTile.longitudeDegrees(0) + 180.0 - reach,
+                          eastTile.longitudeDegrees(n - 1) + 180.0 + reach);
     }
 
     for (size_t t = begin; t < end; ++t) {
@@ -141,8 +142,9 @@ Result<io::Pack> buildPack(const io::PackId& id, const io::PackLayout& layout,
       }
       std::span<int16_t> apron = pack.apron(slot);
       const auto side = static_cast<int>(n);
-      for (int row = -1; row <= side; ++row) {
-        for (int column = -1; column <= side; ++column) {
+      constexpr int w = terrain::kApronWidth;
+      for (int row = -w; row < side + w; ++row) {
+        for (int column = -w; column < side + w; ++column) {
           if (row >= 0 && row < side && column >= 0 && column < side) continue;
           const terrain::BlockGrid::Vertex where = grid.wrappedVertex(row, column);
           const bool beyondPole =

@@ -21,12 +21,13 @@
 namespace globe::tiler {
 namespace {
 
-// Calls visit(row, column) for every position of the apron ring.
+// Calls visit(row, column) for every position of the apron.
 template <class Visit>
 void forEachApronPosition(uint32_t verticesPerSide, Visit visit) {
   const auto side = static_cast<int>(verticesPerSide);
-  for (int row = -1; row <= side; ++row) {
-    for (int column = -1; column <= side; ++column) {
+  constexpr int w = terrain::kApronWidth;
+  for (int row = -w; row < side + w; ++row) {
+    for (int column = -w; column < side + w; ++column) {
       if (row < 0 || row >= side || column < 0 || column >= side) visit(row, column);
     }
   }
@@ -195,6 +196,73 @@ TEST_F(BundledPyramid, NeighboursMeshesHaveIdenticalNormalsOnTheirSharedEdge) {
   // Same heights, same positions, same arithmetic: equal to float rounding (at ±180° the
   // longitude is -180 on one side and +180 on the other: sines differ in the last bit).
   EXPECT_LT(worstDegrees, 1e-4);
+}
+
+// Across a level change: where a tile's neighbour is drawn one level coarser, the tile's edge is
+// lit with its coarse normals (terrain/tile_mesh.hpp); those equal the coarser tile's own normals
+// at its vertices, and the mean of the two around in between.
+TEST_F(BundledPyramid, CoarseEdgeNormalsEqualTheCoarserNeighboursNormals) {
+  const geo::Ellipsoid ellipsoid = geo::Ellipsoid::wgs84();
+  auto vec = [](const terrain::TileMesh& mesh, uint32_t row, uint32_t column, uint32_t offset) {
+    const float* v =
+        &mesh.vertices[terrain::gridVertexIndex(row, column, 17) * terrain::kTileVertexFloats +
+                       offset];
+    return glm::dvec3(v[0], v[1], v[2]);
+  };
+  auto degreesBetween = [](const glm::dvec3& a, const glm::dvec3& b) {
+    const double cosine = std::clamp(glm::dot(a, b) / (glm::length(a) * glm::length(b)), -1.0, 1.0);
+    return std::acos(cosine) * 180.0 / 3.141592653589793;
+  };
+  uint64_t even = 0, odd = 0;
+  double worstEven = 0, worstOdd = 0;
+  const int64_t cells = n - 1;
+  for (const auto& [tile, block] : *tiles_) {
+    if (tile.level == 0 || (tile.level > 8 && (tile.x + tile.y) % 5 != 0)) continue;
+    const int64_t columnsAround = int64_t{geo::GeographicTilingScheme::tilesX(tile.level)} * cells;
+    const uint32_t nx = geo::GeographicTilingScheme::tilesX(tile.level);
+    // The east and south neighbours when they belong to another parent.
+    const geo::TileId east{tile.level, (tile.x + 1) % nx, tile.y};
+    const geo::TileId south{tile.level, tile.x, tile.y + 1};
+    for (const auto& [neighbour, eastEdge] : {std::pair{east, true}, std::pair{south, false}}) {
+      if (findBlock(neighbour) == nullptr || neighbour.parent() == tile.parent()) continue;
+      const geo::TileId coarser = neighbour.parent();
+      const Block* coarseBlock = findBlock(coarser);
+      ASSERT_NE(coarseBlock, nullptr);
+      const auto fine = terrain::buildTileMesh(tile, heightBlockOf(&block), ellipsoid, 0);
+      const auto coarse = terrain::buildTileMesh(coarser, heightBlockOf(coarseBlock), ellipsoid, 0);
+      for (uint32_t k = 0; k < n; ++k) {
+        const uint32_t row = eastEdge ? k : n - 1, column = eastEdge ? n - 1 : k;
+        // The coarser tile's vertex at this point, in its own indices (global indices halve).
+        const int64_t globalRow = int64_t{tile.y} * cells + row;
+        const int64_t globalColumn = (int64_t{tile.x} * cells + column) % columnsAround;
+        auto coarseNormalAt = [&](int64_t gRow, int64_t gColumn) {
+          int64_t i = gRow / 2 - int64_t{coarser.y} * cells;
+          int64_t j = gColumn / 2 - int64_t{coarser.x} * cells;
+          if (j < 0) j += columnsAround / 2;
+          EXPECT_TRUE(i >= 0 && i < n && j >= 0 && j < n) << i << "," << j;
+          return vec(coarse, static_cast<uint32_t>(i), static_cast<uint32_t>(j),
+                     terrain::kTileVertexNormalOffset);
+        };
+        const glm::dvec3 mine = vec(fine, row, column, terrain::kTileVertexCoarseNormalOffset);
+        if (globalRow % 2 == 0 && globalColumn % 2 == 0) {
+          worstEven =
+              std::max(worstEven, degreesBetween(mine, coarseNormalAt(globalRow, globalColumn)));
+          ++even;
+        } else {
+          const glm::dvec3 mean = eastEdge ? coarseNormalAt(globalRow - 1, globalColumn) +
+                                                 coarseNormalAt(globalRow + 1, globalColumn)
+                                           : coarseNormalAt(globalRow, globalColumn - 1) +
+                                                 coarseNormalAt(globalRow, globalColumn + 1);
+          worstOdd = std::max(worstOdd, degreesBetween(mine, mean));
+          ++odd;
+        }
+      }
+    }
+  }
+  EXPECT_GT(even, 10'000u);
+  EXPECT_GT(odd, 10'000u);
+  EXPECT_LT(worstEven, 1e-4);  // the same vertices and arithmetic: float rounding only
+  EXPECT_LT(worstOdd, 1e-4);
 }
 
 TEST_F(BundledPyramid, WithoutTheApronEdgeNormalsDisagree) {
