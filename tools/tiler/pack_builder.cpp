@@ -43,11 +43,18 @@ double deviationFromParent(std::span<const int16_t> child, uint32_t n) {
     for (uint32_t i = 0; i < n; ++i) {
       for (uint32_t j = 0; j < n; ++j) {
         if (i % 2 == 0 && j % 2 == 0) continue;
-        const uint32_t i0 = i & ~1u, j0 = j & ~1u;  // the parent cell's north-west corner
-        const double a = h(i0, j0), b = h(i0, j0 + 2), c = h(i0 + 2, j0), d = h(i0 + 2, j0 + 2);
-        const double v = (i - i0) / 2.0, u = (j - j0) / 2.0;  // 0 or 1/2
-        const double surface =
-            u <= v ? a + v * (c - a) + u * (d - c) : a + u * (b - a) + v * (d - b);
+        // The parent cell's north-west corner; an even row or column lies on the cell's edge,
+        // which may be the block's last row or column, so only the corners it needs are read.
+        const uint32_t i0 = i & ~1u, j0 = j & ~1u;
+        const double a = h(i0, j0);
+        double surface = 0;
+        if (i == i0) {
+          surface = (a + h(i0, j0 + 2)) / 2;  // middle of a west-east edge
+        } else if (j == j0) {
+          surface = (a + h(i0 + 2, j0)) / 2;  // middle of a north-south edge
+        } else {
+          surface = (a + h(i0 + 2, j0 + 2)) / 2;  // middle of the north-west to south-east diagonal
+        }
         worst = std::max(worst, std::abs(h(i, j) - surface));
       }
     }
