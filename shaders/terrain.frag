@@ -41,6 +41,8 @@ uniform sampler2D u_layer3;
 uniform float u_layerOpacity[GLOBE_LAYERS];
 #endif
 in float v_logDepth;
+in float v_fog;          // terrain.vert: distance fog towards the horizon's colour
+uniform vec3 u_fogColor;
 
 uniform float u_logDepthScale; // 1 / log2(1 + far)
 
@@ -82,7 +84,7 @@ void main() {
   color = drape(color, u_layer3, 3, light);
 #endif
 #endif
-  o_color = vec4(color, 1.0);
+  o_color = vec4(mix(color, u_fogColor, v_fog), 1.0);
 #ifndef GLOBE_VERTEX_LOG_DEPTH
   gl_FragDepth = log2(v_logDepth) * u_logDepthScale;
 #endif

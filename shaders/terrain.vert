@@ -31,6 +31,8 @@ uniform vec3 u_sunDirection;     // unit, towards the sun, ECEF axes (zero: ambi
 uniform float u_ambient;         // light on faces turned away from the sun
 uniform bool u_hillShading;      // false: light with the ellipsoid "up" only
 uniform vec4 u_coarserEdges;     // north, south, west, east: 1 where that neighbour is coarser
+uniform float u_fogDensity;      // per metre (render/sky_model.hpp)
+uniform float u_fogMaximum;      // 0: no fog
 
 // GLOBE_OPAQUE_BASE: the bottom layer is opaque over the whole tile, so the terrain's own colour
 // is never seen: it is neither computed nor interpolated (fewer varyings, cheaper triangles).
@@ -55,6 +57,7 @@ out vec2 v_light;                  // land light, sea light
 #endif
 #endif
 out float v_logDepth;  // 1 + eye distance w
+out float v_fog;       // how much of the fog colour covers the terrain here
 
 // Height (m) → colour: lowland greens, tan and browns, greys, then snow.
 const int kStops = 7;
@@ -84,6 +87,8 @@ vec3 seaColor(float heightMeters) {
 void main() {
   gl_Position = u_projection * (u_modelView * vec4(a_offset, 1.0));
   v_logDepth = 1.0 + max(gl_Position.w, 0.0);
+  float fogDepth = max(gl_Position.w, 0.0) * u_fogDensity;
+  v_fog = u_fogMaximum * (1.0 - exp(-fogDepth * fogDepth));
 #ifdef GLOBE_VERTEX_LOG_DEPTH
   // Window depth log2(1 + w) / log2(1 + far) at the vertex, linear in screen space in between.
   gl_Position.z = (log2(max(1e-6, 1.0 + gl_Position.w)) * 2.0 * u_logDepthScale - 1.0) *

@@ -36,18 +36,20 @@ int main(int argc, char** argv) {
   std::vector<std::string> layerTexts;
   bool lighting = false;
   bool nominalLod = false;
+  bool noSky = false;
   auto addLayers = [&](CLI::App* command) {
     command->add_option("--layer", layerTexts,
                         "imagery layer directory made by `globe-tiler imagery`, optionally "
                         "DIR,OPACITY (0..1); repeat for more, bottom layer first");
     command->add_flag("--lighting", lighting,
                       "hill-shade the imagery too (off by default: imagery has its own shadows)");
+    command->add_flag("--no-sky", noSky, "black space instead of the sky, and no distance fog");
     command->add_flag("--nominal-lod", nominalLod,
                       "refine by each level's nominal error, not the tiler's measured one (more "
                       "triangles where the ground is smooth; as before pack format 3)");
   };
-  // --layer, --lighting and --nominal-lod into the scene options; false (after printing why) on a
-  // bad --layer.
+  // --layer, --lighting, --no-sky and --nominal-lod into the scene options; false (after printing
+  // why) on a bad --layer.
   auto applyLayers = [&](const char* command, globe::app::SceneOptions& scene) {
     for (const std::string& text : layerTexts) {
       auto layer = globe::app::parseLayerArgument(text);
@@ -59,6 +61,7 @@ int main(int argc, char** argv) {
     }
     scene.lightImagery = lighting;
     scene.measuredLod = !nominalLod;
+    scene.sky = !noSky;
     return true;
   };
 

@@ -127,6 +127,12 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   view_.widthPixels = widthPixels;
   view_.heightPixels = heightPixels;
   view_.sunDirectionEcef = sunDirectionFor(ellipsoid_, pose);
+  view_.cameraHeightMeters = pose.position.heightMeters;
+  if (renderer.style().sky != options_.sky) {
+    render::TerrainStyle style = renderer.style();
+    style.sky = options_.sky;
+    renderer.setStyle(style);
+  }
 
   terrain::SelectionView selectionView;
   selectionView.cameraEcefMeters = frame.positionEcefMeters;

@@ -43,6 +43,7 @@ struct SceneOptions {
   // The tiler's measured geometric errors (terrain::SelectionOptions::measuredErrors), unless
   // --nominal-lod; not with imagery layers.
   bool measuredLod = true;
+  bool sky = true;  // the sky and distance fog (render/sky_model.hpp); --no-sky: black space
 };
 
 struct FrameInfo {

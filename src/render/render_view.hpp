@@ -1,6 +1,8 @@
 // What one frame is drawn from: camera pose and projection in double, viewport, sun direction.
 #pragma once
 
+#include <limits>
+
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
@@ -21,6 +23,8 @@ struct RenderView {
   int widthPixels = 0;
   int heightPixels = 0;
   glm::dvec3 sunDirectionEcef{1.0, 0.0, 0.0};  // unit vector from the ground towards the sun
+  // The camera's height above the globe's surface, for the sky; NaN: its WGS84 geodetic height.
+  double cameraHeightMeters = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Perspective projection (glm::perspective in double); nearMeters > 0.

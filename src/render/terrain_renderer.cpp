@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <memory>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -16,11 +17,14 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "geo/ecef.hpp"
 #include "render/gl_object.hpp"
 #include "render/gpu_tile.hpp"
 #include "render/imagery_textures.hpp"
 #include "render/shader_directory.hpp"
 #include "render/shader_program.hpp"
+#include "render/sky_model.hpp"
+#include "render/sky_pass.hpp"
 #include "terrain/skirt_edges.hpp"
 
 namespace globe::render {
@@ -41,6 +45,7 @@ struct TerrainRenderer::Impl {
     GLint modelView = -1, projection = -1, tileCenter = -1, imageryRect = -1;
     GLint sunDirection = -1, ambient = -1, hillShading = -1, imagery = -1;
     GLint logDepthScale = -1, coarserEdges = -1;
+    GLint fogColor = -1, fogDensity = -1, fogMaximum = -1;
     GLint layerTransform = -1, layerOpacity = -1;
     std::array<GLint, kMaxDrapeLayers> layerSamplers{-1, -1, -1, -1};
   };
@@ -85,6 +90,20 @@ struct TerrainRenderer::Impl {
   uint64_t imageryBytes = 0;
   ImageryTextures imageryTiles;
   std::unordered_map<geo::TileId, GpuTile> tiles;
+  std::unique_ptr<SkyPass> sky;
+  bool skyFailed = false;
+  // The sky pass, made on first use; false (said once) when its shaders do not build.
+  bool skyPass() {
+    if (sky || skyFailed) return sky != nullptr;
+    auto made = SkyPass::create(options.shaderDirectory);
+    if (!made) {
+      std::fprintf(stderr, "globe: no sky: %s\n", made.error().c_str());
+      skyFailed = true;
+      return false;
+    }
+    sky = std::move(*made);
+    return true;
+  }
   uint64_t tileBytes = 0;
 
   // The program for this variant, compiled on first use and kept.
@@ -158,6 +177,9 @@ Result<const TerrainRenderer::Impl::Program*> TerrainRenderer::Impl::program(
   u.imagery = p.uniformLocation("u_imagery");
   u.logDepthScale = p.uniformLocation("u_logDepthScale");
   u.coarserEdges = p.uniformLocation("u_coarserEdges");
+  u.fogColor = p.uniformLocation("u_fogColor");
+  u.fogDensity = p.uniformLocation("u_fogDensity");
+  u.fogMaximum = p.uniformLocation("u_fogMaximum");
   u.layerTransform = p.uniformLocation("u_layerTransform");
   u.layerOpacity = p.uniformLocation("u_layerOpacity");
   for (uint32_t k = 0; k < kMaxDrapeLayers; ++k) {
@@ -403,6 +425,17 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
   glClearDepth(1.0);
   glDepthMask(GL_TRUE);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  SkyParameters sky;  // all zero: no fog
+  if (style.sky && impl.skyPass()) {
+    double height = view.cameraHeightMeters;
+    if (!std::isfinite(height)) {
+      const auto camera = geo::ecefToCartographic(geo::Ellipsoid::wgs84(), view.cameraEcefMeters);
+      height = camera ? camera->heightMeters : 0.0;
+    }
+    const double globeRadius = glm::length(view.cameraEcefMeters) - height;
+    sky = skyAt(height, globeRadius);
+    impl.sky->draw(view, sky, globeRadius);
+  }
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glEnable(GL_CULL_FACE);
@@ -458,6 +491,9 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
         glUniformMatrix4fv(u.projection, 1, GL_FALSE, glm::value_ptr(projection));
         glUniform3fv(u.sunDirection, 1, glm::value_ptr(sun));
         glUniform1f(u.ambient, style.ambient);
+        glUniform3fv(u.fogColor, 1, glm::value_ptr(sky.horizonRgb));
+        glUniform1f(u.fogDensity, sky.fogDensityPerMeter);
+        glUniform1f(u.fogMaximum, sky.fogMaximum);
         glUniform1i(u.hillShading, style.hillShading ? 1 : 0);
         if (u.imagery >= 0) glUniform1i(u.imagery, 0);
         glUniform1f(u.logDepthScale, logDepthScale);

@@ -37,7 +37,10 @@ struct TerrainStyle {
   // Drape layers (draw with drapes) times the terrain's light too; off: imagery keeps its own
   // baked-in shading and shows its texels' colours exactly.
   bool lightImagery = false;
-  glm::vec3 backgroundRgb{0.0f, 0.0f, 0.0f};  // space
+  glm::vec3 backgroundRgb{0.0f, 0.0f, 0.0f};  // space, where the sky is off
+  // The sky behind the terrain and distance fog over it (render/sky_model.hpp, shaders/sky.*),
+  // from the camera's height; off: backgroundRgb (the tests that look for gaps keep it off).
+  bool sky = false;
 };
 
 // Needs a current GL 3.3 core context (OsMesaContext or GlfwWindowContext) on the calling thread

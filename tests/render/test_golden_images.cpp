@@ -41,6 +41,11 @@ const GoldenView kViews[] = {
     {"zion_oblique_layers", "--camera -112.93,37.16,4500,330,-20,0 --layer @bm --layer @zion",
      true},
     {"zion_nadir_half_opacity", "--camera -112.98,37.27,9000 --layer @zion,0.5", true},
+    // The sky (render/sky_model.hpp) from the ground, from 10 km and from space.
+    {"sky_ground", "--camera 138.70,35.30,2,300,5,0 --above-terrain"},
+    {"sky_10km", "--camera 138.60,35.20,10000,30,-5,0"},
+    {"sky_space", "--camera 138,30,3000000,0,-40,0"},
+    {"sky_off_10km", "--camera 138.60,35.20,10000,30,-5,0 --no-sky"},
 };
 
 // The view's arguments with the layer placeholders replaced by the layers (tiled once).

@@ -1,0 +1,40 @@
+// Sky pass fragment shader (render/sky_model.hpp): inside the air, a gradient from the horizon
+// haze to the zenith above the (dipping) horizon; from space, black with a glow where the view
+// ray grazes the air around the globe; the two blended by the camera's height.
+#version 330 core
+
+in vec2 v_ndc;
+
+uniform mat4 u_inverseViewProjection;  // clip → camera-relative ECEF directions (no translation)
+uniform vec3 u_up;                     // unit, from the globe's centre through the camera
+uniform float u_cameraRadius;          // metres from the globe's centre
+uniform float u_globeRadius;           // metres
+uniform float u_atmosphereHeight;      // metres: the glow's thickness
+uniform vec3 u_zenith;
+uniform vec3 u_horizon;
+uniform vec3 u_glow;
+uniform float u_spaceBlend;
+uniform float u_horizonCosine;
+
+out vec4 o_color;
+
+void main() {
+  // The camera sits at the origin of this space, so the near plane's point gives the direction
+  // (the far plane's w cancels to nothing in float when far/near is large).
+  vec4 near = u_inverseViewProjection * vec4(v_ndc, -1.0, 1.0);
+  vec3 direction = normalize(near.xyz / near.w);
+  float mu = dot(direction, u_up);  // cosine of the ray's zenith angle
+  float above = clamp((mu - u_horizonCosine) / (1.0 - u_horizonCosine), 0.0, 1.0);
+  vec3 air = mix(u_horizon, u_zenith, pow(above, 0.45));
+
+  // Closest approach of the ray to the globe's centre, in units of the air's thickness above
+  // the surface: 0 at the surface, 1 at the top of the air.
+  float along = u_cameraRadius * mu;
+  float closest = along < 0.0 ? sqrt(max(u_cameraRadius * u_cameraRadius - along * along, 0.0))
+                              : u_cameraRadius;
+  float x = (closest - u_globeRadius) / u_atmosphereHeight;
+  float glow = x <= 0.0 ? 1.0 : pow(max(1.0 - x, 0.0), 2.0);
+  vec3 space = u_glow * glow;
+
+  o_color = vec4(mix(air, space, u_spaceBlend), 1.0);
+}

@@ -1,0 +1,46 @@
+#include "render/sky_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/common.hpp>
+
+namespace globe::render {
+namespace {
+
+double smoothstep(double edge0, double edge1, double x) {
+  const double t = std::clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
+
+glm::vec3 mix(const glm::vec3& a, const glm::vec3& b, double t) {
+  return glm::mix(a, b, static_cast<float>(t));
+}
+
+}  // namespace
+
+SkyParameters skyAt(double cameraHeightMeters, double globeRadiusMeters) {
+  double h = std::isnan(cameraHeightMeters) ? 0.0 : std::max(cameraHeightMeters, 0.0);
+  h = std::min(h, 1e12);  // beyond this nothing changes
+  const double radius = globeRadiusMeters > 0.0 ? globeRadiusMeters : 6'371'000.0;
+  SkyParameters sky;
+  // Zenith: daylight blue at the ground, deep blue at 12 km, near black at the air's top.
+  const glm::vec3 groundZenith(0.24f, 0.47f, 0.85f), highZenith(0.05f, 0.13f, 0.36f);
+  const glm::vec3 groundHorizon(0.72f, 0.82f, 0.93f), highHorizon(0.45f, 0.62f, 0.88f);
+  const double up = smoothstep(0.0, 12'000.0, h);
+  const double top = smoothstep(12'000.0, 80'000.0, h);
+  sky.zenithRgb = mix(mix(groundZenith, highZenith, up), glm::vec3(0.0f), top);
+  sky.horizonRgb = mix(groundHorizon, highHorizon, top);
+  sky.glowRgb = glm::vec3(0.36f, 0.58f, 0.98f);
+  sky.spaceBlend = static_cast<float>(smoothstep(20'000.0, 100'000.0, h));
+  const double ratio = radius / (radius + h);
+  sky.horizonCosine = static_cast<float>(-std::sqrt(std::max(0.0, 1.0 - ratio * ratio)));
+  // Fog: 1/e of its maximum at ~150 km from the ground, further from higher up; gone above
+  // ~60 km. (A view 9 km above the ground gets 0.1 % of it straight down.)
+  const double visibilityMeters = 150'000.0 + 20.0 * h;
+  sky.fogDensityPerMeter = static_cast<float>(1.0 / visibilityMeters);
+  sky.fogMaximum = static_cast<float>(0.7 * (1.0 - smoothstep(5'000.0, 60'000.0, h)));
+  return sky;
+}
+
+}  // namespace globe::render

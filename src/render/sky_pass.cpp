@@ -1,0 +1,68 @@
+#include "render/sky_pass.hpp"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
+namespace globe::render {
+
+Result<std::unique_ptr<SkyPass>> SkyPass::create(const std::filesystem::path& shaderDirectory) {
+  auto program = loadShaderProgram(shaderDirectory / "sky.vert", shaderDirectory / "sky.frag");
+  if (!program) return Error{program.error()};
+  std::unique_ptr<SkyPass> pass(new SkyPass());
+  pass->program_ = std::move(*program);
+  pass->vertexArray_ = makeGlVertexArray();
+  const ShaderProgram& p = pass->program_;
+  Uniforms& u = pass->u_;
+  u.inverseViewProjection = p.uniformLocation("u_inverseViewProjection");
+  u.up = p.uniformLocation("u_up");
+  u.cameraRadius = p.uniformLocation("u_cameraRadius");
+  u.globeRadius = p.uniformLocation("u_globeRadius");
+  u.atmosphereHeight = p.uniformLocation("u_atmosphereHeight");
+  u.zenith = p.uniformLocation("u_zenith");
+  u.horizon = p.uniformLocation("u_horizon");
+  u.glow = p.uniformLocation("u_glow");
+  u.spaceBlend = p.uniformLocation("u_spaceBlend");
+  u.horizonCosine = p.uniformLocation("u_horizonCosine");
+  if (u.inverseViewProjection < 0 || u.up < 0) {
+    return makeError((shaderDirectory / "sky.frag").string() +
+                     ": the program lacks u_inverseViewProjection or u_up");
+  }
+  return pass;
+}
+
+void SkyPass::draw(const RenderView& view, const SkyParameters& sky,
+                   double globeRadiusMeters) const {
+  // Rotation only: directions from the camera, with no 6,400 km translation to lose in float.
+  const glm::dmat4 rotation(glm::dmat3(view.viewMatrix));
+  const glm::mat4 inverse(glm::inverse(view.projection * rotation));
+  const double cameraRadius = glm::length(view.cameraEcefMeters);
+  const glm::vec3 up = cameraRadius > 0.0 && std::isfinite(cameraRadius)
+                           ? glm::vec3(view.cameraEcefMeters / cameraRadius)
+                           : glm::vec3(0.0f, 0.0f, 1.0f);
+  GLboolean depthTest = GL_FALSE;
+  glGetBooleanv(GL_DEPTH_TEST, &depthTest);
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  glUseProgram(program_.id());
+  glUniformMatrix4fv(u_.inverseViewProjection, 1, GL_FALSE, glm::value_ptr(inverse));
+  glUniform3fv(u_.up, 1, glm::value_ptr(up));
+  glUniform1f(u_.cameraRadius, static_cast<float>(cameraRadius));
+  glUniform1f(u_.globeRadius, static_cast<float>(globeRadiusMeters));
+  glUniform1f(u_.atmosphereHeight, static_cast<float>(kAtmosphereHeightMeters));
+  glUniform3fv(u_.zenith, 1, glm::value_ptr(sky.zenithRgb));
+  glUniform3fv(u_.horizon, 1, glm::value_ptr(sky.horizonRgb));
+  glUniform3fv(u_.glow, 1, glm::value_ptr(sky.glowRgb));
+  glUniform1f(u_.spaceBlend, sky.spaceBlend);
+  glUniform1f(u_.horizonCosine, sky.horizonCosine);
+  glBindVertexArray(vertexArray_.get());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glDepthMask(GL_TRUE);
+  if (depthTest == GL_TRUE) glEnable(GL_DEPTH_TEST);
+}
+
+}  // namespace globe::render

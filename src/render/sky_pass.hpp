@@ -1,0 +1,35 @@
+// Draws the sky (render/sky_model.hpp) behind everything: one screen-covering triangle, depth
+// test and writes off, drawn right after the frame is cleared.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+
+#include "geo/result.hpp"
+#include "render/gl_object.hpp"
+#include "render/render_view.hpp"
+#include "render/shader_program.hpp"
+#include "render/sky_model.hpp"
+
+namespace globe::render {
+
+class SkyPass {
+ public:
+  // Loads <shaderDirectory>/sky.vert and sky.frag; needs a current GL 3.3 core context.
+  static Result<std::unique_ptr<SkyPass>> create(const std::filesystem::path& shaderDirectory);
+  // The sky for this view; leaves depth testing as it found it (enabled or not) and depth
+  // writes on.
+  void draw(const RenderView& view, const SkyParameters& sky, double globeRadiusMeters) const;
+
+ private:
+  SkyPass() = default;
+  ShaderProgram program_;
+  GlObject vertexArray_;  // empty: the triangle comes from gl_VertexID
+  struct Uniforms {
+    GLint inverseViewProjection = -1, up = -1, cameraRadius = -1, globeRadius = -1;
+    GLint atmosphereHeight = -1, zenith = -1, horizon = -1, glow = -1, spaceBlend = -1;
+    GLint horizonCosine = -1;
+  } u_;
+};
+
+}  // namespace globe::render
