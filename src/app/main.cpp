@@ -50,9 +50,9 @@ int main(int argc, char** argv) {
   };
   // --layer, --lighting, --no-sky and --nominal-lod into the scene options; false (after printing
   // why) on a bad --layer.
-  auto applyLayers = [&](const char* command, globe::app::SceneOptions& scene) {
+  auto applyLayers = [&](const char* command, globe::scene::SceneOptions& scene) {
     for (const std::string& text : layerTexts) {
-      auto layer = globe::app::parseLayerArgument(text);
+      auto layer = globe::scene::parseLayerArgument(text);
       if (!layer) {
         std::fprintf(stderr, "globe %s: %s\n", command, layer.error().c_str());
         return false;

@@ -11,6 +11,7 @@
 
 #include "app/path_conversion.hpp"
 #include "app/playback_step.hpp"
+#include "app/renderer_gpu.hpp"
 #include "app/video_encoder.hpp"
 #include "camera/camera_path.hpp"
 #include "io/atomic_file.hpp"
@@ -117,7 +118,7 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
   }
   auto playback = openScriptedPlayback(options.pyramid, options.pathFile, options.scene);
   if (!playback) return Error{playback.error()};
-  TerrainScene& scene = *playback->scene;
+  scene::TerrainScene& scene = *playback->scene;
   const camera::CameraPath& path = playback->path;
   const double fps = options.framesPerSecond;
   const double duration = path.endSeconds() - path.startSeconds();
@@ -145,9 +146,9 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
   if (!surface) return Error{surface.error()};
   auto renderer = render::TerrainRenderer::create({});
   if (!renderer) return Error{renderer.error()};
+  RendererGpu gpu(**renderer, options.scene);
   const int width = surface->widthPixels, height = surface->heightPixels;
-  PlaybackStep step(scene, **renderer, path, width, height,
-                    std::chrono::seconds(options.timeoutSeconds));
+  PlaybackStep step(scene, gpu, path, width, height, std::chrono::seconds(options.timeoutSeconds));
   // The first collision test runs against a complete view at the scripted start.
   FrameTimings startup;
   if (auto view = step.start(startup); !view) return Error{view.error()};
@@ -163,7 +164,7 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
     FrameRecord& record = *stepped;
 
     const auto drawStart = Clock::now();
-    const render::FrameStats stats = scene.draw(**renderer);
+    const render::FrameStats stats = gpu.draw(scene);
     record.tilesDrawn = stats.tilesDrawn;
     record.imageryTextureBytes = stats.imageryBytesResident;
     std::vector<uint8_t> pixels;

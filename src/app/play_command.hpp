@@ -7,7 +7,7 @@
 #include <string>
 
 #include "app/play_log.hpp"
-#include "app/terrain_scene.hpp"
+#include "scene/terrain_scene.hpp"
 
 namespace globe::app {
 
@@ -20,7 +20,7 @@ struct PlayOptions {
   bool writeFrames = true;
   bool window = false;                         // a GLFW window instead of OSMesa
   std::optional<std::filesystem::path> video;  // encode the frames with ffmpeg
-  SceneOptions scene;
+  scene::SceneOptions scene;
   int timeoutSeconds = 300;  // for each frame's view to complete
 };
 

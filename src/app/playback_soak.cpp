@@ -15,7 +15,7 @@
 #include "app/process_memory.hpp"
 #include "geo/ecef.hpp"
 #include "io/camera_path_file.hpp"
-#include "render/osmesa_context.hpp"
+#include "scene/bookkeeping_gpu.hpp"
 
 namespace globe::app {
 namespace {
@@ -40,7 +40,7 @@ Result<SoakReport> runSoak(const SoakOptions& options,
   if (!readProcessMemory()) return makeError("cannot read the process memory (/proc/self/status)");
   auto playback = openScriptedPlayback(options.pyramid, options.pathFile, options.scene);
   if (!playback) return Error{playback.error()};
-  TerrainScene& scene = *playback->scene;
+  scene::TerrainScene& scene = *playback->scene;
   const camera::CameraPath& path = playback->path;
   const double fps = options.framesPerSecond;
   const double loopFrames = playbackFrameCount(path.endSeconds() - path.startSeconds(), fps);
@@ -49,14 +49,11 @@ Result<SoakReport> runSoak(const SoakOptions& options,
   }
   const auto framesPerLoop = static_cast<int64_t>(loopFrames);
 
-  // The renderer only receives the meshes (uploads run as in `globe play`): a tiny surface will
-  // do, the view is selected for the full size.
-  auto context = render::OsMesaContext::create(16, 16);
-  if (!context) return Error{context.error()};
-  auto renderer = render::TerrainRenderer::create({});
-  if (!renderer) return Error{renderer.error()};
+  // Nothing is drawn: the GPU only keeps the books of what would be resident (meshes and
+  // textures are prepared and released as in `globe play`), so no GL context is opened.
+  scene::BookkeepingGpu gpu;
   const geo::Ellipsoid& ellipsoid = scene.ellipsoid();
-  PlaybackStep step(scene, **renderer, path, options.widthPixels, options.heightPixels,
+  PlaybackStep step(scene, gpu, path, options.widthPixels, options.heightPixels,
                     std::chrono::seconds(options.timeoutSeconds));
   FrameTimings startup;
   if (auto view = step.start(startup); !view) return Error{view.error()};
@@ -124,8 +121,8 @@ Result<SoakReport> runSoak(const SoakOptions& options,
       state.loader = scene.loader().counters();
       state.cache = scene.cache().counters();
       state.cacheBudgetBytes = scene.cache().budgetBytes();
-      state.gpuTiles = (*renderer)->tilesResident();
-      state.gpuBytes = (*renderer)->gpuBytesResident();
+      state.gpuTiles = static_cast<uint32_t>(gpu.tilesResident());
+      state.gpuBytes = gpu.bytesResident();
       report.checkpoints.push_back(state);
       if (onCheckpoint) onCheckpoint(state);
       ++nextCheckpoint;

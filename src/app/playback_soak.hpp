@@ -9,10 +9,10 @@
 #include <optional>
 #include <vector>
 
-#include "app/terrain_scene.hpp"
 #include "geo/result.hpp"
 #include "io/block_cache.hpp"
 #include "io/tile_loader.hpp"
+#include "scene/terrain_scene.hpp"
 
 namespace globe::app {
 
@@ -22,7 +22,7 @@ struct SoakOptions {
   int64_t frames = 1'000'000;
   double framesPerSecond = 30;
   int widthPixels = 1280, heightPixels = 720;  // the view tiles are selected for
-  SceneOptions scene;
+  scene::SceneOptions scene;
   int64_t memorySampleFrames = 1000;  // VmRSS is read every this many frames
   std::vector<int64_t> checkpoints;   // frame counts to report at (the last frame always is)
   int timeoutSeconds = 300;           // for each view to complete

@@ -24,11 +24,11 @@ double msSince(Clock::time_point start) {
 
 Result<ScriptedPlayback> openScriptedPlayback(const std::filesystem::path& pyramid,
                                               const std::filesystem::path& pathFile,
-                                              SceneOptions sceneOptions) {
+                                              scene::SceneOptions sceneOptions) {
   auto file = io::readCameraPath(pathFile);
   if (!file) return Error{file.error()};
   sceneOptions.hysteresis = false;
-  auto scene = TerrainScene::open(pyramid, sceneOptions);
+  auto scene = scene::TerrainScene::open(pyramid, sceneOptions);
   if (!scene) return Error{scene.error()};
   auto path = toCameraPath(
       *file, [&](double lon, double lat) { return (*scene)->terrainHeightMeters(lon, lat); });
@@ -40,11 +40,11 @@ double playbackFrameCount(double durationSeconds, double framesPerSecond) {
   return std::floor(durationSeconds * framesPerSecond + 1e-9) + 1;
 }
 
-PlaybackStep::PlaybackStep(TerrainScene& scene, render::TerrainRenderer& renderer,
+PlaybackStep::PlaybackStep(scene::TerrainScene& scene, scene::TileGpu& gpu,
                            const camera::CameraPath& path, int widthPixels, int heightPixels,
                            std::chrono::seconds viewTimeout)
     : scene_(scene),
-      renderer_(renderer),
+      gpu_(gpu),
       path_(path),
       widthPixels_(widthPixels),
       heightPixels_(heightPixels),
@@ -67,7 +67,7 @@ Result<void> PlaybackStep::completeView(const camera::CameraPose& pose, FrameTim
   const auto until = Clock::now() + viewTimeout_;
   for (;;) {
     const auto start = Clock::now();
-    const FrameInfo info = scene_.update(pose, widthPixels_, heightPixels_, renderer_);
+    const scene::FrameInfo info = scene_.update(pose, widthPixels_, heightPixels_, gpu_);
     timings.selectMs += msSince(start);
     if (info.complete) return {};
     if (Clock::now() > until) {

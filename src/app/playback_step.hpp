@@ -8,16 +8,16 @@
 
 #include "app/finest_surface.hpp"
 #include "app/play_log.hpp"
-#include "app/terrain_scene.hpp"
 #include "camera/camera_controller.hpp"
 #include "camera/camera_path.hpp"
-#include "render/terrain_renderer.hpp"
+#include "scene/terrain_scene.hpp"
+#include "scene/tile_gpu.hpp"
 
 namespace globe::app {
 
 // A pyramid's scene and a path file's camera path, as both `globe play` and the soak run them.
 struct ScriptedPlayback {
-  std::unique_ptr<TerrainScene> scene;
+  std::unique_ptr<scene::TerrainScene> scene;
   camera::CameraPath path;
 };
 
@@ -26,7 +26,7 @@ struct ScriptedPlayback {
 // are resolved against the pyramid. Errors name the file.
 Result<ScriptedPlayback> openScriptedPlayback(const std::filesystem::path& pyramid,
                                               const std::filesystem::path& pathFile,
-                                              SceneOptions sceneOptions);
+                                              scene::SceneOptions sceneOptions);
 
 // Frames i = 0, 1, ... with i / fps <= durationSeconds (1e-9 frames of slack for rounding), as
 // a double so that callers can refuse absurd counts before converting.
@@ -35,10 +35,9 @@ double playbackFrameCount(double durationSeconds, double framesPerSecond);
 class PlaybackStep {
  public:
   // The controller starts at the path's start pose with the near plane of a widthPixels x
-  // heightPixels view. The scene, renderer and path must outlive this.
-  PlaybackStep(TerrainScene& scene, render::TerrainRenderer& renderer,
-               const camera::CameraPath& path, int widthPixels, int heightPixels,
-               std::chrono::seconds viewTimeout);
+  // heightPixels view. The scene, GPU and path must outlive this.
+  PlaybackStep(scene::TerrainScene& scene, scene::TileGpu& gpu, const camera::CameraPath& path,
+               int widthPixels, int heightPixels, std::chrono::seconds viewTimeout);
 
   // Makes the view at the scripted start complete: call once before the first frame, so the first
   // collision test runs against a complete array.
@@ -59,8 +58,8 @@ class PlaybackStep {
   Result<void> completeView(const camera::CameraPose& pose, FrameTimings& timings);
   void collide(double dtSeconds, FrameRecord& record);
 
-  TerrainScene& scene_;
-  render::TerrainRenderer& renderer_;
+  scene::TerrainScene& scene_;
+  scene::TileGpu& gpu_;
   const camera::CameraPath& path_;
   int widthPixels_, heightPixels_;
   std::chrono::seconds viewTimeout_;

@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "app/imagery.hpp"
+#include "app/renderer_gpu.hpp"
 #include "io/image_io.hpp"
 #include "render/osmesa_context.hpp"
 #include "render/read_pixels.hpp"
@@ -11,9 +12,9 @@ namespace globe::app {
 
 Result<SnapshotReport> runSnapshot(const SnapshotOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  SceneOptions sceneOptions = options.scene;
+  scene::SceneOptions sceneOptions = options.scene;
   sceneOptions.hysteresis = false;  // the image depends on the view only, not on the load order
-  auto scene = TerrainScene::open(options.pyramid, sceneOptions);
+  auto scene = scene::TerrainScene::open(options.pyramid, sceneOptions);
   if (!scene) return Error{scene.error()};
   camera::CameraPose pose = options.pose;
   if (!pose.isFinite()) return makeError("the camera pose is not finite");
@@ -27,15 +28,15 @@ Result<SnapshotReport> runSnapshot(const SnapshotOptions& options) {
   if (!context) return Error{context.error()};
   auto renderer = render::TerrainRenderer::create({});
   if (!renderer) return Error{renderer.error()};
+  RendererGpu gpu(**renderer, options.scene);
   if (options.imagery) {
     if (auto draped = drapeImagery(**renderer, *options.imagery); !draped)
       return Error{draped.error()};
   }
-  auto frame =
-      (*scene)->updateUntilComplete(pose, options.widthPixels, options.heightPixels, **renderer,
-                                    std::chrono::seconds(options.timeoutSeconds));
+  auto frame = (*scene)->updateUntilComplete(pose, options.widthPixels, options.heightPixels, gpu,
+                                             std::chrono::seconds(options.timeoutSeconds));
   if (!frame) return Error{frame.error()};
-  const render::FrameStats stats = (*scene)->draw(**renderer);
+  const render::FrameStats stats = gpu.draw(**scene);
   const std::vector<uint8_t> pixels =
       render::readPixelsRgba(options.widthPixels, options.heightPixels);
   if (auto written =

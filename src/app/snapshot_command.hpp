@@ -5,8 +5,8 @@
 #include <optional>
 #include <string>
 
-#include "app/terrain_scene.hpp"
 #include "camera/camera_pose.hpp"
+#include "scene/terrain_scene.hpp"
 
 namespace globe::app {
 
@@ -17,12 +17,12 @@ struct SnapshotOptions {
   int widthPixels = 1280, heightPixels = 720;
   std::filesystem::path output;
   std::optional<std::filesystem::path> imagery;  // equirectangular world image to drape
-  SceneOptions scene;
+  scene::SceneOptions scene;
   int timeoutSeconds = 300;
 };
 
 struct SnapshotReport {
-  FrameInfo frame;
+  scene::FrameInfo frame;
   uint32_t tilesDrawn = 0;
   uint64_t triangles = 0;
   uint64_t tileLoads = 0;

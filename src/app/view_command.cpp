@@ -1,5 +1,6 @@
 // The `globe view` loop: input → (orbit controls | fly controls | fly-to animation) → camera
-// controller (collision every frame) → TerrainScene::update → draw terrain and HUD, on change only.
+// controller (collision every frame) → scene::TerrainScene::update → draw terrain and HUD, on
+// change only.
 #define GLFW_INCLUDE_NONE
 #include "app/view_command.hpp"
 
@@ -18,6 +19,7 @@
 #include "app/imagery.hpp"
 #include "app/orbit_controls.hpp"
 #include "app/path_recorder.hpp"
+#include "app/renderer_gpu.hpp"
 #include "app/view_input.hpp"
 #include "camera/camera_controller.hpp"
 #include "collision/surface_probe.hpp"
@@ -104,7 +106,7 @@ std::vector<render::HudTextBlock> hudBlocks(std::vector<std::string> status, boo
 }
 
 // The point of the drawn terrain under window pixel (x, y), by marching the pixel's ray.
-std::optional<glm::dvec3> pickTerrain(TerrainScene& scene, const camera::CameraPose& pose,
+std::optional<glm::dvec3> pickTerrain(scene::TerrainScene& scene, const camera::CameraPose& pose,
                                       glm::dvec2 pixel, GLFWwindow* window, double fovYRadians) {
   int width = 0, height = 0;
   glfwGetWindowSize(window, &width, &height);
@@ -125,7 +127,7 @@ std::optional<glm::dvec3> pickTerrain(TerrainScene& scene, const camera::CameraP
 
 Result<ViewReport> runView(const ViewOptions& options) {
   if (!options.pose.isFinite()) return makeError("the camera pose is not finite");
-  auto scene = TerrainScene::open(options.pyramid, options.scene);
+  auto scene = scene::TerrainScene::open(options.pyramid, options.scene);
   if (!scene) return Error{scene.error()};
   render::GlfwWindowOptions windowOptions;
   windowOptions.widthPixels = options.widthPixels;
@@ -139,6 +141,7 @@ Result<ViewReport> runView(const ViewOptions& options) {
   // Declared after the window: destroyed before its context goes.
   auto renderer = render::TerrainRenderer::create({});
   if (!renderer) return Error{renderer.error()};
+  RendererGpu gpu(**renderer, options.scene);
   auto hud = render::HudRenderer::create({});
   if (!hud) return Error{hud.error()};
   if (options.imagery) {
@@ -264,7 +267,7 @@ Result<ViewReport> runView(const ViewOptions& options) {
       // A smooth raise over new, finer terrain takes a few frames: keep updating until done.
       if (collisionState.raisedForNewTerrain) input.changed = true;
       recorder.sample(secondsAt(now), controller.pose());
-      const FrameInfo info = (*scene)->update(controller.pose(), width, height, **renderer);
+      const scene::FrameInfo info = (*scene)->update(controller.pose(), width, height, gpu);
       tilesChanged =
           tilesChanged || info.arrived > 0 || info.uploaded > 0 || (*scene)->tiles() != drawnTiles;
       loading = !info.complete;
@@ -298,7 +301,7 @@ Result<ViewReport> runView(const ViewOptions& options) {
           drawnHud = std::move(hudKey);
           drawnHelp = input.helpVisible;
         }
-        (*scene)->draw(**renderer);
+        gpu.draw(**scene);
         (*hud)->draw(width, height);
         if (input.screenshotRequested) {
           input.screenshotRequested = false;
@@ -349,7 +352,7 @@ Result<ViewReport> runView(const ViewOptions& options) {
     // The back buffer is undefined after a swap: draw the last frame again and read it back.
     const int width = (*window)->framebufferWidthPixels();
     const int height = (*window)->framebufferHeightPixels();
-    (*scene)->draw(**renderer);
+    gpu.draw(**scene);
     const std::vector<uint8_t> pixels = render::readPixelsRgba(width, height);
     if (auto written = io::writePngAtomically(*options.screenshot, pixels, width, height);
         !written) {

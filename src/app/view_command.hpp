@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <optional>
 
-#include "app/terrain_scene.hpp"
 #include "camera/camera_pose.hpp"
+#include "scene/terrain_scene.hpp"
 
 namespace globe::app {
 
@@ -24,7 +24,7 @@ struct ViewOptions {
   camera::CameraPose pose;
   int widthPixels = 1280, heightPixels = 720;
   std::optional<std::filesystem::path> imagery;  // equirectangular world image to drape
-  SceneOptions scene;
+  scene::SceneOptions scene;
   int frames = 0;  // > 0: redraw continuously and quit after this many frames (tests, timing)
   // The last frame as a PNG, written on exit: the terrain alone, without the HUD (K/F12 keep it).
   std::optional<std::filesystem::path> screenshot;

@@ -34,7 +34,7 @@ Result<std::unique_ptr<SkyPass>> SkyPass::create(const std::filesystem::path& sh
   return pass;
 }
 
-void SkyPass::draw(const RenderView& view, const SkyParameters& sky,
+void SkyPass::draw(const terrain::RenderView& view, const SkyParameters& sky,
                    double globeRadiusMeters) const {
   // Rotation only: directions from the camera, with no 6,400 km translation to lose in float.
   const glm::dmat4 rotation(glm::dmat3(view.viewMatrix));

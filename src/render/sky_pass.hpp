@@ -7,9 +7,9 @@
 
 #include "geo/result.hpp"
 #include "render/gl_object.hpp"
-#include "render/render_view.hpp"
 #include "render/shader_program.hpp"
 #include "render/sky_model.hpp"
+#include "terrain/render_view.hpp"
 
 namespace globe::render {
 
@@ -19,7 +19,8 @@ class SkyPass {
   static Result<std::unique_ptr<SkyPass>> create(const std::filesystem::path& shaderDirectory);
   // The sky for this view; leaves depth testing as it found it (enabled or not) and depth
   // writes on.
-  void draw(const RenderView& view, const SkyParameters& sky, double globeRadiusMeters) const;
+  void draw(const terrain::RenderView& view, const SkyParameters& sky,
+            double globeRadiusMeters) const;
 
  private:
   SkyPass() = default;

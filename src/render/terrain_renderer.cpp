@@ -47,7 +47,7 @@ struct TerrainRenderer::Impl {
     GLint logDepthScale = -1, coarserEdges = -1;
     GLint fogColor = -1, fogDensity = -1, fogMaximum = -1;
     GLint layerTransform = -1, layerOpacity = -1;
-    std::array<GLint, kMaxDrapeLayers> layerSamplers{-1, -1, -1, -1};
+    std::array<GLint, terrain::kMaxDrapeLayers> layerSamplers{-1, -1, -1, -1};
   };
 
   // [imagery][layers][depth]: imagery 1 = the global image draped (GLOBE_IMAGERY); layers n =
@@ -60,9 +60,9 @@ struct TerrainRenderer::Impl {
   };
   // A tile's layers as drawn: resident textures only, none under an opaque one.
   struct BoundDrapes {
-    std::array<GLuint, kMaxDrapeLayers> textures{};
-    std::array<glm::vec4, kMaxDrapeLayers> transforms{};
-    std::array<float, kMaxDrapeLayers> opacities{};
+    std::array<GLuint, terrain::kMaxDrapeLayers> textures{};
+    std::array<glm::vec4, terrain::kMaxDrapeLayers> transforms{};
+    std::array<float, terrain::kMaxDrapeLayers> opacities{};
     uint32_t count = 0;
     bool opaqueBase = false;  // layer 0 is opaque everywhere (texels and opacity)
   };
@@ -109,7 +109,7 @@ struct TerrainRenderer::Impl {
   // The program for this variant, compiled on first use and kept.
   Result<const Program*> program(bool globalImage, uint32_t layers, bool vertexDepth,
                                  bool lightImagery, bool opaqueBase = false);
-  BoundDrapes resolveDrapes(const TileDrapes* drapes, FrameStats& stats) const;
+  BoundDrapes resolveDrapes(const terrain::TileDrapes* drapes, FrameStats& stats) const;
   void bindDrapes(const BoundDrapes& drapes, const Uniforms& u) const;
   uint64_t gpuBytes() const {
     return tileBytes + indexBytes + imageryBytes + imageryTiles.bytesResident();
@@ -120,12 +120,12 @@ struct TerrainRenderer::Impl {
 // tile samples opaque, opacity 1) cannot show and are left out: fewer texture fetches per
 // fragment, and the terrain's own colour is not needed (opaqueBase). Layers
 // whose texture is not resident are skipped (the ones above still draw) and counted.
-TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(const TileDrapes* drapes,
-                                                                        FrameStats& stats) const {
+TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(
+    const terrain::TileDrapes* drapes, FrameStats& stats) const {
   BoundDrapes bound;
-  const uint32_t count = drapes == nullptr ? 0 : std::min(drapes->count, kMaxDrapeLayers);
+  const uint32_t count = drapes == nullptr ? 0 : std::min(drapes->count, terrain::kMaxDrapeLayers);
   for (uint32_t k = 0; k < count; ++k) {
-    const TileDrape& drape = drapes->layers[k];
+    const terrain::TileDrape& drape = drapes->layers[k];
     const GLuint texture = imageryTiles.find(drape.layer, drape.imageryTile);
     if (texture == 0) {
       ++stats.drapesMissing;
@@ -182,7 +182,7 @@ Result<const TerrainRenderer::Impl::Program*> TerrainRenderer::Impl::program(
   u.fogMaximum = p.uniformLocation("u_fogMaximum");
   u.layerTransform = p.uniformLocation("u_layerTransform");
   u.layerOpacity = p.uniformLocation("u_layerOpacity");
-  for (uint32_t k = 0; k < kMaxDrapeLayers; ++k) {
+  for (uint32_t k = 0; k < terrain::kMaxDrapeLayers; ++k) {
     u.layerSamplers[k] = p.uniformLocation(("u_layer" + std::to_string(k)).c_str());
   }
   if (u.modelView < 0 || u.projection < 0 || u.logDepthScale < 0) {
@@ -377,12 +377,14 @@ uint32_t TerrainRenderer::imageryTilesResident() const {
 void TerrainRenderer::setStyle(const TerrainStyle& style) { impl_->style = style; }
 const TerrainStyle& TerrainRenderer::style() const { return impl_->style; }
 
-FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::TileId> tiles) {
+FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
+                                 std::span<const geo::TileId> tiles) {
   return draw(view, tiles, {});
 }
 
-FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::TileId> tiles,
-                                 std::span<const TileDrapes> drapes) {
+FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
+                                 std::span<const geo::TileId> tiles,
+                                 std::span<const terrain::TileDrapes> drapes) {
   Impl& impl = *impl_;
   const TerrainStyle& style = impl.style;
   FrameStats stats;
@@ -405,7 +407,7 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
         0.0, glm::distance(view.cameraEcefMeters, gpu.centerEcefMeters) - gpu.radiusMeters);
     const bool far =
         nearest >= kVertexDepthMinMeters && nearest >= kVertexDepthRadii * gpu.radiusMeters;
-    const TileDrapes* tileDrapes = i < drapes.size() ? &drapes[i] : nullptr;
+    const terrain::TileDrapes* tileDrapes = i < drapes.size() ? &drapes[i] : nullptr;
     impl.drawItems[far ? 1 : 0].push_back(
         {nearest, &gpu, tile, 0, impl.resolveDrapes(tileDrapes, stats)});
   }
@@ -453,7 +455,7 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
   const bool useLayers = !drapes.empty();
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, useImagery ? impl.imagery.get() : 0);
-  const double farMeters = view.farMeters > 1.0 ? view.farMeters : kDefaultFarMeters;
+  const double farMeters = view.farMeters > 1.0 ? view.farMeters : terrain::kDefaultFarMeters;
   const auto logDepthScale = static_cast<float>(1.0 / std::log2(1.0 + farMeters));
 
   for (int variant = 0; variant < 2; ++variant) {
@@ -466,7 +468,7 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
       return a.nearestMeters < b.nearestMeters;
     });
     const Impl::Uniforms* current = nullptr;
-    uint32_t currentLayers = kMaxDrapeLayers + 1;
+    uint32_t currentLayers = terrain::kMaxDrapeLayers + 1;
     bool currentOpaqueBase = false;
     for (const Impl::DrawItem& item : items) {
       if (item.drapes.count != currentLayers || item.drapes.opaqueBase != currentOpaqueBase ||
@@ -540,7 +542,7 @@ FrameStats TerrainRenderer::draw(const RenderView& view, std::span<const geo::Ti
   }
   glBindVertexArray(0);
   if (useLayers) {
-    for (uint32_t k = 0; k < kMaxDrapeLayers; ++k) {
+    for (uint32_t k = 0; k < terrain::kMaxDrapeLayers; ++k) {
       glActiveTexture(GL_TEXTURE1 + k);
       glBindTexture(GL_TEXTURE_2D, 0);
     }

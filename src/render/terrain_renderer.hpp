@@ -12,8 +12,8 @@
 #include "geo/result.hpp"
 #include "geo/tile_id.hpp"
 #include "render/frame_stats.hpp"
-#include "render/render_view.hpp"
-#include "render/tile_drape.hpp"
+#include "terrain/render_view.hpp"
+#include "terrain/tile_drape.hpp"
 #include "terrain/tile_mesh.hpp"
 
 namespace globe::render {
@@ -117,12 +117,12 @@ class TerrainRenderer {
 
   // Clears colour and depth and draws the listed tiles (missing ones are counted and skipped)
   // into the current framebuffer's (0, 0, width, height) viewport.
-  FrameStats draw(const RenderView& view, std::span<const geo::TileId> tiles);
+  FrameStats draw(const terrain::RenderView& view, std::span<const geo::TileId> tiles);
   // The same with drapes[i] over tiles[i] (drapes.size() == tiles.size(); empty: exactly the
   // draw above; tiles past the end of a shorter span get none). A drape layer whose texture is
   // not uploaded is skipped and counted (FrameStats::drapesMissing).
-  FrameStats draw(const RenderView& view, std::span<const geo::TileId> tiles,
-                  std::span<const TileDrapes> drapes);
+  FrameStats draw(const terrain::RenderView& view, std::span<const geo::TileId> tiles,
+                  std::span<const terrain::TileDrapes> drapes);
 
   uint64_t gpuBytesResident() const;  // meshes, index buffer, global image and imagery tiles
   uint32_t tilesResident() const;

@@ -15,7 +15,7 @@
 #include <set>
 #include <vector>
 
-#include "app/terrain_scene.hpp"
+#include "app/renderer_gpu.hpp"
 #include "geo/cartographic.hpp"
 #include "geo/tiling_scheme.hpp"
 #include "render/imagery_textures.hpp"
@@ -33,7 +33,7 @@ using Rgb = std::array<double, 3>;
 
 struct Rendered {
   io::ImageRgba image;
-  FrameInfo frame;
+  scene::FrameInfo frame;
   size_t tilesDrawn = 0;
   size_t tilesDraped = 0;  // drawn with at least one imagery texture
   uint32_t deepestImageryLevel = 0;
@@ -41,7 +41,7 @@ struct Rendered {
 
 // A straight-down, north-up view `heightAboveGroundMeters` over the point, every tile and
 // imagery tile loaded. Odd sizes put the nadir on the centre pixel.
-Rendered renderNadir(const fs::path& pyramid, const std::vector<LayerOptions>& layers,
+Rendered renderNadir(const fs::path& pyramid, const std::vector<scene::LayerOptions>& layers,
                      double longitudeDegrees, double latitudeDegrees,
                      double heightAboveGroundMeters, int sizePixels,
                      uint32_t maximumImageryLoadLevel = geo::kMaxLevel) {
@@ -51,32 +51,33 @@ Rendered renderNadir(const fs::path& pyramid, const std::vector<LayerOptions>& l
   if (!context) return out;
   auto renderer = render::TerrainRenderer::create({});
   EXPECT_TRUE(renderer) << renderer.error();
-  SceneOptions options;
+  scene::SceneOptions options;
   options.hysteresis = false;
   options.layers = layers;
   options.maximumImageryLoadLevel = maximumImageryLoadLevel;
-  auto scene = TerrainScene::open(pyramid, options);
+  auto scene = scene::TerrainScene::open(pyramid, options);
   EXPECT_TRUE(scene) << scene.error();
   if (!scene || !renderer) return out;
+  RendererGpu gpu(**renderer, options);
   auto ground = (*scene)->terrainHeightMeters(geo::degreesToRadians(longitudeDegrees),
                                               geo::degreesToRadians(latitudeDegrees));
   EXPECT_TRUE(ground) << ground.error();
   const auto pose = camera::CameraPose::fromDegrees(longitudeDegrees, latitudeDegrees,
                                                     *ground + heightAboveGroundMeters, 0, -90, 0);
-  auto frame = (*scene)->updateUntilComplete(pose, sizePixels, sizePixels, **renderer,
-                                             std::chrono::seconds(120));
+  auto frame =
+      (*scene)->updateUntilComplete(pose, sizePixels, sizePixels, gpu, std::chrono::seconds(120));
   EXPECT_TRUE(frame) << frame.error();
   if (!frame) return out;
   out.frame = *frame;
   out.tilesDrawn = (*scene)->tiles().size();
-  for (const render::TileDrapes& drapes : (*scene)->drapes()) {
+  for (const terrain::TileDrapes& drapes : (*scene)->drapes()) {
     out.tilesDraped += drapes.count > 0 ? 1 : 0;
     for (uint32_t k = 0; k < drapes.count; ++k) {
       out.deepestImageryLevel =
           std::max(out.deepestImageryLevel, drapes.layers[k].imageryTile.level);
     }
   }
-  (*scene)->draw(**renderer);
+  gpu.draw(**scene);
   out.image = {sizePixels, sizePixels, render::readPixelsRgba(sizePixels, sizePixels)};
   return out;
 }
@@ -160,7 +161,7 @@ constexpr std::array<std::array<double, 2>, 6> kZionPoints{{{-112.95, 37.27},
 
 TEST(ImageryScene, ColoursLandWhereTheSourcePixelsAre) {
   const SourceImage source(bundledData("data/imagery/zion-landsat8-rgb.tif"));
-  const std::vector<LayerOptions> layers{{tiler::testing::zionLayer(), 1.0f}};
+  const std::vector<scene::LayerOptions> layers{{tiler::testing::zionLayer(), 1.0f}};
   // 3 km up, 65 px over 45°: ~38 m per pixel, so the centre 5×5 pixels average ~190 m of ground.
   int farFromShifted = 0;
   for (const auto& [lon, lat] : kZionPoints) {
@@ -201,8 +202,8 @@ TEST(ImageryScene, AUtmImageAndItsGeographicWarpGiveTheSamePicture) {
     GDALClose(source);
   }
   const auto& geographic = tiler::testing::imageryLayer("zion-4326", warped.string());
-  const std::vector<LayerOptions> utm{{tiler::testing::zionLayer(), 1.0f}};
-  const std::vector<LayerOptions> wgs{{geographic, 1.0f}};
+  const std::vector<scene::LayerOptions> utm{{tiler::testing::zionLayer(), 1.0f}};
+  const std::vector<scene::LayerOptions> wgs{{geographic, 1.0f}};
   const Rendered a = renderNadir(tiler::testing::zionPyramid(), utm, -112.98, 37.28, 12000, 129);
   const Rendered b = renderNadir(tiler::testing::zionPyramid(), wgs, -112.98, 37.28, 12000, 129);
   ASSERT_EQ(a.image.pixels.size(), b.image.pixels.size());
@@ -248,7 +249,7 @@ std::array<double, 2> pixelCentreDegrees(const fs::path& path, double column, do
 TEST(ImageryScene, NoDataIsTransparent) {
   const fs::path crop = bundledData("tests/data/imagery/rgb_byte_utm18_crop.tif");
   const auto& layer = tiler::testing::imageryLayer("rgb-byte", crop.string());
-  const std::vector<LayerOptions> with{{layer, 1.0f}};
+  const std::vector<scene::LayerOptions> with{{layer, 1.0f}};
   const auto& pyramid = tiler::testing::bundledPyramid();
   const auto collar = pixelCentreDegrees(crop, 40, 180);  // 40 px inside the collar
   const auto scene = pixelCentreDegrees(crop, 300, 200);  // 200 px inside the scene
@@ -271,7 +272,7 @@ TEST(ImageryScene, NoDataIsTransparent) {
 // terrain tile is drawn with its nearest loaded ancestor's texture, scaled to fit: no tile is
 // untextured, and the picture is a coarser version of the complete one.
 TEST(ImageryScene, TilesDrawTheirNearestLoadedAncestorWhileTheirOwnLoads) {
-  const std::vector<LayerOptions> layers{{tiler::testing::zionLayer(), 1.0f}};
+  const std::vector<scene::LayerOptions> layers{{tiler::testing::zionLayer(), 1.0f}};
   const Rendered coarse =
       renderNadir(tiler::testing::zionPyramid(), layers, -112.95, 37.27, 6000, 129, 3);
   const Rendered full =
@@ -296,11 +297,12 @@ TEST(ImageryScene, TextureMemoryStaysWithinTheBudgetOnALongFlight) {
   ASSERT_TRUE(context) << context.error();
   auto renderer = render::TerrainRenderer::create({});
   ASSERT_TRUE(renderer) << renderer.error();
-  SceneOptions options;
+  scene::SceneOptions options;
   options.layers = {{tiler::testing::blueMarbleLayer(), 1.0f}, {tiler::testing::zionLayer(), 1.0f}};
   options.imageryBudget.textureBytes = 4u << 20;
-  auto scene = TerrainScene::open(tiler::testing::zionPyramid(), options);
+  auto scene = scene::TerrainScene::open(tiler::testing::zionPyramid(), options);
   ASSERT_TRUE(scene) << scene.error();
+  RendererGpu gpu(**renderer, options);
   const uint64_t tileBytes = render::mipmappedTextureBytes(256, 256);
   std::set<std::pair<uint32_t, geo::TileId>> everUsed;
   uint64_t peak = 0;
@@ -309,12 +311,11 @@ TEST(ImageryScene, TextureMemoryStaysWithinTheBudgetOnALongFlight) {
     const double t = i / (kFrames - 1.0);
     const auto pose =
         camera::CameraPose::fromDegrees(-113.10 + 0.2 * t, 37.15 + 0.3 * t, 3500, 20, -30, 0);
-    auto frame =
-        (*scene)->updateUntilComplete(pose, 320, 180, **renderer, std::chrono::seconds(60));
+    auto frame = (*scene)->updateUntilComplete(pose, 320, 180, gpu, std::chrono::seconds(60));
     ASSERT_TRUE(frame) << frame.error();
-    const render::FrameStats stats = (*scene)->draw(**renderer);
+    const render::FrameStats stats = gpu.draw(**scene);
     std::set<std::pair<uint32_t, geo::TileId>> used;
-    for (const render::TileDrapes& drapes : (*scene)->drapes()) {
+    for (const terrain::TileDrapes& drapes : (*scene)->drapes()) {
       for (uint32_t k = 0; k < drapes.count; ++k) {
         used.insert({drapes.layers[k].layer, drapes.layers[k].imageryTile});
       }
@@ -338,7 +339,7 @@ TEST(ImageryScene, TextureMemoryStaysWithinTheBudgetOnALongFlight) {
 // pixel): the brightness step across the centre column and row is no larger than the image's
 // own steps around it (the seam score of a single column, as issue 13 defines it).
 TEST(ImageryScene, ImageryTileEdgesLeaveNoSeam) {
-  const std::vector<LayerOptions> layers{{tiler::testing::zionLayer(), 1.0f}};
+  const std::vector<scene::LayerOptions> layers{{tiler::testing::zionLayer(), 1.0f}};
   // A level-12 corner inside the scene; at 2.5 km up the drawn imagery is level 11 or 12, both
   // of which have an edge through this corner.
   const auto tile = geo::GeographicTilingScheme::positionToTile(geo::degreesToRadians(-112.97),

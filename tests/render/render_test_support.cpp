@@ -173,7 +173,8 @@ void savePng(const Image& image, const std::string& name) {
   EXPECT_TRUE(written.ok()) << written.error();
 }
 
-std::optional<glm::dvec2> projectToPixel(const RenderView& view, const glm::dvec3& ecefMeters) {
+std::optional<glm::dvec2> projectToPixel(const terrain::RenderView& view,
+                                         const glm::dvec3& ecefMeters) {
   const glm::dvec4 clip = view.projection * view.viewMatrix * glm::dvec4(ecefMeters, 1.0);
   if (clip.w <= 0.0) return std::nullopt;
   const double ndcX = clip.x / clip.w, ndcY = clip.y / clip.w;
@@ -181,7 +182,7 @@ std::optional<glm::dvec2> projectToPixel(const RenderView& view, const glm::dvec
                     (1.0 - (ndcY * 0.5 + 0.5)) * view.heightPixels);
 }
 
-bool rayHitsEllipsoid(const RenderView& view, double x, double y, double heightMeters) {
+bool rayHitsEllipsoid(const terrain::RenderView& view, double x, double y, double heightMeters) {
   const double ndcX = x / view.widthPixels * 2.0 - 1.0;
   const double ndcY = 1.0 - y / view.heightPixels * 2.0;
   const glm::dmat4 inverse = glm::inverse(view.projection * view.viewMatrix);
@@ -212,14 +213,15 @@ LocalFrame localFrame(double longitudeDegrees, double latitudeDegrees) {
   return frame;
 }
 
-RenderView lookDownView(double longitudeDegrees, double latitudeDegrees, double altitudeMeters,
-                        double fovYDegrees, int width, int height,
-                        const glm::dvec3& sunDirectionEcef) {
+terrain::RenderView lookDownView(double longitudeDegrees, double latitudeDegrees,
+                                 double altitudeMeters, double fovYDegrees, int width, int height,
+                                 const glm::dvec3& sunDirectionEcef) {
   const glm::dvec3 ground = geo::cartographicToEcef(
       kWgs84, geo::Cartographic::fromDegrees(longitudeDegrees, latitudeDegrees, 0.0));
   const LocalFrame frame = localFrame(longitudeDegrees, latitudeDegrees);
-  return makeLookAtView(ground + altitudeMeters * frame.up, ground, frame.north,
-                        geo::degreesToRadians(fovYDegrees), width, height, sunDirectionEcef);
+  return terrain::makeLookAtView(ground + altitudeMeters * frame.up, ground, frame.north,
+                                 geo::degreesToRadians(fovYDegrees), width, height,
+                                 sunDirectionEcef);
 }
 
 void RenderTest::SetUp() {
@@ -246,8 +248,8 @@ void RenderTest::upload(const std::vector<LoadedTile>& tiles) {
   }
 }
 
-Image RenderTest::drawAndRead(const RenderView& view, const std::vector<geo::TileId>& tiles,
-                              FrameStats* stats) {
+Image RenderTest::drawAndRead(const terrain::RenderView& view,
+                              const std::vector<geo::TileId>& tiles, FrameStats* stats) {
   const FrameStats frame = renderer_->draw(view, tiles);
   if (stats != nullptr) *stats = frame;
   return readImage(view.widthPixels, view.heightPixels);

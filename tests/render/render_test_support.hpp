@@ -19,9 +19,9 @@
 #include "geo/tile_id.hpp"
 #include "io/tile_store.hpp"
 #include "render/osmesa_context.hpp"
-#include "render/render_view.hpp"
 #include "render/terrain_renderer.hpp"
 #include "terrain/height_block.hpp"
+#include "terrain/render_view.hpp"
 
 namespace globe::render::test {
 
@@ -65,16 +65,17 @@ void savePng(const Image& image, const std::string& name);
 std::filesystem::path outputDirectory();
 
 // Pixel (top-down) where an ECEF point lands; nullopt behind the camera.
-std::optional<glm::dvec2> projectToPixel(const RenderView& view, const glm::dvec3& ecefMeters);
+std::optional<glm::dvec2> projectToPixel(const terrain::RenderView& view,
+                                         const glm::dvec3& ecefMeters);
 
 // Whether the ray through the continuous pixel position (x, y) (pixel centres at k + 0.5, y
 // top-down) hits the ellipsoid with both semi-axes grown by heightMeters.
-bool rayHitsEllipsoid(const RenderView& view, double x, double y, double heightMeters);
+bool rayHitsEllipsoid(const terrain::RenderView& view, double x, double y, double heightMeters);
 
 // Camera `altitudeMeters` above (lon, lat) at height 0, looking straight down with north up.
-RenderView lookDownView(double longitudeDegrees, double latitudeDegrees, double altitudeMeters,
-                        double fovYDegrees, int width, int height,
-                        const glm::dvec3& sunDirectionEcef);
+terrain::RenderView lookDownView(double longitudeDegrees, double latitudeDegrees,
+                                 double altitudeMeters, double fovYDegrees, int width, int height,
+                                 const glm::dvec3& sunDirectionEcef);
 
 // Unit vectors of the local east/north/up frame at (lon, lat).
 struct LocalFrame {
@@ -91,7 +92,7 @@ class RenderTest : public ::testing::Test {
   void TearDown() override;
   // Builds meshes with recommendedSkirtDepthMeters and uploads them.
   void upload(const std::vector<LoadedTile>& tiles);
-  Image drawAndRead(const RenderView& view, const std::vector<geo::TileId>& tiles,
+  Image drawAndRead(const terrain::RenderView& view, const std::vector<geo::TileId>& tiles,
                     FrameStats* stats = nullptr);
 
   std::unique_ptr<OsMesaContext> context_;

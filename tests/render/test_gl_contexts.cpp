@@ -53,8 +53,8 @@ TEST(OsMesaContext, ResizeKeepsObjectsAndRendersAtTheNewSize) {
   EXPECT_EQ((*context)->widthPixels(), 200);
   EXPECT_FALSE((*context)->resize(0, 100).ok());
   const glm::dvec3 eye(3.0 * kWgs84.semiMajorAxisMeters, 0.0, 0.0);
-  const RenderView view = makeLookAtView(eye, glm::dvec3(0.0), glm::dvec3(0, 0, 1),
-                                         geo::degreesToRadians(45.0), 200, 100, eye);
+  const terrain::RenderView view = terrain::makeLookAtView(
+      eye, glm::dvec3(0.0), glm::dvec3(0, 0, 1), geo::degreesToRadians(45.0), 200, 100, eye);
   const FrameStats stats = (*renderer)->draw(view, idsOf(tiles));
   EXPECT_EQ(stats.tilesDrawn, 8u);
   const std::vector<uint8_t> pixels = readPixelsRgba(200, 100);
@@ -94,8 +94,8 @@ TEST(GlfwWindowContext, RendersTheGlobeInAWindow) {
   const int height = (*window)->framebufferHeightPixels();
   ASSERT_GT(width, 0);
   const glm::dvec3 eye(0.0, 3.0 * kWgs84.semiMajorAxisMeters, 0.0);
-  const RenderView view = makeLookAtView(eye, glm::dvec3(0.0), glm::dvec3(0, 0, 1),
-                                         geo::degreesToRadians(45.0), width, height, eye);
+  const terrain::RenderView view = terrain::makeLookAtView(
+      eye, glm::dvec3(0.0), glm::dvec3(0, 0, 1), geo::degreesToRadians(45.0), width, height, eye);
   (*renderer)->draw(view, idsOf(tiles));
   const Image image = readImage(width, height);
   savePng(image, "glfw_window_globe");

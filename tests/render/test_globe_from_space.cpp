@@ -20,7 +20,7 @@ struct DiscComparison {
 
 // Compares the image with the ray-cast ellipsoid; "well" inside/outside: all four pixel corners
 // (±1.5 px) agree, with the ellipsoid grown/shrunk by 10 km for the terrain's relief.
-DiscComparison compareWithDisc(const Image& image, const RenderView& view) {
+DiscComparison compareWithDisc(const Image& image, const terrain::RenderView& view) {
   DiscComparison result;
   for (int y = 0; y < image.height; ++y) {
     for (int x = 0; x < image.width; ++x) {
@@ -52,8 +52,9 @@ TEST_F(GlobeFromSpace, DiscMatchesTheEllipsoidAndIsFullyLit) {
   const glm::dvec3 direction =
       geo::geodeticSurfaceNormal(kWgs84, geo::Cartographic::fromDegrees(20.0, 10.0, 0.0));
   const glm::dvec3 eye = 4.0 * kWgs84.semiMajorAxisMeters * direction;
-  const RenderView view = makeLookAtView(eye, glm::dvec3(0.0), glm::dvec3(0, 0, 1),
-                                         geo::degreesToRadians(40.0), kWidth, kHeight, direction);
+  const terrain::RenderView view =
+      terrain::makeLookAtView(eye, glm::dvec3(0.0), glm::dvec3(0, 0, 1),
+                              geo::degreesToRadians(40.0), kWidth, kHeight, direction);
   FrameStats stats;
   const Image image = drawAndRead(view, idsOf(tiles), &stats);
   savePng(image, "globe_from_space");
@@ -91,8 +92,9 @@ TEST_F(GlobeFromSpace, NightSideIsDarkButNotBlack) {
   auto render = [&](double sunLongitudeDegrees) {
     const glm::dvec3 sun = geo::geodeticSurfaceNormal(
         kWgs84, geo::Cartographic::fromDegrees(sunLongitudeDegrees, 0.0, 0.0));
-    const RenderView view = makeLookAtView(eye, glm::dvec3(0.0), glm::dvec3(0, 0, 1),
-                                           geo::degreesToRadians(40.0), kWidth, kHeight, sun);
+    const terrain::RenderView view =
+        terrain::makeLookAtView(eye, glm::dvec3(0.0), glm::dvec3(0, 0, 1),
+                                geo::degreesToRadians(40.0), kWidth, kHeight, sun);
     const Image image = drawAndRead(view, idsOf(tiles));
     EXPECT_EQ(compareWithDisc(image, view).missingInside, 0);  // dark, never black
     return image;
@@ -121,8 +123,9 @@ TEST_F(GlobeFromSpace, From40000KilometresTheGlobeIsASmallDisc) {
       geo::geodeticSurfaceNormal(kWgs84, geo::Cartographic::fromDegrees(140.0, 30.0, 0.0));
   const glm::dvec3 eye =
       geo::cartographicToEcef(kWgs84, geo::Cartographic::fromDegrees(140.0, 30.0, 4.0e7));
-  const RenderView view = makeLookAtView(eye, glm::dvec3(0.0), glm::dvec3(0, 0, 1),
-                                         geo::degreesToRadians(30.0), kWidth, kHeight, direction);
+  const terrain::RenderView view =
+      terrain::makeLookAtView(eye, glm::dvec3(0.0), glm::dvec3(0, 0, 1),
+                              geo::degreesToRadians(30.0), kWidth, kHeight, direction);
   const Image image = drawAndRead(view, idsOf(tiles));
   savePng(image, "globe_from_40000km");
   const DiscComparison disc = compareWithDisc(image, view);

@@ -56,9 +56,9 @@ TEST_F(Imagery, BlueMarbleDrapesOverTheGlobe) {
   upload(tiles);
   const glm::dvec3 direction =
       geo::geodeticSurfaceNormal(kWgs84, geo::Cartographic::fromDegrees(20.0, 10.0, 0.0));
-  const RenderView view =
-      makeLookAtView(3.2 * kWgs84.semiMajorAxisMeters * direction, glm::dvec3(0.0),
-                     glm::dvec3(0, 0, 1), geo::degreesToRadians(45.0), kWidth, kHeight, direction);
+  const terrain::RenderView view = terrain::makeLookAtView(
+      3.2 * kWgs84.semiMajorAxisMeters * direction, glm::dvec3(0.0), glm::dvec3(0, 0, 1),
+      geo::degreesToRadians(45.0), kWidth, kHeight, direction);
   const Image draped = drawAndRead(view, idsOf(tiles));
   savePng(draped, "globe_blue_marble");
 

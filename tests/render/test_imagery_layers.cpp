@@ -1,6 +1,6 @@
 // Tiled imagery layers draped over terrain tiles (TerrainRenderer::uploadImageryTile and draw with
-// TileDrapes): exact texel colours, uv transforms into ancestor tiles, opacity and alpha, layer
-// order, seams between tiles, lighting, missing textures, texture memory and mipmaps. Flat
+// terrain::TileDrapes): exact texel colours, uv transforms into ancestor tiles, opacity and alpha,
+// layer order, seams between tiles, lighting, missing textures, texture memory and mipmaps. Flat
 // synthetic terrain, so every expected pixel is known.
 #include <gtest/gtest.h>
 
@@ -77,9 +77,9 @@ std::vector<uint8_t> cellImage() {
   return makeImage([](int column, int row) { return cellColour(column / 64, row / 64); });
 }
 
-TileDrapes drapesOf(std::initializer_list<TileDrape> layers) {
-  TileDrapes drapes;
-  for (const TileDrape& layer : layers) drapes.layers[drapes.count++] = layer;
+terrain::TileDrapes drapesOf(std::initializer_list<terrain::TileDrape> layers) {
+  terrain::TileDrapes drapes;
+  for (const terrain::TileDrape& layer : layers) drapes.layers[drapes.count++] = layer;
   return drapes;
 }
 
@@ -115,8 +115,8 @@ class ImageryLayers : public RenderTest {
   }
 
   // Straight down onto the middle of `tile` from `altitudeMeters`, sun from `sun` (ECEF).
-  static RenderView viewOnto(const geo::TileId& tile, double altitudeMeters,
-                             glm::dvec3 sun = glm::dvec3(0.0)) {
+  static terrain::RenderView viewOnto(const geo::TileId& tile, double altitudeMeters,
+                                      glm::dvec3 sun = glm::dvec3(0.0)) {
     const geo::Cartographic centre = geo::GeographicTilingScheme::tileRectangle(tile).center();
     if (sun == glm::dvec3(0.0)) sun = geo::geodeticSurfaceNormal(kWgs84, centre);
     return lookDownView(geo::radiansToDegrees(centre.longitudeRadians),
@@ -125,7 +125,8 @@ class ImageryLayers : public RenderTest {
   }
 
   // The pixel showing tile-local (u, v) of `tile` on the flat ground.
-  static glm::ivec2 pixelAt(const RenderView& view, const geo::TileId& tile, double u, double v) {
+  static glm::ivec2 pixelAt(const terrain::RenderView& view, const geo::TileId& tile, double u,
+                            double v) {
     const geo::GlobeRectangle rect = geo::GeographicTilingScheme::tileRectangle(tile);
     const geo::Cartographic point{rect.westRadians + u * rect.widthRadians(),
                                   rect.northRadians - v * rect.heightRadians(), kGroundMeters};
@@ -134,8 +135,8 @@ class ImageryLayers : public RenderTest {
     return pixel ? glm::ivec2(std::floor(pixel->x), std::floor(pixel->y)) : glm::ivec2(0);
   }
 
-  Image drawDraped(const RenderView& view, const std::vector<geo::TileId>& tiles,
-                   const std::vector<TileDrapes>& drapes, FrameStats* stats = nullptr) {
+  Image drawDraped(const terrain::RenderView& view, const std::vector<geo::TileId>& tiles,
+                   const std::vector<terrain::TileDrapes>& drapes, FrameStats* stats = nullptr) {
     const FrameStats frame = renderer_->draw(view, tiles, drapes);
     if (stats != nullptr) *stats = frame;
     return readImage(view.widthPixels, view.heightPixels);
@@ -145,7 +146,7 @@ class ImageryLayers : public RenderTest {
 TEST_F(ImageryLayers, NadirViewShowsTheTexelColoursExactly) {
   uploadFlat(kTile);
   uploadImagery(0, kTile, quadrantImage());
-  const RenderView view = viewOnto(kTile, 450e3);
+  const terrain::RenderView view = viewOnto(kTile, 450e3);
   FrameStats stats;
   const Image image = drawDraped(view, {kTile}, {drapesOf({{0, kTile}})}, &stats);
   savePng(image, "imagery_layers_quadrants");
@@ -177,8 +178,8 @@ TEST_F(ImageryLayers, UvTransformShowsTheParentsQuadrant) {
     renderer_->evictAllTiles();
     uploadFlat(child);
     const uint32_t qx = child.x - parent.x * 2, qy = child.y - parent.y * 2;
-    TileDrape drape{0, parent, {0.5f * float(qx), 0.5f * float(qy), 0.5f, 0.5f}};
-    const RenderView view = viewOnto(child, 450e3);
+    terrain::TileDrape drape{0, parent, {0.5f * float(qx), 0.5f * float(qy), 0.5f, 0.5f}};
+    const terrain::RenderView view = viewOnto(child, 450e3);
     FrameStats stats;
     const Image image = drawDraped(view, {child}, {drapesOf({drape})}, &stats);
     if (qx == 1 && qy == 1) savePng(image, "imagery_layers_parent_quadrant");
@@ -195,11 +196,11 @@ TEST_F(ImageryLayers, UvTransformShowsTheParentsQuadrant) {
 
 TEST_F(ImageryLayers, OpacityAlphaAndLayerOrderComposite) {
   uploadFlat(kTile);
-  const RenderView view = viewOnto(kTile, 450e3);
+  const terrain::RenderView view = viewOnto(kTile, 450e3);
   const std::vector<geo::TileId> tiles{kTile};
   // The terrain's own colour: no layers at all, and the layer program with zero layers, alike.
   const Image plain = drawDraped(view, tiles, {});
-  const Image noLayers = drawDraped(view, tiles, {TileDrapes{}});
+  const Image noLayers = drawDraped(view, tiles, {terrain::TileDrapes{}});
   EXPECT_EQ(plain.rgba, noLayers.rgba);
   const glm::ivec2 west = pixelAt(view, kTile, 0.25, 0.5), east = pixelAt(view, kTile, 0.75, 0.5);
   const Rgba base = plain.at(west.x, west.y);
@@ -207,7 +208,7 @@ TEST_F(ImageryLayers, OpacityAlphaAndLayerOrderComposite) {
 
   // Opacity 0.5: halfway between the base and the texel.
   uploadImagery(0, kTile, solidImage(kRed));
-  TileDrape red{0, kTile};
+  terrain::TileDrape red{0, kTile};
   red.opacity = 0.5f;
   const Image half = drawDraped(view, tiles, {drapesOf({red})});
   savePng(half, "imagery_layers_half_opacity");
@@ -245,7 +246,7 @@ TEST_F(ImageryLayers, AnOpaqueLayerHidesTheLayersUnderItOnlyWhereItIsOpaque) {
                   // it (what filtering and the first mip levels reach) are opaque.
                   return column < 96 ? Rgba{255, 0, 255, 0} : Rgba{30, 200, 90, 255};
                 }));
-  const RenderView view = viewOnto(kTile, 450e3);
+  const terrain::RenderView view = viewOnto(kTile, 450e3);
   const std::vector<geo::TileId> west{children[0]}, east{children[1]};
   FrameStats stats;
   const Image westImage = drawDraped(
@@ -268,7 +269,7 @@ TEST_F(ImageryLayers, LayersDrawOverTheGlobalImage) {
   uploadFlat(kTile);
   const std::vector<uint8_t> global(64 * 32 * 4, 160);
   ASSERT_TRUE(renderer_->setImagery(global, 64, 32).ok());
-  const RenderView view = viewOnto(kTile, 450e3);
+  const terrain::RenderView view = viewOnto(kTile, 450e3);
   const Image globalOnly = drawDraped(view, {kTile}, {});
   uploadImagery(0, kTile, makeImage([](int column, int) {
                   return column < 128 ? Rgba{0, 0, 0, 0} : kBlue;
@@ -321,7 +322,7 @@ TEST_F(ImageryLayers, AdjacentTilesShowNoSeam) {
     const double lon = eastWest ? a.eastRadians : (a.westRadians + a.eastRadians) / 2;
     const double lat = eastWest ? (a.southRadians + a.northRadians) / 2 : a.southRadians;
     for (const double altitude : {400e3, 1500e3}) {
-      const RenderView view = lookDownView(
+      const terrain::RenderView view = lookDownView(
           geo::radiansToDegrees(lon), geo::radiansToDegrees(lat), altitude, 45.0, kWidth, kHeight,
           geo::geodeticSurfaceNormal(kWgs84, geo::Cartographic{lon, lat, 0.0}));
       const Image image =
@@ -353,9 +354,9 @@ TEST_F(ImageryLayers, LightImageryDimsTheTexelsByTheTerrainLight) {
                                       geo::radiansToDegrees(centre.latitudeRadians));
   // Sun 60° from the zenith: light = ambient + (1 − ambient) · cos 60°.
   const glm::dvec3 sun = glm::normalize(0.5 * frame.up + std::sqrt(0.75) * frame.east);
-  const RenderView view = viewOnto(kTile, 450e3, sun);
+  const terrain::RenderView view = viewOnto(kTile, 450e3, sun);
   const glm::ivec2 middle = pixelAt(view, kTile, 0.5, 0.5);
-  const std::vector<TileDrapes> drapes{drapesOf({{0, kTile}})};
+  const std::vector<terrain::TileDrapes> drapes{drapesOf({{0, kTile}})};
 
   const Image unlit = drawDraped(view, {kTile}, drapes);
   EXPECT_TRUE(near(unlit.at(middle.x, middle.y), kWhite, 2));
@@ -378,7 +379,7 @@ TEST_F(ImageryLayers, LightImageryDimsTheTexelsByTheTerrainLight) {
 TEST_F(ImageryLayers, MissingTexturesAreSkippedAndCounted) {
   uploadFlat(kTile);
   uploadFlat(kEastNeighbour);
-  const RenderView view = viewOnto(kTile, 900e3);
+  const terrain::RenderView view = viewOnto(kTile, 900e3);
   const std::vector<geo::TileId> tiles{kTile, kEastNeighbour};
   const Image plain = drawDraped(view, tiles, {});
 
@@ -452,7 +453,7 @@ TEST_F(ImageryLayers, FarViewsSampleTheMipChain) {
   uploadImagery(0, kTile, makeImage([](int column, int row) {
                   return (column + row) % 2 == 0 ? Rgba{0, 0, 0, 255} : Rgba{255, 255, 255, 255};
                 }));
-  const RenderView view = viewOnto(kTile, 6000e3);
+  const terrain::RenderView view = viewOnto(kTile, 6000e3);
   const Image image = drawDraped(view, {kTile}, {drapesOf({{0, kTile}})});
   savePng(image, "imagery_layers_far_checker");
   const glm::ivec2 p0 = pixelAt(view, kTile, 0.1, 0.1), p1 = pixelAt(view, kTile, 0.9, 0.9);

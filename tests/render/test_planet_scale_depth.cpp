@@ -115,9 +115,9 @@ class PlanetScaleDepth : public RenderTest {
       auto uploaded = renderer_->uploadTile(id, planeMesh(c, d, shape, sea));
       EXPECT_TRUE(uploaded.ok()) << uploaded.error();
     }
-    const RenderView view =
-        makeLookAtView(c.eye, c.eye + c.forward, c.up, geo::degreesToRadians(kFovYDegrees),
-                       kViewWidth, kViewHeight, -c.forward);
+    const terrain::RenderView view =
+        terrain::makeLookAtView(c.eye, c.eye + c.forward, c.up, geo::degreesToRadians(kFovYDegrees),
+                                kViewWidth, kViewHeight, -c.forward);
     const std::vector<geo::TileId> ids{frontId_, backId_};
     FrameStats stats;
     const Image image = drawAndRead(view, ids, &stats);
@@ -210,8 +210,8 @@ TEST_F(PlanetScaleDepth, HalfAMetreAboveTheGroundNothingIsClipped) {
       geo::cartographicToEcef(kWgs84, geo::Cartographic::fromDegrees(lon, lat, 100.5));
   const double pitch = geo::degreesToRadians(-50.0);
   const glm::dvec3 forward = std::cos(pitch) * f.north + std::sin(pitch) * f.up;
-  const RenderView view = makeLookAtView(eye, eye + forward, f.up, geo::degreesToRadians(90.0),
-                                         kViewWidth, kViewHeight, f.up);
+  const terrain::RenderView view = terrain::makeLookAtView(
+      eye, eye + forward, f.up, geo::degreesToRadians(90.0), kViewWidth, kViewHeight, f.up);
   const Image image = drawAndRead(view, idsOf(tiles));
   savePng(image, "depth_half_metre_above_ground");
   EXPECT_EQ(image.countNonBackground(), kViewWidth * kViewHeight);

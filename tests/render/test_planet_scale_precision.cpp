@@ -180,8 +180,9 @@ class PlanetScalePrecision : public RenderTest {
     const glm::dvec3 forward = std::cos(pitch) * f.east + std::sin(pitch) * f.up;
     const double fovY = 2.0 * std::atan(std::tan(geo::degreesToRadians(kFovXDegrees) / 2.0) *
                                         kViewHeight / kViewWidth);
-    const RenderView view = makeLookAtView(eye, eye + forward, f.up, fovY, kViewWidth, kViewHeight,
-                                           glm::normalize(f.up + 0.8 * f.north));
+    const terrain::RenderView view =
+        terrain::makeLookAtView(eye, eye + forward, f.up, fovY, kViewWidth, kViewHeight,
+                                glm::normalize(f.up + 0.8 * f.north));
     return drawAndRead(view, scene.ids);
   }
 

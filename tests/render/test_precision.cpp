@@ -57,7 +57,7 @@ class Precision : public RenderTest {
 
   // 1 m above the highest bump in the middle tile, looking north-east 50° down. floatEye: the eye
   // rounded to float, as a renderer holding ECEF in float would have it.
-  RenderView view(double eastMeters, bool floatEye = false) const {
+  terrain::RenderView view(double eastMeters, bool floatEye = false) const {
     const terrain::BlockGrid grid{centre_, kN};
     const double lon = grid.longitudeDegrees(8), lat = grid.latitudeDegrees(8);
     const LocalFrame frame = localFrame(lon, lat);
@@ -68,8 +68,8 @@ class Precision : public RenderTest {
     const double pitch = geo::degreesToRadians(-50.0);
     const glm::dvec3 forward =
         std::cos(pitch) * glm::normalize(frame.north + frame.east) + std::sin(pitch) * frame.up;
-    return makeLookAtView(eye, eye + forward, frame.up, geo::degreesToRadians(60.0), kWidth,
-                          kHeight, glm::normalize(frame.up + 0.8 * frame.east));
+    return terrain::makeLookAtView(eye, eye + forward, frame.up, geo::degreesToRadians(60.0),
+                                   kWidth, kHeight, glm::normalize(frame.up + 0.8 * frame.east));
   }
 
   geo::TileId centre_{};

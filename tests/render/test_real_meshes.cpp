@@ -113,8 +113,9 @@ TEST_F(MixedLevels, SkirtsLeaveNoCracks) {
   const glm::dvec3 eye =
       geo::cartographicToEcef(kWgs84, geo::Cartographic::fromDegrees(138.66, 35.31, 3200.0));
   const LocalFrame frame = localFrame(138.66, 35.31);
-  const RenderView view = makeLookAtView(eye, summit, frame.up, geo::degreesToRadians(60.0), kWidth,
-                                         kHeight, glm::normalize(frame.up - frame.east));
+  const terrain::RenderView view =
+      terrain::makeLookAtView(eye, summit, frame.up, geo::degreesToRadians(60.0), kWidth, kHeight,
+                              glm::normalize(frame.up - frame.east));
   // Background pixels below the first terrain pixel of their column (the sky is above).
   auto countCracks = [](const Image& image) {
     int cracks = 0;

@@ -29,7 +29,8 @@ TEST(RenderSpeed, ThreeHundredTilesAt1280x720) {
             .ok());
   }
   const LocalFrame frame = localFrame(138.0, 35.0);
-  const RenderView view = lookDownView(138.0, 35.0, 5.0e6, 40.0, kW, kH, frame.up + frame.east);
+  const terrain::RenderView view =
+      lookDownView(138.0, 35.0, 5.0e6, 40.0, kW, kH, frame.up + frame.east);
   const std::vector<geo::TileId> ids = idsOf(tiles);
 
   using Clock = std::chrono::steady_clock;

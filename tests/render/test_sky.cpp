@@ -65,8 +65,9 @@ class SkyPassTest : public RenderTest {
     const glm::dvec3 eye = geo::cartographicToEcef(kWgs84, {0.0, 0.0, heightMeters});
     const glm::dvec3 direction = enu.x * f.east + enu.y * f.north + enu.z * f.up;
     const glm::dvec3 screenUp = std::abs(enu.z) > 0.9 ? f.north : f.up;
-    const RenderView view = makeLookAtView(eye, eye + 1000.0 * direction, screenUp,
-                                           geo::degreesToRadians(30.0), kWidth, kHeight, f.up);
+    const terrain::RenderView view =
+        terrain::makeLookAtView(eye, eye + 1000.0 * direction, screenUp,
+                                geo::degreesToRadians(30.0), kWidth, kHeight, f.up);
     const Image image = drawAndRead(view, {});
     return image.at(kWidth / 2, kHeight / 2);
   }

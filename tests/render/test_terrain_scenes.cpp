@@ -58,7 +58,7 @@ TEST_F(TerrainScenes, NoDataSeaIsBlueAndLandIsNot) {
   upload(tiles);
   const LocalFrame frame = localFrame(-0.35, 53.8);
   const glm::dvec3 sun = glm::normalize(frame.up + 0.5 * frame.east - 0.5 * frame.north);
-  const RenderView view = lookDownView(-0.35, 53.8, 45000.0, 40.0, kWidth, kHeight, sun);
+  const terrain::RenderView view = lookDownView(-0.35, 53.8, 45000.0, 40.0, kWidth, kHeight, sun);
   const Image image = drawAndRead(view, idsOf(tiles));
   savePng(image, "england_sea");
 
@@ -102,7 +102,7 @@ class MountFuji : public RenderTest {
     upload(tiles_);
   }
 
-  RenderView viewWithSun(double sunAzimuthDegrees) const {
+  terrain::RenderView viewWithSun(double sunAzimuthDegrees) const {
     // Sun 30° above the horizon at the given azimuth (clockwise from north).
     const LocalFrame frame = localFrame(138.7274, 35.3606);
     const double azimuth = geo::degreesToRadians(sunAzimuthDegrees);
@@ -114,7 +114,7 @@ class MountFuji : public RenderTest {
   }
 
   // Mean luminance around points ~4 km west and east of the summit, on the slopes.
-  FlankBrightness flanks(const Image& image, const RenderView& view) const {
+  FlankBrightness flanks(const Image& image, const terrain::RenderView& view) const {
     FlankBrightness result;
     for (const auto& [longitude, target] :
          {std::pair{138.68, &result.west}, std::pair{138.775, &result.east}}) {
@@ -149,10 +149,10 @@ class MountFuji : public RenderTest {
 };
 
 TEST_F(MountFuji, FlanksFacingTheSunAreBrighter) {
-  const RenderView fromWest = viewWithSun(270.0);
+  const terrain::RenderView fromWest = viewWithSun(270.0);
   const Image westLit = drawAndRead(fromWest, idsOf(tiles_));
   savePng(westLit, "fuji_sun_west");
-  const RenderView fromEast = viewWithSun(90.0);
+  const terrain::RenderView fromEast = viewWithSun(90.0);
   const Image eastLit = drawAndRead(fromEast, idsOf(tiles_));
   savePng(eastLit, "fuji_sun_east");
   EXPECT_EQ(westLit.countNonBackground(), kWidth * kHeight);
@@ -167,7 +167,7 @@ TEST_F(MountFuji, FlanksFacingTheSunAreBrighter) {
 }
 
 TEST_F(MountFuji, HillShadingAddsBrightnessVariation) {
-  const RenderView view = viewWithSun(300.0);
+  const terrain::RenderView view = viewWithSun(300.0);
   const Image shaded = drawAndRead(view, idsOf(tiles_));
   TerrainStyle flat = renderer_->style();
   flat.hillShading = false;
@@ -205,7 +205,7 @@ class GroundLevel : public RenderTest {
   }
 
   // 1 m above the ground, looking towards the summit (north-east), 8° below the horizon.
-  RenderView view(double extraEastMeters = 0.0) const {
+  terrain::RenderView view(double extraEastMeters = 0.0) const {
     const LocalFrame frame = localFrame(longitudeDegrees_, latitudeDegrees_);
     const glm::dvec3 eye = geo::cartographicToEcef(kWgs84, geo::Cartographic::fromDegrees(
                                                                longitudeDegrees_, latitudeDegrees_,
@@ -215,8 +215,8 @@ class GroundLevel : public RenderTest {
     const glm::dvec3 forward =
         std::cos(pitch) * glm::normalize(frame.north + frame.east) + std::sin(pitch) * frame.up;
     const glm::dvec3 sun = glm::normalize(frame.up + frame.north - frame.east);
-    return makeLookAtView(eye, eye + forward, frame.up, geo::degreesToRadians(50.0), kWidth,
-                          kHeight, sun);
+    return terrain::makeLookAtView(eye, eye + forward, frame.up, geo::degreesToRadians(50.0),
+                                   kWidth, kHeight, sun);
   }
 
   std::vector<LoadedTile> tiles_;
@@ -224,7 +224,7 @@ class GroundLevel : public RenderTest {
 };
 
 TEST_F(GroundLevel, OneMetreAboveTheGroundSeesSolidTerrain) {
-  const RenderView v = view();
+  const terrain::RenderView v = view();
   const Image image = drawAndRead(v, idsOf(tiles_));
   savePng(image, "fuji_1m_above_ground");
   // Rows are top-down: sky (background) along the top, ground everywhere in the lower half.

@@ -35,8 +35,8 @@ TEST_F(TileCache, CountsBytesAndTilesAndSkipsMissingOnes) {
   EXPECT_EQ(renderer_->gpuBytesResident(), baseBytes + 31 * tileBytes);
 
   const glm::dvec3 eye(3.0 * kWgs84.semiMajorAxisMeters, 0.0, 0.0);
-  const RenderView view = makeLookAtView(eye, glm::dvec3(0.0), glm::dvec3(0, 0, 1),
-                                         geo::degreesToRadians(45.0), kWidth, kHeight, eye);
+  const terrain::RenderView view = terrain::makeLookAtView(
+      eye, glm::dvec3(0.0), glm::dvec3(0, 0, 1), geo::degreesToRadians(45.0), kWidth, kHeight, eye);
   std::vector<geo::TileId> ids = idsOf(tiles);
   ids.push_back({20, 1, 1});  // never uploaded
   const FrameStats stats = renderer_->draw(view, ids);

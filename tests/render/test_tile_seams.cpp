@@ -21,8 +21,8 @@ class TileSeams : public RenderTest {
  protected:
   // Views from `heightMeters` above (lon, lat), looking at the ground point `aheadMeters` away
   // along `headingDegrees`, so the whole image lies inside the tile block.
-  RenderView viewOver(double lonDegrees, double latDegrees, double heightMeters,
-                      double headingDegrees, double aheadMeters) const {
+  terrain::RenderView viewOver(double lonDegrees, double latDegrees, double heightMeters,
+                               double headingDegrees, double aheadMeters) const {
     const LocalFrame frame = localFrame(lonDegrees, latDegrees);
     const double heading = geo::degreesToRadians(headingDegrees);
     const glm::dvec3 along = std::cos(heading) * frame.north + std::sin(heading) * frame.east;
@@ -31,7 +31,8 @@ class TileSeams : public RenderTest {
     const glm::dvec3 eye = ground + heightMeters * frame.up;
     const glm::dvec3 target = ground + aheadMeters * along;
     const glm::dvec3 sun = glm::normalize(frame.up + frame.east);
-    return makeLookAtView(eye, target, frame.up, geo::degreesToRadians(40.0), kWidth, kHeight, sun);
+    return terrain::makeLookAtView(eye, target, frame.up, geo::degreesToRadians(40.0), kWidth,
+                                   kHeight, sun);
   }
 
   // Counts background (space-black) pixels; the views below see only the tile block.
@@ -49,7 +50,7 @@ TEST_F(TileSeams, OneLevelShowsNoGapsFromAnyDirection) {
   int views = 0;
   for (double heading = 0.0; heading < 360.0; heading += 45.0) {
     for (const double height : {5000.0, 6500.0, 8000.0}) {
-      const RenderView view = viewOver(138.78, 35.33, height, heading, 1500.0);
+      const terrain::RenderView view = viewOver(138.78, 35.33, height, heading, 1500.0);
       FrameStats stats;
       const Image image = drawAndRead(view, ids, &stats);
       EXPECT_EQ(backgroundPixels(image), 0) << "heading " << heading << " height " << height;
@@ -105,7 +106,7 @@ TEST_F(TileSeams, MixedLevelsShowNoGaps) {
   const std::vector<geo::TileId> ids = idsOf(drawn);
   for (double heading = 0.0; heading < 360.0; heading += 45.0) {
     for (const double height : {5000.0, 8000.0}) {
-      const RenderView view = viewOver(138.73, 35.35, height, heading, 1200.0);
+      const terrain::RenderView view = viewOver(138.73, 35.35, height, heading, 1200.0);
       const Image image = drawAndRead(view, ids);
       EXPECT_EQ(backgroundPixels(image), 0) << "heading " << heading << " height " << height;
       if (heading == 90.0 && height == 5000.0) savePng(image, "tile_seams_mixed_levels");

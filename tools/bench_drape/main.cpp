@@ -10,10 +10,11 @@
 #include <vector>
 
 #include "app/camera_argument.hpp"
-#include "app/terrain_scene.hpp"
+#include "app/renderer_gpu.hpp"
 #include "io/atomic_file.hpp"
 #include "render/osmesa_context.hpp"
 #include "render/read_pixels.hpp"
+#include "scene/terrain_scene.hpp"
 
 namespace {
 
@@ -22,7 +23,8 @@ using Clock = std::chrono::steady_clock;
 
 struct Side {
   std::unique_ptr<render::TerrainRenderer> renderer;
-  std::unique_ptr<app::TerrainScene> scene;
+  std::unique_ptr<app::RendererGpu> gpu;  // over renderer
+  std::unique_ptr<scene::TerrainScene> scene;
   std::vector<double> frameMs;
   uint64_t triangles = 0, imageryBytes = 0;
   size_t drapes = 0;
@@ -35,20 +37,21 @@ double median(std::vector<double> values) {
   return values[values.size() / 2];
 }
 
-Result<Side> openSide(const std::string& pyramid, const std::vector<app::LayerOptions>& layers,
+Result<Side> openSide(const std::string& pyramid, const std::vector<scene::LayerOptions>& layers,
                       const camera::CameraPose& pose, int width, int height) {
   Side side;
   auto renderer = render::TerrainRenderer::create({});
   if (!renderer) return Error{renderer.error()};
   side.renderer = std::move(*renderer);
-  app::SceneOptions options;
+  scene::SceneOptions options;
   options.hysteresis = false;
   options.layers = layers;
-  auto scene = app::TerrainScene::open(pyramid, options);
+  auto scene = scene::TerrainScene::open(pyramid, options);
   if (!scene) return Error{scene.error()};
   side.scene = std::move(*scene);
-  auto frame = side.scene->updateUntilComplete(pose, width, height, *side.renderer,
-                                               std::chrono::seconds(300));
+  side.gpu = std::make_unique<app::RendererGpu>(*side.renderer, options);
+  auto frame =
+      side.scene->updateUntilComplete(pose, width, height, *side.gpu, std::chrono::seconds(300));
   if (!frame) return Error{frame.error()};
   side.drapes = frame->imagery.drapes;
   return side;
@@ -57,8 +60,8 @@ Result<Side> openSide(const std::string& pyramid, const std::vector<app::LayerOp
 // One steady frame as the viewer runs it: update (selection, polls), draw, glFinish.
 double timeFrame(Side& side, const camera::CameraPose& pose, int width, int height) {
   const auto start = Clock::now();
-  side.scene->update(pose, width, height, *side.renderer);
-  const render::FrameStats stats = side.scene->draw(*side.renderer);
+  side.scene->update(pose, width, height, *side.gpu);
+  const render::FrameStats stats = side.gpu->draw(*side.scene);
   render::finishGl();
   side.triangles = stats.triangles;
   side.imageryBytes = stats.imageryBytesResident;
@@ -89,9 +92,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   const auto [width, height] = *size;
-  std::vector<app::LayerOptions> layers;
+  std::vector<scene::LayerOptions> layers;
   for (const std::string& text : layerTexts) {
-    auto layer = app::parseLayerArgument(text);
+    auto layer = scene::parseLayerArgument(text);
     if (!layer) {
       std::fprintf(stderr, "globe-bench-drape: %s\n", layer.error().c_str());
       return 2;

@@ -8,7 +8,7 @@
 #include <ctime>
 #include <sstream>
 
-#include "app/terrain_scene.hpp"
+#include "app/renderer_gpu.hpp"
 #include "app/view_command.hpp"
 #include "render/osmesa_context.hpp"
 #include "render/read_pixels.hpp"
@@ -38,8 +38,8 @@ double percentile(std::vector<double> values, double p) {
 }
 
 struct Context {
-  app::TerrainScene& scene;
-  render::TerrainRenderer& renderer;
+  scene::TerrainScene& scene;
+  app::RendererGpu& gpu;
   const ScenarioOptions& options;
 };
 
@@ -60,9 +60,9 @@ ScenarioRow steadyFrames(Context& c, const std::string& name, const camera::Came
   for (int k = 0; k < c.options.frames; ++k) {
     const double cpuStart = processCpuMilliseconds();
     const auto start = Clock::now();
-    c.scene.update(pose, c.options.widthPixels, c.options.heightPixels, c.renderer);
+    c.scene.update(pose, c.options.widthPixels, c.options.heightPixels, c.gpu);
     const auto updated = Clock::now();
-    stats = c.scene.draw(c.renderer);
+    stats = c.gpu.draw(c.scene);
     render::finishGl();
     total.push_back(millisecondsSince(start));
     draw.push_back(millisecondsSince(updated));
@@ -86,7 +86,7 @@ ScenarioRow smallViewportFrames(Context& c, const std::string& name) {
   ScenarioRow row;
   row.name = name;
   row.frames = c.options.frames;
-  render::RenderView view = c.scene.view();
+  terrain::RenderView view = c.scene.view();
   view.widthPixels = std::max(view.widthPixels / 8, 1);
   view.heightPixels = std::max(view.heightPixels / 8, 1);
   std::vector<double> draw, cpu;
@@ -94,7 +94,7 @@ ScenarioRow smallViewportFrames(Context& c, const std::string& name) {
   for (int k = 0; k < c.options.frames; ++k) {
     const double cpuStart = processCpuMilliseconds();
     const auto start = Clock::now();
-    stats = c.renderer.draw(view, c.scene.tiles());
+    stats = c.gpu.renderer().draw(view, c.scene.tiles());
     render::finishGl();
     draw.push_back(millisecondsSince(start));
     cpu.push_back(processCpuMilliseconds() - cpuStart);
@@ -115,9 +115,9 @@ Result<ScenarioRow> framesUntilComplete(Context& c, const std::string& name,
   const uint64_t loadsBefore = c.scene.loader().counters().completed;
   const auto start = Clock::now();
   for (;;) {
-    const app::FrameInfo info =
-        c.scene.update(pose, c.options.widthPixels, c.options.heightPixels, c.renderer);
-    fillStats(row, c.scene.draw(c.renderer));
+    const scene::FrameInfo info =
+        c.scene.update(pose, c.options.widthPixels, c.options.heightPixels, c.gpu);
+    fillStats(row, c.gpu.draw(c.scene));
     render::finishGl();
     ++row.frames;
     if (info.complete) break;
@@ -138,11 +138,11 @@ Result<ScenarioRow> viewerPacedUntilComplete(Context& c, const std::string& name
   const auto start = Clock::now();
   auto lastDraw = start - app::kLoadingRedrawInterval;
   for (;;) {
-    const app::FrameInfo info =
-        c.scene.update(pose, c.options.widthPixels, c.options.heightPixels, c.renderer);
+    const scene::FrameInfo info =
+        c.scene.update(pose, c.options.widthPixels, c.options.heightPixels, c.gpu);
     if (info.complete || Clock::now() - lastDraw >= app::kLoadingRedrawInterval) {
       lastDraw = Clock::now();
-      fillStats(row, c.scene.draw(c.renderer));
+      fillStats(row, c.gpu.draw(c.scene));
       render::finishGl();
       ++row.frames;
     }
@@ -159,9 +159,9 @@ Result<ScenarioRow> viewerPacedUntilComplete(Context& c, const std::string& name
 
 Result<std::vector<ScenarioRow>> runScenarios(const ScenarioOptions& options,
                                               std::string& rendererName) {
-  app::SceneOptions sceneOptions;
+  scene::SceneOptions sceneOptions;
   sceneOptions.maximumScreenSpaceErrorPixels = options.maximumScreenSpaceErrorPixels;
-  auto scene = app::TerrainScene::open(options.pyramid, sceneOptions);
+  auto scene = scene::TerrainScene::open(options.pyramid, sceneOptions);
   if (!scene) return Error{scene.error()};
   auto context = render::OsMesaContext::create(options.widthPixels, options.heightPixels);
   if (!context) return Error{context.error()};
@@ -173,7 +173,8 @@ Result<std::vector<ScenarioRow>> runScenarios(const ScenarioOptions& options,
 
   const auto globe = camera::CameraPose::fromDegrees(138, 30, 20e6);
   const auto fuji = camera::CameraPose::fromDegrees(138.60, 35.20, 3000, 30, -12, 0);
-  Context c{**scene, **renderer, options};
+  app::RendererGpu gpu(**renderer, sceneOptions);
+  Context c{**scene, gpu, options};
   std::vector<ScenarioRow> rows;
   auto cold = framesUntilComplete(c, "cold start -> whole globe complete", globe);
   if (!cold) return Error{cold.error()};
@@ -189,9 +190,9 @@ Result<std::vector<ScenarioRow>> runScenarios(const ScenarioOptions& options,
 
   // The jump again from a cold cache, paced as the interactive viewer paces it.
   (*renderer)->evictAllTiles();
-  auto fresh = app::TerrainScene::open(options.pyramid, sceneOptions);
+  auto fresh = scene::TerrainScene::open(options.pyramid, sceneOptions);
   if (!fresh) return Error{fresh.error()};
-  Context again{**fresh, **renderer, options};
+  Context again{**fresh, gpu, options};
   if (auto globeAgain = framesUntilComplete(again, "globe", globe); !globeAgain) {
     return Error{globeAgain.error()};
   }

@@ -13,12 +13,12 @@
 #include <fstream>
 #include <sstream>
 
-#include "app/terrain_scene.hpp"
 #include "geo/tiling_scheme.hpp"
-#include "render/osmesa_context.hpp"
+#include "scene/bookkeeping_gpu.hpp"
+#include "scene/terrain_scene.hpp"
 #include "tests/tools/tiler/tiler_test_fixture.hpp"
 
-namespace globe::app {
+namespace globe::scene {
 namespace {
 
 namespace fs = std::filesystem;
@@ -75,21 +75,19 @@ struct SceneRun {
 template <class Hook>
 SceneRun view(const fs::path& pyramid, const fs::path& log, Hook beforeViewing) {
   SceneRun run;
-  auto renderer = render::TerrainRenderer::create({});
-  EXPECT_TRUE(renderer) << renderer.error();
+  BookkeepingGpu gpu;
   SceneOptions options;
   options.hysteresis = false;
   auto scene = TerrainScene::open(pyramid, options);
   EXPECT_TRUE(scene) << scene.error();
-  if (!renderer || !scene) return run;
+  if (!scene) return run;
   StderrCapture capture(log);
   beforeViewing(**scene);
-  auto frame = (*scene)->updateUntilComplete(fujiPose(), kWidth, kHeight, **renderer,
-                                             std::chrono::seconds(60));
+  auto frame =
+      (*scene)->updateUntilComplete(fujiPose(), kWidth, kHeight, gpu, std::chrono::seconds(60));
   EXPECT_TRUE(frame) << frame.error();
   for (int i = 0; i < kExtraFrames; ++i) {
-    (*scene)->update(fujiPose(), kWidth, kHeight, **renderer);
-    (*scene)->draw(**renderer);
+    (*scene)->update(fujiPose(), kWidth, kHeight, gpu);
   }
   run.messages = capture.text();
   run.tiles = (*scene)->tiles();
@@ -124,8 +122,6 @@ const Damage kDamages[] = {
 
 // One process for every kind (each test process tiles the pyramid once), repaired in between.
 TEST(SceneFaults, EachDamagedPackIsReportedOnceAndItsParentsAreDrawn) {
-  auto context = render::OsMesaContext::create(kWidth, kHeight);
-  ASSERT_TRUE(context) << context.error();
   const fs::path dir = tiler::testing::freshTempDir("scene-faults");
   const SceneRun reference = view(tiler::testing::bundledPyramid(), dir / "log", [](auto&) {});
   ASSERT_TRUE(reference.messages.empty()) << reference.messages;
@@ -193,4 +189,4 @@ TEST(SceneFaults, EachDamagedPackIsReportedOnceAndItsParentsAreDrawn) {
 }
 
 }  // namespace
-}  // namespace globe::app
+}  // namespace globe::scene

@@ -1,30 +1,27 @@
 // TerrainScene: the collision array always knows the ground under the camera, even when the
 // camera looks at the horizon and its nadir is not drawn; SceneOptions::sea picks the water
 // surface or the sea floor as the ground.
-#include "app/terrain_scene.hpp"
+#include "scene/terrain_scene.hpp"
 
 #include <gtest/gtest.h>
 
 #include "geo/cartographic.hpp"
-#include "render/osmesa_context.hpp"
+#include "scene/bookkeeping_gpu.hpp"
 #include "tests/io/sea_test_pyramid.hpp"
 #include "tests/tools/tiler/tiler_test_fixture.hpp"
 
-namespace globe::app {
+namespace globe::scene {
 namespace {
 
 TEST(TerrainScene, NadirTileJoinsTheCollisionArrayWhenNotDrawn) {
-  auto context = render::OsMesaContext::create(320, 180);
-  ASSERT_TRUE(context) << context.error();
-  auto renderer = render::TerrainRenderer::create({});
-  ASSERT_TRUE(renderer) << renderer.error();
+  BookkeepingGpu gpu;
   SceneOptions options;
   options.hysteresis = false;
   auto scene = TerrainScene::open(tiler::testing::bundledPyramid(), options);
   ASSERT_TRUE(scene) << scene.error();
   // Level, looking north over Fuji's southern slope from 2,500 m: the ground below is out of view.
   const auto pose = camera::CameraPose::fromDegrees(138.60, 35.20, 2500, 0, 0, 0);
-  auto frame = (*scene)->updateUntilComplete(pose, 320, 180, **renderer, std::chrono::seconds(60));
+  auto frame = (*scene)->updateUntilComplete(pose, 320, 180, gpu, std::chrono::seconds(60));
   ASSERT_TRUE(frame) << frame.error();
   const auto& array = (*scene)->renderingTileArray();
   const auto found =
@@ -63,4 +60,4 @@ TEST(TerrainScene, TheSeaOptionChoosesTheGroundOverWater) {
 }
 
 }  // namespace
-}  // namespace globe::app
+}  // namespace globe::scene

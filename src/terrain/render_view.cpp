@@ -1,5 +1,5 @@
 // Helpers that build RenderViews in double precision.
-#include "render/render_view.hpp"
+#include "terrain/render_view.hpp"
 
 #include <algorithm>
 
@@ -7,7 +7,7 @@
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/geometric.hpp>
 
-namespace globe::render {
+namespace globe::terrain {
 
 glm::dmat4 makePerspective(double fovYRadians, double aspect, double nearMeters, double farMeters) {
   return glm::perspective(fovYRadians, aspect, nearMeters, farMeters);
@@ -30,4 +30,4 @@ RenderView makeLookAtView(const glm::dvec3& eyeEcefMeters, const glm::dvec3& tar
   return view;
 }
 
-}  // namespace globe::render
+}  // namespace globe::terrain

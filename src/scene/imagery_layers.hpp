@@ -19,10 +19,10 @@
 #include "geo/tile_id.hpp"
 #include "io/imagery_source.hpp"
 #include "io/task_runner.hpp"
-#include "render/terrain_renderer.hpp"
-#include "render/tile_drape.hpp"
+#include "scene/tile_gpu.hpp"
+#include "terrain/tile_drape.hpp"
 
-namespace globe::app {
+namespace globe::scene {
 
 struct LayerOptions {
   std::filesystem::path directory;  // made by `globe-tiler imagery`
@@ -67,8 +67,7 @@ class ImageryLayers {
   Result<ImageryFrame> update(std::span<const geo::TileId> tiles, uint32_t verticesPerSide,
                               double maximumScreenSpaceErrorPixels, uint32_t maximumLoadLevel,
                               const glm::dvec3& cameraEcefMeters, const geo::Ellipsoid& ellipsoid,
-                              render::TerrainRenderer& renderer,
-                              std::vector<render::TileDrapes>& drapes);
+                              TileGpu& gpu, std::vector<terrain::TileDrapes>& drapes);
 
   // Loader counters summed over the layers.
   io::LoaderCounters counters() const;
@@ -78,8 +77,8 @@ class ImageryLayers {
  private:
   struct Layer;
   ImageryLayers(std::vector<std::unique_ptr<Layer>> layers, const ImageryBudget& budget);
-  Result<void> preload(Layer& layer, uint32_t index, render::TerrainRenderer& renderer);
-  void evictTextures(render::TerrainRenderer& renderer);
+  Result<void> preload(Layer& layer, uint32_t index, TileGpu& gpu);
+  void evictTextures(TileGpu& gpu);
 
   std::vector<std::unique_ptr<Layer>> layers_;
   ImageryBudget budget_;
@@ -87,4 +86,4 @@ class ImageryLayers {
   bool preloaded_ = false;
 };
 
-}  // namespace globe::app
+}  // namespace globe::scene

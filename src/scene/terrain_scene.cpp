@@ -1,4 +1,4 @@
-#include "app/terrain_scene.hpp"
+#include "scene/terrain_scene.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include "terrain/block_grid.hpp"
 #include "terrain/tile_mesh.hpp"
 
-namespace globe::app {
+namespace globe::scene {
 namespace {
 
 // The pyramid index says what exists; the loader's cache says what is drawable.
@@ -84,18 +84,17 @@ Result<std::unique_ptr<TerrainScene>> TerrainScene::open(const std::filesystem::
 }
 
 Result<void> TerrainScene::uploadIfNeeded(const geo::TileId& tile,
-                                          const terrain::HeightBlock& block,
-                                          render::TerrainRenderer& renderer) {
+                                          const terrain::HeightBlock& block, TileGpu& gpu) {
   gpuLastUsedFrame_[tile] = frame_;
-  if (renderer.hasTile(tile)) return {};
+  if (gpu.hasTile(tile)) return {};
   const uint32_t n = store_->manifest().verticesPerSide;
   const auto mesh = terrain::buildTileMesh(
       tile, block, ellipsoid_, terrain::recommendedSkirtDepthMeters(tile.level, n, ellipsoid_));
-  return renderer.uploadTile(tile, mesh);
+  return gpu.prepareTile(tile, mesh);
 }
 
 FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, int heightPixels,
-                               render::TerrainRenderer& renderer) {
+                               TileGpu& gpu) {
   ++frame_;
   FrameInfo info;
   cache_.beginFrame();
@@ -128,11 +127,6 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   view_.heightPixels = heightPixels;
   view_.sunDirectionEcef = sunDirectionFor(ellipsoid_, pose);
   view_.cameraHeightMeters = pose.position.heightMeters;
-  if (renderer.style().sky != options_.sky) {
-    render::TerrainStyle style = renderer.style();
-    style.sky = options_.sky;
-    renderer.setStyle(style);
-  }
 
   terrain::SelectionView selectionView;
   selectionView.cameraEcefMeters = frame.positionEcefMeters;
@@ -165,9 +159,9 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   blocks_.clear();
   std::vector<collision::ArrayTile> arrayTiles;
   for (const geo::TileId& tile : selection.tiles) {
-    const bool onGpu = renderer.hasTile(tile);
+    const bool onGpu = gpu.hasTile(tile);
     auto block = loader_->get(tile);
-    if (block && uploadIfNeeded(tile, *block, renderer)) {
+    if (block && uploadIfNeeded(tile, *block, gpu)) {
       tiles_.push_back(tile);
       arrayTiles.push_back(collision::makeArrayTile(tile, *block));
       blocks_.push_back(std::move(block));
@@ -200,14 +194,14 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
     }
     if (!requests.empty()) loader_->request(requests);
   }
-  updateImagery(frame.positionEcefMeters, renderer, info);
+  updateImagery(frame.positionEcefMeters, gpu, info);
   // Free GPU memory of tiles not drawn for a while, oldest first, once over the budget.
   if (gpuLastUsedFrame_.size() > options_.gpuTileBudget) {
     std::vector<std::pair<uint64_t, geo::TileId>> byAge;
     for (const auto& [tile, last] : gpuLastUsedFrame_) byAge.push_back({last, tile});
     std::sort(byAge.begin(), byAge.end());
     for (size_t k = 0; k < byAge.size() - options_.gpuTileBudget && byAge[k].first < frame_; ++k) {
-      renderer.evictTile(byAge[k].second);
+      gpu.releaseTile(byAge[k].second);
       gpuLastUsedFrame_.erase(byAge[k].second);
     }
   }
@@ -222,30 +216,19 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   return info;
 }
 
-void TerrainScene::updateImagery(const glm::dvec3& cameraEcefMeters,
-                                 render::TerrainRenderer& renderer, FrameInfo& info) {
+void TerrainScene::updateImagery(const glm::dvec3& cameraEcefMeters, TileGpu& gpu,
+                                 FrameInfo& info) {
   if (!imagery_) return;
-  if (!imageryStyleSet_) {
-    render::TerrainStyle style = renderer.style();
-    style.lightImagery = options_.lightImagery;
-    renderer.setStyle(style);
-    imageryStyleSet_ = true;
-  }
   auto frame = imagery_->update(
       tiles_, store_->manifest().verticesPerSide, options_.maximumScreenSpaceErrorPixels,
-      options_.maximumImageryLoadLevel, cameraEcefMeters, ellipsoid_, renderer, drapes_);
+      options_.maximumImageryLoadLevel, cameraEcefMeters, ellipsoid_, gpu, drapes_);
   if (frame) {
     info.imagery = *frame;
     return;
   }
   // A texture that cannot be uploaded: the terrain's own colours rather than no picture.
   std::fprintf(stderr, "globe: imagery: %s\n", frame.error().c_str());
-  drapes_.assign(tiles_.size(), render::TileDrapes{});
-}
-
-render::FrameStats TerrainScene::draw(render::TerrainRenderer& renderer) const {
-  if (imagery_) return renderer.draw(view_, tiles_, drapes_);
-  return renderer.draw(view_, tiles_);
+  drapes_.assign(tiles_.size(), terrain::TileDrapes{});
 }
 
 void TerrainScene::waitForLoads(std::chrono::milliseconds timeout) const {
@@ -257,12 +240,11 @@ void TerrainScene::waitForLoads(std::chrono::milliseconds timeout) const {
 }
 
 Result<FrameInfo> TerrainScene::updateUntilComplete(const camera::CameraPose& pose, int widthPixels,
-                                                    int heightPixels,
-                                                    render::TerrainRenderer& renderer,
+                                                    int heightPixels, TileGpu& gpu,
                                                     std::chrono::seconds timeout) {
   const auto until = std::chrono::steady_clock::now() + timeout;
   for (;;) {
-    FrameInfo info = update(pose, widthPixels, heightPixels, renderer);
+    FrameInfo info = update(pose, widthPixels, heightPixels, gpu);
     if (info.complete) return info;
     if (std::chrono::steady_clock::now() > until) {
       return makeError("the view was not complete after " + std::to_string(timeout.count()) +
@@ -287,4 +269,4 @@ Result<double> TerrainScene::terrainHeightMeters(double longitudeRadians, double
   return 0.0;
 }
 
-}  // namespace globe::app
+}  // namespace globe::scene

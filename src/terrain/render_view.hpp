@@ -6,7 +6,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
-namespace globe::render {
+namespace globe::terrain {
 
 // Farthest distance drawn by default: 100,000 km (the whole globe from 40,000 km fits).
 inline constexpr double kDefaultFarMeters = 1.0e8;
@@ -38,4 +38,4 @@ RenderView makeLookAtView(const glm::dvec3& eyeEcefMeters, const glm::dvec3& tar
                           double nearMeters = kDefaultNearMeters,
                           double farMeters = kDefaultFarMeters);
 
-}  // namespace globe::render
+}  // namespace globe::terrain

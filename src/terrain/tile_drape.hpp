@@ -9,7 +9,7 @@
 
 #include "geo/tile_id.hpp"
 
-namespace globe::render {
+namespace globe::terrain {
 
 inline constexpr uint32_t kMaxDrapeLayers = 4;
 
@@ -30,4 +30,4 @@ struct TileDrapes {
   uint32_t count = 0;
 };
 
-}  // namespace globe::render
+}  // namespace globe::terrain

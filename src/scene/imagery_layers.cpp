@@ -1,15 +1,17 @@
-#include "app/imagery_layers.hpp"
+#include "scene/imagery_layers.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <tuple>
 
+#include <glm/geometric.hpp>
+
 #include "geo/ecef.hpp"
 #include "geo/tiling_scheme.hpp"
 #include "terrain/imagery_level.hpp"
 
-namespace globe::app {
+namespace globe::scene {
 
 struct ImageryLayers::Layer {
   LayerOptions options;
@@ -73,8 +75,8 @@ ImageryLayers::~ImageryLayers() = default;
 Result<std::unique_ptr<ImageryLayers>> ImageryLayers::open(std::span<const LayerOptions> layers,
                                                            io::TaskRunner& runner,
                                                            const ImageryBudget& budget) {
-  if (layers.size() > render::kMaxDrapeLayers) {
-    return makeError("at most " + std::to_string(render::kMaxDrapeLayers) + " layers, not " +
+  if (layers.size() > terrain::kMaxDrapeLayers) {
+    return makeError("at most " + std::to_string(terrain::kMaxDrapeLayers) + " layers, not " +
                      std::to_string(layers.size()));
   }
   std::vector<std::unique_ptr<Layer>> opened;
@@ -87,15 +89,14 @@ Result<std::unique_ptr<ImageryLayers>> ImageryLayers::open(std::span<const Layer
   return std::unique_ptr<ImageryLayers>(new ImageryLayers(std::move(opened), budget));
 }
 
-Result<void> ImageryLayers::preload(Layer& layer, uint32_t index,
-                                    render::TerrainRenderer& renderer) {
+Result<void> ImageryLayers::preload(Layer& layer, uint32_t index, TileGpu& gpu) {
   for (uint32_t x = 0; x < geo::GeographicTilingScheme::tilesX(0); ++x) {
     const geo::TileId root{0, x, 0};
     auto image = layer.source->load(root);
     if (!image) return Error{image.error()};
     if (!*image) continue;  // the layer covers nothing of this half
-    if (auto uploaded = renderer.uploadImageryTile(index, root, (*image)->pixels,
-                                                   (*image)->widthPixels, (*image)->heightPixels);
+    if (auto uploaded = gpu.prepareImageryTile(index, root, (*image)->pixels, (*image)->widthPixels,
+                                               (*image)->heightPixels);
         !uploaded) {
       return uploaded;
     }
@@ -104,17 +105,19 @@ Result<void> ImageryLayers::preload(Layer& layer, uint32_t index,
   return {};
 }
 
-Result<ImageryFrame> ImageryLayers::update(
-    std::span<const geo::TileId> tiles, uint32_t verticesPerSide,
-    double maximumScreenSpaceErrorPixels, uint32_t maximumLoadLevel,
-    const glm::dvec3& cameraEcefMeters, const geo::Ellipsoid& ellipsoid,
-    render::TerrainRenderer& renderer, std::vector<render::TileDrapes>& drapes) {
+Result<ImageryFrame> ImageryLayers::update(std::span<const geo::TileId> tiles,
+                                           uint32_t verticesPerSide,
+                                           double maximumScreenSpaceErrorPixels,
+                                           uint32_t maximumLoadLevel,
+                                           const glm::dvec3& cameraEcefMeters,
+                                           const geo::Ellipsoid& ellipsoid, TileGpu& gpu,
+                                           std::vector<terrain::TileDrapes>& drapes) {
   ++frame_;
   ImageryFrame frame;
-  drapes.assign(tiles.size(), render::TileDrapes{});
+  drapes.assign(tiles.size(), terrain::TileDrapes{});
   if (!preloaded_) {
     for (uint32_t index = 0; index < layers_.size(); ++index) {
-      if (auto done = preload(*layers_[index], index, renderer); !done) {
+      if (auto done = preload(*layers_[index], index, gpu); !done) {
         return Error{done.error()};
       }
     }
@@ -160,11 +163,11 @@ Result<ImageryFrame> ImageryLayers::update(
       geo::TileId drawn = want;
       bool found = false;
       for (;;) {
-        if (renderer.hasImageryTile(index, drawn)) {
+        if (gpu.hasImageryTile(index, drawn)) {
           found = true;
         } else if (auto image = layer.cache.get(drawn)) {
-          if (auto uploaded = renderer.uploadImageryTile(index, drawn, image->pixels,
-                                                         image->widthPixels, image->heightPixels);
+          if (auto uploaded = gpu.prepareImageryTile(index, drawn, image->pixels,
+                                                     image->widthPixels, image->heightPixels);
               !uploaded) {
             return Error{uploaded.error()};
           }
@@ -184,8 +187,8 @@ Result<ImageryFrame> ImageryLayers::update(
       if (!found) continue;
       if (drawn != want) ++frame.fallbacks;
       layer.textureLastUsedFrame[drawn] = frame_;
-      render::TileDrapes& tileDrapes = drapes[i];
-      tileDrapes.layers[tileDrapes.count++] = render::TileDrape{
+      terrain::TileDrapes& tileDrapes = drapes[i];
+      tileDrapes.layers[tileDrapes.count++] = terrain::TileDrape{
           index, drawn, terrain::uvTransformInAncestor(tile, drawn), layer.options.opacity};
       ++frame.drapes;
     }
@@ -194,12 +197,12 @@ Result<ImageryFrame> ImageryLayers::update(
     frame.requests += wanted.size();
     if (layer.loader->counters().inFlight > 0) frame.complete = false;
   }
-  evictTextures(renderer);
+  evictTextures(gpu);
   return frame;
 }
 
-void ImageryLayers::evictTextures(render::TerrainRenderer& renderer) {
-  if (renderer.imageryBytesResident() <= budget_.textureBytes) return;
+void ImageryLayers::evictTextures(TileGpu& gpu) {
+  if (gpu.imageryBytesResident() <= budget_.textureBytes) return;
   // Least recently drawn first; never this frame's, never a level-0 root (the last fallback).
   std::vector<std::tuple<uint64_t, uint32_t, geo::TileId>> byAge;
   for (uint32_t index = 0; index < layers_.size(); ++index) {
@@ -209,8 +212,8 @@ void ImageryLayers::evictTextures(render::TerrainRenderer& renderer) {
   }
   std::sort(byAge.begin(), byAge.end());
   for (const auto& [last, index, tile] : byAge) {
-    if (renderer.imageryBytesResident() <= budget_.textureBytes) break;
-    renderer.evictImageryTile(index, tile);
+    if (gpu.imageryBytesResident() <= budget_.textureBytes) break;
+    gpu.releaseImageryTile(index, tile);
     layers_[index]->textureLastUsedFrame.erase(tile);
   }
 }
@@ -240,4 +243,4 @@ void ImageryLayers::waitForLoads(std::chrono::milliseconds timeout) const {
   }
 }
 
-}  // namespace globe::app
+}  // namespace globe::scene

@@ -1,5 +1,6 @@
-// One viewer frame's wiring: camera pose → view → tile selection → loads → meshes on the GPU →
-// draw. Shared by `globe snapshot`, `globe view` and the benchmarks.
+// One viewer frame's wiring, with no GL: camera pose → view → tile selection → loads → meshes
+// and textures prepared on a TileGpu → the collision array. Shared by `globe snapshot`, `view`,
+// `play`, the soak and the benchmarks; the caller draws view(), tiles() and drapes().
 #pragma once
 
 #include <chrono>
@@ -9,7 +10,6 @@
 #include <unordered_map>
 #include <vector>
 
-#include "app/imagery_layers.hpp"
 #include "camera/camera_pose.hpp"
 #include "collision/rendering_tile_array.hpp"
 #include "geo/ellipsoid.hpp"
@@ -18,12 +18,13 @@
 #include "io/thread_pool_runner.hpp"
 #include "io/tile_loader.hpp"
 #include "io/tile_store.hpp"
-#include "render/render_view.hpp"
-#include "render/terrain_renderer.hpp"
+#include "scene/imagery_layers.hpp"
+#include "scene/tile_gpu.hpp"
 #include "terrain/height_block.hpp"
+#include "terrain/render_view.hpp"
 #include "terrain/tile_selection.hpp"
 
-namespace globe::app {
+namespace globe::scene {
 
 struct SceneOptions {
   geo::GlobeModel globeModel = geo::GlobeModel::Wgs84;
@@ -70,14 +71,13 @@ class TerrainScene {
   // The imagery layers, or null without --layer.
   const ImageryLayers* imagery() const { return imagery_.get(); }
   // Per tile of tiles(), the imagery drawn on it (empty without layers).
-  const std::vector<render::TileDrapes>& drapes() const { return drapes_; }
+  const std::vector<terrain::TileDrapes>& drapes() const { return drapes_; }
   const SceneOptions& options() const { return options_; }
 
-  // Selects and streams the tiles for this pose; uploads what arrived to the renderer.
-  FrameInfo update(const camera::CameraPose& pose, int widthPixels, int heightPixels,
-                   render::TerrainRenderer& renderer);
-  render::FrameStats draw(render::TerrainRenderer& renderer) const;
-  const render::RenderView& view() const { return view_; }
+  // Selects and streams the tiles for this pose; prepares what arrived on the GPU and releases
+  // what has not been drawn for a while. Draw view() with tiles() and drapes() afterwards.
+  FrameInfo update(const camera::CameraPose& pose, int widthPixels, int heightPixels, TileGpu& gpu);
+  const terrain::RenderView& view() const { return view_; }
   const std::vector<geo::TileId>& tiles() const { return tiles_; }
   // This frame's rendering tile array with its blocks: what collision runs against (the paper's
   // "rendering terrain tiles array"), exactly the tiles drawn.
@@ -89,15 +89,14 @@ class TerrainScene {
 
   // Runs update() until the view is complete (or the timeout), for deterministic images.
   Result<FrameInfo> updateUntilComplete(const camera::CameraPose& pose, int widthPixels,
-                                        int heightPixels, render::TerrainRenderer& renderer,
+                                        int heightPixels, TileGpu& gpu,
                                         std::chrono::seconds timeout);
 
  private:
   TerrainScene(std::unique_ptr<io::TileStore> store, const SceneOptions& options);
-  void updateImagery(const glm::dvec3& cameraEcefMeters, render::TerrainRenderer& renderer,
-                     FrameInfo& info);
+  void updateImagery(const glm::dvec3& cameraEcefMeters, TileGpu& gpu, FrameInfo& info);
   Result<void> uploadIfNeeded(const geo::TileId& tile, const terrain::HeightBlock& block,
-                              render::TerrainRenderer& renderer);
+                              TileGpu& gpu);
 
   SceneOptions options_;
   geo::Ellipsoid ellipsoid_;
@@ -106,15 +105,14 @@ class TerrainScene {
   io::ThreadPoolRunner runner_;
   std::unique_ptr<io::TileLoader> loader_;
   std::unique_ptr<ImageryLayers> imagery_;
-  std::vector<render::TileDrapes> drapes_;  // per tile of tiles_, with imagery
-  bool imageryStyleSet_ = false;
+  std::vector<terrain::TileDrapes> drapes_;  // per tile of tiles_, with imagery
   std::vector<geo::TileId> tiles_;
   std::vector<std::shared_ptr<const terrain::HeightBlock>>
       blocks_;  // keep the array's blocks alive
   collision::RenderingTileArray array_;
-  render::RenderView view_;
+  terrain::RenderView view_;
   uint64_t frame_ = 0;
   std::unordered_map<geo::TileId, uint64_t> gpuLastUsedFrame_;
 };
 
-}  // namespace globe::app
+}  // namespace globe::scene
