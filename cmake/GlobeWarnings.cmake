@@ -43,7 +43,6 @@ function(globe_test name)
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} GTest::gtest_main GTest::gmock globe_warnings)
   target_compile_definitions(${name} PRIVATE
-    GLOBE_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
-    GLOBE_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared")
+    GLOBE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   gtest_discover_tests(${name} TEST_PREFIX "${name}." DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 600)
 endfunction()

@@ -1,8 +1,27 @@
 #!/usr/bin/env bash
-# Builds globe with warnings as errors and runs the whole test suite with CTest.
+# Builds globe's tests in the same build directory and with the same flags as tools/setup.sh (so
+# nothing is rebuilt that setup built) and runs the whole suite with CTest. Without a display
+# the suite runs under xvfb-run, so the GLFW window tests run too. Any skipped test is listed at
+# the end, loudly. BUILD_DIR (default build) and GLOBE_WERROR=ON (CI) change the directory and
+# add warnings as errors.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${BUILD_DIR:-build}
-cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLOBE_WERROR=ON >/dev/null
+EXTRA=()
+if [ -n "${GLOBE_WERROR:-}" ]; then EXTRA+=(-DGLOBE_WERROR="$GLOBE_WERROR"); fi
+bash tools/configure.sh "$BUILD" "${EXTRA[@]}"
 cmake --build "$BUILD" -j"$(nproc)"
-ctest --test-dir "$BUILD" -j"$(nproc)" --output-on-failure --timeout 900
+CTEST=(ctest --test-dir "$BUILD" -j"$(nproc)" --output-on-failure --timeout 900)
+if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null 2>&1; then
+  CTEST=(xvfb-run -a -s "-screen 0 1280x1024x24" "${CTEST[@]}")
+fi
+status=0
+"${CTEST[@]}" 2>&1 | tee "$BUILD/ctest-output.txt" || status=$?
+skipped=$(grep -E '\(Skipped\)$' "$BUILD/ctest-output.txt" || true)
+if [ -n "$skipped" ]; then
+  echo
+  echo "!!! $(echo "$skipped" | wc -l) test(s) SKIPPED: they did not run here. Their reasons are in"
+  echo "!!! $BUILD/Testing/Temporary/LastTest.log; README.md, 'Tests that need more', says what each needs."
+  echo "$skipped" | sed 's/^/!!!   /'
+fi
+exit $status

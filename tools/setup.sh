@@ -9,8 +9,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install-deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build build -j"$(nproc)"
+# Only the two programs the main job runs; tools/run-tests.sh builds the rest in the same
+# directory with the same flags.
+bash tools/configure.sh build
+cmake --build build -j"$(nproc)" --target globe globe-tiler
 ./build/tools/tiler/globe-tiler -o pyramid data/dem/ETOPO20.DEM data/dem/W002N52.DEM \
   data/dem/E138N35_FUJI.DEM data/dem/zion-srtm3.tif
 ./build/tools/tiler/globe-tiler imagery -o layers/blue-marble --bounds -180,-90,180,90 \

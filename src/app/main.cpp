@@ -12,12 +12,15 @@
 #include "app/snapshot_command.hpp"
 #include "app/view_command.hpp"
 #include "geo/ellipsoid.hpp"
+#include "globe_version.hpp"
 #include "io/pyramid_manifest.hpp"
 #include "terrain/height_block.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"globe: a virtual-globe terrain viewer with real-time camera-terrain collision",
                "globe"};
+  app.set_version_flag(
+      "--version", std::string("globe ") + globe::kVersion + " (" + globe::kSourceRevision + ")");
   app.require_subcommand(1);
   std::string globeName = "wgs84";
   auto addGlobe = [&](CLI::App* command) {

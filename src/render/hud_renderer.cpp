@@ -95,7 +95,7 @@ Result<std::unique_ptr<HudRenderer>> HudRenderer::create(
     const std::filesystem::path& shaderDirectory) {
   const std::filesystem::path dir =
       shaderDirectory.empty() ? defaultShaderDirectory() : shaderDirectory;
-  auto program = loadShaderProgram(dir / "hud.vert", dir / "hud.frag");
+  auto program = loadNamedShaderProgram(dir, "hud.vert", "hud.frag");
   if (!program) return makeError(program.error());
   auto impl = std::make_unique<Impl>();
   impl->program = std::move(*program);

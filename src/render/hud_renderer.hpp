@@ -38,7 +38,7 @@ std::vector<HudVertex> buildHudTriangles(std::span<const HudTextBlock> blocks);
 // Needs a current GL 3.3 core context for its whole life, like TerrainRenderer.
 class HudRenderer {
  public:
-  // Loads <shaderDirectory>/hud.vert and hud.frag (empty: defaultShaderDirectory()).
+  // Loads <shaderDirectory>/hud.vert and hud.frag (empty: defaultShaderDirectory(), embedded).
   static Result<std::unique_ptr<HudRenderer>> create(const std::filesystem::path& shaderDirectory);
   ~HudRenderer();
   HudRenderer(const HudRenderer&) = delete;

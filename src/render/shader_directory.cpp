@@ -1,11 +1,10 @@
-// The shader directory: environment override, else the compile-time default.
+// The shader directory: an environment override, else the shaders compiled into the program.
 #include "render/shader_directory.hpp"
 
 #include <cstdlib>
+#include <string>
 
-#ifndef GLOBE_SHADER_DIR
-#error "GLOBE_SHADER_DIR must be defined by the build (src/render/CMakeLists.txt)"
-#endif
+#include "render/embedded_shaders.hpp"
 
 namespace globe::render {
 
@@ -14,7 +13,23 @@ std::filesystem::path defaultShaderDirectory() {
       fromEnvironment != nullptr && fromEnvironment[0] != '\0') {
     return fromEnvironment;
   }
-  return GLOBE_SHADER_DIR;
+  return {};
+}
+
+Result<ShaderProgram> loadNamedShaderProgram(const std::filesystem::path& directory,
+                                             std::string_view vertexName,
+                                             std::string_view fragmentName,
+                                             std::string_view defines) {
+  if (!directory.empty()) {
+    return loadShaderProgram(directory / vertexName, directory / fragmentName, defines);
+  }
+  const auto vertex = embeddedShader(vertexName);
+  const auto fragment = embeddedShader(fragmentName);
+  for (const auto& [name, text] : {std::pair{vertexName, vertex}, {fragmentName, fragment}}) {
+    if (!text) return makeError("embedded:" + std::string(name) + ": no such shader in the build");
+  }
+  return buildShaderProgram(*vertex, "embedded:" + std::string(vertexName), *fragment,
+                            "embedded:" + std::string(fragmentName), defines);
 }
 
 }  // namespace globe::render

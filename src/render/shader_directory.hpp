@@ -1,12 +1,23 @@
-// Where GLSL files are read from at run time.
+// Where GLSL sources come from at run time.
 #pragma once
 
 #include <filesystem>
+#include <string_view>
+
+#include "geo/result.hpp"
+#include "render/shader_program.hpp"
 
 namespace globe::render {
 
-// $GLOBE_SHADER_DIR when set and non-empty, else the build's default: the GLOBE_SHADER_DIR CMake
-// cache variable, which defaults to the source tree's shaders/ folder.
+// $GLOBE_SHADER_DIR when set and non-empty (to try shader edits without rebuilding), else empty:
+// the shaders compiled into the program (render/embedded_shaders.hpp).
 std::filesystem::path defaultShaderDirectory();
+
+// Builds <directory>/<vertexName> + <fragmentName>, or the embedded shaders of those names when
+// `directory` is empty (error messages then name them "embedded:<name>").
+Result<ShaderProgram> loadNamedShaderProgram(const std::filesystem::path& directory,
+                                             std::string_view vertexName,
+                                             std::string_view fragmentName,
+                                             std::string_view defines = {});
 
 }  // namespace globe::render

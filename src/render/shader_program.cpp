@@ -77,10 +77,12 @@ Result<GlObject> compileShader(GLenum type, std::string_view source, std::string
 
 Result<ShaderProgram> buildShaderProgram(std::string_view vertexSource, std::string_view vertexName,
                                          std::string_view fragmentSource,
-                                         std::string_view fragmentName) {
-  auto vertex = compileShader(GL_VERTEX_SHADER, vertexSource, vertexName);
+                                         std::string_view fragmentName, std::string_view defines) {
+  auto vertex =
+      compileShader(GL_VERTEX_SHADER, withDefines(std::string(vertexSource), defines), vertexName);
   if (!vertex) return makeError(vertex.error());
-  auto fragment = compileShader(GL_FRAGMENT_SHADER, fragmentSource, fragmentName);
+  auto fragment = compileShader(GL_FRAGMENT_SHADER,
+                                withDefines(std::string(fragmentSource), defines), fragmentName);
   if (!fragment) return makeError(fragment.error());
   GlObject program = makeGlProgram();
   glAttachShader(program.get(), vertex->get());
@@ -104,9 +106,8 @@ Result<ShaderProgram> loadShaderProgram(const std::filesystem::path& vertexPath,
   if (!vertexSource) return makeError(vertexSource.error());
   auto fragmentSource = readTextFile(fragmentPath);
   if (!fragmentSource) return makeError(fragmentSource.error());
-  return buildShaderProgram(withDefines(std::move(*vertexSource), defines), vertexPath.string(),
-                            withDefines(std::move(*fragmentSource), defines),
-                            fragmentPath.string());
+  return buildShaderProgram(*vertexSource, vertexPath.string(), *fragmentSource,
+                            fragmentPath.string(), defines);
 }
 
 }  // namespace globe::render

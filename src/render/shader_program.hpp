@@ -34,6 +34,7 @@ Result<ShaderProgram> loadShaderProgram(const std::filesystem::path& vertexPath,
 // The same from sources in memory; the names stand in for file names in error messages.
 Result<ShaderProgram> buildShaderProgram(std::string_view vertexSource, std::string_view vertexName,
                                          std::string_view fragmentSource,
-                                         std::string_view fragmentName);
+                                         std::string_view fragmentName,
+                                         std::string_view defines = {});
 
 }  // namespace globe::render

@@ -7,10 +7,12 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
+#include "render/shader_directory.hpp"
+
 namespace globe::render {
 
 Result<std::unique_ptr<SkyPass>> SkyPass::create(const std::filesystem::path& shaderDirectory) {
-  auto program = loadShaderProgram(shaderDirectory / "sky.vert", shaderDirectory / "sky.frag");
+  auto program = loadNamedShaderProgram(shaderDirectory, "sky.vert", "sky.frag");
   if (!program) return Error{program.error()};
   std::unique_ptr<SkyPass> pass(new SkyPass());
   pass->program_ = std::move(*program);
@@ -28,7 +30,9 @@ Result<std::unique_ptr<SkyPass>> SkyPass::create(const std::filesystem::path& sh
   u.spaceBlend = p.uniformLocation("u_spaceBlend");
   u.horizonCosine = p.uniformLocation("u_horizonCosine");
   if (u.inverseViewProjection < 0 || u.up < 0) {
-    return makeError((shaderDirectory / "sky.frag").string() +
+    return makeError((shaderDirectory.empty() ? std::filesystem::path("embedded:sky.frag")
+                                              : shaderDirectory / "sky.frag")
+                         .string() +
                      ": the program lacks u_inverseViewProjection or u_up");
   }
   return pass;

@@ -15,7 +15,8 @@ namespace globe::render {
 
 class SkyPass {
  public:
-  // Loads <shaderDirectory>/sky.vert and sky.frag; needs a current GL 3.3 core context.
+  // Loads <shaderDirectory>/sky.vert and sky.frag (empty: the embedded ones); needs a current
+  // GL 3.3 core context.
   static Result<std::unique_ptr<SkyPass>> create(const std::filesystem::path& shaderDirectory);
   // The sky for this view; leaves depth testing as it found it (enabled or not) and depth
   // writes on.

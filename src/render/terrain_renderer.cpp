@@ -161,7 +161,7 @@ Result<const TerrainRenderer::Impl::Program*> TerrainRenderer::Impl::program(
       (lightImagery ? "#define GLOBE_LIGHT_IMAGERY 1\n" : "") +
       (opaqueBase ? "#define GLOBE_OPAQUE_BASE 1\n" : "") +
       (vertexDepth ? "#define GLOBE_VERTEX_LOG_DEPTH 1\n" : "");
-  auto loaded = loadShaderProgram(dir / "terrain.vert", dir / "terrain.frag", defines);
+  auto loaded = loadNamedShaderProgram(dir, "terrain.vert", "terrain.frag", defines);
   if (!loaded) return Error{loaded.error()};
   Program target;
   target.program = std::move(*loaded);

@@ -20,7 +20,7 @@ namespace globe::render {
 
 struct TerrainRendererOptions {
   std::filesystem::path
-      shaderDirectory;            // holds terrain.vert/.frag; empty: defaultShaderDirectory()
+      shaderDirectory;  // holds terrain.vert/.frag; empty: defaultShaderDirectory() (embedded)
   uint32_t verticesPerSide = 17;  // every uploaded mesh must have this block size
   bool skirts = true;             // every uploaded mesh must have skirts iff this is set
   // Anisotropic filtering of imagery tiles, at most this many samples (where the GL has

@@ -11,7 +11,7 @@ namespace globe::render::test {
 namespace {
 
 const std::filesystem::path kBlueMarble =
-    std::filesystem::path(GLOBE_SHARED_DIR) / "data/imagery/bmng-world-2048x1024.jpg";
+    std::filesystem::path(GLOBE_SOURCE_DIR) / "tests/data/imagery/bmng-world-2048x1024.jpg";
 
 TEST(ImageIo, PngRoundTripAndClearErrors) {
   const auto dir = outputDirectory();
@@ -45,7 +45,7 @@ TEST(ImageIo, PngRoundTripAndClearErrors) {
 class Imagery : public RenderTest {};
 
 TEST_F(Imagery, BlueMarbleDrapesOverTheGlobe) {
-  if (!std::filesystem::exists(kBlueMarble)) GTEST_SKIP() << kBlueMarble << " not present";
+  ASSERT_TRUE(std::filesystem::exists(kBlueMarble)) << kBlueMarble << " is missing";
   auto image = io::loadImageRgba(kBlueMarble);
   ASSERT_TRUE(image.ok()) << image.error();
   EXPECT_EQ(image->widthPixels, 2048);

@@ -4,7 +4,10 @@
 #include <unistd.h>
 
 #include <fstream>
+#include <iterator>
+#include <string>
 
+#include "render/embedded_shaders.hpp"
 #include "render/osmesa_context.hpp"
 #include "render/shader_directory.hpp"
 #include "render/shader_program.hpp"
@@ -47,8 +50,7 @@ out vec4 o_color;
 void main() { o_color = vec4(v_color, 1.0); })";
 
 TEST_F(ShaderProgramTest, RealTerrainShadersBuild) {
-  const auto dir = defaultShaderDirectory();
-  auto program = loadShaderProgram(dir / "terrain.vert", dir / "terrain.frag");
+  auto program = loadNamedShaderProgram(defaultShaderDirectory(), "terrain.vert", "terrain.frag");
   ASSERT_TRUE(program.ok()) << program.error();
   EXPECT_NE(program->id(), 0u);
   EXPECT_GE(program->uniformLocation("u_modelView"), 0);
@@ -102,7 +104,30 @@ TEST_F(ShaderProgramTest, EnvironmentOverridesTheShaderDirectory) {
   ::setenv("GLOBE_SHADER_DIR", dir_.c_str(), 1);
   EXPECT_EQ(defaultShaderDirectory(), dir_);
   ::unsetenv("GLOBE_SHADER_DIR");
-  EXPECT_TRUE(std::filesystem::exists(defaultShaderDirectory() / "terrain.frag"));
+  EXPECT_TRUE(defaultShaderDirectory().empty());  // the embedded shaders
+}
+
+// The program carries every file of shaders/ as it is in the source tree: nothing is read from
+// the checkout at run time, and nothing embedded is stale.
+TEST_F(ShaderProgramTest, EmbeddedShadersAreTheSourceTreesFiles) {
+  const std::filesystem::path source = std::filesystem::path(GLOBE_SOURCE_DIR) / "shaders";
+  size_t files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(source)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.path().extension() != ".vert" && entry.path().extension() != ".frag") continue;
+    ++files;
+    std::ifstream in(entry.path(), std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto embedded = embeddedShader(name);
+    ASSERT_TRUE(embedded) << name << " is not embedded";
+    EXPECT_EQ(*embedded, text) << name;
+  }
+  EXPECT_GE(files, 6u);
+  EXPECT_EQ(embeddedShaderNames().size(), files);
+  EXPECT_FALSE(embeddedShader("nothing.frag"));
+  auto missing = loadNamedShaderProgram({}, "terrain.vert", "nothing.frag");
+  ASSERT_FALSE(missing);
+  EXPECT_NE(missing.error().find("embedded:nothing.frag"), std::string::npos) << missing.error();
 }
 
 }  // namespace

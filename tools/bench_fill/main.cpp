@@ -80,9 +80,9 @@ int main(int argc, char** argv) {
       "Fill accuracy of dem::fillVoids against GDALFillNodata on holes cut into real "
       "real tiles."};
   const std::string source = GLOBE_SOURCE_DIR;
-  std::vector<std::string> tiles = {source + "/tests/data/dem/N50E008.DEM",
+  std::vector<std::string> tiles = {source + "/tests/data/dem/gtopo30/N50E008.DEM",
                                     source + "/data/dem/W002N52.DEM",
-                                    source + "/tests/data/dem/N57E011.DEM"};
+                                    source + "/tests/data/dem/gtopo30/N57E011.DEM"};
   std::string etopoPath = source + "/data/dem/ETOPO20.DEM";
   std::string outPath;
   BenchOptions options;

@@ -13,7 +13,7 @@
 #include <thread>
 #include <vector>
 
-#include "render/shader_directory.hpp"
+#include "render/embedded_shaders.hpp"
 #include "render_scenarios.hpp"
 #include "tools/tiler/tiler.hpp"
 
@@ -27,30 +27,28 @@ std::string shellQuote(const std::string& text) {
   return quoted + "'";
 }
 
-// The default shaders with the per-fragment depth write removed (an experiment: the image is wrong,
-// the cost of gl_FragDepth is the difference in frame time).
+// The default (embedded) shaders with the per-fragment depth write removed (an experiment: the
+// image is wrong, the cost of gl_FragDepth is the difference in frame time).
 Result<std::filesystem::path> shadersWithoutFragDepth(const std::filesystem::path& scratch) {
-  const auto from = render::defaultShaderDirectory();
   const auto to = scratch / "shaders-no-frag-depth";
   std::filesystem::create_directories(to);
-  std::error_code error;
-  std::filesystem::copy_file(from / "terrain.vert", to / "terrain.vert",
-                             std::filesystem::copy_options::overwrite_existing, error);
-  if (error) return makeError("cannot copy " + (from / "terrain.vert").string());
-  std::ifstream in(from / "terrain.frag");
-  std::ofstream out(to / "terrain.frag");
-  std::string line;
   bool removed = false;
-  while (std::getline(in, line)) {
-    if (line.find("gl_FragDepth") != std::string::npos) {
-      // Keeps u_logDepthScale in use (the renderer requires it) without writing the depth.
-      out << "  o_color.a = min(1.0, 1.0 + u_logDepthScale * v_logDepth);\n";
-      removed = true;
-      continue;
+  for (const std::string_view name : render::embeddedShaderNames()) {
+    std::istringstream in{std::string(*render::embeddedShader(name))};
+    std::ofstream out(to / name);
+    std::string line;
+    while (std::getline(in, line)) {
+      if (name == "terrain.frag" && line.find("gl_FragDepth") != std::string::npos) {
+        // Keeps u_logDepthScale in use (the renderer requires it) without writing the depth.
+        out << "  o_color.a = min(1.0, 1.0 + u_logDepthScale * v_logDepth);\n";
+        removed = true;
+        continue;
+      }
+      out << line << '\n';
     }
-    out << line << '\n';
+    if (!out) return makeError("cannot write " + (to / name).string());
   }
-  if (!removed) return makeError("no gl_FragDepth line in " + (from / "terrain.frag").string());
+  if (!removed) return makeError("no gl_FragDepth line in the embedded terrain.frag");
   return to;
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "geo/ellipsoid.hpp"
+#include "globe_version.hpp"
 #include "tools/tiler/export_block.hpp"
 #include "tools/tiler/imagery_command.hpp"
 #include "tools/tiler/progress.hpp"
@@ -46,6 +47,8 @@ int main(int argc, char** argv) {
       "OUT_STEM\n      "
       "globe-tiler imagery -o LAYER_DIR INPUT... (imagery layers; see globe-tiler imagery --help)",
       "globe-tiler"};
+  app.set_version_flag("--version", std::string("globe-tiler ") + globe::kVersion + " (" +
+                                        globe::kSourceRevision + ")");
   globe::tiler::TilerOptions options;
   std::string output, globeName = "wgs84";
   uint32_t maxLevel = 0;

@@ -237,7 +237,8 @@ TEST(TilerConditioning, SrtmZeroMetreSeaIsWater) {
 
 TEST(TilerConditioning, TheKattegatAtZeroMetresIsWater) {
   // N57E011 is mostly sea written as exactly 0 m; tiled with the 20′ grid, that sea is water.
-  const std::string kattegat = std::string(GLOBE_SOURCE_DIR) + "/tests/data/dem/N57E011.DEM";
+  const std::string kattegat =
+      std::string(GLOBE_SOURCE_DIR) + "/tests/data/dem/gtopo30/N57E011.DEM";
   const auto dir = testing::freshTempDir("kattegat");
   TilerOptions options;
   options.inputs = {kWorld, kattegat};
