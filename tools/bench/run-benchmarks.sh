@@ -48,4 +48,4 @@ export PINNED="${PIN[*]:-}"
 export COMMIT=$(git -C "$REPO" rev-parse --short HEAD 2>/dev/null || echo unknown)
 export DIRTY=$(git -C "$REPO" status --porcelain 2>/dev/null | head -c1)
 MPLBACKEND=Agg "$PYTHON" "$REPO/tools/bench/make_report.py" --results "$RESULTS" \
-  --doc "$REPO/docs/performance-collision.md" --plots "$REPO/tools/bench"
+  --doc "$REPO/docs/performance-collision.md" --plots "$REPO/tools/bench" --readme "$REPO/README.md"
