@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "geo/cartographic.hpp"
@@ -72,6 +73,34 @@ void OrbitControls::clampPose() {
   pose_.position.heightMeters = std::clamp(
       pose_.position.heightMeters, groundHeightMeters_ + limits_.minimumClearanceMeters,
       std::max(limits_.maximumHeightMeters, groundHeightMeters_ + limits_.minimumClearanceMeters));
+}
+
+std::vector<std::string> describeStartClamp(const camera::CameraPose& asked,
+                                            const camera::CameraPose& started) {
+  std::vector<std::string> said;
+  const auto degrees = [](double radians) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g°", std::round(geo::radiansToDegrees(radians) * 1e3) / 1e3);
+    return std::string(text);
+  };
+  if (asked.pitchRadians != started.pitchRadians) {
+    said.push_back("pitch " + degrees(asked.pitchRadians) + " is beyond what orbit mode looks at " +
+                   "(straight down to level): starting at " + degrees(started.pitchRadians) +
+                   (asked.pitchRadians > started.pitchRadians ? "; fly mode (F) looks up" : ""));
+  }
+  if (asked.position.latitudeRadians != started.position.latitudeRadians) {
+    said.push_back("latitude " + degrees(asked.position.latitudeRadians) +
+                   " is closer to the pole than orbit mode goes: starting at " +
+                   degrees(started.position.latitudeRadians));
+  }
+  if (asked.position.heightMeters != started.position.heightMeters) {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "height %.0f m is outside orbit mode's range: starting at %.0f m",
+                  asked.position.heightMeters, started.position.heightMeters);
+    said.emplace_back(text);
+  }
+  return said;
 }
 
 }  // namespace globe::app

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "camera/camera_pose.hpp"
 #include "geo/cartographic.hpp"
@@ -57,5 +59,10 @@ class OrbitControls {
   OrbitLimits limits_;
   double groundHeightMeters_ = 0;
 };
+
+// What the orbit limits changed in a start pose (`asked` → `started`, OrbitControls::home()), one
+// sentence per field naming the value asked for and the value used; empty when nothing changed.
+std::vector<std::string> describeStartClamp(const camera::CameraPose& asked,
+                                            const camera::CameraPose& started);
 
 }  // namespace globe::app

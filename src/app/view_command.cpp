@@ -156,7 +156,11 @@ Result<ViewReport> runView(const ViewOptions& options) {
   const geo::Ellipsoid& ellipsoid = (*scene)->ellipsoid();
   const double fovY = options.scene.fovYRadians;
   OrbitControls controls(ellipsoid, options.pose, fovY);
-  camera::CameraController controller(options.pose);
+  // A start pose orbit mode cannot show is changed, and said so (never silently).
+  for (const std::string& clamp : describeStartClamp(options.pose, controls.home())) {
+    std::fprintf(stderr, "globe view: --camera %s\n", clamp.c_str());
+  }
+  camera::CameraController controller(controls.home());
   ViewInput input;
   input.orbit = &controls;
   GLFWwindow* handle = (*window)->window();

@@ -92,5 +92,26 @@ TEST(ControlGuards, FlyToEndsOnANonFiniteTime) {
   expectSamePose(flyToEndPose(kWgs84, from, {kInf, kInf, kInf}), from);
 }
 
+// A start pose beyond orbit mode's limits is changed and each change is said, with both values.
+TEST(ControlGuards, AStartPoseOrbitCannotShowIsClampedAndSaid) {
+  const CameraPose asked = CameraPose::fromDegrees(138.7, 35.3, 5000, 0, 45, 0);
+  const OrbitControls controls(kWgs84, asked, 0.8);
+  EXPECT_EQ(controls.home().pitchRadians, 0.0);
+  const auto said = describeStartClamp(asked, controls.home());
+  ASSERT_EQ(said.size(), 1u);
+  EXPECT_NE(said[0].find("pitch 45°"), std::string::npos) << said[0];
+  EXPECT_NE(said[0].find("starting at 0°"), std::string::npos) << said[0];
+  EXPECT_NE(said[0].find("fly mode"), std::string::npos) << said[0];
+
+  const CameraPose polar = CameraPose::fromDegrees(0, 89.9, 5000, 0, -30, 0);
+  const auto saidPolar = describeStartClamp(polar, OrbitControls(kWgs84, polar, 0.8).home());
+  ASSERT_EQ(saidPolar.size(), 1u);
+  EXPECT_NE(saidPolar[0].find("latitude 89.9°"), std::string::npos) << saidPolar[0];
+  EXPECT_NE(saidPolar[0].find("starting at 89°"), std::string::npos) << saidPolar[0];
+
+  const CameraPose fine = CameraPose::fromDegrees(138.7, 35.3, 5000, 30, -20, 0);
+  EXPECT_TRUE(describeStartClamp(fine, OrbitControls(kWgs84, fine, 0.8).home()).empty());
+}
+
 }  // namespace
 }  // namespace globe::app
