@@ -78,4 +78,16 @@ camera::CameraPose lookByRadians(const camera::CameraPose& pose, double headingR
   return next;
 }
 
+void SpeedSteps::change(double notches) {
+  if (!std::isfinite(notches)) return;
+  pendingNotches_ += notches;
+  const double whole = std::trunc(pendingNotches_);
+  pendingNotches_ -= whole;
+  const double next = std::clamp(step_ + whole, double{kSlowest}, double{kFastest});
+  step_ = static_cast<int>(next);
+  if (step_ == kSlowest || step_ == kFastest) pendingNotches_ = 0;  // no credit past a limit
+}
+
+double SpeedSteps::factor() const { return std::ldexp(1.0, step_); }
+
 }  // namespace globe::app

@@ -56,4 +56,19 @@ camera::CameraPose lookByPixels(const camera::CameraPose& pose, double dxPixels,
 camera::CameraPose lookByRadians(const camera::CameraPose& pose, double headingRadians,
                                  double pitchRadians, const FlySettings& settings = {});
 
+// Fly mode's speed factor (scroll wheel, +/-): whole powers of two from 1/8 to 64, so steps up
+// and back down always return exactly to 1. Fractional wheel notches (touchpads) add up until
+// they make a whole step.
+class SpeedSteps {
+ public:
+  static constexpr int kSlowest = -3, kFastest = 6;  // x1/8 .. x64
+  void change(double notches);
+  double factor() const;
+  int step() const { return step_; }
+
+ private:
+  int step_ = 0;
+  double pendingNotches_ = 0;
+};
+
 }  // namespace globe::app

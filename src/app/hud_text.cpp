@@ -36,7 +36,9 @@ std::vector<std::string> hudStatusLines(const HudState& s, bool withFrameTime) {
   std::vector<std::string> lines;
   std::string mode = std::string(toString(s.mode)) + (s.flyingTo ? " (flying to)" : "");
   if (s.mode == ViewMode::Fly) {
-    mode += format("  speed %.1f m/s (x%g)", s.flySpeedMetersPerSecond, s.speedFactor);
+    mode += format("  speed %.1f m/s ", s.flySpeedMetersPerSecond) +
+            (s.speedFactor >= 1 ? format("(x%g)", s.speedFactor)
+                                : format("(x1/%g)", 1.0 / s.speedFactor));
   }
   lines.push_back(mode);
   lines.push_back(format("lon %.5f  lat %.5f  height ", s.pose.position.longitudeDegrees(),

@@ -247,7 +247,7 @@ Result<ViewReport> runView(const ViewOptions& options) {
         if (input.flyKeys.moving()) {
           const glm::dvec3 velocity =
               flyVelocityEcef(ellipsoid, wanted, input.flyKeys, controller.state().clearanceMeters,
-                              input.speedFactor);
+                              input.speed.factor());
           controller.propose(flyStep(ellipsoid, wanted, velocity, dtSeconds),
                              camera::MotionKind::Linear);
           input.changed = true;  // keep flying while the key is held
@@ -286,8 +286,8 @@ Result<ViewReport> runView(const ViewOptions& options) {
       hudState.tilesDrawn = (*scene)->tiles().size();
       hudState.tilesLoading = info.requests;
       hudState.flySpeedMetersPerSecond = flySpeedMetersPerSecond(
-          collisionState.clearanceMeters, input.flyKeys.fast, input.speedFactor);
-      hudState.speedFactor = input.speedFactor;
+          collisionState.clearanceMeters, input.flyKeys.fast, input.speed.factor());
+      hudState.speedFactor = input.speed.factor();
       hudState.recording = recorder.recording();
       hudState.keyframes = recorder.keyframes().size();
       hudState.flyingTo = flyTo.has_value();

@@ -20,10 +20,7 @@ int windowHeight(GLFWwindow* window) {
   return height;
 }
 
-void changeSpeed(ViewInput& input, double steps) {
-  input.speedFactor =
-      std::clamp(input.speedFactor * std::pow(kSpeedFactorPerStep, steps), 1.0 / 64, 64.0);
-}
+void changeSpeed(ViewInput& input, double steps) { input.speed.change(steps); }
 
 // Held movement keys; true when the key is one of them.
 bool trackFlyKey(FlyKeys& keys, int key, bool down) {

@@ -23,7 +23,7 @@ struct ViewInput {
   FlyKeys flyKeys;                            // held now (tracked in both modes, used in fly mode)
   double lookDxPixels = 0, lookDyPixels = 0;  // fly: mouse look to apply
   double lookHeadingRadians = 0, lookPitchRadians = 0;  // fly: arrow keys to apply
-  double speedFactor = 1;                               // fly: scroll wheel, +/-
+  SpeedSteps speed;                                     // fly: scroll wheel, +/-
 
   // One-shot requests, cleared by the loop when taken.
   bool resetRequested = false;
@@ -44,7 +44,6 @@ inline constexpr double kDoubleClickSeconds = 0.4;
 inline constexpr double kDoubleClickPixels = 6;
 inline constexpr double kPanPixelsPerKey = 60;  // an orbit arrow key pans like a drag this long
 inline constexpr double kLookRadiansPerKey = 0.087;  // a fly arrow key turns 5 deg
-inline constexpr double kSpeedFactorPerStep = 1.25;
 
 // Sets the window's user pointer to `input` and installs the callbacks; `input` must outlive them.
 void installViewCallbacks(GLFWwindow* window, ViewInput& input);

@@ -21,6 +21,9 @@
 namespace {
 
 using globe::app::FlyKeys;
+using globe::app::HudState;
+using globe::app::SpeedSteps;
+using globe::app::ViewMode;
 using globe::camera::CameraPose;
 using globe::geo::degreesToRadians;
 using globe::geo::radiansToDegrees;
@@ -93,6 +96,32 @@ TEST(FlyControls, WasdMovesInTheEastNorthUpFrameOfTheHeading) {
   EXPECT_FALSE(keys("ws").moving());
   EXPECT_FALSE(keys("S").moving());
   EXPECT_TRUE(keys("wq").moving());
+}
+
+// The speed factor steps in powers of two, stops at x1/8 and x64, and comes back exactly to x1.
+TEST(FlyControls, SpeedStepsAreCleanAndReturnExactlyToOne) {
+  SpeedSteps speed;
+  EXPECT_EQ(speed.factor(), 1.0);
+  for (int i = 0; i < 20; ++i) speed.change(1);  // far past the top
+  EXPECT_EQ(speed.factor(), 64.0);
+  for (int i = 0; i < 6; ++i) speed.change(-1);
+  EXPECT_EQ(speed.factor(), 1.0);
+  speed.change(-100);
+  EXPECT_EQ(speed.factor(), 0.125);
+  speed.change(3);
+  EXPECT_EQ(speed.factor(), 1.0);
+  speed.change(0.4);  // a touchpad's part-notches add up to one step
+  EXPECT_EQ(speed.factor(), 1.0);
+  speed.change(0.6);
+  EXPECT_EQ(speed.factor(), 2.0);
+  speed.change(std::nan(""));
+  EXPECT_EQ(speed.factor(), 2.0);
+  HudState hud;
+  hud.mode = ViewMode::Fly;
+  hud.speedFactor = 0.125;
+  EXPECT_NE(globe::app::hudStatusLines(hud, false)[0].find("(x1/8)"), std::string::npos);
+  hud.speedFactor = 64;
+  EXPECT_NE(globe::app::hudStatusLines(hud, false)[0].find("(x64)"), std::string::npos);
 }
 
 TEST(FlyControls, SpeedScalesWithTheClearanceWithAFloorAndShift) {
