@@ -78,6 +78,19 @@ camera::CameraPose lookByRadians(const camera::CameraPose& pose, double headingR
   return next;
 }
 
+double SmoothedClearance::update(double clearanceMeters, double dtSeconds) {
+  const double target =
+      std::isfinite(clearanceMeters) ? std::max(clearanceMeters, kFloorMeters) : kFloorMeters;
+  if (valueMeters_ <= 0 || !std::isfinite(dtSeconds)) {
+    valueMeters_ = target;
+    return valueMeters_;
+  }
+  const double dt = std::clamp(dtSeconds, 0.0, 1.0);
+  valueMeters_ = std::clamp(target, valueMeters_ / std::pow(kFallPerSecond, dt),
+                            valueMeters_ * std::pow(kRisePerSecond, dt));
+  return valueMeters_;
+}
+
 void SpeedSteps::change(double notches) {
   if (!std::isfinite(notches)) return;
   pendingNotches_ += notches;

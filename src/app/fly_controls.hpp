@@ -56,6 +56,23 @@ camera::CameraPose lookByPixels(const camera::CameraPose& pose, double dxPixels,
 camera::CameraPose lookByRadians(const camera::CameraPose& pose, double headingRadians,
                                  double pitchRadians, const FlySettings& settings = {});
 
+// The clearance fly speed follows (the speed is proportional to it): it moves toward the measured
+// clearance by at most x2 per second up and /8 per second down, so passing a cliff edge (32 m ->
+// 1,845 m in a few frames) accelerates smoothly instead of lurching into the far rim, and a
+// rising ground still slows the flight within a fraction of a second.
+class SmoothedClearance {
+ public:
+  static constexpr double kRisePerSecond = 2.0, kFallPerSecond = 8.0;
+  static constexpr double kFloorMeters = 1.0;  // ratios need a positive value
+  // The smoothed clearance after `dtSeconds` more of flight at `clearanceMeters` (NaN or a
+  // negative clearance counts as the floor); the first call takes the clearance as it is.
+  double update(double clearanceMeters, double dtSeconds);
+  void reset() { valueMeters_ = 0; }
+
+ private:
+  double valueMeters_ = 0;  // 0: not started
+};
+
 // Fly mode's speed factor (scroll wheel, +/-): whole powers of two from 1/8 to 64, so steps up
 // and back down always return exactly to 1. Fractional wheel notches (touchpads) add up until
 // they make a whole step.

@@ -170,6 +170,7 @@ Result<ViewReport> runView(const ViewOptions& options) {
   Clock::time_point flyToStart{};
   // Fly mode's wanted orientation: kept when a move is stopped, so no look is lost.
   camera::CameraPose flyLook = controller.pose();
+  SmoothedClearance flyClearance;  // what fly speed follows, so it does not lurch at cliff edges
 
   const bool continuous = options.frames > 0;
   const auto start = Clock::now();
@@ -246,13 +247,15 @@ Result<ViewReport> runView(const ViewOptions& options) {
         wanted.position = controller.pose().position;
         if (input.flyKeys.moving()) {
           const glm::dvec3 velocity =
-              flyVelocityEcef(ellipsoid, wanted, input.flyKeys, controller.state().clearanceMeters,
+              flyVelocityEcef(ellipsoid, wanted, input.flyKeys,
+                              flyClearance.update(controller.state().clearanceMeters, dtSeconds),
                               input.speed.factor());
           controller.propose(flyStep(ellipsoid, wanted, velocity, dtSeconds),
                              camera::MotionKind::Linear);
           input.changed = true;  // keep flying while the key is held
-        } else if (!camera::samePose(wanted, controller.pose())) {
-          controller.propose(wanted);  // a turn on the spot
+        } else {
+          flyClearance.reset();  // a new flight starts from the clearance then
+          if (!camera::samePose(wanted, controller.pose())) controller.propose(wanted);  // a turn
         }
       } else if (!camera::samePose(controls.pose(), controller.pose())) {
         controller.propose(controls.pose());
@@ -286,7 +289,9 @@ Result<ViewReport> runView(const ViewOptions& options) {
       hudState.tilesDrawn = (*scene)->tiles().size();
       hudState.tilesLoading = info.requests;
       hudState.flySpeedMetersPerSecond = flySpeedMetersPerSecond(
-          collisionState.clearanceMeters, input.flyKeys.fast, input.speed.factor());
+          input.flyKeys.moving() ? flyClearance.update(collisionState.clearanceMeters, 0)
+                                 : collisionState.clearanceMeters,
+          input.flyKeys.fast, input.speed.factor());
       hudState.speedFactor = input.speed.factor();
       hudState.recording = recorder.recording();
       hudState.keyframes = recorder.keyframes().size();

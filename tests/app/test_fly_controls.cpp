@@ -98,6 +98,33 @@ TEST(FlyControls, WasdMovesInTheEastNorthUpFrameOfTheHeading) {
   EXPECT_TRUE(keys("wq").moving());
 }
 
+// Across a cliff edge (the 32 m -> 1,845 m clearance in a few frames, and back), at
+// 60 frames per second the speed changes by at most x2 per second up and /8 per second down:
+// never by more than 2^(1/60) = 1.16 % up or 3.5 % down from one frame to the next.
+TEST(FlyControls, SpeedNeverJumpsAcrossACliffEdge) {
+  using globe::app::SmoothedClearance;
+  SmoothedClearance smoothed;
+  const double dt = 1.0 / 60;
+  double previous = smoothed.update(32, dt);
+  EXPECT_EQ(previous, 32);
+  double largestRise = 1, largestFall = 1;
+  for (int frame = 1; frame < 600; ++frame) {
+    const double measured = frame < 10 || frame > 400 ? 32.0 : 1845.0;
+    const double now = smoothed.update(measured, dt);
+    ASSERT_TRUE(std::isfinite(now));
+    largestRise = std::max(largestRise, now / previous);
+    largestFall = std::min(largestFall, now / previous);
+    if (frame == 399) {
+      EXPECT_NEAR(now, 1845, 1e-9);  // there after ~6 s
+    }
+    previous = now;
+  }
+  EXPECT_LE(largestRise, std::pow(2.0, dt) + 1e-12);
+  EXPECT_GE(largestFall, std::pow(8.0, -dt) - 1e-12);
+  EXPECT_NEAR(previous, 32, 1e-9);  // and back down within ~2 s
+  EXPECT_EQ(smoothed.update(std::nan(""), dt), std::max(previous / std::pow(8.0, dt), 1.0));
+}
+
 // The speed factor steps in powers of two, stops at x1/8 and x64, and comes back exactly to x1.
 TEST(FlyControls, SpeedStepsAreCleanAndReturnExactlyToOne) {
   SpeedSteps speed;
