@@ -30,6 +30,12 @@ double headingDegrees(double radians) {
 
 }  // namespace
 
+std::string terrainStatus(const camera::CollisionState& collision) {
+  if (!collision.terrainFound) return "no terrain under the camera";
+  return "terrain " + meters(collision.terrainHeightMeters) + "  clearance " +
+         meters(collision.clearanceMeters);
+}
+
 const char* toString(ViewMode mode) { return mode == ViewMode::Fly ? "FLY" : "ORBIT"; }
 
 std::vector<std::string> hudStatusLines(const HudState& s, bool withFrameTime) {
@@ -44,10 +50,7 @@ std::vector<std::string> hudStatusLines(const HudState& s, bool withFrameTime) {
   lines.push_back(format("lon %.5f  lat %.5f  height ", s.pose.position.longitudeDegrees(),
                          s.pose.position.latitudeDegrees()) +
                   meters(s.pose.position.heightMeters));
-  lines.push_back(
-      "terrain " +
-      (s.collision.terrainFound ? meters(s.collision.terrainHeightMeters) : std::string("-")) +
-      "  clearance " + meters(s.collision.clearanceMeters));
+  lines.push_back(terrainStatus(s.collision));
   lines.push_back(format("heading %.1f  pitch %.1f", headingDegrees(s.pose.headingRadians),
                          geo::radiansToDegrees(s.pose.pitchRadians)));
   lines.push_back(s.collision.collided

@@ -30,6 +30,10 @@ struct HudState {
 
 // The status lines, e.g. "lon 138.73000  lat 35.36000  height 4123 m". With withFrameTime false
 // the frame time is left out: what the loop compares to decide whether the HUD changed.
+// "terrain H m  clearance C m", or "no terrain under the camera" (never a clearance above the
+// ellipsoid presented as one above the ground); the HUD and the window title both say this.
+std::string terrainStatus(const camera::CollisionState& collision);
+
 std::vector<std::string> hudStatusLines(const HudState& state, bool withFrameTime = true);
 
 // The help overlay: every key and mouse action.

@@ -38,12 +38,10 @@ using Clock = std::chrono::steady_clock;
 std::string titleFor(const camera::CameraPose& pose, size_t tiles, bool loading,
                      const camera::CollisionState& collision) {
   char text[320];
-  std::snprintf(text, sizeof text,
-                "%s  lon %.5f  lat %.5f  height %.0f m  terrain %.1f m  clearance %.1f m  %s%s  "
-                "tiles %zu%s",
+  std::snprintf(text, sizeof text, "%s  lon %.5f  lat %.5f  height %.0f m  %s  %s%s  tiles %zu%s",
                 kTitlePrefix, pose.position.longitudeDegrees(), pose.position.latitudeDegrees(),
-                pose.position.heightMeters, collision.terrainHeightMeters,
-                collision.clearanceMeters, collision.collided ? "COLLISION " : "",
+                pose.position.heightMeters, terrainStatus(collision).c_str(),
+                collision.collided ? "COLLISION " : "",
                 std::string(collision::toString(collision.response)).c_str(), tiles,
                 loading ? " (loading)" : "");
   return text;

@@ -361,8 +361,8 @@ TEST(HudText, StatusShowsPositionTerrainCollisionTilesAndMode) {
   orbit.collision.clearanceMeters = 2e7;
   std::string orbitText;
   for (const auto& line : globe::app::hudStatusLines(orbit)) orbitText += line + "\n";
-  for (const char* expected :
-       {"ORBIT", "height 20000000 m", "terrain -", "collision none", "tiles 0 drawn, 0 loading"}) {
+  for (const char* expected : {"ORBIT", "height 20000000 m", "no terrain under the camera",
+                               "collision none", "tiles 0 drawn, 0 loading"}) {
     EXPECT_NE(orbitText.find(expected), std::string::npos) << expected << " not in\n" << orbitText;
   }
   EXPECT_EQ(orbitText.find("speed"), std::string::npos);
