@@ -5,7 +5,10 @@
 #include <cstdio>
 #include <numbers>
 
+#include <glm/geometric.hpp>
+
 #include "geo/cartographic.hpp"
+#include "geo/ecef.hpp"
 
 namespace globe::app {
 
@@ -51,6 +54,112 @@ void OrbitControls::zoom(double notches) {
   pose_.position.heightMeters =
       groundHeightMeters_ + clearance * std::pow(kZoomFactorPerNotch, notches);
   clampPose();
+}
+
+bool OrbitControls::lookFrom(const glm::dvec3& positionEcefMeters, const glm::dvec3& forward,
+                             const glm::dvec3& up) {
+  const auto position = geo::ecefToCartographic(ellipsoid_, positionEcefMeters);
+  if (!position || !std::isfinite(forward.x + forward.y + forward.z)) return false;
+  const camera::EastNorthUp enu = camera::eastNorthUp(ellipsoid_, *position);
+  camera::CameraPose next = pose_;
+  next.position = *position;
+  next.pitchRadians = std::asin(std::clamp(glm::dot(forward, enu.up), -1.0, 1.0));
+  // The heading's direction: cos(pitch)·forward − sin(pitch)·up is horizontal for a level camera
+  // and well defined looking straight down (where forward alone has no horizontal part).
+  const glm::dvec3 level = std::cos(next.pitchRadians) * forward - std::sin(next.pitchRadians) * up;
+  const double east = glm::dot(level, enu.east), north = glm::dot(level, enu.north);
+  // Straight down or up the heading is free: keep it.
+  if (std::hypot(east, north) > 1e-9) next.headingRadians = std::atan2(east, north);
+  next.rollRadians = 0;
+  if (!next.isFinite()) return false;
+  pose_ = next;
+  return true;
+}
+
+void OrbitControls::zoomToward(double notches, const glm::dvec3& targetEcefMeters) {
+  if (!std::isfinite(notches) ||
+      !std::isfinite(targetEcefMeters.x + targetEcefMeters.y + targetEcefMeters.z)) {
+    return;
+  }
+  const camera::CameraFrame frame = camera::cameraFrame(ellipsoid_, pose_);
+  const glm::dvec3 toTarget = targetEcefMeters - frame.positionEcefMeters;
+  const double distance = glm::length(toTarget);
+  if (!(distance > 0)) return;
+  // Never nearer than the minimum clearance, never farther than the height limit allows.
+  const double wanted = distance * std::pow(kZoomFactorPerNotch, notches);
+  const double kept =
+      std::clamp(wanted, limits_.minimumClearanceMeters, limits_.maximumHeightMeters);
+  const glm::dvec3 position = targetEcefMeters - toTarget * (kept / distance);
+  // Where the target is seen (camera coordinates): kept there with the horizon level (roll 0),
+  // so the ground under the cursor stays under it; heading and pitch are solved for (Newton).
+  const glm::dvec3 seen(glm::dot(toTarget, frame.right) / distance,
+                        glm::dot(toTarget, frame.up) / distance, 0.0);
+  if (!lookFrom(position, frame.forward, frame.up)) return;
+  const glm::dvec3 direction = toTarget / distance;
+  const auto residual = [&](double heading, double pitch) {
+    camera::CameraPose trial = pose_;
+    trial.headingRadians = heading;
+    trial.pitchRadians = pitch;
+    const camera::CameraFrame f = camera::cameraFrame(ellipsoid_, trial);
+    return glm::dvec2(glm::dot(direction, f.right) - seen.x, glm::dot(direction, f.up) - seen.y);
+  };
+  // Orbit's pitch range: a solution past straight down (zooming out of a nadir view near an
+  // edge) is not reachable without a roll; then the nearest pose within the range is kept.
+  const auto inRange = [&](double pitch) {
+    return std::clamp(pitch, limits_.minimumPitchRadians, limits_.maximumPitchRadians);
+  };
+  const double startHeading = pose_.headingRadians, startPitch = inRange(pose_.pitchRadians);
+  double heading = startHeading, pitch = startPitch;
+  for (int iteration = 0; iteration < 6; ++iteration) {
+    const glm::dvec2 r = residual(heading, pitch);
+    if (std::abs(r.x) + std::abs(r.y) < 1e-12) break;
+    constexpr double kStep = 1e-7;
+    const glm::dvec2 dh = (residual(heading + kStep, pitch) - r) / kStep;
+    const glm::dvec2 dp = (residual(heading, pitch + kStep) - r) / kStep;
+    const double det = dh.x * dp.y - dp.x * dh.y;
+    if (!(std::abs(det) > 1e-12)) break;
+    heading -= (r.x * dp.y - dp.x * r.y) / det;
+    pitch = inRange(pitch - (dh.x * r.y - r.x * dh.y) / det);
+  }
+  const auto error = [&](double h, double p) {
+    const glm::dvec2 r = residual(h, p);
+    return std::abs(r.x) + std::abs(r.y);
+  };
+  if (std::isfinite(heading) && std::isfinite(pitch) &&
+      error(heading, pitch) < error(startHeading, startPitch)) {
+    pose_.headingRadians = heading;
+    pose_.pitchRadians = pitch;
+  }
+  clampPose();
+}
+
+void OrbitControls::tiltAbout(double dxPixels, double dyPixels, const glm::dvec3& pivotEcefMeters) {
+  if (!std::isfinite(dxPixels) || !std::isfinite(dyPixels) ||
+      !std::isfinite(pivotEcefMeters.x + pivotEcefMeters.y + pivotEcefMeters.z)) {
+    return;
+  }
+  const auto pivot = geo::ecefToCartographic(ellipsoid_, pivotEcefMeters);
+  if (!pivot) return;
+  const camera::CameraFrame frame = camera::cameraFrame(ellipsoid_, pose_);
+  const glm::dvec3 fromPivot = frame.positionEcefMeters - pivotEcefMeters;
+  const double distance = glm::length(fromPivot);
+  if (!(distance > 0)) return;
+  // The view direction as seen in the pivot's east-north-up frame, turned and tilted there.
+  const camera::EastNorthUp enu = camera::eastNorthUp(ellipsoid_, *pivot);
+  const glm::dvec3 look = -fromPivot / distance;
+  const double east = glm::dot(look, enu.east), north = glm::dot(look, enu.north);
+  double heading = std::hypot(east, north) > 1e-9 ? std::atan2(east, north) : pose_.headingRadians;
+  double pitch = std::asin(std::clamp(glm::dot(look, enu.up), -1.0, 1.0));
+  heading += dxPixels * kTiltRadiansPerPixel;
+  pitch = std::clamp(pitch - dyPixels * kTiltRadiansPerPixel, limits_.minimumPitchRadians,
+                     limits_.maximumPitchRadians - 0.01);  // level would lose the pivot
+  const glm::dvec3 forward = std::cos(pitch) * std::sin(heading) * enu.east +
+                             std::cos(pitch) * std::cos(heading) * enu.north +
+                             std::sin(pitch) * enu.up;
+  const glm::dvec3 up =
+      -std::sin(pitch) * (std::sin(heading) * enu.east + std::cos(heading) * enu.north) +
+      std::cos(pitch) * enu.up;
+  if (lookFrom(pivotEcefMeters - distance * forward, forward, up)) clampPose();
 }
 
 bool OrbitControls::setGroundHeight(double groundHeightMeters) {

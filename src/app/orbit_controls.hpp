@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "camera/camera_pose.hpp"
 #include "geo/cartographic.hpp"
 #include "geo/ellipsoid.hpp"
@@ -39,6 +41,15 @@ class OrbitControls {
   void tiltByDrag(double dxPixels, double dyPixels);
   // Multiplies the clearance above the terrain by factor^notches (notches > 0 zooms in).
   void zoom(double notches);
+  // Zooms toward (notches > 0) or away from a ground point, Google Earth's way: the camera moves
+  // along the line to the point by 1 - factor^notches of the distance and keeps looking the same
+  // way, so the point stays under the same pixel (the cursor). Not nearer than the minimum
+  // clearance; a non-finite target is ignored.
+  void zoomToward(double notches, const glm::dvec3& targetEcefMeters);
+  // Turns (dx) and tilts (dy) the camera about a ground point at the centre of the view, at the
+  // same distance, so that point stays at the centre (the pitch as seen from the point stays
+  // between straight down and level).
+  void tiltAbout(double dxPixels, double dyPixels, const glm::dvec3& pivotEcefMeters);
   void reset() { pose_ = home_; }
   // Takes the pose the collision response settled on, as it is (no clamping, so the two agree).
   void adoptPose(const camera::CameraPose& pose) { pose_ = pose; }
@@ -51,6 +62,11 @@ class OrbitControls {
 
  private:
   void clampPose();
+  // The pose at `positionEcefMeters` looking along the unit `forward` with `up` (the unit screen
+  // up, which gives the heading looking straight down) and roll 0; false (the pose unchanged)
+  // when it is not finite or the position is not on the globe.
+  bool lookFrom(const glm::dvec3& positionEcefMeters, const glm::dvec3& forward,
+                const glm::dvec3& up);
 
   geo::Ellipsoid ellipsoid_;
   camera::CameraPose home_;

@@ -219,6 +219,26 @@ Result<ViewReport> runView(const ViewOptions& options) {
         }
         input.doubleClickPixels.reset();
       }
+      if (input.zoomNotches != 0) {
+        if (const auto ground =
+                pickTerrain(**scene, controls.pose(), input.zoomPixels, handle, fovY)) {
+          controls.zoomToward(input.zoomNotches, *ground);
+        } else {
+          controls.zoom(input.zoomNotches);  // the sky under the cursor: along the view
+        }
+        input.zoomNotches = 0;
+      }
+      if (input.tiltDxPixels != 0 || input.tiltDyPixels != 0) {
+        int windowWidth = 0, windowHeight = 0;  // pickTerrain takes window pixels
+        glfwGetWindowSize(handle, &windowWidth, &windowHeight);
+        const glm::dvec2 centre(windowWidth / 2.0, windowHeight / 2.0);
+        if (const auto pivot = pickTerrain(**scene, controls.pose(), centre, handle, fovY)) {
+          controls.tiltAbout(input.tiltDxPixels, input.tiltDyPixels, *pivot);
+        } else {
+          controls.tiltByDrag(input.tiltDxPixels, input.tiltDyPixels);  // no ground in view
+        }
+        input.tiltDxPixels = input.tiltDyPixels = 0;
+      }
       const bool reset = input.resetRequested;
       input.resetRequested = false;
 

@@ -159,7 +159,10 @@ void onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods
 void onScroll(GLFWwindow* window, double /*dx*/, double dy) {
   ViewInput& input = inputOf(window);
   if (input.mode == ViewMode::Orbit) {
-    input.orbit->zoom(dy);
+    if (!input.cursorKnown) glfwGetCursorPos(window, &input.lastX, &input.lastY);
+    input.cursorKnown = true;
+    input.zoomNotches += dy;
+    input.zoomPixels = glm::dvec2(input.lastX, input.lastY);
     input.userMoved = true;
   } else {
     changeSpeed(input, dy);
@@ -206,7 +209,8 @@ void onCursor(GLFWwindow* window, double x, double y) {
     input.lookDxPixels += dx;
     input.lookDyPixels += dy;
   } else if (input.rightDown || input.shiftDrag) {
-    input.orbit->tiltByDrag(dx, dy);
+    input.tiltDxPixels += dx;
+    input.tiltDyPixels += dy;
   } else {
     input.orbit->rotateByDrag(dx, dy, windowHeight(window));
   }

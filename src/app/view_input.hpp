@@ -25,6 +25,13 @@ struct ViewInput {
   double lookHeadingRadians = 0, lookPitchRadians = 0;  // fly: arrow keys to apply
   SpeedSteps speed;                                     // fly: scroll wheel, +/-
 
+  // Orbit moves about the ground under a pixel, done by the loop (it has the scene to pick the
+  // ground from): scroll zooms toward the ground under the cursor, tilting turns about the ground
+  // at the centre.
+  double zoomNotches = 0;
+  glm::dvec2 zoomPixels{0.0};  // window pixels, y down
+  double tiltDxPixels = 0, tiltDyPixels = 0;
+
   // One-shot requests, cleared by the loop when taken.
   bool resetRequested = false;
   bool recordToggleRequested = false;

@@ -9,12 +9,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <glm/geometric.hpp>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
 
+#include "app/fly_to.hpp"
 #include "app/orbit_controls.hpp"
+#include "geo/ecef.hpp"
 #include "io/image_io.hpp"
 #include "tests/tools/tiler/tiler_test_fixture.hpp"
 
@@ -467,6 +470,90 @@ TEST(GlobeViewWindow, PRecordsTheFlownPathAsJson) {
   EXPECT_NEAR(keyframes.front().at("lat").get<double>(), 35.20, 1e-6) << json.dump();
   EXPECT_GT(keyframes.back().at("lat").get<double>(), 35.21) << "flew north\n" << json.dump();
   EXPECT_NEAR(keyframes.back().at("lon").get<double>(), 138.60, 1e-5) << json.dump();
+}
+
+// The scroll wheel zooms toward the ground under the cursor (Google Earth, CesiumJS): with the
+// cursor up and right of the centre of a straight-down view, the camera comes down and moves
+// north-east, toward the point, not straight down.
+TEST(GlobeViewWindow, ScrollZoomsTowardTheCursor) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const ShellRun run = runUnderXvfb(
+      "view-zoom-cursor",
+      globeView("--size 640x360 --log --camera 138.5,35.2,60000,0,-90,0 > log.txt &\n") +
+          "VIEW=$!\n" + kFindWindow +
+          "for i in $(seq 100); do grep -q 'view complete' log.txt && break; sleep 0.1; done\n"
+          "xdotool mousemove --window $WID 560 60 click --window $WID --repeat 4 --delay 60 4\n"
+          "for i in $(seq 100); do [ \"$(grep -c 'view complete' log.txt)\" -ge 2 ] && break; "
+          "sleep 0.1; done\n"
+          "xdotool keydown --window $WID Escape\n"
+          "wait $VIEW; echo exit=$?\n"
+          "cat log.txt\n");
+  const auto values = valuesOf(run.output);
+  ASSERT_EQ(values.count("exit"), 1u) << run.output;
+  EXPECT_EQ(values.at("exit"), "0") << run.output;
+  const LoggedCamera camera = loggedCamera(run.output);
+  ASSERT_TRUE(camera.found) << run.output;
+  EXPECT_GT(camera.lon, 138.55) << "toward the cursor (east)\n" << run.output;
+  EXPECT_GT(camera.lat, 35.22) << "toward the cursor (north)\n" << run.output;
+  EXPECT_LT(camera.height, 40000) << run.output;
+}
+
+// Right-drag tilts and turns about the ground point at the centre of the view (Google Earth,
+// CesiumJS): that point stays at the centre while the camera swings round it.
+TEST(GlobeViewWindow, RightDragTurnsAboutTheCentreGroundPoint) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const ShellRun run = runUnderXvfb(
+      "view-tilt-pivot",
+      globeView("--size 640x360 --log --camera 138.60,35.20,15000,30,-40,0 > log.txt &\n") +
+          "VIEW=$!\n" + kFindWindow +
+          "for i in $(seq 100); do grep -q 'view complete' log.txt && break; sleep 0.1; done\n"
+          "xdotool mousemove --window $WID 320 180 mousedown --window $WID 3\n"
+          "for x in 340 360 380 400 420; do xdotool mousemove --window $WID $x 170; sleep 0.05; "
+          "done\n"
+          "xdotool mouseup --window $WID 3\n"
+          "sleep 0.5\n"
+          "xdotool keydown --window $WID Escape\n"
+          "wait $VIEW; echo exit=$?\n"
+          "cat log.txt\n");
+  const auto values = valuesOf(run.output);
+  ASSERT_EQ(values.count("exit"), 1u) << run.output;
+  EXPECT_EQ(values.at("exit"), "0") << run.output;
+  const size_t at = ("\n" + run.output).find("\ncamera ");
+  ASSERT_NE(at, std::string::npos) << run.output;
+  double lon = 0, lat = 0, height = 0, heading = 0, pitch = 0;
+  ASSERT_EQ(std::sscanf(run.output.c_str() + at, "camera %lf,%lf,%lf,%lf,%lf", &lon, &lat, &height,
+                        &heading, &pitch),
+            5)
+      << run.output;
+  const CameraPose start = CameraPose::fromDegrees(138.60, 35.20, 15000, 30, -40, 0);
+  const CameraPose end = CameraPose::fromDegrees(lon, lat, height, heading, pitch, 0);
+  EXPECT_GT(heading, 40) << "the drag turned the view\n" << run.output;
+  // The centre ray's ground point, on the surface at the height of the start's centre point
+  // (found by a few rounds of `globe query`): the same point before and after.
+  const globe::geo::Ellipsoid wgs84 = globe::geo::Ellipsoid::wgs84();
+  const auto centreGround = [&](const CameraPose& pose, double groundMeters) {
+    const auto frame = globe::camera::cameraFrame(wgs84, pose);
+    return globe::app::intersectTerrain(wgs84, frame.positionEcefMeters, frame.forward,
+                                        [&](double, double) { return groundMeters; });
+  };
+  double ground = 0;
+  for (int round = 0; round < 4; ++round) {
+    const auto point = centreGround(start, ground);
+    ASSERT_TRUE(point);
+    const auto cartographic = globe::geo::ecefToCartographic(wgs84, *point);
+    ASSERT_TRUE(cartographic);
+    ground = surfaceHeightMeters(cartographic->longitudeDegrees(), cartographic->latitudeDegrees());
+  }
+  const auto before = centreGround(start, ground), after = centreGround(end, ground);
+  ASSERT_TRUE(before && after);
+  const double moved = glm::distance(*before, *after);
+  const double camera = glm::distance(globe::camera::cameraFrame(wgs84, start).positionEcefMeters,
+                                      globe::camera::cameraFrame(wgs84, end).positionEcefMeters);
+  EXPECT_GT(camera, 2000) << "the camera swung round the point\n" << run.output;
+  EXPECT_LT(moved, 150) << "the centre's ground point stayed (within the pivot's terrain)\n"
+                        << run.output;
 }
 
 // In orbit mode a double-click flies towards the point under the cursor (up and right of the
