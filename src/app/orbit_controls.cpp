@@ -133,6 +133,33 @@ void OrbitControls::zoomToward(double notches, const glm::dvec3& targetEcefMeter
   clampPose();
 }
 
+bool OrbitControls::dragGrabbed(const glm::dvec3& grabbedEcefMeters, const glm::dvec3& rayEcef) {
+  const double radius = glm::length(grabbedEcefMeters);
+  if (!std::isfinite(radius) || !(radius > 0) || !std::isfinite(rayEcef.x + rayEcef.y + rayEcef.z))
+    return false;
+  const camera::CameraFrame frame = camera::cameraFrame(ellipsoid_, pose_);
+  // Where the ray meets the sphere through the grabbed point (the near side).
+  const glm::dvec3& origin = frame.positionEcefMeters;
+  const double b = glm::dot(origin, rayEcef);
+  const double c = glm::dot(origin, origin) - radius * radius;
+  const double discriminant = b * b - c;
+  if (!(discriminant >= 0)) return false;
+  const double along = -b - std::sqrt(discriminant);
+  if (!(along > 0)) return false;
+  const glm::dvec3 hit = glm::normalize(origin + along * rayEcef);
+  const glm::dvec3 grabbed = grabbedEcefMeters / radius;
+  const glm::dvec3 axis = glm::cross(hit, grabbed);
+  const double sine = glm::length(axis), cosine = glm::dot(hit, grabbed);
+  if (!(sine > 1e-15)) return true;  // already there
+  // Rodrigues: the rotation by atan2(sine, cosine) about the unit axis.
+  const glm::dvec3 k = axis / sine;
+  const auto rotate = [&](const glm::dvec3& v) {
+    return v * cosine + glm::cross(k, v) * sine + k * glm::dot(k, v) * (1 - cosine);
+  };
+  if (lookFrom(rotate(origin), rotate(frame.forward), rotate(frame.up))) clampPose();
+  return true;
+}
+
 void OrbitControls::tiltAbout(double dxPixels, double dyPixels, const glm::dvec3& pivotEcefMeters) {
   if (!std::isfinite(dxPixels) || !std::isfinite(dyPixels) ||
       !std::isfinite(pivotEcefMeters.x + pivotEcefMeters.y + pivotEcefMeters.z)) {

@@ -46,6 +46,11 @@ class OrbitControls {
   // way, so the point stays under the same pixel (the cursor). Not nearer than the minimum
   // clearance; a non-finite target is ignored.
   void zoomToward(double notches, const glm::dvec3& targetEcefMeters);
+  // Drags the globe so the grabbed ground point comes under the ray `rayEcef` (the unit direction
+  // through the cursor from the camera now): the camera turns about the globe's centre by the
+  // rotation that takes where the ray meets the grabbed point's sphere to that point. False (the
+  // pose unchanged) when the ray misses that sphere (the cursor left the globe).
+  bool dragGrabbed(const glm::dvec3& grabbedEcefMeters, const glm::dvec3& rayEcef);
   // Turns (dx) and tilts (dy) the camera about a ground point at the centre of the view, at the
   // same distance, so that point stays at the centre (the pitch as seen from the point stays
   // between straight down and level).

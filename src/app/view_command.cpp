@@ -168,7 +168,8 @@ Result<ViewReport> runView(const ViewOptions& options) {
   Clock::time_point flyToStart{};
   // Fly mode's wanted orientation: kept when a move is stopped, so no look is lost.
   camera::CameraPose flyLook = controller.pose();
-  SmoothedClearance flyClearance;  // what fly speed follows, so it does not lurch at cliff edges
+  std::optional<glm::dvec3> grabbed;  // the ground point a left-drag holds under the cursor
+  SmoothedClearance flyClearance;     // what fly speed follows, so it does not lurch at cliff edges
 
   const bool continuous = options.frames > 0;
   const auto start = Clock::now();
@@ -218,6 +219,22 @@ Result<ViewReport> runView(const ViewOptions& options) {
           flyToStart = now;
         }
         input.doubleClickPixels.reset();
+      }
+      if (input.grabPixels) {
+        grabbed = pickTerrain(**scene, controls.pose(), *input.grabPixels, handle, fovY);
+        input.grabPixels.reset();
+      }
+      if (input.panDxPixels != 0 || input.panDyPixels != 0) {
+        int windowWidth = 0, windowHeight = 0;  // the ray takes window pixels
+        glfwGetWindowSize(handle, &windowWidth, &windowHeight);
+        const camera::CameraFrame frame = camera::cameraFrame(ellipsoid, controls.pose());
+        const glm::dvec3 ray = pixelRayEcef(frame, input.panPixels.x, input.panPixels.y,
+                                            windowWidth, windowHeight, fovY);
+        if (!grabbed || !controls.dragGrabbed(*grabbed, ray)) {
+          controls.rotateByDrag(input.panDxPixels, input.panDyPixels,
+                                windowHeight);  // off the globe
+        }
+        input.panDxPixels = input.panDyPixels = 0;
       }
       if (input.zoomNotches != 0) {
         if (const auto ground =

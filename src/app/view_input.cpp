@@ -179,6 +179,7 @@ void onMouseButton(GLFWwindow* window, int button, int action, int mods) {
   if (button == GLFW_MOUSE_BUTTON_LEFT) {
     input.leftDown = down;
     input.shiftDrag = down && (mods & GLFW_MOD_SHIFT) != 0;
+    if (down && !input.shiftDrag) input.grabPixels = glm::dvec2(input.lastX, input.lastY);
     if (down) {
       const double now = glfwGetTime();
       if (now - input.lastClickSeconds <= kDoubleClickSeconds &&
@@ -212,7 +213,9 @@ void onCursor(GLFWwindow* window, double x, double y) {
     input.tiltDxPixels += dx;
     input.tiltDyPixels += dy;
   } else {
-    input.orbit->rotateByDrag(dx, dy, windowHeight(window));
+    input.panDxPixels += dx;
+    input.panDyPixels += dy;
+    input.panPixels = glm::dvec2(x, y);
   }
   input.userMoved = input.changed = true;
 }

@@ -31,6 +31,10 @@ struct ViewInput {
   double zoomNotches = 0;
   glm::dvec2 zoomPixels{0.0};  // window pixels, y down
   double tiltDxPixels = 0, tiltDyPixels = 0;
+  // Left-drag: the press grabs the ground under the cursor, each move brings it under the cursor.
+  std::optional<glm::dvec2> grabPixels;     // a press to grab at
+  double panDxPixels = 0, panDyPixels = 0;  // moves since the loop last took them
+  glm::dvec2 panPixels{0.0};                // the cursor after them
 
   // One-shot requests, cleared by the loop when taken.
   bool resetRequested = false;

@@ -84,6 +84,32 @@ TEST(OrbitControls, ZoomStopsAtTheMinimumDistanceAndIgnoresNaN) {
   EXPECT_TRUE(camera::samePose(kept, controls.pose()));
 }
 
+// A left-drag holds the grabbed ground point under the cursor, step after step, near the ground
+// and from space; a cursor off the globe is refused (the caller falls back to a plain pan).
+TEST(OrbitControls, DragKeepsTheGrabbedGroundUnderTheCursor) {
+  for (const CameraPose start : {CameraPose::fromDegrees(138.60, 35.20, 15000, 30, -40, 0),
+                                 CameraPose::fromDegrees(138.73, 35.36, 200000, 0, -90, 0),
+                                 CameraPose::fromDegrees(138.0, 30.0, 8e6, 0, -90, 0)}) {
+    SCOPED_TRACE(start.position.heightMeters);
+    OrbitControls controls(kWgs84, start, kFovY);
+    glm::dvec2 cursor(500, 420);
+    const glm::dvec3 grabbed = groundUnder(controls.pose(), cursor);
+    for (int step = 0; step < 10; ++step) {
+      cursor += glm::dvec2(25, -12);
+      const auto frame = camera::cameraFrame(kWgs84, controls.pose());
+      ASSERT_TRUE(controls.dragGrabbed(
+          grabbed, pixelRayEcef(frame, cursor.x, cursor.y, kWidth, kHeight, kFovY)));
+      EXPECT_LT(pixelsOff(controls.pose(), cursor, grabbed), 1.0) << step;
+    }
+  }
+  OrbitControls space(kWgs84, CameraPose::fromDegrees(138.0, 30.0, 2e7, 0, -90, 0), kFovY);
+  const glm::dvec3 grabbed = groundUnder(space.pose(), {640, 360});
+  const auto frame = camera::cameraFrame(kWgs84, space.pose());
+  const CameraPose kept = space.pose();
+  EXPECT_FALSE(space.dragGrabbed(grabbed, pixelRayEcef(frame, 5, 5, kWidth, kHeight, kFovY)));
+  EXPECT_TRUE(camera::samePose(kept, space.pose()));
+}
+
 TEST(OrbitControls, TiltAndTurnKeepTheCentreGroundPointAtTheCentre) {
   OrbitControls controls(kWgs84, CameraPose::fromDegrees(138.60, 35.20, 15000, 30, -40, 0), kFovY);
   const glm::dvec2 centre(kWidth / 2.0, kHeight / 2.0);
