@@ -56,6 +56,14 @@ std::vector<std::string> hudStatusLines(const HudState& s, bool withFrameTime) {
   lines.push_back(s.collision.collided
                       ? "COLLISION " + std::string(collision::toString(s.collision.response))
                       : std::string("collision none"));
+  if (s.underCursor) {
+    lines.push_back(format("cursor lon %.5f  lat %.5f  ground ", s.underCursor->longitudeDegrees(),
+                           s.underCursor->latitudeDegrees()) +
+                    meters(s.underCursor->heightMeters));
+  }
+  if (std::isfinite(s.metersPerPixel) && s.metersPerPixel > 0) {
+    lines.push_back(scaleText(s.metersPerPixel));
+  }
   std::string tiles = format("tiles %zu drawn, %zu loading", s.tilesDrawn, s.tilesLoading);
   if (withFrameTime && s.frameMilliseconds > 0) {
     tiles += format("  frame %.1f ms (%.0f fps)", s.frameMilliseconds, 1000 / s.frameMilliseconds);
@@ -64,6 +72,13 @@ std::vector<std::string> hudStatusLines(const HudState& s, bool withFrameTime) {
   if (s.recording) lines.push_back(format("REC  %zu keyframes  (P stops)", s.keyframes));
   lines.push_back("H: help");
   return lines;
+}
+
+std::string scaleText(double metersPerPixel) {
+  const double span = 100 * metersPerPixel;
+  if (span >= 10000) return format("scale: 100 px = %.0f km", span / 1000);
+  if (span >= 1000) return format("scale: 100 px = %.2f km", span / 1000);
+  return format("scale: 100 px = %.0f m", span);
 }
 
 std::vector<std::string> hudHelpLines() {

@@ -3,11 +3,14 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "camera/camera_controller.hpp"
 #include "camera/camera_pose.hpp"
+#include "geo/cartographic.hpp"
 
 namespace globe::app {
 
@@ -26,15 +29,22 @@ struct HudState {
   bool recording = false;
   size_t keyframes = 0;  // recorded so far
   bool flyingTo = false;
+  // The drawn ground under the mouse pointer (nullopt: the sky or no pointer), and the ground
+  // distance a pixel spans at the centre of the view (NaN: no ground there).
+  std::optional<geo::Cartographic> underCursor;
+  double metersPerPixel = std::numeric_limits<double>::quiet_NaN();
 };
 
-// The status lines, e.g. "lon 138.73000  lat 35.36000  height 4123 m". With withFrameTime false
-// the frame time is left out: what the loop compares to decide whether the HUD changed.
 // "terrain H m  clearance C m", or "no terrain under the camera" (never a clearance above the
 // ellipsoid presented as one above the ground); the HUD and the window title both say this.
 std::string terrainStatus(const camera::CollisionState& collision);
 
+// The status lines, e.g. "lon 138.73000  lat 35.36000  height 4123 m". With withFrameTime false
+// the frame time is left out: what the loop compares to decide whether the HUD changed.
 std::vector<std::string> hudStatusLines(const HudState& state, bool withFrameTime = true);
+
+// "scale: 100 px = 2.35 km" from the ground distance one pixel spans at the centre of the view.
+std::string scaleText(double metersPerPixel);
 
 // The help overlay: every key and mouse action.
 std::vector<std::string> hudHelpLines();

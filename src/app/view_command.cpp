@@ -13,6 +13,8 @@
 #include <system_error>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
 #include "app/fly_controls.hpp"
 #include "app/fly_to.hpp"
 #include "app/hud_text.hpp"
@@ -23,6 +25,7 @@
 #include "app/view_input.hpp"
 #include "camera/camera_controller.hpp"
 #include "collision/surface_probe.hpp"
+#include "geo/ecef.hpp"
 #include "io/image_io.hpp"
 #include "render/glfw_window_context.hpp"
 #include "render/hud_renderer.hpp"
@@ -331,6 +334,22 @@ Result<ViewReport> runView(const ViewOptions& options) {
       hudState.recording = recorder.recording();
       hudState.keyframes = recorder.keyframes().size();
       hudState.flyingTo = flyTo.has_value();
+      {
+        int windowWidth = 0, windowHeight = 0;  // picks take window pixels
+        glfwGetWindowSize(handle, &windowWidth, &windowHeight);
+        if (input.cursorKnown) {
+          if (const auto ground = pickTerrain(**scene, controller.pose(),
+                                              glm::dvec2(input.lastX, input.lastY), handle, fovY)) {
+            hudState.underCursor = geo::ecefToCartographic(ellipsoid, *ground);
+          }
+        }
+        const glm::dvec2 centre(windowWidth / 2.0, windowHeight / 2.0);
+        if (const auto ground = pickTerrain(**scene, controller.pose(), centre, handle, fovY)) {
+          const double distance = glm::distance(
+              *ground, camera::cameraFrame(ellipsoid, controller.pose()).positionEcefMeters);
+          hudState.metersPerPixel = distance * fovY / std::max(windowHeight, 1);
+        }
+      }
       std::vector<std::string> hudKey = hudStatusLines(hudState, false);
       const bool hudChanged = hudKey != drawnHud || input.helpVisible != drawnHelp;
       redraw = redraw || (hudChanged && !throttled) || input.screenshotRequested;

@@ -205,7 +205,10 @@ void onCursor(GLFWwindow* window, double x, double y) {
   input.lastX = x;
   input.lastY = y;
   input.cursorKnown = true;
-  if (!input.leftDown && !input.rightDown) return;
+  if (!input.leftDown && !input.rightDown) {
+    input.changed = true;  // the HUD shows the ground under the pointer
+    return;
+  }
   if (input.mode == ViewMode::Fly) {
     input.lookDxPixels += dx;
     input.lookDyPixels += dy;

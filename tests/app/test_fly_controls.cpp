@@ -125,6 +125,29 @@ TEST(FlyControls, SpeedNeverJumpsAcrossACliffEdge) {
   EXPECT_EQ(smoothed.update(std::nan(""), dt), std::max(previous / std::pow(8.0, dt), 1.0));
 }
 
+// The HUD names the ground under the pointer and a scale; neither line without its data.
+TEST(FlyControls, HudShowsTheGroundUnderThePointerAndAScale) {
+  HudState hud;
+  auto lines = globe::app::hudStatusLines(hud, false);
+  for (const std::string& line : lines) {
+    EXPECT_EQ(line.find("cursor"), std::string::npos) << line;
+    EXPECT_EQ(line.find("scale"), std::string::npos) << line;
+  }
+  hud.underCursor = globe::geo::Cartographic::fromDegrees(138.7275, 35.3606, 3731.2);
+  hud.metersPerPixel = 23.5;
+  lines = globe::app::hudStatusLines(hud, false);
+  const std::string all = [&] {
+    std::string text;
+    for (const std::string& line : lines) text += line + "\n";
+    return text;
+  }();
+  EXPECT_NE(all.find("cursor lon 138.72750  lat 35.36060  ground 3731.2 m"), std::string::npos)
+      << all;
+  EXPECT_NE(all.find("scale: 100 px = 2.35 km"), std::string::npos) << all;
+  EXPECT_EQ(globe::app::scaleText(0.5), "scale: 100 px = 50 m");
+  EXPECT_EQ(globe::app::scaleText(2000), "scale: 100 px = 200 km");
+}
+
 // The speed factor steps in powers of two, stops at x1/8 and x64, and comes back exactly to x1.
 TEST(FlyControls, SpeedStepsAreCleanAndReturnExactlyToOne) {
   SpeedSteps speed;
