@@ -64,6 +64,8 @@ std::vector<std::string> hudStatusLines(const HudState& s, bool withFrameTime) {
   if (std::isfinite(s.metersPerPixel) && s.metersPerPixel > 0) {
     lines.push_back(scaleText(s.metersPerPixel));
   }
+  if (s.prompt) lines.push_back("go to: " + *s.prompt + "_   (Enter: go, Esc: cancel)");
+  if (!s.message.empty()) lines.push_back(s.message);
   std::string tiles = format("tiles %zu drawn, %zu loading", s.tilesDrawn, s.tilesLoading);
   if (withFrameTime && s.frameMilliseconds > 0) {
     tiles += format("  frame %.1f ms (%.0f fps)", s.frameMilliseconds, 1000 / s.frameMilliseconds);
@@ -72,6 +74,17 @@ std::vector<std::string> hudStatusLines(const HudState& s, bool withFrameTime) {
   if (s.recording) lines.push_back(format("REC  %zu keyframes  (P stops)", s.keyframes));
   lines.push_back("H: help");
   return lines;
+}
+
+std::vector<std::string> compassLines(double headingRadians) {
+  // North on the screen lies at -heading from straight up; eight arrows, clockwise from up.
+  static constexpr const char* kArrows[] = {"up",   "up-right",  "right", "down-right",
+                                            "down", "down-left", "left",  "up-left"};
+  double screenDegrees = std::fmod(-geo::radiansToDegrees(headingRadians), 360.0);
+  if (!std::isfinite(screenDegrees)) screenDegrees = 0;
+  if (screenDegrees < 0) screenDegrees += 360.0;
+  const auto sector = static_cast<int>(std::lround(screenDegrees / 45.0)) % 8;
+  return {std::string("north: ") + kArrows[sector], "click: north up"};
 }
 
 std::string scaleText(double metersPerPixel) {
@@ -92,6 +105,8 @@ std::vector<std::string> hudHelpLines() {
       "P            start/stop recording the path (globe-path-*.json)",
       "K / F12      screenshot (globe-shot-*.png)",
       "R            back to the start camera",
+      "G            go to a place or \"lat, lon\" (type, then Enter)",
+      "N            north up (or click the compass, top right)",
       "H / F1       this help",
       "Esc          quit",
   };

@@ -33,6 +33,8 @@ struct HudState {
   // distance a pixel spans at the centre of the view (NaN: no ground there).
   std::optional<geo::Cartographic> underCursor;
   double metersPerPixel = std::numeric_limits<double>::quiet_NaN();
+  std::optional<std::string> prompt;  // the go-to text being typed (G)
+  std::string message;                // what the last go-to said (an error)
 };
 
 // "terrain H m  clearance C m", or "no terrain under the camera" (never a clearance above the
@@ -45,6 +47,10 @@ std::vector<std::string> hudStatusLines(const HudState& state, bool withFrameTim
 
 // "scale: 100 px = 2.35 km" from the ground distance one pixel spans at the centre of the view.
 std::string scaleText(double metersPerPixel);
+
+// The compass (top right): where north is on the screen, and that a click turns the view north
+// up, e.g. {"north: up", "click: north up"} at heading 0 and {"north: right", ...} at 270.
+std::vector<std::string> compassLines(double headingRadians);
 
 // The help overlay: every key and mouse action.
 std::vector<std::string> hudHelpLines();

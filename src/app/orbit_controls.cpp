@@ -160,6 +160,25 @@ bool OrbitControls::dragGrabbed(const glm::dvec3& grabbedEcefMeters, const glm::
   return true;
 }
 
+void OrbitControls::northUp(const std::optional<glm::dvec3>& pivotEcefMeters) {
+  const auto pivot =
+      pivotEcefMeters ? geo::ecefToCartographic(ellipsoid_, *pivotEcefMeters) : std::nullopt;
+  if (!pivot) {
+    pose_.headingRadians = 0;
+    return;
+  }
+  // The heading as seen from the pivot, turned to 0 about it.
+  const camera::CameraFrame frame = camera::cameraFrame(ellipsoid_, pose_);
+  const camera::EastNorthUp enu = camera::eastNorthUp(ellipsoid_, *pivot);
+  const glm::dvec3 look = *pivotEcefMeters - frame.positionEcefMeters;
+  const double east = glm::dot(look, enu.east), north = glm::dot(look, enu.north);
+  const double heading = std::hypot(east, north) > 1e-9 * glm::length(look)
+                             ? std::atan2(east, north)
+                             : pose_.headingRadians;
+  tiltAbout(-std::remainder(heading, 2 * std::numbers::pi) / kTiltRadiansPerPixel, 0,
+            *pivotEcefMeters);
+}
+
 void OrbitControls::tiltAbout(double dxPixels, double dyPixels, const glm::dvec3& pivotEcefMeters) {
   if (!std::isfinite(dxPixels) || !std::isfinite(dyPixels) ||
       !std::isfinite(pivotEcefMeters.x + pivotEcefMeters.y + pivotEcefMeters.z)) {

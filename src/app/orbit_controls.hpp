@@ -3,6 +3,7 @@
 #pragma once
 
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,9 @@ class OrbitControls {
   // rotation that takes where the ray meets the grabbed point's sphere to that point. False (the
   // pose unchanged) when the ray misses that sphere (the cursor left the globe).
   bool dragGrabbed(const glm::dvec3& grabbedEcefMeters, const glm::dvec3& rayEcef);
+  // Turns the view to face north about the ground point at the centre (it stays there) or, with
+  // no ground there, in place; the pitch is kept.
+  void northUp(const std::optional<glm::dvec3>& pivotEcefMeters);
   // Turns (dx) and tilts (dy) the camera about a ground point at the centre of the view, at the
   // same distance, so that point stays at the centre (the pitch as seen from the point stays
   // between straight down and level).

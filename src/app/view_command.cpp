@@ -17,6 +17,7 @@
 
 #include "app/fly_controls.hpp"
 #include "app/fly_to.hpp"
+#include "app/go_to.hpp"
 #include "app/hud_text.hpp"
 #include "app/imagery.hpp"
 #include "app/orbit_controls.hpp"
@@ -90,10 +91,16 @@ void writeScreenshot(const std::filesystem::path& directory, int width, int heig
 
 // The status block at the top left and, when shown, the help under it; larger on tall windows.
 std::vector<render::HudTextBlock> hudBlocks(std::vector<std::string> status, bool help,
+                                            std::vector<std::string> compass, int widthPixels,
                                             int heightPixels) {
-  std::vector<render::HudTextBlock> blocks(1);
+  std::vector<render::HudTextBlock> blocks(2);
   blocks[0].lines = std::move(status);
   blocks[0].scale = heightPixels >= 600 ? 2.0f : 1.0f;
+  blocks[1].lines = std::move(compass);
+  blocks[1].scale = blocks[0].scale;
+  blocks[1].topLeftPixels = glm::vec2(
+      static_cast<float>(widthPixels) - render::hudBlockSizePixels(blocks[1]).x - 8.0f, 8.0f);
+  blocks[1].textRgba = {0.75f, 0.9f, 1.0f, 1.0f};
   if (help) {
     render::HudTextBlock helpBlock;
     helpBlock.lines = hudHelpLines();
@@ -259,6 +266,46 @@ Result<ViewReport> runView(const ViewOptions& options) {
         }
         input.tiltDxPixels = input.tiltDyPixels = 0;
       }
+      if (input.northUpRequested) {
+        int windowWidth = 0, windowHeight = 0;
+        glfwGetWindowSize(handle, &windowWidth, &windowHeight);
+        controls.northUp(pickTerrain(**scene, controls.pose(),
+                                     glm::dvec2(windowWidth / 2.0, windowHeight / 2.0), handle,
+                                     fovY));
+        if (input.mode == ViewMode::Fly) flyLook.headingRadians = 0;
+        input.northUpRequested = false;
+      }
+      if (input.goToRequest) {
+        auto target = parseGoTo(*input.goToRequest);
+        input.goToRequest.reset();
+        if (!target) {
+          input.promptMessage = target.error();
+        } else {
+          input.promptMessage.clear();
+          const double lon = geo::degreesToRadians(target->longitudeDegrees);
+          const double lat = geo::degreesToRadians(target->latitudeDegrees);
+          auto ground = (*scene)->terrainHeightMeters(lon, lat);
+          const glm::dvec3 point =
+              geo::cartographicToEcef(ellipsoid, {lon, lat, ground ? *ground : 0.0});
+          // Land ~15 km from the place, looking at it; longer ways take longer (up to 4 s).
+          FlyToSettings settings;
+          settings.distanceFraction = 0;
+          settings.minimumDistanceMeters = 15000;
+          settings.maximumPitchRadians = geo::degreesToRadians(-35);
+          const double way = glm::distance(
+              point, camera::cameraFrame(ellipsoid, controller.pose()).positionEcefMeters);
+          settings.durationSeconds =
+              std::clamp(1.0 + std::log10(std::max(way, 1.0) / 1e4), 1.0, 4.0);
+          const camera::CameraPose end =
+              flyToEndPose(ellipsoid, controller.pose(), point, settings);
+          flyTo.emplace(ellipsoid, controller.pose(), end, settings.durationSeconds);
+          flyToStart = now;
+          std::printf("go to %s (%.5f, %.5f)\n", target->name.c_str(), target->latitudeDegrees,
+                      target->longitudeDegrees);
+          std::fflush(stdout);
+        }
+        input.changed = true;
+      }
       const bool reset = input.resetRequested;
       input.resetRequested = false;
 
@@ -334,6 +381,8 @@ Result<ViewReport> runView(const ViewOptions& options) {
       hudState.recording = recorder.recording();
       hudState.keyframes = recorder.keyframes().size();
       hudState.flyingTo = flyTo.has_value();
+      if (input.promptOpen) hudState.prompt = input.promptText;
+      hudState.message = input.promptMessage;
       {
         int windowWidth = 0, windowHeight = 0;  // picks take window pixels
         glfwGetWindowSize(handle, &windowWidth, &windowHeight);
@@ -360,7 +409,18 @@ Result<ViewReport> runView(const ViewOptions& options) {
         lastDraw = now;
         if (hudChanged || continuous) {
           hudState.frameMilliseconds = frameMilliseconds;
-          (*hud)->setBlocks(hudBlocks(hudStatusLines(hudState), input.helpVisible, height));
+          const auto blocks =
+              hudBlocks(hudStatusLines(hudState), input.helpVisible,
+                        compassLines(controller.pose().headingRadians), width, height);
+          // Where a click on the compass lands, in window pixels (the HUD's are framebuffer's).
+          int windowWidth = 0, windowHeight = 0;
+          glfwGetWindowSize(handle, &windowWidth, &windowHeight);
+          const double toWindow = static_cast<double>(windowWidth) / std::max(width, 1);
+          input.compassTopLeft = glm::dvec2(blocks[1].topLeftPixels) * toWindow;
+          input.compassBottomRight =
+              glm::dvec2(blocks[1].topLeftPixels + render::hudBlockSizePixels(blocks[1])) *
+              toWindow;
+          (*hud)->setBlocks(blocks);
           drawnHud = std::move(hudKey);
           drawnHelp = input.helpVisible;
         }

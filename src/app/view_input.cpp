@@ -79,6 +79,15 @@ bool commonKey(GLFWwindow* window, ViewInput& input, int key) {
     case GLFW_KEY_F1:
       input.helpVisible = !input.helpVisible;
       return true;
+    case GLFW_KEY_G:
+      input.promptOpen = input.promptSwallowG = true;
+      input.promptText.clear();
+      input.promptMessage.clear();
+      return true;
+    case GLFW_KEY_N:
+      input.northUpRequested = true;
+      input.userMoved = true;
+      return true;
     default:
       return false;
   }
@@ -143,8 +152,41 @@ bool flyKey(ViewInput& input, int key) {
   return true;
 }
 
+// While the go-to prompt is open it takes every key: Enter submits, Escape closes it, Backspace
+// deletes; the text itself comes from the character callback.
+void promptKey(ViewInput& input, int key) {
+  if (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER) {
+    input.goToRequest = input.promptText;
+    input.promptOpen = false;
+  } else if (key == GLFW_KEY_ESCAPE) {
+    input.promptOpen = false;
+    input.promptMessage.clear();
+  } else if (key == GLFW_KEY_BACKSPACE && !input.promptText.empty()) {
+    input.promptText.pop_back();
+  }
+  input.changed = true;
+}
+
+void onChar(GLFWwindow* window, unsigned int codepoint) {
+  ViewInput& input = inputOf(window);
+  if (!input.promptOpen) return;
+  // The G that opened the prompt arrives as a character too: it is not part of the text.
+  if (input.promptSwallowG) {
+    input.promptSwallowG = false;
+    if (codepoint == 'g' || codepoint == 'G') return;
+  }
+  if (codepoint >= 0x20 && codepoint < 0x7f && input.promptText.size() < 80) {
+    input.promptText.push_back(static_cast<char>(codepoint));
+    input.changed = true;
+  }
+}
+
 void onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods*/) {
   ViewInput& input = inputOf(window);
+  if (input.promptOpen) {
+    if (action != GLFW_RELEASE) promptKey(input, key);
+    return;
+  }
   if (trackFlyKey(input.flyKeys, key, action != GLFW_RELEASE)) {
     if (input.mode == ViewMode::Fly) input.userMoved = input.changed = true;
     return;
@@ -177,6 +219,12 @@ void onMouseButton(GLFWwindow* window, int button, int action, int mods) {
   if (down && !input.cursorKnown) glfwGetCursorPos(window, &input.lastX, &input.lastY);
   input.cursorKnown = true;
   if (button == GLFW_MOUSE_BUTTON_LEFT) {
+    if (down && input.lastX >= input.compassTopLeft.x && input.lastY >= input.compassTopLeft.y &&
+        input.lastX <= input.compassBottomRight.x && input.lastY <= input.compassBottomRight.y) {
+      input.northUpRequested = true;  // a click on the compass
+      input.userMoved = input.changed = true;
+      return;
+    }
     input.leftDown = down;
     input.shiftDrag = down && (mods & GLFW_MOD_SHIFT) != 0;
     if (down && !input.shiftDrag) input.grabPixels = glm::dvec2(input.lastX, input.lastY);
@@ -231,6 +279,7 @@ void onFramebufferSize(GLFWwindow* window, int, int) { inputOf(window).changed =
 void installViewCallbacks(GLFWwindow* window, ViewInput& input) {
   glfwSetWindowUserPointer(window, &input);
   glfwSetKeyCallback(window, onKey);
+  glfwSetCharCallback(window, onChar);
   glfwSetScrollCallback(window, onScroll);
   glfwSetMouseButtonCallback(window, onMouseButton);
   glfwSetCursorPosCallback(window, onCursor);

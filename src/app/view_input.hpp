@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include <glm/vec2.hpp>
 
@@ -35,6 +36,17 @@ struct ViewInput {
   std::optional<glm::dvec2> grabPixels;     // a press to grab at
   double panDxPixels = 0, panDyPixels = 0;  // moves since the loop last took them
   glm::dvec2 panPixels{0.0};                // the cursor after them
+
+  // "Go to" (G): the text typed so far while the prompt is open (it takes every key), the text
+  // entered (Enter) for the loop to parse, and what the loop says back (an error).
+  bool promptOpen = false;
+  bool promptSwallowG = false;  // the G key's own character is not text
+  std::string promptText;
+  std::optional<std::string> goToRequest;
+  std::string promptMessage;
+  // The compass (top right, window pixels): a click there, or N, turns the view north up.
+  glm::dvec2 compassTopLeft{-1.0}, compassBottomRight{-1.0};
+  bool northUpRequested = false;
 
   // One-shot requests, cleared by the loop when taken.
   bool resetRequested = false;

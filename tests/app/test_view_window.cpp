@@ -556,6 +556,65 @@ TEST(GlobeViewWindow, RightDragTurnsAboutTheCentreGroundPoint) {
                         << run.output;
 }
 
+// "Go to": G, a place name, Enter: the camera flies there (it ends ~15 km from the place, looking
+// at it), from Mount Fuji to Zion; a typo is said on the HUD and nothing moves.
+TEST(GlobeViewWindow, GoToReachesThePlace) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const ShellRun run = runUnderXvfb(
+      "view-go-to",
+      globeView("--size 640x360 --log --camera 138.73,35.36,50000 > log.txt &\n") + "VIEW=$!\n" +
+          kFindWindow +
+          "for i in $(seq 100); do grep -q 'view complete' log.txt && break; sleep 0.1; done\n"
+          "xdotool key --window $WID g\n"
+          "xdotool type --window $WID --delay 30 'Angels Landing'\n"
+          "xdotool key --window $WID Return\n"
+          "for i in $(seq 100); do grep -q '^go to' log.txt && break; sleep 0.1; done\n"
+          "sleep 5\n"
+          "xdotool keydown --window $WID Escape\n"
+          "wait $VIEW; echo exit=$?\n"
+          "cat log.txt\n");
+  const auto values = valuesOf(run.output);
+  ASSERT_EQ(values.count("exit"), 1u) << run.output;
+  EXPECT_EQ(values.at("exit"), "0") << run.output;
+  EXPECT_NE(run.output.find("go to Angels Landing (37.26920, -112.94800)"), std::string::npos)
+      << run.output;
+  const LoggedCamera camera = loggedCamera(run.output);
+  ASSERT_TRUE(camera.found) << run.output;
+  // ~15 km from Angels Landing: within 0.2 degrees of it, and above the ground.
+  EXPECT_NEAR(camera.lat, 37.2692, 0.2) << run.output;
+  EXPECT_NEAR(camera.lon, -112.9480, 0.2) << run.output;
+  EXPECT_GT(camera.height, 3000) << run.output;
+}
+
+// The compass (top right) shows where north is; a click on it turns the view north up about the
+// ground at the centre.
+TEST(GlobeViewWindow, CompassClickTurnsNorthUp) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const ShellRun run = runUnderXvfb(
+      "view-compass",
+      globeView("--size 640x360 --log --camera 138.60,35.20,15000,120,-40,0 > log.txt &\n") +
+          "VIEW=$!\n" + kFindWindow +
+          "for i in $(seq 100); do grep -q 'view complete' log.txt && break; sleep 0.1; done\n"
+          "xdotool mousemove --window $WID 610 16 click --window $WID 1\n"
+          "sleep 1\n"
+          "xdotool keydown --window $WID Escape\n"
+          "wait $VIEW; echo exit=$?\n"
+          "cat log.txt\n");
+  const auto values = valuesOf(run.output);
+  ASSERT_EQ(values.count("exit"), 1u) << run.output;
+  EXPECT_EQ(values.at("exit"), "0") << run.output;
+  const size_t at = ("\n" + run.output).find("\ncamera ");
+  ASSERT_NE(at, std::string::npos) << run.output;
+  double lon = 0, lat = 0, height = 0, heading = -1;
+  ASSERT_EQ(
+      std::sscanf(run.output.c_str() + at, "camera %lf,%lf,%lf,%lf", &lon, &lat, &height, &heading),
+      4)
+      << run.output;
+  EXPECT_LT(std::min(heading, 360 - heading), 1.0) << "north up\n" << run.output;
+}
+
 // In orbit mode a double-click flies towards the point under the cursor (up and right of the
 // centre: north-east) and closer to it.
 TEST(GlobeViewWindow, DoubleClickFliesToThePoint) {
