@@ -15,16 +15,16 @@
 
 #include <glm/geometric.hpp>
 
-#include "app/fly_controls.hpp"
-#include "app/fly_to.hpp"
 #include "app/go_to.hpp"
 #include "app/hud_text.hpp"
 #include "app/imagery.hpp"
-#include "app/orbit_controls.hpp"
 #include "app/path_recorder.hpp"
 #include "app/renderer_gpu.hpp"
 #include "app/view_input.hpp"
 #include "camera/camera_controller.hpp"
+#include "camera/fly_controls.hpp"
+#include "camera/fly_to.hpp"
+#include "camera/orbit_controls.hpp"
 #include "collision/surface_probe.hpp"
 #include "geo/ecef.hpp"
 #include "io/image_io.hpp"
@@ -120,15 +120,15 @@ std::optional<glm::dvec3> pickTerrain(scene::TerrainScene& scene, const camera::
   glfwGetWindowSize(window, &width, &height);
   const geo::Ellipsoid& ellipsoid = scene.ellipsoid();
   const camera::CameraFrame frame = camera::cameraFrame(ellipsoid, pose);
-  const glm::dvec3 ray = pixelRayEcef(frame, pixel.x, pixel.y, width, height, fovYRadians);
+  const glm::dvec3 ray = camera::pixelRayEcef(frame, pixel.x, pixel.y, width, height, fovYRadians);
   const collision::RenderingTileArray& array = scene.renderingTileArray();
-  return intersectTerrain(ellipsoid, frame.positionEcefMeters, ray,
-                          [&](double lon, double lat) -> std::optional<double> {
-                            const auto surface = collision::surfaceHeightAt(
-                                array, ellipsoid, lon, lat, collision::SurfaceModel::Exact);
-                            if (!surface || !surface->found) return std::nullopt;
-                            return surface->heightMeters;
-                          });
+  return camera::intersectTerrain(ellipsoid, frame.positionEcefMeters, ray,
+                                  [&](double lon, double lat) -> std::optional<double> {
+                                    const auto surface = collision::surfaceHeightAt(
+                                        array, ellipsoid, lon, lat, collision::SurfaceModel::Exact);
+                                    if (!surface || !surface->found) return std::nullopt;
+                                    return surface->heightMeters;
+                                  });
 }
 
 }  // namespace
@@ -163,9 +163,9 @@ Result<ViewReport> runView(const ViewOptions& options) {
 
   const geo::Ellipsoid& ellipsoid = (*scene)->ellipsoid();
   const double fovY = options.scene.fovYRadians;
-  OrbitControls controls(ellipsoid, options.pose, fovY);
+  camera::OrbitControls controls(ellipsoid, options.pose, fovY);
   // A start pose orbit mode cannot show is changed, and said so (never silently).
-  for (const std::string& clamp : describeStartClamp(options.pose, controls.home())) {
+  for (const std::string& clamp : camera::describeStartClamp(options.pose, controls.home())) {
     std::fprintf(stderr, "globe view: --camera %s\n", clamp.c_str());
   }
   camera::CameraController controller(controls.home());
@@ -174,12 +174,13 @@ Result<ViewReport> runView(const ViewOptions& options) {
   GLFWwindow* handle = (*window)->window();
   installViewCallbacks(handle, input);
   PathRecorder recorder;
-  std::optional<FlyToAnimation> flyTo;
+  std::optional<camera::FlyToAnimation> flyTo;
   Clock::time_point flyToStart{};
   // Fly mode's wanted orientation: kept when a move is stopped, so no look is lost.
   camera::CameraPose flyLook = controller.pose();
   std::optional<glm::dvec3> grabbed;  // the ground point a left-drag holds under the cursor
-  SmoothedClearance flyClearance;     // what fly speed follows, so it does not lurch at cliff edges
+  camera::SmoothedClearance
+      flyClearance;  // what fly speed follows, so it does not lurch at cliff edges
 
   const bool continuous = options.frames > 0;
   const auto start = Clock::now();
@@ -224,8 +225,9 @@ Result<ViewReport> runView(const ViewOptions& options) {
       if (input.doubleClickPixels) {
         if (const auto target =
                 pickTerrain(**scene, controller.pose(), *input.doubleClickPixels, handle, fovY)) {
-          const camera::CameraPose end = flyToEndPose(ellipsoid, controller.pose(), *target);
-          flyTo.emplace(ellipsoid, controller.pose(), end, FlyToSettings{}.durationSeconds);
+          const camera::CameraPose end =
+              camera::flyToEndPose(ellipsoid, controller.pose(), *target);
+          flyTo.emplace(ellipsoid, controller.pose(), end, camera::FlyToSettings{}.durationSeconds);
           flyToStart = now;
         }
         input.doubleClickPixels.reset();
@@ -238,8 +240,8 @@ Result<ViewReport> runView(const ViewOptions& options) {
         int windowWidth = 0, windowHeight = 0;  // the ray takes window pixels
         glfwGetWindowSize(handle, &windowWidth, &windowHeight);
         const camera::CameraFrame frame = camera::cameraFrame(ellipsoid, controls.pose());
-        const glm::dvec3 ray = pixelRayEcef(frame, input.panPixels.x, input.panPixels.y,
-                                            windowWidth, windowHeight, fovY);
+        const glm::dvec3 ray = camera::pixelRayEcef(frame, input.panPixels.x, input.panPixels.y,
+                                                    windowWidth, windowHeight, fovY);
         if (!grabbed || !controls.dragGrabbed(*grabbed, ray)) {
           controls.rotateByDrag(input.panDxPixels, input.panDyPixels,
                                 windowHeight);  // off the globe
@@ -288,7 +290,7 @@ Result<ViewReport> runView(const ViewOptions& options) {
           const glm::dvec3 point =
               geo::cartographicToEcef(ellipsoid, {lon, lat, ground ? *ground : 0.0});
           // Land ~15 km from the place, looking at it; longer ways take longer (up to 4 s).
-          FlyToSettings settings;
+          camera::FlyToSettings settings;
           settings.distanceFraction = 0;
           settings.minimumDistanceMeters = 15000;
           settings.maximumPitchRadians = geo::degreesToRadians(-35);
@@ -297,7 +299,7 @@ Result<ViewReport> runView(const ViewOptions& options) {
           settings.durationSeconds =
               std::clamp(1.0 + std::log10(std::max(way, 1.0) / 1e4), 1.0, 4.0);
           const camera::CameraPose end =
-              flyToEndPose(ellipsoid, controller.pose(), point, settings);
+              camera::flyToEndPose(ellipsoid, controller.pose(), point, settings);
           flyTo.emplace(ellipsoid, controller.pose(), end, settings.durationSeconds);
           flyToStart = now;
           std::printf("go to %s (%.5f, %.5f)\n", target->name.c_str(), target->latitudeDegrees,
@@ -321,21 +323,22 @@ Result<ViewReport> runView(const ViewOptions& options) {
         input.changed = true;
       } else if (input.mode == ViewMode::Fly) {
         if (input.lookDxPixels != 0 || input.lookDyPixels != 0) {
-          flyLook = lookByPixels(flyLook, input.lookDxPixels, input.lookDyPixels);
+          flyLook = camera::lookByPixels(flyLook, input.lookDxPixels, input.lookDyPixels);
         }
         if (input.lookHeadingRadians != 0 || input.lookPitchRadians != 0) {
-          flyLook = lookByRadians(flyLook, input.lookHeadingRadians, input.lookPitchRadians);
+          flyLook =
+              camera::lookByRadians(flyLook, input.lookHeadingRadians, input.lookPitchRadians);
         }
         input.lookDxPixels = input.lookDyPixels = 0;
         input.lookHeadingRadians = input.lookPitchRadians = 0;
         camera::CameraPose wanted = flyLook;
         wanted.position = controller.pose().position;
         if (input.flyKeys.moving()) {
-          const glm::dvec3 velocity =
-              flyVelocityEcef(ellipsoid, wanted, input.flyKeys,
-                              flyClearance.update(controller.state().clearanceMeters, dtSeconds),
-                              input.speed.factor());
-          controller.propose(flyStep(ellipsoid, wanted, velocity, dtSeconds),
+          const glm::dvec3 velocity = camera::flyVelocityEcef(
+              ellipsoid, wanted, input.flyKeys,
+              flyClearance.update(controller.state().clearanceMeters, dtSeconds),
+              input.speed.factor());
+          controller.propose(camera::flyStep(ellipsoid, wanted, velocity, dtSeconds),
                              camera::MotionKind::Linear);
           input.changed = true;  // keep flying while the key is held
         } else {
@@ -373,7 +376,7 @@ Result<ViewReport> runView(const ViewOptions& options) {
       hudState.collision = collisionState;
       hudState.tilesDrawn = (*scene)->tiles().size();
       hudState.tilesLoading = info.requests;
-      hudState.flySpeedMetersPerSecond = flySpeedMetersPerSecond(
+      hudState.flySpeedMetersPerSecond = camera::flySpeedMetersPerSecond(
           input.flyKeys.moving() ? flyClearance.update(collisionState.clearanceMeters, 0)
                                  : collisionState.clearanceMeters,
           input.flyKeys.fast, input.speed.factor());

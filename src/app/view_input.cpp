@@ -23,7 +23,7 @@ int windowHeight(GLFWwindow* window) {
 void changeSpeed(ViewInput& input, double steps) { input.speed.change(steps); }
 
 // Held movement keys; true when the key is one of them.
-bool trackFlyKey(FlyKeys& keys, int key, bool down) {
+bool trackFlyKey(camera::FlyKeys& keys, int key, bool down) {
   switch (key) {
     case GLFW_KEY_W:
       keys.forward = down;
@@ -94,7 +94,7 @@ bool commonKey(GLFWwindow* window, ViewInput& input, int key) {
 }
 
 bool orbitKey(GLFWwindow* window, ViewInput& input, int key) {
-  OrbitControls& controls = *input.orbit;
+  camera::OrbitControls& controls = *input.orbit;
   switch (key) {
     case GLFW_KEY_UP:
       controls.rotateByDrag(0, kPanPixelsPerKey, windowHeight(window));

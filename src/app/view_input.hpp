@@ -7,24 +7,24 @@
 
 #include <glm/vec2.hpp>
 
-#include "app/fly_controls.hpp"
 #include "app/hud_text.hpp"
-#include "app/orbit_controls.hpp"
+#include "camera/fly_controls.hpp"
+#include "camera/orbit_controls.hpp"
 
 struct GLFWwindow;
 
 namespace globe::app {
 
 struct ViewInput {
-  OrbitControls* orbit = nullptr;
+  camera::OrbitControls* orbit = nullptr;
   ViewMode mode = ViewMode::Orbit;
   bool changed = true;     // something to update or redraw
   bool userMoved = false;  // the user moved the camera (cancels a fly-to)
 
-  FlyKeys flyKeys;                            // held now (tracked in both modes, used in fly mode)
+  camera::FlyKeys flyKeys;                    // held now (tracked in both modes, used in fly mode)
   double lookDxPixels = 0, lookDyPixels = 0;  // fly: mouse look to apply
   double lookHeadingRadians = 0, lookPitchRadians = 0;  // fly: arrow keys to apply
-  SpeedSteps speed;                                     // fly: scroll wheel, +/-
+  camera::SpeedSteps speed;                             // fly: scroll wheel, +/-
 
   // Orbit moves about the ground under a pixel, done by the loop (it has the scene to pick the
   // ground from): scroll zooms toward the ground under the cursor, tilting turns about the ground

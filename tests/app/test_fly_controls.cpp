@@ -11,20 +11,20 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
-#include "app/fly_controls.hpp"
-#include "app/fly_to.hpp"
 #include "app/hud_text.hpp"
 #include "app/path_recorder.hpp"
+#include "camera/fly_controls.hpp"
+#include "camera/fly_to.hpp"
 #include "geo/ecef.hpp"
 #include "render/hud_renderer.hpp"
 
 namespace {
 
-using globe::app::FlyKeys;
 using globe::app::HudState;
-using globe::app::SpeedSteps;
 using globe::app::ViewMode;
 using globe::camera::CameraPose;
+using globe::camera::FlyKeys;
+using globe::camera::SpeedSteps;
 using globe::geo::degreesToRadians;
 using globe::geo::radiansToDegrees;
 
@@ -70,7 +70,7 @@ void expectNear(const glm::dvec3& actual, const glm::dvec3& expected, double tol
 }
 
 TEST(FlyControls, WasdMovesInTheEastNorthUpFrameOfTheHeading) {
-  using globe::app::flyDirectionEnu;
+  using globe::camera::flyDirectionEnu;
   // Heading 0 (north), level: W north, S south, D east, A west, E up, Q down.
   expectNear(flyDirectionEnu(keys("w"), 0, 0), {0, 1, 0});
   expectNear(flyDirectionEnu(keys("s"), 0, 0), {0, -1, 0});
@@ -102,7 +102,7 @@ TEST(FlyControls, WasdMovesInTheEastNorthUpFrameOfTheHeading) {
 // 60 frames per second the speed changes by at most x2 per second up and /8 per second down:
 // never by more than 2^(1/60) = 1.16 % up or 3.5 % down from one frame to the next.
 TEST(FlyControls, SpeedNeverJumpsAcrossACliffEdge) {
-  using globe::app::SmoothedClearance;
+  using globe::camera::SmoothedClearance;
   SmoothedClearance smoothed;
   const double dt = 1.0 / 60;
   double previous = smoothed.update(32, dt);
@@ -175,7 +175,7 @@ TEST(FlyControls, SpeedStepsAreCleanAndReturnExactlyToOne) {
 }
 
 TEST(FlyControls, SpeedScalesWithTheClearanceWithAFloorAndShift) {
-  using globe::app::flySpeedMetersPerSecond;
+  using globe::camera::flySpeedMetersPerSecond;
   EXPECT_DOUBLE_EQ(flySpeedMetersPerSecond(0.5, false), 2.0);  // the 2 m/s floor
   EXPECT_DOUBLE_EQ(flySpeedMetersPerSecond(-10, false), 2.0);
   EXPECT_DOUBLE_EQ(flySpeedMetersPerSecond(2, false), 2.0);
@@ -188,29 +188,29 @@ TEST(FlyControls, SpeedScalesWithTheClearanceWithAFloorAndShift) {
 
 TEST(FlyControls, VelocityIsEcefAlongTheViewAndAStepMovesThere) {
   const CameraPose pose = CameraPose::fromDegrees(138.7, 35.3, 5000, 0, 0);
-  const glm::dvec3 v = globe::app::flyVelocityEcef(kWgs84, pose, keys("w"), 1000);
+  const glm::dvec3 v = globe::camera::flyVelocityEcef(kWgs84, pose, keys("w"), 1000);
   EXPECT_NEAR(glm::length(v), 1000, 1e-9);
   const auto enu = globe::camera::eastNorthUp(kWgs84, pose.position);
   EXPECT_NEAR(glm::dot(v, enu.north), 1000, 1e-9);
   // Half a second north at 1 km/s: 500 m, latitude up, longitude the same.
-  const CameraPose next = globe::app::flyStep(kWgs84, pose, v, 0.5);
+  const CameraPose next = globe::camera::flyStep(kWgs84, pose, v, 0.5);
   const double moved = glm::length(globe::geo::cartographicToEcef(kWgs84, next.position) -
                                    globe::geo::cartographicToEcef(kWgs84, pose.position));
   EXPECT_NEAR(moved, 500, 1e-6);
   EXPECT_GT(next.position.latitudeRadians, pose.position.latitudeRadians);
   EXPECT_NEAR(next.position.longitudeDegrees(), 138.7, 1e-9);
   EXPECT_DOUBLE_EQ(next.headingRadians, pose.headingRadians);
-  EXPECT_EQ(globe::app::flyStep(kWgs84, pose, glm::dvec3(0.0), 0.5).position.heightMeters, 5000);
+  EXPECT_EQ(globe::camera::flyStep(kWgs84, pose, glm::dvec3(0.0), 0.5).position.heightMeters, 5000);
 }
 
 TEST(FlyControls, LookTurnsAndClampsThePitch) {
   const CameraPose pose = CameraPose::fromDegrees(0, 0, 100, 350, 0);
-  const CameraPose right = globe::app::lookByPixels(pose, 100, 0);  // drag right: turn right
+  const CameraPose right = globe::camera::lookByPixels(pose, 100, 0);  // drag right: turn right
   EXPECT_NEAR(radiansToDegrees(right.headingRadians), 350 + radiansToDegrees(0.3) - 360, 1e-9);
-  const CameraPose up = globe::app::lookByPixels(pose, 0, -100);  // drag up: look up
+  const CameraPose up = globe::camera::lookByPixels(pose, 0, -100);  // drag up: look up
   EXPECT_NEAR(up.pitchRadians, 0.3, 1e-12);
-  EXPECT_NEAR(radiansToDegrees(globe::app::lookByPixels(pose, 0, 1e6).pitchRadians), -89, 1e-9);
-  EXPECT_NEAR(radiansToDegrees(globe::app::lookByRadians(pose, 0, 10).pitchRadians), 89, 1e-9);
+  EXPECT_NEAR(radiansToDegrees(globe::camera::lookByPixels(pose, 0, 1e6).pitchRadians), -89, 1e-9);
+  EXPECT_NEAR(radiansToDegrees(globe::camera::lookByRadians(pose, 0, 10).pitchRadians), 89, 1e-9);
 }
 
 TEST(FlyTo, ThePixelRayHitsTheTerrainUnderIt) {
@@ -218,32 +218,33 @@ TEST(FlyTo, ThePixelRayHitsTheTerrainUnderIt) {
   // the plateau right below, 9,000 m away.
   const CameraPose pose = CameraPose::fromDegrees(10, 45, 10000, 0, -90);
   const auto frame = globe::camera::cameraFrame(kWgs84, pose);
-  const glm::dvec3 ray = globe::app::pixelRayEcef(frame, 320, 180, 640, 360, kPi / 4);
+  const glm::dvec3 ray = globe::camera::pixelRayEcef(frame, 320, 180, 640, 360, kPi / 4);
   expectNear(ray, frame.forward, 1e-12);
   const auto plateau = [](double, double) -> std::optional<double> { return 1000.0; };
-  const auto hit = globe::app::intersectTerrain(kWgs84, frame.positionEcefMeters, ray, plateau);
+  const auto hit = globe::camera::intersectTerrain(kWgs84, frame.positionEcefMeters, ray, plateau);
   ASSERT_TRUE(hit);
   EXPECT_NEAR(glm::length(*hit - frame.positionEcefMeters), 9000, 0.05);
   const auto point = globe::geo::ecefToCartographic(kWgs84, *hit);
   EXPECT_NEAR(point->heightMeters, 1000, 0.05);
   // The top edge's centre pixel looks 22.5 deg forward (north) of straight down.
-  const glm::dvec3 top = globe::app::pixelRayEcef(frame, 320, 0, 640, 360, kPi / 4);
+  const glm::dvec3 top = globe::camera::pixelRayEcef(frame, 320, 0, 640, 360, kPi / 4);
   EXPECT_NEAR(std::acos(glm::dot(top, frame.forward)), kPi / 8, 1e-9);
-  const auto north = globe::app::intersectTerrain(kWgs84, frame.positionEcefMeters, top, plateau);
+  const auto north =
+      globe::camera::intersectTerrain(kWgs84, frame.positionEcefMeters, top, plateau);
   ASSERT_TRUE(north);
   EXPECT_GT(globe::geo::ecefToCartographic(kWgs84, *north)->latitudeDegrees(), 45);
   // Looking up at the sky misses.
   const CameraPose sky = CameraPose::fromDegrees(10, 45, 10000, 0, 30);
   const auto skyFrame = globe::camera::cameraFrame(kWgs84, sky);
-  EXPECT_FALSE(
-      globe::app::intersectTerrain(kWgs84, skyFrame.positionEcefMeters, skyFrame.forward, plateau));
+  EXPECT_FALSE(globe::camera::intersectTerrain(kWgs84, skyFrame.positionEcefMeters,
+                                               skyFrame.forward, plateau));
 }
 
 TEST(FlyTo, EndsLookingAtTheTargetAndAnimatesSmoothly) {
   const CameraPose from = CameraPose::fromDegrees(138.0, 35.0, 50000, 30, -60);
   const glm::dvec3 target = globe::geo::cartographicToEcef(
       kWgs84, globe::geo::Cartographic::fromDegrees(138.5, 35.5, 800));
-  const CameraPose end = globe::app::flyToEndPose(kWgs84, from, target);
+  const CameraPose end = globe::camera::flyToEndPose(kWgs84, from, target);
   const auto frame = globe::camera::cameraFrame(kWgs84, end);
   const glm::dvec3 toTarget = target - frame.positionEcefMeters;
   // The target is at the centre of the view, 0.3 of the way's length away.
@@ -251,7 +252,7 @@ TEST(FlyTo, EndsLookingAtTheTargetAndAnimatesSmoothly) {
   const double way = glm::length(target - globe::geo::cartographicToEcef(kWgs84, from.position));
   EXPECT_NEAR(glm::length(toTarget), 0.3 * way, 1e-3);
   EXPECT_NEAR(radiansToDegrees(end.pitchRadians), -60, 0.5);
-  globe::app::FlyToAnimation animation(kWgs84, from, end, 1.0);
+  globe::camera::FlyToAnimation animation(kWgs84, from, end, 1.0);
   const CameraPose begin = animation.poseAt(0), middle = animation.poseAt(0.5);
   EXPECT_DOUBLE_EQ(begin.position.heightMeters, from.position.heightMeters);
   EXPECT_GT(middle.position.longitudeDegrees(), 138.0);
@@ -261,7 +262,7 @@ TEST(FlyTo, EndsLookingAtTheTargetAndAnimatesSmoothly) {
   EXPECT_DOUBLE_EQ(animation.poseAt(1.0).position.heightMeters, end.position.heightMeters);
   // Looking straight down the fly ends straight above the target, the heading kept.
   const CameraPose down = CameraPose::fromDegrees(138.0, 35.0, 50000, 30, -90);
-  const CameraPose above = globe::app::flyToEndPose(kWgs84, down, target);
+  const CameraPose above = globe::camera::flyToEndPose(kWgs84, down, target);
   EXPECT_NEAR(radiansToDegrees(above.headingRadians), 30, 1e-6);
   EXPECT_NEAR(radiansToDegrees(above.pitchRadians), -90, 1e-6);
   EXPECT_NEAR(above.position.longitudeDegrees(), 138.5, 1e-9);
@@ -269,8 +270,9 @@ TEST(FlyTo, EndsLookingAtTheTargetAndAnimatesSmoothly) {
   // Across the antimeridian the short way round.
   const CameraPose west = CameraPose::fromDegrees(179.5, 0, 1e5),
                    east = CameraPose::fromDegrees(-179.5, 0, 1e5);
-  const double lon =
-      globe::app::FlyToAnimation(kWgs84, west, east, 1.0).poseAt(0.5).position.longitudeDegrees();
+  const double lon = globe::camera::FlyToAnimation(kWgs84, west, east, 1.0)
+                         .poseAt(0.5)
+                         .position.longitudeDegrees();
   EXPECT_NEAR(std::abs(lon), 180, 1e-6);
 }
 

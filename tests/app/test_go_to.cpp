@@ -10,9 +10,9 @@
 
 #include <glm/geometric.hpp>
 
-#include "app/fly_to.hpp"
 #include "app/hud_text.hpp"
-#include "app/orbit_controls.hpp"
+#include "camera/fly_to.hpp"
+#include "camera/orbit_controls.hpp"
 #include "geo/ecef.hpp"
 
 namespace globe::app {
@@ -70,11 +70,11 @@ TEST(Compass, ArrowPointsToNorthOnTheScreen) {
 
 TEST(Compass, NorthUpTurnsAboutTheCentreGroundPoint) {
   const geo::Ellipsoid wgs84 = geo::Ellipsoid::wgs84();
-  OrbitControls controls(wgs84, camera::CameraPose::fromDegrees(138.6, 35.2, 15000, 130, -40, 0),
-                         0.8);
+  camera::OrbitControls controls(
+      wgs84, camera::CameraPose::fromDegrees(138.6, 35.2, 15000, 130, -40, 0), 0.8);
   const auto frame = camera::cameraFrame(wgs84, controls.pose());
-  const auto pivot = intersectTerrain(wgs84, frame.positionEcefMeters, frame.forward,
-                                      [](double, double) { return 1000.0; });
+  const auto pivot = camera::intersectTerrain(wgs84, frame.positionEcefMeters, frame.forward,
+                                              [](double, double) { return 1000.0; });
   ASSERT_TRUE(pivot);
   controls.northUp(pivot);
   EXPECT_NEAR(std::remainder(controls.pose().headingRadians, 2 * 3.141592653589793), 0, 1e-3);

@@ -15,16 +15,16 @@
 #include <set>
 #include <string>
 
-#include "app/fly_to.hpp"
-#include "app/orbit_controls.hpp"
+#include "camera/fly_to.hpp"
+#include "camera/orbit_controls.hpp"
 #include "geo/ecef.hpp"
 #include "io/image_io.hpp"
 #include "tests/tools/tiler/tiler_test_fixture.hpp"
 
 namespace {
 
-using globe::app::OrbitControls;
 using globe::camera::CameraPose;
+using globe::camera::OrbitControls;
 
 constexpr double kPi = std::numbers::pi;
 const auto kWgs84 = globe::geo::Ellipsoid::wgs84();
@@ -535,8 +535,8 @@ TEST(GlobeViewWindow, RightDragTurnsAboutTheCentreGroundPoint) {
   const globe::geo::Ellipsoid wgs84 = globe::geo::Ellipsoid::wgs84();
   const auto centreGround = [&](const CameraPose& pose, double groundMeters) {
     const auto frame = globe::camera::cameraFrame(wgs84, pose);
-    return globe::app::intersectTerrain(wgs84, frame.positionEcefMeters, frame.forward,
-                                        [&](double, double) { return groundMeters; });
+    return globe::camera::intersectTerrain(wgs84, frame.positionEcefMeters, frame.forward,
+                                           [&](double, double) { return groundMeters; });
   };
   double ground = 0;
   for (int round = 0; round < 4; ++round) {

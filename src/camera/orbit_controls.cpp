@@ -1,4 +1,4 @@
-#include "app/orbit_controls.hpp"
+#include "camera/orbit_controls.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,12 +10,12 @@
 #include "geo/cartographic.hpp"
 #include "geo/ecef.hpp"
 
-namespace globe::app {
+namespace globe::camera {
 
-OrbitControls::OrbitControls(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& home,
+OrbitControls::OrbitControls(const geo::Ellipsoid& ellipsoid, const CameraPose& home,
                              double fovYRadians, const OrbitLimits& limits)
     : ellipsoid_(ellipsoid), home_(home), pose_(home), fovYRadians_(fovYRadians), limits_(limits) {
-  if (!pose_.isFinite()) pose_ = camera::CameraPose::fromDegrees(0, 20, 2e7);  // view's default
+  if (!pose_.isFinite()) pose_ = CameraPose::fromDegrees(0, 20, 2e7);  // view's default
   clampPose();
   home_ = pose_;
 }
@@ -60,8 +60,8 @@ bool OrbitControls::lookFrom(const glm::dvec3& positionEcefMeters, const glm::dv
                              const glm::dvec3& up) {
   const auto position = geo::ecefToCartographic(ellipsoid_, positionEcefMeters);
   if (!position || !std::isfinite(forward.x + forward.y + forward.z)) return false;
-  const camera::EastNorthUp enu = camera::eastNorthUp(ellipsoid_, *position);
-  camera::CameraPose next = pose_;
+  const EastNorthUp enu = eastNorthUp(ellipsoid_, *position);
+  CameraPose next = pose_;
   next.position = *position;
   next.pitchRadians = std::asin(std::clamp(glm::dot(forward, enu.up), -1.0, 1.0));
   // The heading's direction: cos(pitch)·forward − sin(pitch)·up is horizontal for a level camera
@@ -81,7 +81,7 @@ void OrbitControls::zoomToward(double notches, const glm::dvec3& targetEcefMeter
       !std::isfinite(targetEcefMeters.x + targetEcefMeters.y + targetEcefMeters.z)) {
     return;
   }
-  const camera::CameraFrame frame = camera::cameraFrame(ellipsoid_, pose_);
+  const CameraFrame frame = cameraFrame(ellipsoid_, pose_);
   const glm::dvec3 toTarget = targetEcefMeters - frame.positionEcefMeters;
   const double distance = glm::length(toTarget);
   if (!(distance > 0)) return;
@@ -97,10 +97,10 @@ void OrbitControls::zoomToward(double notches, const glm::dvec3& targetEcefMeter
   if (!lookFrom(position, frame.forward, frame.up)) return;
   const glm::dvec3 direction = toTarget / distance;
   const auto residual = [&](double heading, double pitch) {
-    camera::CameraPose trial = pose_;
+    CameraPose trial = pose_;
     trial.headingRadians = heading;
     trial.pitchRadians = pitch;
-    const camera::CameraFrame f = camera::cameraFrame(ellipsoid_, trial);
+    const CameraFrame f = cameraFrame(ellipsoid_, trial);
     return glm::dvec2(glm::dot(direction, f.right) - seen.x, glm::dot(direction, f.up) - seen.y);
   };
   // Orbit's pitch range: a solution past straight down (zooming out of a nadir view near an
@@ -137,7 +137,7 @@ bool OrbitControls::dragGrabbed(const glm::dvec3& grabbedEcefMeters, const glm::
   const double radius = glm::length(grabbedEcefMeters);
   if (!std::isfinite(radius) || !(radius > 0) || !std::isfinite(rayEcef.x + rayEcef.y + rayEcef.z))
     return false;
-  const camera::CameraFrame frame = camera::cameraFrame(ellipsoid_, pose_);
+  const CameraFrame frame = cameraFrame(ellipsoid_, pose_);
   // Where the ray meets the sphere through the grabbed point (the near side).
   const glm::dvec3& origin = frame.positionEcefMeters;
   const double b = glm::dot(origin, rayEcef);
@@ -168,8 +168,8 @@ void OrbitControls::northUp(const std::optional<glm::dvec3>& pivotEcefMeters) {
     return;
   }
   // The heading as seen from the pivot, turned to 0 about it.
-  const camera::CameraFrame frame = camera::cameraFrame(ellipsoid_, pose_);
-  const camera::EastNorthUp enu = camera::eastNorthUp(ellipsoid_, *pivot);
+  const CameraFrame frame = cameraFrame(ellipsoid_, pose_);
+  const EastNorthUp enu = eastNorthUp(ellipsoid_, *pivot);
   const glm::dvec3 look = *pivotEcefMeters - frame.positionEcefMeters;
   const double east = glm::dot(look, enu.east), north = glm::dot(look, enu.north);
   const double heading = std::hypot(east, north) > 1e-9 * glm::length(look)
@@ -186,12 +186,12 @@ void OrbitControls::tiltAbout(double dxPixels, double dyPixels, const glm::dvec3
   }
   const auto pivot = geo::ecefToCartographic(ellipsoid_, pivotEcefMeters);
   if (!pivot) return;
-  const camera::CameraFrame frame = camera::cameraFrame(ellipsoid_, pose_);
+  const CameraFrame frame = cameraFrame(ellipsoid_, pose_);
   const glm::dvec3 fromPivot = frame.positionEcefMeters - pivotEcefMeters;
   const double distance = glm::length(fromPivot);
   if (!(distance > 0)) return;
   // The view direction as seen in the pivot's east-north-up frame, turned and tilted there.
-  const camera::EastNorthUp enu = camera::eastNorthUp(ellipsoid_, *pivot);
+  const EastNorthUp enu = eastNorthUp(ellipsoid_, *pivot);
   const glm::dvec3 look = -fromPivot / distance;
   const double east = glm::dot(look, enu.east), north = glm::dot(look, enu.north);
   double heading = std::hypot(east, north) > 1e-9 ? std::atan2(east, north) : pose_.headingRadians;
@@ -211,7 +211,7 @@ void OrbitControls::tiltAbout(double dxPixels, double dyPixels, const glm::dvec3
 bool OrbitControls::setGroundHeight(double groundHeightMeters) {
   if (!std::isfinite(groundHeightMeters)) return false;
   groundHeightMeters_ = groundHeightMeters;
-  const camera::CameraPose before = pose_;
+  const CameraPose before = pose_;
   clampPose();
   return pose_.position.heightMeters != before.position.heightMeters;
 }
@@ -230,8 +230,7 @@ void OrbitControls::clampPose() {
       std::max(limits_.maximumHeightMeters, groundHeightMeters_ + limits_.minimumClearanceMeters));
 }
 
-std::vector<std::string> describeStartClamp(const camera::CameraPose& asked,
-                                            const camera::CameraPose& started) {
+std::vector<std::string> describeStartClamp(const CameraPose& asked, const CameraPose& started) {
   std::vector<std::string> said;
   const auto degrees = [](double radians) {
     char text[32];
@@ -258,4 +257,4 @@ std::vector<std::string> describeStartClamp(const camera::CameraPose& asked,
   return said;
 }
 
-}  // namespace globe::app
+}  // namespace globe::camera

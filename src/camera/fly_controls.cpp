@@ -1,5 +1,5 @@
 // Fly-mode maths: directions in the local east-north-up frame, speed from the clearance, look.
-#include "app/fly_controls.hpp"
+#include "camera/fly_controls.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 
 #include "geo/ecef.hpp"
 
-namespace globe::app {
+namespace globe::camera {
 
 bool FlyKeys::moving() const { return forward != back || left != right || down != up; }
 
@@ -38,39 +38,39 @@ glm::dvec3 flyDirectionEnu(const FlyKeys& keys, double headingRadians, double pi
   return length > 1e-12 ? direction / length : glm::dvec3(0.0);
 }
 
-glm::dvec3 flyVelocityEcef(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& pose,
+glm::dvec3 flyVelocityEcef(const geo::Ellipsoid& ellipsoid, const CameraPose& pose,
                            const FlyKeys& keys, double clearanceMeters, double factor,
                            const FlySettings& settings) {
   const glm::dvec3 d = flyDirectionEnu(keys, pose.headingRadians, pose.pitchRadians);
-  const camera::EastNorthUp enu = camera::eastNorthUp(ellipsoid, pose.position);
+  const EastNorthUp enu = eastNorthUp(ellipsoid, pose.position);
   const double speed = flySpeedMetersPerSecond(clearanceMeters, keys.fast, factor, settings);
   return speed * (d.x * enu.east + d.y * enu.north + d.z * enu.up);
 }
 
-camera::CameraPose flyStep(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& pose,
-                           const glm::dvec3& velocityEcefMetersPerSecond, double dtSeconds) {
+CameraPose flyStep(const geo::Ellipsoid& ellipsoid, const CameraPose& pose,
+                   const glm::dvec3& velocityEcefMetersPerSecond, double dtSeconds) {
   const glm::dvec3 displacement = velocityEcefMetersPerSecond * dtSeconds;
   const double length = glm::length(displacement);
   if (!(length > 0.0 && std::isfinite(length))) return pose;  // NaN, inf or no motion
   const auto moved = geo::ecefToCartographic(
       ellipsoid, geo::cartographicToEcef(ellipsoid, pose.position) + displacement);
   if (!moved) return pose;
-  camera::CameraPose next = pose;
+  CameraPose next = pose;
   next.position = *moved;
   return next;
 }
 
-camera::CameraPose lookByPixels(const camera::CameraPose& pose, double dxPixels, double dyPixels,
-                                const FlySettings& settings) {
+CameraPose lookByPixels(const CameraPose& pose, double dxPixels, double dyPixels,
+                        const FlySettings& settings) {
   return lookByRadians(pose, dxPixels * settings.lookRadiansPerPixel,
                        -dyPixels * settings.lookRadiansPerPixel, settings);
 }
 
-camera::CameraPose lookByRadians(const camera::CameraPose& pose, double headingRadians,
-                                 double pitchRadians, const FlySettings& settings) {
+CameraPose lookByRadians(const CameraPose& pose, double headingRadians, double pitchRadians,
+                         const FlySettings& settings) {
   constexpr double kTwoPi = 2 * std::numbers::pi;
   if (!std::isfinite(headingRadians) || !std::isfinite(pitchRadians)) return pose;
-  camera::CameraPose next = pose;
+  CameraPose next = pose;
   next.headingRadians = std::fmod(pose.headingRadians + headingRadians, kTwoPi);
   if (next.headingRadians < 0) next.headingRadians += kTwoPi;
   next.pitchRadians = std::clamp(pose.pitchRadians + pitchRadians, -settings.maximumPitchRadians,
@@ -103,4 +103,4 @@ void SpeedSteps::change(double notches) {
 
 double SpeedSteps::factor() const { return std::ldexp(1.0, step_); }
 
-}  // namespace globe::app
+}  // namespace globe::camera

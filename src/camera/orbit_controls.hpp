@@ -13,7 +13,7 @@
 #include "geo/cartographic.hpp"
 #include "geo/ellipsoid.hpp"
 
-namespace globe::app {
+namespace globe::camera {
 
 struct OrbitLimits {
   double minimumClearanceMeters = 1;  // lowest height above the terrain zoom may reach
@@ -27,11 +27,11 @@ struct OrbitLimits {
 // non-finite home pose is replaced by the default view), so the pose stays finite.
 class OrbitControls {
  public:
-  OrbitControls(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& home, double fovYRadians,
+  OrbitControls(const geo::Ellipsoid& ellipsoid, const CameraPose& home, double fovYRadians,
                 const OrbitLimits& limits = {});
 
-  const camera::CameraPose& pose() const { return pose_; }
-  const camera::CameraPose& home() const { return home_; }
+  const CameraPose& pose() const { return pose_; }
+  const CameraPose& home() const { return home_; }
   double groundHeightMeters() const { return groundHeightMeters_; }
   double clearanceMeters() const { return pose_.position.heightMeters - groundHeightMeters_; }
 
@@ -61,7 +61,7 @@ class OrbitControls {
   void tiltAbout(double dxPixels, double dyPixels, const glm::dvec3& pivotEcefMeters);
   void reset() { pose_ = home_; }
   // Takes the pose the collision response settled on, as it is (no clamping, so the two agree).
-  void adoptPose(const camera::CameraPose& pose) { pose_ = pose; }
+  void adoptPose(const CameraPose& pose) { pose_ = pose; }
   // The terrain height under the camera as the scene knows it now; lifts the camera when it is
   // less than the minimum clearance above it. Returns whether the pose changed.
   bool setGroundHeight(double groundHeightMeters);
@@ -78,8 +78,8 @@ class OrbitControls {
                 const glm::dvec3& up);
 
   geo::Ellipsoid ellipsoid_;
-  camera::CameraPose home_;
-  camera::CameraPose pose_;
+  CameraPose home_;
+  CameraPose pose_;
   double fovYRadians_;
   OrbitLimits limits_;
   double groundHeightMeters_ = 0;
@@ -87,7 +87,6 @@ class OrbitControls {
 
 // What the orbit limits changed in a start pose (`asked` → `started`, OrbitControls::home()), one
 // sentence per field naming the value asked for and the value used; empty when nothing changed.
-std::vector<std::string> describeStartClamp(const camera::CameraPose& asked,
-                                            const camera::CameraPose& started);
+std::vector<std::string> describeStartClamp(const CameraPose& asked, const CameraPose& started);
 
-}  // namespace globe::app
+}  // namespace globe::camera

@@ -1,5 +1,5 @@
 // Picking by ray marching against a height function, and the fly-to pose and animation.
-#include "app/fly_to.hpp"
+#include "camera/fly_to.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 
 #include "geo/ecef.hpp"
 
-namespace globe::app {
+namespace globe::camera {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -27,8 +27,8 @@ double shortAngle(double radians) { return std::remainder(radians, 2 * kPi); }
 
 }  // namespace
 
-glm::dvec3 pixelRayEcef(const camera::CameraFrame& frame, double xPixels, double yPixels,
-                        int widthPixels, int heightPixels, double fovYRadians) {
+glm::dvec3 pixelRayEcef(const CameraFrame& frame, double xPixels, double yPixels, int widthPixels,
+                        int heightPixels, double fovYRadians) {
   const double w = std::max(widthPixels, 1), h = std::max(heightPixels, 1);
   const double ndcX = 2 * xPixels / w - 1, ndcY = 1 - 2 * yPixels / h;
   const double tanHalf = std::tan(fovYRadians / 2);
@@ -73,8 +73,8 @@ std::optional<glm::dvec3> intersectTerrain(const geo::Ellipsoid& ellipsoid,
   return std::nullopt;
 }
 
-camera::CameraPose flyToEndPose(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& from,
-                                const glm::dvec3& targetEcefMeters, const FlyToSettings& settings) {
+CameraPose flyToEndPose(const geo::Ellipsoid& ellipsoid, const CameraPose& from,
+                        const glm::dvec3& targetEcefMeters, const FlyToSettings& settings) {
   const auto target = geo::ecefToCartographic(ellipsoid, targetEcefMeters);
   if (!target) return from;
   const glm::dvec3 eye = geo::cartographicToEcef(ellipsoid, from.position);
@@ -82,16 +82,16 @@ camera::CameraPose flyToEndPose(const geo::Ellipsoid& ellipsoid, const camera::C
                                    settings.minimumDistanceMeters);
   // The view direction with the current heading and a downward pitch, in the target's frame.
   const double pitch = std::min(from.pitchRadians, settings.maximumPitchRadians);
-  const camera::EastNorthUp enu = camera::eastNorthUp(ellipsoid, *target);
+  const EastNorthUp enu = eastNorthUp(ellipsoid, *target);
   const double sh = std::sin(from.headingRadians), ch = std::cos(from.headingRadians);
   const glm::dvec3 forward =
       std::cos(pitch) * (sh * enu.east + ch * enu.north) + std::sin(pitch) * enu.up;
   const auto end = geo::ecefToCartographic(ellipsoid, targetEcefMeters - distance * forward);
   if (!end) return from;
   // Heading and pitch again in the end point's own frame, so the target is exactly centred.
-  const camera::EastNorthUp there = camera::eastNorthUp(ellipsoid, *end);
+  const EastNorthUp there = eastNorthUp(ellipsoid, *end);
   const glm::dvec3 look = glm::normalize(forward);
-  camera::CameraPose pose = from;
+  CameraPose pose = from;
   pose.position = *end;
   const double east = glm::dot(look, there.east), north = glm::dot(look, there.north);
   // Looking (almost) straight down the heading is undefined: keep the current one.
@@ -101,8 +101,8 @@ camera::CameraPose flyToEndPose(const geo::Ellipsoid& ellipsoid, const camera::C
   return pose;
 }
 
-FlyToAnimation::FlyToAnimation(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& from,
-                               const camera::CameraPose& to, double durationSeconds)
+FlyToAnimation::FlyToAnimation(const geo::Ellipsoid& ellipsoid, const CameraPose& from,
+                               const CameraPose& to, double durationSeconds)
     : from_(from), to_(to), durationSeconds_(std::max(durationSeconds, 1e-3)) {
   // A long way hops up to see where it goes: half the way's length above the higher end.
   const double way = glm::length(
@@ -114,11 +114,11 @@ FlyToAnimation::FlyToAnimation(const geo::Ellipsoid& ellipsoid, const camera::Ca
       std::max(0.0, 0.5 * way - std::max(from.position.heightMeters, to.position.heightMeters));
 }
 
-camera::CameraPose FlyToAnimation::poseAt(double elapsedSeconds) const {
+CameraPose FlyToAnimation::poseAt(double elapsedSeconds) const {
   const double u = std::clamp(elapsedSeconds / durationSeconds_, 0.0, 1.0);
   if (!(u < 1)) return to_;              // the end, or a non-finite time: the animation is over
   const double s = u * u * (3 - 2 * u);  // smoothstep
-  camera::CameraPose pose = to_;
+  CameraPose pose = to_;
   pose.position.longitudeRadians = geo::wrapLongitudeRadians(
       from_.position.longitudeRadians +
       s * shortAngle(to_.position.longitudeRadians - from_.position.longitudeRadians));
@@ -137,4 +137,4 @@ camera::CameraPose FlyToAnimation::poseAt(double elapsedSeconds) const {
   return pose;
 }
 
-}  // namespace globe::app
+}  // namespace globe::camera

@@ -4,16 +4,14 @@
 
 #include <limits>
 
-#include "app/fly_controls.hpp"
-#include "app/fly_to.hpp"
-#include "app/orbit_controls.hpp"
 #include "camera/camera_pose.hpp"
+#include "camera/fly_controls.hpp"
+#include "camera/fly_to.hpp"
+#include "camera/orbit_controls.hpp"
 #include "geo/ecef.hpp"
 
-namespace globe::app {
+namespace globe::camera {
 namespace {
-
-using camera::CameraPose;
 
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -21,7 +19,7 @@ const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
 const double kBad[] = {kNan, kInf, -kInf};
 
 void expectSamePose(const CameraPose& actual, const CameraPose& expected) {
-  EXPECT_TRUE(camera::samePose(actual, expected))
+  EXPECT_TRUE(samePose(actual, expected))
       << actual.position.longitudeRadians << " " << actual.position.latitudeRadians << " "
       << actual.position.heightMeters << " " << actual.headingRadians << " " << actual.pitchRadians;
 }
@@ -45,8 +43,8 @@ TEST(ControlGuards, FlyStepAndLookIgnoreNonFiniteInput) {
   // A finite velocity whose step overflows is ignored as well.
   expectSamePose(flyStep(kWgs84, pose, {1e308, 1e308, 0}, 10), pose);
   // Finite input still moves and turns.
-  EXPECT_FALSE(camera::samePose(flyStep(kWgs84, pose, {0, 0, 10}, 0.1), pose));
-  EXPECT_FALSE(camera::samePose(lookByPixels(pose, 5, 0), pose));
+  EXPECT_FALSE(samePose(flyStep(kWgs84, pose, {0, 0, 10}, 0.1), pose));
+  EXPECT_FALSE(samePose(lookByPixels(pose, 5, 0), pose));
 }
 
 TEST(ControlGuards, OrbitControlsKeepAFinitePose) {
@@ -114,4 +112,4 @@ TEST(ControlGuards, AStartPoseOrbitCannotShowIsClampedAndSaid) {
 }
 
 }  // namespace
-}  // namespace globe::app
+}  // namespace globe::camera

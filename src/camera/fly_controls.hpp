@@ -8,7 +8,7 @@
 #include "geo/cartographic.hpp"
 #include "geo/ellipsoid.hpp"
 
-namespace globe::app {
+namespace globe::camera {
 
 // The movement keys held now.
 struct FlyKeys {
@@ -37,24 +37,24 @@ double flySpeedMetersPerSecond(double clearanceMeters, bool fast, double factor 
 glm::dvec3 flyDirectionEnu(const FlyKeys& keys, double headingRadians, double pitchRadians);
 
 // The ECEF velocity (m/s) for the pose and keys at this clearance.
-glm::dvec3 flyVelocityEcef(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& pose,
+glm::dvec3 flyVelocityEcef(const geo::Ellipsoid& ellipsoid, const CameraPose& pose,
                            const FlyKeys& keys, double clearanceMeters, double factor = 1.0,
                            const FlySettings& settings = {});
 
 // The pose `dtSeconds` of flight later: the position moved in a straight line (ECEF) by the
 // velocity, heading and pitch kept. The pose itself when nothing moves or the move is undefined
 // (a non-finite velocity or dt).
-camera::CameraPose flyStep(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& pose,
-                           const glm::dvec3& velocityEcefMetersPerSecond, double dtSeconds);
+CameraPose flyStep(const geo::Ellipsoid& ellipsoid, const CameraPose& pose,
+                   const glm::dvec3& velocityEcefMetersPerSecond, double dtSeconds);
 
 // Mouse look: a drag (or a captured-cursor motion) of dx, dy pixels turns the heading right for
 // dx > 0 and tilts the view up for dy < 0 (window y points down); the pitch is clamped and the
 // heading wrapped into [0, 2 pi). Non-finite deltas are ignored: the pose is returned as it is.
-camera::CameraPose lookByPixels(const camera::CameraPose& pose, double dxPixels, double dyPixels,
-                                const FlySettings& settings = {});
+CameraPose lookByPixels(const CameraPose& pose, double dxPixels, double dyPixels,
+                        const FlySettings& settings = {});
 // The same by angles (arrow keys).
-camera::CameraPose lookByRadians(const camera::CameraPose& pose, double headingRadians,
-                                 double pitchRadians, const FlySettings& settings = {});
+CameraPose lookByRadians(const CameraPose& pose, double headingRadians, double pitchRadians,
+                         const FlySettings& settings = {});
 
 // The clearance fly speed follows (the speed is proportional to it): it moves toward the measured
 // clearance by at most x2 per second up and /8 per second down, so passing a cliff edge (32 m ->
@@ -88,4 +88,4 @@ class SpeedSteps {
   double pendingNotches_ = 0;
 };
 
-}  // namespace globe::app
+}  // namespace globe::camera

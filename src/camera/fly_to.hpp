@@ -10,12 +10,12 @@
 #include "camera/camera_pose.hpp"
 #include "geo/ellipsoid.hpp"
 
-namespace globe::app {
+namespace globe::camera {
 
 // The unit ECEF direction through window pixel (x, y) (y down, pixel centres at +0.5) of a view
 // `widthPixels` x `heightPixels` with this vertical field of view.
-glm::dvec3 pixelRayEcef(const camera::CameraFrame& frame, double xPixels, double yPixels,
-                        int widthPixels, int heightPixels, double fovYRadians);
+glm::dvec3 pixelRayEcef(const CameraFrame& frame, double xPixels, double yPixels, int widthPixels,
+                        int heightPixels, double fovYRadians);
 
 // The terrain height (metres above the ellipsoid) at a longitude and latitude (radians);
 // nullopt where unknown (then the ellipsoid, 0 m, is used).
@@ -39,25 +39,24 @@ struct FlyToSettings {
   double maximumPitchRadians = geo::degreesToRadians(-20);
   double durationSeconds = 1.0;
 };
-camera::CameraPose flyToEndPose(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& from,
-                                const glm::dvec3& targetEcefMeters,
-                                const FlyToSettings& settings = {});
+CameraPose flyToEndPose(const geo::Ellipsoid& ellipsoid, const CameraPose& from,
+                        const glm::dvec3& targetEcefMeters, const FlyToSettings& settings = {});
 
 // The animation from one pose to another: smooth start and stop, longitude and heading the short
 // way round, height interpolated logarithmically with a hop for long ways.
 class FlyToAnimation {
  public:
-  FlyToAnimation(const geo::Ellipsoid& ellipsoid, const camera::CameraPose& from,
-                 const camera::CameraPose& to, double durationSeconds);
-  camera::CameraPose poseAt(double elapsedSeconds) const;
+  FlyToAnimation(const geo::Ellipsoid& ellipsoid, const CameraPose& from, const CameraPose& to,
+                 double durationSeconds);
+  CameraPose poseAt(double elapsedSeconds) const;
   // A non-finite time ends the animation (at its target), so it never runs on with NaN.
   bool finishedAt(double elapsedSeconds) const { return !(elapsedSeconds < durationSeconds_); }
-  const camera::CameraPose& to() const { return to_; }
+  const CameraPose& to() const { return to_; }
 
  private:
-  camera::CameraPose from_, to_;
+  CameraPose from_, to_;
   double durationSeconds_;
   double hopMeters_;
 };
 
-}  // namespace globe::app
+}  // namespace globe::camera

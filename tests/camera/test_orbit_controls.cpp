@@ -9,15 +9,13 @@
 
 #include <glm/geometric.hpp>
 
-#include "app/fly_to.hpp"
-#include "app/orbit_controls.hpp"
 #include "camera/camera_pose.hpp"
+#include "camera/fly_to.hpp"
+#include "camera/orbit_controls.hpp"
 #include "geo/ecef.hpp"
 
-namespace globe::app {
+namespace globe::camera {
 namespace {
-
-using camera::CameraPose;
 
 const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
 constexpr int kWidth = 1280, kHeight = 720;
@@ -31,7 +29,7 @@ std::optional<double> hill(double lon, double lat) {
 }
 
 glm::dvec3 groundUnder(const CameraPose& pose, glm::dvec2 pixel) {
-  const camera::CameraFrame frame = camera::cameraFrame(kWgs84, pose);
+  const CameraFrame frame = cameraFrame(kWgs84, pose);
   const glm::dvec3 ray = pixelRayEcef(frame, pixel.x, pixel.y, kWidth, kHeight, kFovY);
   const auto hit = intersectTerrain(kWgs84, frame.positionEcefMeters, ray, hill);
   EXPECT_TRUE(hit.has_value());
@@ -40,7 +38,7 @@ glm::dvec3 groundUnder(const CameraPose& pose, glm::dvec2 pixel) {
 
 // How far (in pixels at this field of view) the point lies from the ray through the pixel.
 double pixelsOff(const CameraPose& pose, glm::dvec2 pixel, const glm::dvec3& point) {
-  const camera::CameraFrame frame = camera::cameraFrame(kWgs84, pose);
+  const CameraFrame frame = cameraFrame(kWgs84, pose);
   const glm::dvec3 ray = pixelRayEcef(frame, pixel.x, pixel.y, kWidth, kHeight, kFovY);
   const glm::dvec3 toPoint = glm::normalize(point - frame.positionEcefMeters);
   const double angle = std::acos(std::clamp(glm::dot(ray, toPoint), -1.0, 1.0));
@@ -55,10 +53,10 @@ TEST(OrbitControls, ZoomKeepsTheGroundUnderTheCursor) {
     const glm::dvec2 cursor(1000, 180);  // well off the centre
     const glm::dvec3 ground = groundUnder(controls.pose(), cursor);
     const double before =
-        glm::distance(camera::cameraFrame(kWgs84, controls.pose()).positionEcefMeters, ground);
+        glm::distance(cameraFrame(kWgs84, controls.pose()).positionEcefMeters, ground);
     controls.zoomToward(3, ground);
     const double after =
-        glm::distance(camera::cameraFrame(kWgs84, controls.pose()).positionEcefMeters, ground);
+        glm::distance(cameraFrame(kWgs84, controls.pose()).positionEcefMeters, ground);
     EXPECT_NEAR(after / before, std::pow(OrbitControls::kZoomFactorPerNotch, 3), 1e-6);
     SCOPED_TRACE(start.position.heightMeters);
     EXPECT_LT(pixelsOff(controls.pose(), cursor, ground), 0.5);
@@ -76,12 +74,12 @@ TEST(OrbitControls, ZoomStopsAtTheMinimumDistanceAndIgnoresNaN) {
   const glm::dvec3 ground = groundUnder(controls.pose(), {640, 360});
   controls.zoomToward(200, ground);
   const double distance =
-      glm::distance(camera::cameraFrame(kWgs84, controls.pose()).positionEcefMeters, ground);
+      glm::distance(cameraFrame(kWgs84, controls.pose()).positionEcefMeters, ground);
   EXPECT_GE(distance, OrbitLimits{}.minimumClearanceMeters - 1e-6);
   const CameraPose kept = controls.pose();
   controls.zoomToward(std::nan(""), ground);
   controls.zoomToward(1, glm::dvec3(std::nan("")));
-  EXPECT_TRUE(camera::samePose(kept, controls.pose()));
+  EXPECT_TRUE(samePose(kept, controls.pose()));
 }
 
 // A left-drag holds the grabbed ground point under the cursor, step after step, near the ground
@@ -96,7 +94,7 @@ TEST(OrbitControls, DragKeepsTheGrabbedGroundUnderTheCursor) {
     const glm::dvec3 grabbed = groundUnder(controls.pose(), cursor);
     for (int step = 0; step < 10; ++step) {
       cursor += glm::dvec2(25, -12);
-      const auto frame = camera::cameraFrame(kWgs84, controls.pose());
+      const auto frame = cameraFrame(kWgs84, controls.pose());
       ASSERT_TRUE(controls.dragGrabbed(
           grabbed, pixelRayEcef(frame, cursor.x, cursor.y, kWidth, kHeight, kFovY)));
       EXPECT_LT(pixelsOff(controls.pose(), cursor, grabbed), 1.0) << step;
@@ -104,10 +102,10 @@ TEST(OrbitControls, DragKeepsTheGrabbedGroundUnderTheCursor) {
   }
   OrbitControls space(kWgs84, CameraPose::fromDegrees(138.0, 30.0, 2e7, 0, -90, 0), kFovY);
   const glm::dvec3 grabbed = groundUnder(space.pose(), {640, 360});
-  const auto frame = camera::cameraFrame(kWgs84, space.pose());
+  const auto frame = cameraFrame(kWgs84, space.pose());
   const CameraPose kept = space.pose();
   EXPECT_FALSE(space.dragGrabbed(grabbed, pixelRayEcef(frame, 5, 5, kWidth, kHeight, kFovY)));
-  EXPECT_TRUE(camera::samePose(kept, space.pose()));
+  EXPECT_TRUE(samePose(kept, space.pose()));
 }
 
 TEST(OrbitControls, TiltAndTurnKeepTheCentreGroundPointAtTheCentre) {
@@ -115,15 +113,14 @@ TEST(OrbitControls, TiltAndTurnKeepTheCentreGroundPointAtTheCentre) {
   const glm::dvec2 centre(kWidth / 2.0, kHeight / 2.0);
   const glm::dvec3 pivot = groundUnder(controls.pose(), centre);
   const double distance =
-      glm::distance(camera::cameraFrame(kWgs84, controls.pose()).positionEcefMeters, pivot);
+      glm::distance(cameraFrame(kWgs84, controls.pose()).positionEcefMeters, pivot);
   const double pitchBefore = controls.pose().pitchRadians;
   for (const auto& [dx, dy] :
        {std::pair{120.0, 0.0}, {0.0, -60.0}, {-300.0, 80.0}, {40.0, 500.0}}) {
     controls.tiltAbout(dx, dy, pivot);
     EXPECT_LT(pixelsOff(controls.pose(), centre, pivot), 0.5) << dx << "," << dy;
-    EXPECT_NEAR(
-        glm::distance(camera::cameraFrame(kWgs84, controls.pose()).positionEcefMeters, pivot),
-        distance, 1e-3 * distance);
+    EXPECT_NEAR(glm::distance(cameraFrame(kWgs84, controls.pose()).positionEcefMeters, pivot),
+                distance, 1e-3 * distance);
     EXPECT_LE(controls.pose().pitchRadians, 0.0);
   }
   EXPECT_NE(controls.pose().pitchRadians, pitchBefore);
@@ -134,4 +131,4 @@ TEST(OrbitControls, TiltAndTurnKeepTheCentreGroundPointAtTheCentre) {
 }
 
 }  // namespace
-}  // namespace globe::app
+}  // namespace globe::camera
