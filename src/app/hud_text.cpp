@@ -36,12 +36,10 @@ std::string terrainStatus(const camera::CollisionState& collision) {
          meters(collision.clearanceMeters);
 }
 
-const char* toString(ViewMode mode) { return mode == ViewMode::Fly ? "FLY" : "ORBIT"; }
-
 std::vector<std::string> hudStatusLines(const HudState& s, bool withFrameTime) {
   std::vector<std::string> lines;
-  std::string mode = std::string(toString(s.mode)) + (s.flyingTo ? " (flying to)" : "");
-  if (s.mode == ViewMode::Fly) {
+  std::string mode = std::string(camera::toString(s.mode)) + (s.flyingTo ? " (flying to)" : "");
+  if (s.mode == camera::NavigationMode::Fly) {
     mode += format("  speed %.1f m/s ", s.flySpeedMetersPerSecond) +
             (s.speedFactor >= 1 ? format("(x%g)", s.speedFactor)
                                 : format("(x1/%g)", 1.0 / s.speedFactor));

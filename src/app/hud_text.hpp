@@ -10,15 +10,13 @@
 
 #include "camera/camera_controller.hpp"
 #include "camera/camera_pose.hpp"
+#include "camera/navigator.hpp"
 #include "geo/cartographic.hpp"
 
 namespace globe::app {
 
-enum class ViewMode { Orbit, Fly };
-const char* toString(ViewMode mode);
-
 struct HudState {
-  ViewMode mode = ViewMode::Orbit;
+  camera::NavigationMode mode = camera::NavigationMode::Orbit;
   camera::CameraPose pose;
   camera::CollisionState collision;  // the controller's last update
   size_t tilesDrawn = 0;

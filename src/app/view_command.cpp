@@ -22,9 +22,7 @@
 #include "app/renderer_gpu.hpp"
 #include "app/view_input.hpp"
 #include "camera/camera_controller.hpp"
-#include "camera/fly_controls.hpp"
-#include "camera/fly_to.hpp"
-#include "camera/orbit_controls.hpp"
+#include "camera/navigator.hpp"
 #include "collision/surface_probe.hpp"
 #include "geo/ecef.hpp"
 #include "io/image_io.hpp"
@@ -113,24 +111,6 @@ std::vector<render::HudTextBlock> hudBlocks(std::vector<std::string> status, boo
   return blocks;
 }
 
-// The point of the drawn terrain under window pixel (x, y), by marching the pixel's ray.
-std::optional<glm::dvec3> pickTerrain(scene::TerrainScene& scene, const camera::CameraPose& pose,
-                                      glm::dvec2 pixel, GLFWwindow* window, double fovYRadians) {
-  int width = 0, height = 0;
-  glfwGetWindowSize(window, &width, &height);
-  const geo::Ellipsoid& ellipsoid = scene.ellipsoid();
-  const camera::CameraFrame frame = camera::cameraFrame(ellipsoid, pose);
-  const glm::dvec3 ray = camera::pixelRayEcef(frame, pixel.x, pixel.y, width, height, fovYRadians);
-  const collision::RenderingTileArray& array = scene.renderingTileArray();
-  return camera::intersectTerrain(ellipsoid, frame.positionEcefMeters, ray,
-                                  [&](double lon, double lat) -> std::optional<double> {
-                                    const auto surface = collision::surfaceHeightAt(
-                                        array, ellipsoid, lon, lat, collision::SurfaceModel::Exact);
-                                    if (!surface || !surface->found) return std::nullopt;
-                                    return surface->heightMeters;
-                                  });
-}
-
 }  // namespace
 
 Result<ViewReport> runView(const ViewOptions& options) {
@@ -163,24 +143,31 @@ Result<ViewReport> runView(const ViewOptions& options) {
 
   const geo::Ellipsoid& ellipsoid = (*scene)->ellipsoid();
   const double fovY = options.scene.fovYRadians;
-  camera::OrbitControls controls(ellipsoid, options.pose, fovY);
+  // Picks march through the tiles drawn now (the scene keeps one array, updated each frame).
+  const collision::RenderingTileArray& drawnArray = (*scene)->renderingTileArray();
+  camera::Navigator navigator(
+      ellipsoid, options.pose, fovY, [&](double lon, double lat) -> std::optional<double> {
+        const auto surface = collision::surfaceHeightAt(drawnArray, ellipsoid, lon, lat,
+                                                        collision::SurfaceModel::Exact);
+        if (!surface || !surface->found) return std::nullopt;
+        return surface->heightMeters;
+      });
   // A start pose orbit mode cannot show is changed, and said so (never silently).
-  for (const std::string& clamp : camera::describeStartClamp(options.pose, controls.home())) {
+  for (const std::string& clamp : camera::describeStartClamp(options.pose, navigator.home())) {
     std::fprintf(stderr, "globe view: --camera %s\n", clamp.c_str());
   }
-  camera::CameraController controller(controls.home());
+  camera::CameraController controller(navigator.home());
   ViewInput input;
-  input.orbit = &controls;
+  input.navigator = &navigator;
   GLFWwindow* handle = (*window)->window();
   installViewCallbacks(handle, input);
+  const auto setViewport = [&] {
+    int windowWidth = 0, windowHeight = 0;  // events and picks take window pixels
+    glfwGetWindowSize(handle, &windowWidth, &windowHeight);
+    navigator.setViewport(windowWidth, windowHeight);
+  };
+  setViewport();
   PathRecorder recorder;
-  std::optional<camera::FlyToAnimation> flyTo;
-  Clock::time_point flyToStart{};
-  // Fly mode's wanted orientation: kept when a move is stopped, so no look is lost.
-  camera::CameraPose flyLook = controller.pose();
-  std::optional<glm::dvec3> grabbed;  // the ground point a left-drag holds under the cursor
-  camera::SmoothedClearance
-      flyClearance;  // what fly speed follows, so it does not lurch at cliff edges
 
   const bool continuous = options.frames > 0;
   const auto start = Clock::now();
@@ -196,6 +183,7 @@ Result<ViewReport> runView(const ViewOptions& options) {
   double frameMilliseconds = 0;
   bool loading = true, wasComplete = false, tilesChanged = false;
   while (!(*window)->shouldClose()) {
+    setViewport();
     const int width = (*window)->framebufferWidthPixels();
     const int height = (*window)->framebufferHeightPixels();
     const bool visible = width > 0 && height > 0;  // not minimised
@@ -204,8 +192,10 @@ Result<ViewReport> runView(const ViewOptions& options) {
       bool redraw = input.changed || continuous;
       if (input.changed) lastChange = now;
       input.changed = false;
-      const double dtSeconds =
-          std::clamp(std::chrono::duration<double>(now - lastUpdate).count(), 0.0, 0.1);
+      // Animations run on the clock; the controller's motion integrates at most 0.1 s a frame.
+      const double frameSeconds =
+          std::max(std::chrono::duration<double>(now - lastUpdate).count(), 0.0);
+      const double dtSeconds = std::min(frameSeconds, 0.1);
       lastUpdate = now;
 
       // One-shot requests.
@@ -220,63 +210,6 @@ Result<ViewReport> runView(const ViewOptions& options) {
           std::fflush(stdout);
         }
       }
-      if (input.userMoved) flyTo.reset();  // the user takes over
-      input.userMoved = false;
-      if (input.doubleClickPixels) {
-        if (const auto target =
-                pickTerrain(**scene, controller.pose(), *input.doubleClickPixels, handle, fovY)) {
-          const camera::CameraPose end =
-              camera::flyToEndPose(ellipsoid, controller.pose(), *target);
-          flyTo.emplace(ellipsoid, controller.pose(), end, camera::FlyToSettings{}.durationSeconds);
-          flyToStart = now;
-        }
-        input.doubleClickPixels.reset();
-      }
-      if (input.grabPixels) {
-        grabbed = pickTerrain(**scene, controls.pose(), *input.grabPixels, handle, fovY);
-        input.grabPixels.reset();
-      }
-      if (input.panDxPixels != 0 || input.panDyPixels != 0) {
-        int windowWidth = 0, windowHeight = 0;  // the ray takes window pixels
-        glfwGetWindowSize(handle, &windowWidth, &windowHeight);
-        const camera::CameraFrame frame = camera::cameraFrame(ellipsoid, controls.pose());
-        const glm::dvec3 ray = camera::pixelRayEcef(frame, input.panPixels.x, input.panPixels.y,
-                                                    windowWidth, windowHeight, fovY);
-        if (!grabbed || !controls.dragGrabbed(*grabbed, ray)) {
-          controls.rotateByDrag(input.panDxPixels, input.panDyPixels,
-                                windowHeight);  // off the globe
-        }
-        input.panDxPixels = input.panDyPixels = 0;
-      }
-      if (input.zoomNotches != 0) {
-        if (const auto ground =
-                pickTerrain(**scene, controls.pose(), input.zoomPixels, handle, fovY)) {
-          controls.zoomToward(input.zoomNotches, *ground);
-        } else {
-          controls.zoom(input.zoomNotches);  // the sky under the cursor: along the view
-        }
-        input.zoomNotches = 0;
-      }
-      if (input.tiltDxPixels != 0 || input.tiltDyPixels != 0) {
-        int windowWidth = 0, windowHeight = 0;  // pickTerrain takes window pixels
-        glfwGetWindowSize(handle, &windowWidth, &windowHeight);
-        const glm::dvec2 centre(windowWidth / 2.0, windowHeight / 2.0);
-        if (const auto pivot = pickTerrain(**scene, controls.pose(), centre, handle, fovY)) {
-          controls.tiltAbout(input.tiltDxPixels, input.tiltDyPixels, *pivot);
-        } else {
-          controls.tiltByDrag(input.tiltDxPixels, input.tiltDyPixels);  // no ground in view
-        }
-        input.tiltDxPixels = input.tiltDyPixels = 0;
-      }
-      if (input.northUpRequested) {
-        int windowWidth = 0, windowHeight = 0;
-        glfwGetWindowSize(handle, &windowWidth, &windowHeight);
-        controls.northUp(pickTerrain(**scene, controls.pose(),
-                                     glm::dvec2(windowWidth / 2.0, windowHeight / 2.0), handle,
-                                     fovY));
-        if (input.mode == ViewMode::Fly) flyLook.headingRadians = 0;
-        input.northUpRequested = false;
-      }
       if (input.goToRequest) {
         auto target = parseGoTo(*input.goToRequest);
         input.goToRequest.reset();
@@ -284,81 +217,28 @@ Result<ViewReport> runView(const ViewOptions& options) {
           input.promptMessage = target.error();
         } else {
           input.promptMessage.clear();
-          const double lon = geo::degreesToRadians(target->longitudeDegrees);
-          const double lat = geo::degreesToRadians(target->latitudeDegrees);
-          auto ground = (*scene)->terrainHeightMeters(lon, lat);
-          const glm::dvec3 point =
-              geo::cartographicToEcef(ellipsoid, {lon, lat, ground ? *ground : 0.0});
-          // Land ~15 km from the place, looking at it; longer ways take longer (up to 4 s).
-          camera::FlyToSettings settings;
-          settings.distanceFraction = 0;
-          settings.minimumDistanceMeters = 15000;
-          settings.maximumPitchRadians = geo::degreesToRadians(-35);
-          const double way = glm::distance(
-              point, camera::cameraFrame(ellipsoid, controller.pose()).positionEcefMeters);
-          settings.durationSeconds =
-              std::clamp(1.0 + std::log10(std::max(way, 1.0) / 1e4), 1.0, 4.0);
-          const camera::CameraPose end =
-              camera::flyToEndPose(ellipsoid, controller.pose(), point, settings);
-          flyTo.emplace(ellipsoid, controller.pose(), end, settings.durationSeconds);
-          flyToStart = now;
+          navigator.goTo(geo::degreesToRadians(target->longitudeDegrees),
+                         geo::degreesToRadians(target->latitudeDegrees));
           std::printf("go to %s (%.5f, %.5f)\n", target->name.c_str(), target->latitudeDegrees,
                       target->longitudeDegrees);
           std::fflush(stdout);
         }
         input.changed = true;
       }
-      const bool reset = input.resetRequested;
-      input.resetRequested = false;
 
       // This frame's move, proposed to the controller, which checks it against the tiles drawn
       // now (QOTCD) and corrects it (stop, slide, heighten, raise).
-      if (reset) {
-        controls.reset();
-        controller.propose(controls.home());
-      } else if (flyTo) {
-        const double elapsed = std::chrono::duration<double>(now - flyToStart).count();
-        controller.propose(flyTo->poseAt(elapsed));
-        if (flyTo->finishedAt(elapsed)) flyTo.reset();
-        input.changed = true;
-      } else if (input.mode == ViewMode::Fly) {
-        if (input.lookDxPixels != 0 || input.lookDyPixels != 0) {
-          flyLook = camera::lookByPixels(flyLook, input.lookDxPixels, input.lookDyPixels);
-        }
-        if (input.lookHeadingRadians != 0 || input.lookPitchRadians != 0) {
-          flyLook =
-              camera::lookByRadians(flyLook, input.lookHeadingRadians, input.lookPitchRadians);
-        }
-        input.lookDxPixels = input.lookDyPixels = 0;
-        input.lookHeadingRadians = input.lookPitchRadians = 0;
-        camera::CameraPose wanted = flyLook;
-        wanted.position = controller.pose().position;
-        if (input.flyKeys.moving()) {
-          const glm::dvec3 velocity = camera::flyVelocityEcef(
-              ellipsoid, wanted, input.flyKeys,
-              flyClearance.update(controller.state().clearanceMeters, dtSeconds),
-              input.speed.factor());
-          controller.propose(camera::flyStep(ellipsoid, wanted, velocity, dtSeconds),
-                             camera::MotionKind::Linear);
-          input.changed = true;  // keep flying while the key is held
-        } else {
-          flyClearance.reset();  // a new flight starts from the clearance then
-          if (!camera::samePose(wanted, controller.pose())) controller.propose(wanted);  // a turn
-        }
-      } else if (!camera::samePose(controls.pose(), controller.pose())) {
-        controller.propose(controls.pose());
+      if (const auto proposal = navigator.update(frameSeconds)) {
+        controller.propose(proposal->pose, proposal->kind);
       }
+      if (navigator.animating()) input.changed = true;  // keep flying
       controller.setNearPlane({camera::projectionForHeight(
                                    0, controller.settings().clearance.eyeMeters, fovY, 1, ellipsoid)
                                    .nearMeters,
                                fovY, static_cast<double>(width) / std::max(height, 1)});
       const camera::CollisionState& collisionState =
           controller.update(dtSeconds, (*scene)->renderingTileArray(), ellipsoid);
-      if (!camera::samePose(controls.pose(), controller.pose()))
-        controls.adoptPose(controller.pose());
-      if (input.mode != ViewMode::Fly || flyTo || reset) flyLook = controller.pose();
-      // The controls scale zoom steps by the height above the terrain the controller found.
-      if (collisionState.terrainFound) controls.setGroundHeight(collisionState.terrainHeightMeters);
+      navigator.adopt(controller.pose(), collisionState);
       // A smooth raise over new, finer terrain takes a few frames: keep updating until done.
       if (collisionState.raisedForNewTerrain) input.changed = true;
       recorder.sample(secondsAt(now), controller.pose());
@@ -371,37 +251,24 @@ Result<ViewReport> runView(const ViewOptions& options) {
 
       // The HUD: redrawn when what it says changes (the frame time alone does not count).
       HudState hudState;
-      hudState.mode = input.mode;
+      hudState.mode = navigator.mode();
       hudState.pose = controller.pose();
       hudState.collision = collisionState;
       hudState.tilesDrawn = (*scene)->tiles().size();
       hudState.tilesLoading = info.requests;
-      hudState.flySpeedMetersPerSecond = camera::flySpeedMetersPerSecond(
-          input.flyKeys.moving() ? flyClearance.update(collisionState.clearanceMeters, 0)
-                                 : collisionState.clearanceMeters,
-          input.flyKeys.fast, input.speed.factor());
-      hudState.speedFactor = input.speed.factor();
+      hudState.flySpeedMetersPerSecond = navigator.flySpeedMetersPerSecond();
+      hudState.speedFactor = navigator.speed().factor();
       hudState.recording = recorder.recording();
       hudState.keyframes = recorder.keyframes().size();
-      hudState.flyingTo = flyTo.has_value();
+      hudState.flyingTo = navigator.flyingTo();
       if (input.promptOpen) hudState.prompt = input.promptText;
       hudState.message = input.promptMessage;
-      {
-        int windowWidth = 0, windowHeight = 0;  // picks take window pixels
-        glfwGetWindowSize(handle, &windowWidth, &windowHeight);
-        if (input.cursorKnown) {
-          if (const auto ground = pickTerrain(**scene, controller.pose(),
-                                              glm::dvec2(input.lastX, input.lastY), handle, fovY)) {
-            hudState.underCursor = geo::ecefToCartographic(ellipsoid, *ground);
-          }
-        }
-        const glm::dvec2 centre(windowWidth / 2.0, windowHeight / 2.0);
-        if (const auto ground = pickTerrain(**scene, controller.pose(), centre, handle, fovY)) {
-          const double distance = glm::distance(
-              *ground, camera::cameraFrame(ellipsoid, controller.pose()).positionEcefMeters);
-          hudState.metersPerPixel = distance * fovY / std::max(windowHeight, 1);
+      if (input.cursorKnown) {
+        if (const auto ground = navigator.groundAt(glm::dvec2(input.lastX, input.lastY))) {
+          hudState.underCursor = geo::ecefToCartographic(ellipsoid, *ground);
         }
       }
+      hudState.metersPerPixel = navigator.metersPerPixelAtCentre();
       std::vector<std::string> hudKey = hudStatusLines(hudState, false);
       const bool hudChanged = hudKey != drawnHud || input.helpVisible != drawnHelp;
       redraw = redraw || (hudChanged && !throttled) || input.screenshotRequested;

@@ -14,14 +14,6 @@ ViewInput& inputOf(GLFWwindow* window) {
   return *static_cast<ViewInput*>(glfwGetWindowUserPointer(window));
 }
 
-int windowHeight(GLFWwindow* window) {
-  int height = 0;
-  glfwGetWindowSize(window, nullptr, &height);
-  return height;
-}
-
-void changeSpeed(ViewInput& input, double steps) { input.speed.change(steps); }
-
 // Held movement keys; true when the key is one of them.
 bool trackFlyKey(camera::FlyKeys& keys, int key, bool down) {
   switch (key) {
@@ -60,13 +52,10 @@ bool commonKey(GLFWwindow* window, ViewInput& input, int key) {
       return true;
     case GLFW_KEY_F:
     case GLFW_KEY_TAB:
-      input.mode = input.mode == ViewMode::Orbit ? ViewMode::Fly : ViewMode::Orbit;
-      input.lookDxPixels = input.lookDyPixels = 0;
-      input.userMoved = true;
+      input.navigator->toggleMode();
       return true;
     case GLFW_KEY_R:
-      input.resetRequested = true;
-      input.userMoved = true;
+      input.navigator->reset();
       return true;
     case GLFW_KEY_P:
       input.recordToggleRequested = true;
@@ -85,71 +74,67 @@ bool commonKey(GLFWwindow* window, ViewInput& input, int key) {
       input.promptMessage.clear();
       return true;
     case GLFW_KEY_N:
-      input.northUpRequested = true;
-      input.userMoved = true;
+      input.navigator->northUp();
       return true;
     default:
       return false;
   }
 }
 
-bool orbitKey(GLFWwindow* window, ViewInput& input, int key) {
-  camera::OrbitControls& controls = *input.orbit;
+bool orbitKey(ViewInput& input, int key) {
+  camera::Navigator& navigator = *input.navigator;
   switch (key) {
     case GLFW_KEY_UP:
-      controls.rotateByDrag(0, kPanPixelsPerKey, windowHeight(window));
-      break;
+      navigator.panByKey(0, kPanPixelsPerKey);
+      return true;
     case GLFW_KEY_DOWN:
-      controls.rotateByDrag(0, -kPanPixelsPerKey, windowHeight(window));
-      break;
+      navigator.panByKey(0, -kPanPixelsPerKey);
+      return true;
     case GLFW_KEY_LEFT:
-      controls.rotateByDrag(kPanPixelsPerKey, 0, windowHeight(window));
-      break;
+      navigator.panByKey(kPanPixelsPerKey, 0);
+      return true;
     case GLFW_KEY_RIGHT:
-      controls.rotateByDrag(-kPanPixelsPerKey, 0, windowHeight(window));
-      break;
+      navigator.panByKey(-kPanPixelsPerKey, 0);
+      return true;
     case GLFW_KEY_EQUAL:  // '+' is shift + '=' on most layouts
     case GLFW_KEY_KP_ADD:
-      controls.zoom(1);
-      break;
+      navigator.zoom(1);
+      return true;
     case GLFW_KEY_MINUS:
     case GLFW_KEY_KP_SUBTRACT:
-      controls.zoom(-1);
-      break;
+      navigator.zoom(-1);
+      return true;
     default:
       return false;
   }
-  input.userMoved = true;
-  return true;
 }
 
 bool flyKey(ViewInput& input, int key) {
+  camera::Navigator& navigator = *input.navigator;
   switch (key) {
     case GLFW_KEY_UP:
-      input.lookPitchRadians += kLookRadiansPerKey;
-      break;
+      navigator.lookRadians(0, kLookRadiansPerKey);
+      return true;
     case GLFW_KEY_DOWN:
-      input.lookPitchRadians -= kLookRadiansPerKey;
-      break;
+      navigator.lookRadians(0, -kLookRadiansPerKey);
+      return true;
     case GLFW_KEY_LEFT:
-      input.lookHeadingRadians -= kLookRadiansPerKey;
-      break;
+      navigator.lookRadians(-kLookRadiansPerKey, 0);
+      return true;
     case GLFW_KEY_RIGHT:
-      input.lookHeadingRadians += kLookRadiansPerKey;
-      break;
+      navigator.lookRadians(kLookRadiansPerKey, 0);
+      return true;
     case GLFW_KEY_EQUAL:
     case GLFW_KEY_KP_ADD:
-      changeSpeed(input, 1);
-      break;
+      navigator.changeSpeed(1);
+      return true;
     case GLFW_KEY_MINUS:
     case GLFW_KEY_KP_SUBTRACT:
-      changeSpeed(input, -1);
-      break;
+      navigator.changeSpeed(-1);
+      return true;
     default:
       return false;
   }
-  input.userMoved = true;
-  return true;
 }
 
 // While the go-to prompt is open it takes every key: Enter submits, Escape closes it, Backspace
@@ -188,26 +173,26 @@ void onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods
     return;
   }
   if (trackFlyKey(input.flyKeys, key, action != GLFW_RELEASE)) {
-    if (input.mode == ViewMode::Fly) input.userMoved = input.changed = true;
+    input.navigator->setFlyKeys(input.flyKeys);
+    input.changed = true;
     return;
   }
   if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
   const bool handled =
       (action == GLFW_PRESS && commonKey(window, input, key)) ||
-      (input.mode == ViewMode::Orbit ? orbitKey(window, input, key) : flyKey(input, key));
+      (input.navigator->mode() == camera::NavigationMode::Orbit ? orbitKey(input, key)
+                                                                : flyKey(input, key));
   if (handled) input.changed = true;
 }
 
 void onScroll(GLFWwindow* window, double /*dx*/, double dy) {
   ViewInput& input = inputOf(window);
-  if (input.mode == ViewMode::Orbit) {
+  if (input.navigator->mode() == camera::NavigationMode::Orbit) {
     if (!input.cursorKnown) glfwGetCursorPos(window, &input.lastX, &input.lastY);
     input.cursorKnown = true;
-    input.zoomNotches += dy;
-    input.zoomPixels = glm::dvec2(input.lastX, input.lastY);
-    input.userMoved = true;
+    input.navigator->zoomAt(dy, glm::dvec2(input.lastX, input.lastY));
   } else {
-    changeSpeed(input, dy);
+    input.navigator->changeSpeed(dy);
   }
   input.changed = true;
 }
@@ -221,19 +206,20 @@ void onMouseButton(GLFWwindow* window, int button, int action, int mods) {
   if (button == GLFW_MOUSE_BUTTON_LEFT) {
     if (down && input.lastX >= input.compassTopLeft.x && input.lastY >= input.compassTopLeft.y &&
         input.lastX <= input.compassBottomRight.x && input.lastY <= input.compassBottomRight.y) {
-      input.northUpRequested = true;  // a click on the compass
-      input.userMoved = input.changed = true;
+      input.navigator->northUp();  // a click on the compass
+      input.changed = true;
       return;
     }
     input.leftDown = down;
     input.shiftDrag = down && (mods & GLFW_MOD_SHIFT) != 0;
-    if (down && !input.shiftDrag) input.grabPixels = glm::dvec2(input.lastX, input.lastY);
+    if (down && !input.shiftDrag) input.navigator->grab(glm::dvec2(input.lastX, input.lastY));
+    if (!down) input.navigator->release();
     if (down) {
       const double now = glfwGetTime();
       if (now - input.lastClickSeconds <= kDoubleClickSeconds &&
           std::abs(input.lastX - input.lastClickX) <= kDoubleClickPixels &&
           std::abs(input.lastY - input.lastClickY) <= kDoubleClickPixels) {
-        input.doubleClickPixels = glm::dvec2(input.lastX, input.lastY);
+        input.navigator->flyToPixel(glm::dvec2(input.lastX, input.lastY));
         input.lastClickSeconds = -1;  // a third click starts a new pair
         input.changed = true;
       } else {
@@ -257,18 +243,15 @@ void onCursor(GLFWwindow* window, double x, double y) {
     input.changed = true;  // the HUD shows the ground under the pointer
     return;
   }
-  if (input.mode == ViewMode::Fly) {
-    input.lookDxPixels += dx;
-    input.lookDyPixels += dy;
+  camera::Navigator& navigator = *input.navigator;
+  if (navigator.mode() == camera::NavigationMode::Fly) {
+    navigator.look(dx, dy);
   } else if (input.rightDown || input.shiftDrag) {
-    input.tiltDxPixels += dx;
-    input.tiltDyPixels += dy;
+    navigator.tilt(dx, dy);
   } else {
-    input.panDxPixels += dx;
-    input.panDyPixels += dy;
-    input.panPixels = glm::dvec2(x, y);
+    navigator.dragTo(glm::dvec2(x, y), dx, dy);
   }
-  input.userMoved = input.changed = true;
+  input.changed = true;
 }
 
 void onRepaintNeeded(GLFWwindow* window) { inputOf(window).changed = true; }

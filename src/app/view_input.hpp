@@ -1,5 +1,6 @@
-// `globe view`'s input: GLFW key, mouse and scroll callbacks that drive the orbit controls
-// directly and leave fly-mode motion, mode switches and one-shot actions for the loop to take.
+// `globe view`'s input: GLFW key, mouse and scroll callbacks turned into the navigator's plain
+// events (camera::Navigator); the window's own actions (record, screenshot, help, the go-to
+// prompt) are left for the loop to take.
 #pragma once
 
 #include <optional>
@@ -7,35 +8,17 @@
 
 #include <glm/vec2.hpp>
 
-#include "app/hud_text.hpp"
 #include "camera/fly_controls.hpp"
-#include "camera/orbit_controls.hpp"
+#include "camera/navigator.hpp"
 
 struct GLFWwindow;
 
 namespace globe::app {
 
 struct ViewInput {
-  camera::OrbitControls* orbit = nullptr;
-  ViewMode mode = ViewMode::Orbit;
-  bool changed = true;     // something to update or redraw
-  bool userMoved = false;  // the user moved the camera (cancels a fly-to)
-
-  camera::FlyKeys flyKeys;                    // held now (tracked in both modes, used in fly mode)
-  double lookDxPixels = 0, lookDyPixels = 0;  // fly: mouse look to apply
-  double lookHeadingRadians = 0, lookPitchRadians = 0;  // fly: arrow keys to apply
-  camera::SpeedSteps speed;                             // fly: scroll wheel, +/-
-
-  // Orbit moves about the ground under a pixel, done by the loop (it has the scene to pick the
-  // ground from): scroll zooms toward the ground under the cursor, tilting turns about the ground
-  // at the centre.
-  double zoomNotches = 0;
-  glm::dvec2 zoomPixels{0.0};  // window pixels, y down
-  double tiltDxPixels = 0, tiltDyPixels = 0;
-  // Left-drag: the press grabs the ground under the cursor, each move brings it under the cursor.
-  std::optional<glm::dvec2> grabPixels;     // a press to grab at
-  double panDxPixels = 0, panDyPixels = 0;  // moves since the loop last took them
-  glm::dvec2 panPixels{0.0};                // the cursor after them
+  camera::Navigator* navigator = nullptr;  // every camera move goes to it
+  bool changed = true;                     // something to update or redraw
+  camera::FlyKeys flyKeys;                 // held now (tracked in both modes, used in fly mode)
 
   // "Go to" (G): the text typed so far while the prompt is open (it takes every key), the text
   // entered (Enter) for the loop to parse, and what the loop says back (an error).
@@ -46,13 +29,10 @@ struct ViewInput {
   std::string promptMessage;
   // The compass (top right, window pixels): a click there, or N, turns the view north up.
   glm::dvec2 compassTopLeft{-1.0}, compassBottomRight{-1.0};
-  bool northUpRequested = false;
 
   // One-shot requests, cleared by the loop when taken.
-  bool resetRequested = false;
   bool recordToggleRequested = false;
   bool screenshotRequested = false;
-  std::optional<glm::dvec2> doubleClickPixels;  // window pixels, y down
   bool helpVisible = false;
 
   // Mouse state.

@@ -68,6 +68,8 @@ class SmoothedClearance {
   // negative clearance counts as the floor); the first call takes the clearance as it is.
   double update(double clearanceMeters, double dtSeconds);
   void reset() { valueMeters_ = 0; }
+  bool started() const { return valueMeters_ > 0; }
+  double value() const { return valueMeters_; }
 
  private:
   double valueMeters_ = 0;  // 0: not started

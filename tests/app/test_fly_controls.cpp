@@ -21,7 +21,7 @@
 namespace {
 
 using globe::app::HudState;
-using globe::app::ViewMode;
+using ViewMode = globe::camera::NavigationMode;
 using globe::camera::CameraPose;
 using globe::camera::FlyKeys;
 using globe::camera::SpeedSteps;
@@ -351,7 +351,7 @@ TEST(PathRecorder, FileNamesCarryTheTimeAndNeverOverwrite) {
 
 TEST(HudText, StatusShowsPositionTerrainCollisionTilesAndMode) {
   globe::app::HudState state;
-  state.mode = globe::app::ViewMode::Fly;
+  state.mode = globe::camera::NavigationMode::Fly;
   state.pose = CameraPose::fromDegrees(138.72751, 35.36063, 3800.5, 90, -12.25);
   state.collision.terrainFound = true;
   state.collision.terrainHeightMeters = 3731.24;
