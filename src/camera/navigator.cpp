@@ -63,7 +63,10 @@ double Navigator::metersPerPixelAtCentre() const {
 }
 
 void Navigator::zoomAt(double notches, glm::dvec2 pixel) {
-  if (mode_ != NavigationMode::Orbit || !std::isfinite(notches) || notches == 0) return;
+  if (mode_ != NavigationMode::Orbit || !std::isfinite(notches) || notches == 0 ||
+      !std::isfinite(pixel.x) || !std::isfinite(pixel.y)) {
+    return;
+  }
   userMoved();
   if (const auto ground = groundAt(controls_.pose(), pixel)) {
     controls_.zoomToward(notches, *ground);

@@ -130,7 +130,42 @@ void OrbitControls::zoomToward(double notches, const glm::dvec3& targetEcefMeter
     pose_.headingRadians = heading;
     pose_.pitchRadians = pitch;
   }
+  // At the end of the pitch range (zooming out of a straight-down view off the centre) the look
+  // cannot turn far enough: the camera moves sideways instead, at the same height, until the
+  // target is seen where it was.
+  if (error(pose_.headingRadians, pose_.pitchRadians) > 1e-10)
+    seeFromNearby(targetEcefMeters, glm::dvec2(seen));
   clampPose();
+}
+
+void OrbitControls::seeFromNearby(const glm::dvec3& targetEcefMeters, glm::dvec2 seen) {
+  const auto residual = [&](double lon, double lat) {
+    CameraPose trial = pose_;
+    trial.position.longitudeRadians = lon;
+    trial.position.latitudeRadians = lat;
+    const CameraFrame f = cameraFrame(ellipsoid_, trial);
+    const glm::dvec3 direction = glm::normalize(targetEcefMeters - f.positionEcefMeters);
+    return glm::dvec2(glm::dot(direction, f.right) - seen.x, glm::dot(direction, f.up) - seen.y);
+  };
+  double lon = pose_.position.longitudeRadians, lat = pose_.position.latitudeRadians;
+  const glm::dvec2 start = residual(lon, lat);
+  for (int iteration = 0; iteration < 8; ++iteration) {
+    const glm::dvec2 r = residual(lon, lat);
+    if (std::abs(r.x) + std::abs(r.y) < 1e-13) break;
+    constexpr double kStep = 1e-9;  // radians: ~6 mm on the ground
+    const glm::dvec2 dLon = (residual(lon + kStep, lat) - r) / kStep;
+    const glm::dvec2 dLat = (residual(lon, lat + kStep) - r) / kStep;
+    const double det = dLon.x * dLat.y - dLat.x * dLon.y;
+    if (!(std::abs(det) > 1e-12)) break;
+    lon -= (r.x * dLat.y - dLat.x * r.y) / det;
+    lat -= (dLon.x * r.y - r.x * dLon.y) / det;
+  }
+  const glm::dvec2 end = residual(lon, lat);
+  if (std::isfinite(lon) && std::isfinite(lat) &&
+      std::abs(end.x) + std::abs(end.y) < std::abs(start.x) + std::abs(start.y)) {
+    pose_.position.longitudeRadians = lon;
+    pose_.position.latitudeRadians = lat;
+  }
 }
 
 bool OrbitControls::dragGrabbed(const glm::dvec3& grabbedEcefMeters, const glm::dvec3& rayEcef) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "camera/camera_pose.hpp"
@@ -71,6 +72,9 @@ class OrbitControls {
 
  private:
   void clampPose();
+  // Moves the camera over the ground (height, heading and pitch kept) until the target is seen
+  // at `seen` (camera right and up components of its unit direction).
+  void seeFromNearby(const glm::dvec3& targetEcefMeters, glm::dvec2 seen);
   // The pose at `positionEcefMeters` looking along the unit `forward` with `up` (the unit screen
   // up, which gives the heading looking straight down) and roll 0; false (the pose unchanged)
   // when it is not finite or the position is not on the globe.

@@ -99,6 +99,20 @@ RealPyramid& RealPyramid::bundled() {
   return *pyramid;
 }
 
+RealPyramid& RealPyramid::zion() {
+  static RealPyramid* pyramid = [] {
+    const std::string dir = std::string(GLOBE_SOURCE_DIR) + "/data/dem/";
+    auto store = io::TileStore::open(
+        tiler::testing::tilePyramid("zion-pyramid", {dir + "ETOPO20.DEM", dir + "zion-srtm3.tif"}));
+    if (!store) {
+      ADD_FAILURE() << store.error();
+      std::abort();
+    }
+    return new RealPyramid(std::move(*store));
+  }();
+  return *pyramid;
+}
+
 bool RealPyramid::has(const geo::TileId& tile) {
   if (!Scheme::isValid(tile)) return false;
   const auto it = exists_.find(tile);

@@ -36,6 +36,8 @@ double meshVertexLatitude(const geo::TileId& tile, uint32_t verticesPerSide, uin
 class RealPyramid {
  public:
   static RealPyramid& bundled();
+  // ETOPO20 + the bundled Zion SRTM 3" (data/dem/zion-srtm3.tif): real canyon walls.
+  static RealPyramid& zion();
   bool has(const geo::TileId& tile);
   // The tile's block, loaded once and kept (the reference stays valid).
   const terrain::HeightBlock& block(const geo::TileId& tile);
