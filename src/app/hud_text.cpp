@@ -59,9 +59,6 @@ std::vector<std::string> hudStatusLines(const HudState& s, bool withFrameTime) {
                            s.underCursor->latitudeDegrees()) +
                     meters(s.underCursor->heightMeters));
   }
-  if (std::isfinite(s.metersPerPixel) && s.metersPerPixel > 0) {
-    lines.push_back(scaleText(s.metersPerPixel));
-  }
   if (s.prompt) lines.push_back("go to: " + *s.prompt + "_   (Enter: go, Esc: cancel)");
   if (!s.message.empty()) lines.push_back(s.message);
   std::string tiles = format("tiles %zu drawn, %zu loading", s.tilesDrawn, s.tilesLoading);
@@ -74,22 +71,24 @@ std::vector<std::string> hudStatusLines(const HudState& s, bool withFrameTime) {
   return lines;
 }
 
-std::vector<std::string> compassLines(double headingRadians) {
-  // North on the screen lies at -heading from straight up; eight arrows, clockwise from up.
-  static constexpr const char* kArrows[] = {"up",   "up-right",  "right", "down-right",
-                                            "down", "down-left", "left",  "up-left"};
-  double screenDegrees = std::fmod(-geo::radiansToDegrees(headingRadians), 360.0);
-  if (!std::isfinite(screenDegrees)) screenDegrees = 0;
-  if (screenDegrees < 0) screenDegrees += 360.0;
-  const auto sector = static_cast<int>(std::lround(screenDegrees / 45.0)) % 8;
-  return {std::string("north: ") + kArrows[sector], "click: north up"};
-}
-
-std::string scaleText(double metersPerPixel) {
-  const double span = 100 * metersPerPixel;
-  if (span >= 10000) return format("scale: 100 px = %.0f km", span / 1000);
-  if (span >= 1000) return format("scale: 100 px = %.2f km", span / 1000);
-  return format("scale: 100 px = %.0f m", span);
+std::optional<ScaleBarLength> scaleBarLength(double metersPerPixel, double maximumPixels) {
+  if (!std::isfinite(metersPerPixel) || !(metersPerPixel > 0) || !std::isfinite(maximumPixels) ||
+      !(maximumPixels >= 1)) {
+    return std::nullopt;
+  }
+  const double most = metersPerPixel * maximumPixels;
+  const double decade = std::pow(10.0, std::floor(std::log10(most)));
+  double meters = decade;
+  for (const double step : {5.0, 2.0}) {
+    if (step * decade <= most) {
+      meters = step * decade;
+      break;
+    }
+  }
+  const std::string label = meters >= 1000 ? format("%.0f km", meters / 1000)
+                            : meters >= 1  ? format("%.0f m", meters)
+                                           : format("%g m", meters);
+  return ScaleBarLength{meters / metersPerPixel, label};
 }
 
 std::vector<std::string> hudHelpLines() {
@@ -104,7 +103,7 @@ std::vector<std::string> hudHelpLines() {
       "K / F12      screenshot (globe-shot-*.png)",
       "R            back to the start camera",
       "G            go to a place or \"lat, lon\" (type, then Enter)",
-      "N            north up (or click the compass, top right)",
+      "N            north up (or click the compass rose, top right)",
       "H / F1       this help",
       "Esc          quit",
   };

@@ -28,7 +28,7 @@ struct HudState {
   size_t keyframes = 0;  // recorded so far
   bool flyingTo = false;
   // The drawn ground under the mouse pointer (nullopt: the sky or no pointer), and the ground
-  // distance a pixel spans at the centre of the view (NaN: no ground there).
+  // distance a pixel spans at the centre of the view (NaN: no ground there; the scale bar).
   std::optional<geo::Cartographic> underCursor;
   double metersPerPixel = std::numeric_limits<double>::quiet_NaN();
   std::optional<std::string> prompt;  // the go-to text being typed (G)
@@ -43,12 +43,14 @@ std::string terrainStatus(const camera::CollisionState& collision);
 // the frame time is left out: what the loop compares to decide whether the HUD changed.
 std::vector<std::string> hudStatusLines(const HudState& state, bool withFrameTime = true);
 
-// "scale: 100 px = 2.35 km" from the ground distance one pixel spans at the centre of the view.
-std::string scaleText(double metersPerPixel);
-
-// The compass (top right): where north is on the screen, and that a click turns the view north
-// up, e.g. {"north: up", "click: north up"} at heading 0 and {"north: right", ...} at 270.
-std::vector<std::string> compassLines(double headingRadians);
+// The scale bar: the longest round ground length (1, 2 or 5 x 10^k m) at most maximumPixels long
+// at this many metres a pixel, e.g. {85.1 px, "2 km"} at 23.5 m/px and 100 px; nullopt where the
+// scale is unknown (NaN: no ground at the centre).
+struct ScaleBarLength {
+  double pixels = 0;
+  std::string label;
+};
+std::optional<ScaleBarLength> scaleBarLength(double metersPerPixel, double maximumPixels);
 
 // The help overlay: every key and mouse action.
 std::vector<std::string> hudHelpLines();

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <system_error>
@@ -28,6 +29,7 @@
 #include "io/image_io.hpp"
 #include "render/glfw_window_context.hpp"
 #include "render/hud_renderer.hpp"
+#include "render/hud_widgets.hpp"
 #include "render/read_pixels.hpp"
 
 namespace globe::app {
@@ -87,28 +89,42 @@ void writeScreenshot(const std::filesystem::path& directory, int width, int heig
   std::fflush(stdout);
 }
 
-// The status block at the top left and, when shown, the help under it; larger on tall windows.
-std::vector<render::HudTextBlock> hudBlocks(std::vector<std::string> status, bool help,
-                                            std::vector<std::string> compass, int widthPixels,
-                                            int heightPixels) {
-  std::vector<render::HudTextBlock> blocks(2);
-  blocks[0].lines = std::move(status);
-  blocks[0].scale = heightPixels >= 600 ? 2.0f : 1.0f;
-  blocks[1].lines = std::move(compass);
-  blocks[1].scale = blocks[0].scale;
-  blocks[1].topLeftPixels = glm::vec2(
-      static_cast<float>(widthPixels) - render::hudBlockSizePixels(blocks[1]).x - 8.0f, 8.0f);
-  blocks[1].textRgba = {0.75f, 0.9f, 1.0f, 1.0f};
+// The HUD, in framebuffer pixels: the status block at the top left and, when shown, the help
+// under it, the compass rose at the top right and the scale bar at the bottom left; larger on
+// tall windows. compassBox gets the rose's bounding box (a click there turns north up).
+std::vector<render::HudItem> hudItems(std::vector<std::string> status, bool help,
+                                      double headingRadians, double metersPerPixel, int widthPixels,
+                                      int heightPixels,
+                                      std::pair<glm::dvec2, glm::dvec2>& compassBox) {
+  std::vector<render::HudItem> items;
+  render::HudTextBlock statusBlock;
+  statusBlock.lines = std::move(status);
+  statusBlock.scale = heightPixels >= 600 ? 2.0f : 1.0f;
+  const float scale = statusBlock.scale;
   if (help) {
     render::HudTextBlock helpBlock;
     helpBlock.lines = hudHelpLines();
-    helpBlock.scale = blocks[0].scale;
-    helpBlock.topLeftPixels =
-        blocks[0].topLeftPixels + glm::vec2(0.0f, render::hudBlockSizePixels(blocks[0]).y + 8.0f);
+    helpBlock.scale = scale;
+    helpBlock.topLeftPixels = statusBlock.topLeftPixels +
+                              glm::vec2(0.0f, render::hudBlockSizePixels(statusBlock).y + 8.0f);
     helpBlock.textRgba = {1.0f, 1.0f, 0.75f, 1.0f};
-    blocks.push_back(std::move(helpBlock));
+    items.emplace_back(std::move(helpBlock));
   }
-  return blocks;
+  items.emplace(items.begin(), std::move(statusBlock));
+  const float radius = 28.0f * scale;
+  const glm::vec2 centre(static_cast<float>(widthPixels) - 8.0f - radius, 8.0f + radius);
+  for (render::HudItem& item : render::compassRose(centre, radius, scale, -headingRadians)) {
+    items.push_back(std::move(item));
+  }
+  compassBox = {glm::dvec2(centre - radius), glm::dvec2(centre + radius)};
+  if (const auto bar = scaleBarLength(metersPerPixel, 100.0 * scale)) {
+    const glm::vec2 leftEnd(12.0f * scale, static_cast<float>(heightPixels) - 10.0f * scale);
+    for (render::HudItem& item :
+         render::scaleBar(leftEnd, static_cast<float>(bar->pixels), bar->label, scale)) {
+      items.push_back(std::move(item));
+    }
+  }
+  return items;
 }
 
 }  // namespace
@@ -270,6 +286,13 @@ Result<ViewReport> runView(const ViewOptions& options) {
       }
       hudState.metersPerPixel = navigator.metersPerPixelAtCentre();
       std::vector<std::string> hudKey = hudStatusLines(hudState, false);
+      // The compass and the scale bar change the HUD too (to the degree, to the pixel).
+      const auto rounded = [](double value) {
+        return std::isfinite(value) && std::abs(value) < 1e15 ? std::to_string(std::lround(value))
+                                                              : std::string("-");
+      };
+      hudKey.push_back(rounded(geo::radiansToDegrees(controller.pose().headingRadians)) + " " +
+                       rounded(hudState.metersPerPixel * 100));
       const bool hudChanged = hudKey != drawnHud || input.helpVisible != drawnHelp;
       redraw = redraw || (hudChanged && !throttled) || input.screenshotRequested;
 
@@ -279,18 +302,17 @@ Result<ViewReport> runView(const ViewOptions& options) {
         lastDraw = now;
         if (hudChanged || continuous) {
           hudState.frameMilliseconds = frameMilliseconds;
-          const auto blocks =
-              hudBlocks(hudStatusLines(hudState), input.helpVisible,
-                        compassLines(controller.pose().headingRadians), width, height);
-          // Where a click on the compass lands, in window pixels (the HUD's are framebuffer's).
+          // Picks and clicks are in window pixels, the HUD in the framebuffer's.
           int windowWidth = 0, windowHeight = 0;
           glfwGetWindowSize(handle, &windowWidth, &windowHeight);
           const double toWindow = static_cast<double>(windowWidth) / std::max(width, 1);
-          input.compassTopLeft = glm::dvec2(blocks[1].topLeftPixels) * toWindow;
-          input.compassBottomRight =
-              glm::dvec2(blocks[1].topLeftPixels + render::hudBlockSizePixels(blocks[1])) *
-              toWindow;
-          (*hud)->setBlocks(blocks);
+          std::pair<glm::dvec2, glm::dvec2> compassBox;
+          const std::vector<render::HudItem> items = hudItems(
+              hudStatusLines(hudState), input.helpVisible, controller.pose().headingRadians,
+              hudState.metersPerPixel * toWindow, width, height, compassBox);
+          input.compassTopLeft = compassBox.first * toWindow;
+          input.compassBottomRight = compassBox.second * toWindow;
+          (*hud)->setItems(items);
           drawnHud = std::move(hudKey);
           drawnHelp = input.helpVisible;
         }

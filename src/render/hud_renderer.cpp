@@ -50,34 +50,55 @@ glm::vec2 hudBlockSizePixels(const HudTextBlock& block) {
           lines * kLineFontPixels * block.scale + 2 * block.paddingPixels - 3 * block.scale};
 }
 
-std::vector<HudVertex> buildHudTriangles(std::span<const HudTextBlock> blocks) {
+namespace {
+
+void appendBlock(std::vector<HudVertex>& out, std::vector<FontVertex>& quads,
+                 const HudTextBlock& block) {
+  if (block.lines.empty()) return;
+  const glm::vec2 size = hudBlockSizePixels(block);
+  const glm::vec2 p = block.topLeftPixels;
+  if (block.backgroundRgba.a > 0) {
+    appendQuad(out, p, {p.x + size.x, p.y}, p + size, {p.x, p.y + size.y}, block.backgroundRgba);
+  }
+  for (size_t row = 0; row < block.lines.size(); ++row) {
+    std::string text = block.lines[row];
+    quads.resize(text.size() * 80 + 16);  // stb uses ~270 bytes (17 vertices) a character
+    const int count = stb_easy_font_print(0, 0, text.data(), nullptr, quads.data(),
+                                          static_cast<int>(quads.size() * sizeof(FontVertex)));
+    const glm::vec2 origin =
+        p + glm::vec2(block.paddingPixels, block.paddingPixels + static_cast<float>(row) *
+                                                                     kLineFontPixels * block.scale);
+    for (int q = 0; q < count; ++q) {
+      glm::vec2 corner[4];
+      for (int k = 0; k < 4; ++k) {
+        const FontVertex& v = quads[static_cast<size_t>(4 * q + k)];
+        corner[k] = origin + block.scale * glm::vec2(v.x, v.y);
+      }
+      appendQuad(out, corner[0], corner[1], corner[2], corner[3], block.textRgba);
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<HudVertex> buildHudTriangles(std::span<const HudItem> items) {
   std::vector<HudVertex> out;
   std::vector<FontVertex> quads;
-  for (const HudTextBlock& block : blocks) {
-    if (block.lines.empty()) continue;
-    const glm::vec2 size = hudBlockSizePixels(block);
-    const glm::vec2 p = block.topLeftPixels;
-    appendQuad(out, p, {p.x + size.x, p.y}, p + size, {p.x, p.y + size.y}, block.backgroundRgba);
-    for (size_t row = 0; row < block.lines.size(); ++row) {
-      std::string text = block.lines[row];
-      quads.resize(text.size() * 80 + 16);  // stb uses ~270 bytes (17 vertices) a character
-      const int count = stb_easy_font_print(0, 0, text.data(), nullptr, quads.data(),
-                                            static_cast<int>(quads.size() * sizeof(FontVertex)));
-      const glm::vec2 origin =
-          p +
-          glm::vec2(block.paddingPixels,
-                    block.paddingPixels + static_cast<float>(row) * kLineFontPixels * block.scale);
-      for (int q = 0; q < count; ++q) {
-        glm::vec2 corner[4];
-        for (int k = 0; k < 4; ++k) {
-          const FontVertex& v = quads[static_cast<size_t>(4 * q + k)];
-          corner[k] = origin + block.scale * glm::vec2(v.x, v.y);
-        }
-        appendQuad(out, corner[0], corner[1], corner[2], corner[3], block.textRgba);
-      }
+  for (const HudItem& item : items) {
+    if (const auto* block = std::get_if<HudTextBlock>(&item)) {
+      appendBlock(out, quads, *block);
+    } else {
+      const HudShape& shape = std::get<HudShape>(item);
+      const size_t whole = shape.trianglesPixels.size() / 3 * 3;
+      for (size_t i = 0; i < whole; ++i) out.push_back({shape.trianglesPixels[i], shape.rgba});
     }
   }
   return out;
+}
+
+std::vector<HudVertex> buildHudTriangles(std::span<const HudTextBlock> blocks) {
+  const std::vector<HudItem> items(blocks.begin(), blocks.end());
+  return buildHudTriangles(items);
 }
 
 struct HudRenderer::Impl {
@@ -117,8 +138,8 @@ Result<std::unique_ptr<HudRenderer>> HudRenderer::create(
   return std::unique_ptr<HudRenderer>(new HudRenderer(std::move(impl)));
 }
 
-void HudRenderer::setBlocks(std::span<const HudTextBlock> blocks) {
-  const std::vector<HudVertex> vertices = buildHudTriangles(blocks);
+void HudRenderer::setItems(std::span<const HudItem> items) {
+  const std::vector<HudVertex> vertices = buildHudTriangles(items);
   glBindBuffer(GL_ARRAY_BUFFER, impl_->vertexBuffer.get());
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(HudVertex)),
                vertices.empty() ? nullptr : vertices.data(), GL_DYNAMIC_DRAW);

@@ -125,16 +125,13 @@ TEST(FlyControls, SpeedNeverJumpsAcrossACliffEdge) {
   EXPECT_EQ(smoothed.update(std::nan(""), dt), std::max(previous / std::pow(8.0, dt), 1.0));
 }
 
-// The HUD names the ground under the pointer and a scale; neither line without its data.
+// The HUD names the ground under the pointer, and no cursor line without it; the scale bar is
+// the longest round length that fits.
 TEST(FlyControls, HudShowsTheGroundUnderThePointerAndAScale) {
   HudState hud;
   auto lines = globe::app::hudStatusLines(hud, false);
-  for (const std::string& line : lines) {
-    EXPECT_EQ(line.find("cursor"), std::string::npos) << line;
-    EXPECT_EQ(line.find("scale"), std::string::npos) << line;
-  }
+  for (const std::string& line : lines) EXPECT_EQ(line.find("cursor"), std::string::npos) << line;
   hud.underCursor = globe::geo::Cartographic::fromDegrees(138.7275, 35.3606, 3731.2);
-  hud.metersPerPixel = 23.5;
   lines = globe::app::hudStatusLines(hud, false);
   const std::string all = [&] {
     std::string text;
@@ -143,9 +140,25 @@ TEST(FlyControls, HudShowsTheGroundUnderThePointerAndAScale) {
   }();
   EXPECT_NE(all.find("cursor lon 138.72750  lat 35.36060  ground 3731.2 m"), std::string::npos)
       << all;
-  EXPECT_NE(all.find("scale: 100 px = 2.35 km"), std::string::npos) << all;
-  EXPECT_EQ(globe::app::scaleText(0.5), "scale: 100 px = 50 m");
-  EXPECT_EQ(globe::app::scaleText(2000), "scale: 100 px = 200 km");
+  using globe::app::scaleBarLength;
+  const auto bar = scaleBarLength(23.5, 100);  // 2,350 m fit: 2 km
+  ASSERT_TRUE(bar);
+  EXPECT_EQ(bar->label, "2 km");
+  EXPECT_NEAR(bar->pixels, 2000 / 23.5, 1e-9);
+  EXPECT_EQ(scaleBarLength(0.5, 100)->label, "50 m");
+  EXPECT_EQ(scaleBarLength(0.5, 100)->pixels, 100);  // exactly fits
+  EXPECT_EQ(scaleBarLength(51, 200)->label, "10 km");
+  EXPECT_EQ(scaleBarLength(1e5, 200)->label, "20000 km");
+  EXPECT_EQ(scaleBarLength(0.004, 100)->label, "0.2 m");
+  for (double metersPerPixel : {0.0031, 0.7, 3.3, 42.0, 999.0, 12345.0}) {
+    const auto b = scaleBarLength(metersPerPixel, 150);
+    ASSERT_TRUE(b);
+    EXPECT_LE(b->pixels, 150 + 1e-9);
+    EXPECT_GT(b->pixels, 150 / 2.5 - 1e-9);  // 1-2-5 steps: never less than 2/5 of the room
+  }
+  EXPECT_FALSE(scaleBarLength(std::nan(""), 100));
+  EXPECT_FALSE(scaleBarLength(0, 100));
+  EXPECT_FALSE(scaleBarLength(10, 0));
 }
 
 // The speed factor steps in powers of two, stops at x1/8 and x64, and comes back exactly to x1.

@@ -58,16 +58,6 @@ TEST(GoTo, GazetteerNamesAreUniqueAndOnTheGlobe) {
   EXPECT_GE(names.size(), 10u);
 }
 
-TEST(Compass, ArrowPointsToNorthOnTheScreen) {
-  EXPECT_EQ(compassLines(0)[0], "north: up");
-  EXPECT_EQ(compassLines(geo::degreesToRadians(90))[0],
-            "north: left");  // facing east: north is left
-  EXPECT_EQ(compassLines(geo::degreesToRadians(180))[0], "north: down");
-  EXPECT_EQ(compassLines(geo::degreesToRadians(-90))[0], "north: right");
-  EXPECT_EQ(compassLines(geo::degreesToRadians(120))[0], "north: down-left");
-  EXPECT_EQ(compassLines(std::nan(""))[0], "north: up");
-}
-
 TEST(Compass, NorthUpTurnsAboutTheCentreGroundPoint) {
   const geo::Ellipsoid wgs84 = geo::Ellipsoid::wgs84();
   camera::OrbitControls controls(
