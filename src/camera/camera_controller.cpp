@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "collision/lateral_clearance.hpp"
 #include "collision/near_plane_clearance.hpp"
 #include "collision/surface_probe.hpp"
 #include "collision/terrain_raise.hpp"
@@ -164,6 +165,25 @@ const CollisionState& CameraController::update(double dtSeconds,
       pose_.position = push.position;
       state.nearPlanePushed = true;
       report(state, collision::Response::NearPlanePushed);
+    }
+  }
+  // (4) Beside a steep wall "above the surface" can be centimetres from it: the ball around the
+  // eye that holds the near-plane rectangle (and the view between them) is kept free of drawn
+  // triangles by moving the eye straight away from the nearest one.
+  if (settings_.nearPlaneCheck && settings_.lateralCheck) {
+    const auto corners = nearPlaneCornerOffsets(cameraFrame(ellipsoid, pose_), settings_.nearPlane);
+    double radius = 0.0;
+    for (const glm::dvec3& corner : corners) radius = std::max(radius, glm::length(corner));
+    radius += clearance.lateralMarginMeters;
+    const collision::LateralPush push = collision::pushAwayFromTerrain(
+        array, ellipsoid, geo::cartographicToEcef(ellipsoid, pose_.position), radius);
+    state.surfaceProbes += push.trianglesTested;
+    if (push.valid && push.pushMeters > 0.0) {
+      if (const auto moved = geo::ecefToCartographic(ellipsoid, push.eyeEcefMeters)) {
+        pose_.position = *moved;
+        state.nearPlanePushed = true;
+        report(state, collision::Response::NearPlanePushed);
+      }
     }
   }
   describeTerrain(array, ellipsoid, state);

@@ -21,6 +21,9 @@ struct ControllerSettings {
   collision::ResponseSettings response;    // exact surface, swept tests, 4 slide contacts
   NearPlane nearPlane;                     // the renderer's near plane; its corners are checked
   bool nearPlaneCheck = true;
+  // The ball around the eye holding the near plane is kept free of drawn triangles (with
+  // nearPlaneCheck; collision/lateral_clearance.hpp).
+  bool lateralCheck = true;
   double jumpDistanceMeters = 1.0e6;  // Auto proposals moving farther than this are teleports
 };
 

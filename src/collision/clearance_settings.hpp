@@ -13,12 +13,16 @@ namespace globe::collision {
 // - nearPlaneMeters = 0.5 m: the near plane's corners (~0.8 m from the eye at 45 deg / 16:9 and
 //   a 0.5 m near) stay this far above the drawn surface, so looking down a steep slope cannot
 //   cut it (the paper's Fig. 6(c)).
+// - lateralMarginMeters = 0.1 m: no drawn triangle comes nearer the eye than the near plane's
+//   corners are (~0.65 m at a 0.5 m near) plus this, in any direction (lateral_clearance.hpp),
+//   so beside a steep wall neither the near plane nor the view up to it is inside the terrain.
 // - raise: exponential approach with time constant 0.25 s, at most 4 m/s: a 1 m gap closes to
 //   1 cm in ~1.15 s (35 frames at 30 Hz; then it snaps), the first frame moving ~0.12 m.
 struct ClearanceSettings {
   double eyeMeters = 2.0;
   double minimumEyeMeters = 1.0;
   double nearPlaneMeters = 0.5;
+  double lateralMarginMeters = 0.1;
   double raiseTimeConstantSeconds = 0.25;
   double maxRaiseRateMetersPerSecond = 4.0;
 };

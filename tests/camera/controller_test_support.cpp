@@ -6,10 +6,12 @@
 #include <map>
 
 #include "collision/exact_surface.hpp"
+#include "collision/tile_containment.hpp"
 #include "geo/ecef.hpp"
 #include "geo/globe_rectangle.hpp"
 #include "geo/tiling_scheme.hpp"
 #include "tests/collision/collision_test_support.hpp"
+#include "tests/collision/mesh_ray_cast.hpp"
 
 namespace globe::camera::testing {
 namespace {
@@ -87,6 +89,46 @@ glm::dvec3 direction(const geo::Cartographic& position, double headingRadians,
                      double pitchRadians) {
   return cameraFrame(geo::Ellipsoid::wgs84(), {position, headingRadians, pitchRadians, 0.0})
       .forward;
+}
+
+namespace {
+
+// The drawn surface by the brute-force oracle; -infinity where no tile holds the point.
+double oracleHeight(const collision::RenderingTileArray& array, const geo::Cartographic& p) {
+  const auto point = collision::makeQueryPoint(p.longitudeRadians, p.latitudeRadians);
+  if (!point) return -std::numeric_limits<double>::infinity();
+  const collision::ArrayTile* tile =
+      array.findIndexed(point->longitudeRadians, point->latitudeRadians);
+  if (tile == nullptr) return -std::numeric_limits<double>::infinity();
+  const auto hit = collision::testing::castOntoTileMesh(
+      *tile, geo::Ellipsoid::wgs84(), point->longitudeRadians, point->latitudeRadians);
+  return hit ? hit->heightMeters : -std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
+
+double deepestInsideView(const CameraPose& pose, const NearPlane& nearPlane,
+                         const collision::RenderingTileArray& array) {
+  const geo::Ellipsoid ellipsoid = geo::Ellipsoid::wgs84();
+  const CameraFrame frame = cameraFrame(ellipsoid, pose);
+  const auto c = nearPlaneCornerOffsets(frame, nearPlane);
+  double deepest = -std::numeric_limits<double>::infinity();
+  const auto sample = [&](const glm::dvec3& offset) {
+    const auto p = geo::ecefToCartographic(ellipsoid, frame.positionEcefMeters + offset);
+    if (!p) return;
+    deepest = std::max(deepest, oracleHeight(array, *p) - p->heightMeters);
+  };
+  sample(glm::dvec3(0.0));
+  for (int a = 0; a <= 4; ++a) {
+    for (int b = 0; b <= 4; ++b) {
+      const double u = a / 4.0, v = b / 4.0;
+      // Bilinear over the corners (+-up, +-right in some order: the grid spans the rectangle).
+      const glm::dvec3 point =
+          (1 - u) * ((1 - v) * c[0] + v * c[1]) + u * ((1 - v) * c[2] + v * c[3]);
+      for (const double t : {0.25, 0.5, 0.75, 1.0}) sample(t * point);
+    }
+  }
+  return deepest;
 }
 
 bool FrameAudit::check(const CameraPose& pose, const NearPlane& nearPlane,

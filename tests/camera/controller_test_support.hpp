@@ -42,6 +42,13 @@ geo::Cartographic offsetPosition(const geo::Cartographic& origin, double bearing
 // The unit ECEF direction of heading/pitch at a position (the camera's forward).
 glm::dvec3 direction(const geo::Cartographic& position, double headingRadians, double pitchRadians);
 
+// How far the view from the eye to the near plane reaches below the drawn surface (metres; <= 0:
+// not at all), by an oracle written apart from the collision code: rays from the eye to a 5 x 5
+// grid over the near-plane rectangle, each sampled at 1/4, 1/2, 3/4 and 1, against the
+// brute-force mesh ray cast (tests/collision/mesh_ray_cast.hpp); the eye itself too.
+double deepestInsideView(const CameraPose& pose, const NearPlane& nearPlane,
+                         const collision::RenderingTileArray& array);
+
 // Counts frames whose eye or near-plane corners are below the drawn surface (+ 0 m), or whose
 // pose is not finite; keeps the lowest clearances seen.
 struct FrameAudit {
