@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "collision/exact_surface.hpp"
+#include "collision/lateral_clearance.hpp"
 #include "collision/qotcd.hpp"
 #include "collision/sphere_tree.hpp"
 #include "geo/ecef.hpp"
@@ -272,6 +273,27 @@ void BM_ExactSurfaceGeodetic(benchmark::State& state) {
   });
 }
 
+// The lateral clearance (collision/lateral_clearance.hpp) as the controller runs it each frame:
+// the flight path's eyes brought down to 0.5 m above the drawn surface (every query has
+// triangles within the ball: the worst case), radius 0.75 m (a 0.5 m near plane, 45 deg, 16:9,
+// + 0.1 m). Compare with BM_ExactSurfaceGeodetic, the vertical test of the same frame.
+void BM_LateralClearance(benchmark::State& state) {
+  const BenchArray* array = nullptr;
+  const std::vector<CameraQuery>* queries = nullptr;
+  if (!prepare(state, array, queries, false)) return;
+  const geo::Ellipsoid ellipsoid = shared().pyramid->ellipsoid();
+  std::vector<CameraQuery> low = *queries;
+  for (CameraQuery& camera : low) {
+    camera.heightMeters -= camera.aboveSurfaceMeters - 0.5;
+    camera.ecefMeters = geo::cartographicToEcef(
+        ellipsoid, {camera.longitudeRadians, camera.latitudeRadians, camera.heightMeters});
+  }
+  runQueries(state, low, [&](const CameraQuery& camera) {
+    return collision::nearestDrawnTriangle(array->array, ellipsoid, camera.ecefMeters, 0.75)
+        .has_value();
+  });
+}
+
 double minimum(const std::vector<double>& values) {
   return values.empty() ? 0.0 : *std::min_element(values.begin(), values.end());
 }
@@ -303,6 +325,7 @@ void registerTimingBenchmarks(const std::filesystem::path& pyramidDirectory) {
   registerSizes("BM_EcefToCartographicSphere", &BM_EcefToCartographicSphere, {10});
   registerSizes("BM_QotcdIndexedGeodetic", &BM_QotcdIndexedGeodetic, kTileCounts);
   registerSizes("BM_ExactSurfaceGeodetic", &BM_ExactSurfaceGeodetic, kTileCounts);
+  registerSizes("BM_LateralClearance", &BM_LateralClearance, kTileCounts);
   registerSizes("BM_QotcdIndexedOnSphere", &BM_QotcdIndexedOnSphere, kTileCounts);
 }
 
