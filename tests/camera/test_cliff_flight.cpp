@@ -13,6 +13,7 @@
 
 #include "camera/camera_controller.hpp"
 #include "camera/navigator.hpp"
+#include "collision/collision_response.hpp"
 #include "collision/exact_surface.hpp"
 #include "geo/ecef.hpp"
 #include "geo/tiling_scheme.hpp"
@@ -92,7 +93,9 @@ TEST(CliffFlight, SpeedNeverJumpsFlyingOffZionCanyonsRim) {
   for (size_t i = 1; i < speeds.size(); ++i) {
     largestRise = std::max(largestRise, speeds[i] / speeds[i - 1]);
     largestFall = std::min(largestFall, speeds[i] / speeds[i - 1]);
-    EXPECT_LE(steps[i], speeds[i] * dt * 1.001 + 1e-6) << "frame " << i;
+    // (Sliding along the far wall adds the contact skin's re-raise, up to a centimetre.)
+    EXPECT_LE(steps[i], speeds[i] * dt * 1.001 + 2 * collision::kContactSkinMeters)
+        << "frame " << i;
   }
   EXPECT_LE(largestRise, std::pow(2.0, dt) + 1e-9);
   EXPECT_GE(largestFall, std::pow(8.0, -dt) - 1e-9);

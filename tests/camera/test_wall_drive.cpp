@@ -172,3 +172,49 @@ TEST(WallDrive, BesideANeedleTheCornersAloneLetTheViewIntoIt) {
 
 }  // namespace
 }  // namespace globe::camera
+
+namespace globe::camera {
+namespace {
+
+// Flight across Angels Landing (a fin ~140 m above the canyon floor on both sides), from the
+// west and from the east, level and 20 deg down, from 20 m above the floor, at 1 m to 100 km a
+// frame: the camera slides up and over and makes at least a tenth of its step along its heading
+// every frame (the slide costs the part into the rock; a stall would be ~0).
+TEST(RidgeSlide, KeepsMovingEveryFrameAtEverySpeed) {
+  const collision::RenderingTileArray& array = canyonArray();
+  const geo::Cartographic ridge = geo::Cartographic::fromDegrees(-112.9485, 37.2692, 0.0);
+  int frames = 0, slid = 0;
+  double smallest = INFINITY;
+  for (const double heading : {0.5 * kPi, 1.5 * kPi}) {
+    for (const double pitch : {0.0, geo::degreesToRadians(-20.0)}) {
+      for (const double step : {1.0, 10.0, 100.0, 1000.0, 10000.0, 100000.0}) {
+        geo::Cartographic start =
+            testing::offsetPosition(ridge, heading + kPi, std::clamp(3 * step, 150.0, 3000.0), 0.0);
+        start.heightMeters =
+            testing::drawnHeight(array, start.longitudeRadians, start.latitudeRadians) + 20.0;
+        CameraController controller({start, heading, pitch, 0.0});
+        ASSERT_TRUE(
+            controller.setVelocity(testing::direction(start, heading, pitch) * (step / kDt)));
+        for (int frame = 0; frame < 30; ++frame) {
+          const glm::dvec3 before = geo::cartographicToEcef(kWgs84, controller.pose().position);
+          const CollisionState& state = controller.update(kDt, array, kWgs84);
+          const glm::dvec3 after = geo::cartographicToEcef(kWgs84, controller.pose().position);
+          const EastNorthUp enu = eastNorthUp(kWgs84, controller.pose().position);
+          const double along = glm::dot(
+              after - before, std::sin(heading) * enu.east + std::cos(heading) * enu.north);
+          EXPECT_GE(along, 0.1 * step) << "heading " << heading << " pitch " << pitch << " step "
+                                       << step << " frame " << frame;
+          smallest = std::min(smallest, along / step);
+          ++frames;
+          slid += state.response == collision::Response::Slid;
+        }
+      }
+    }
+  }
+  std::printf("ridge slide: %d frames, %d slid, smallest move along the heading %.3f of the step\n",
+              frames, slid, smallest);
+  EXPECT_GT(slid, frames / 4);
+}
+
+}  // namespace
+}  // namespace globe::camera
