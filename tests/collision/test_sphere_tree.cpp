@@ -1,10 +1,12 @@
 // Tests for collision/sphere_tree.hpp: the point-triangle distance, spheres that bound their
 // sub-blocks, agreement with brute force over every triangle on real tiles, and the early exit.
 #include "collision/sphere_tree.hpp"
+#include "collision/sphere_tree_bvh.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <array>
 #include <cmath>
 #include <random>
@@ -207,6 +209,52 @@ TEST(SphereTree, FindsEveryTriangleThatBruteForceFinds) {
   EXPECT_GT(colliding, kQueries / 5);
   EXPECT_LT(colliding, kQueries * 4 / 5);
   EXPECT_GT(manyHits, kQueries / 10);
+}
+
+// The hierarchy over the roots answers as the scan does (its speed is globe-bench's
+// BM_SphereTreeBvh: over these few mixed-level tiles, some a continent wide, it saves nothing).
+TEST(SphereTree, TheBvhAgreesWithTheScan) {
+  RealPyramid& pyramid = RealPyramid::bundled();
+  const std::vector<TileId> ids = realTiles(pyramid);
+  const RenderingTileArray array = pyramid.array(ids);
+  const geo::Ellipsoid wgs84 = geo::Ellipsoid::wgs84();
+  SphereTreeSet trees;
+  trees.build(array, wgs84);
+  const SphereTreeBvh bvh(trees);
+  EXPECT_GT(bvh.nodeCount(), trees.tileCount() / 4);
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> offset(-150.0, 150.0);
+  int colliding = 0;
+  uint64_t scanTests = 0, bvhTests = 0;
+  constexpr int kQueries = 4000;
+  for (int q = 0; q < kQueries; ++q) {
+    const testing::LonLat point = testing::randomQueryPoint(rng, ids, 14, 17);
+    const auto surface =
+        exactSurfaceHeight(array, wgs84, point.longitudeRadians, point.latitudeRadians);
+    const double height = (surface ? surface->heightMeters : 0.0) + offset(rng);
+    const glm::dvec3 camera =
+        geo::cartographicToEcef(wgs84, {point.longitudeRadians, point.latitudeRadians, height});
+    const double radius = std::array{50.0, 10.0, 400.0}[rng() % 3];
+    const SphereTreeResult scan = trees.intersect(camera, radius);
+    const SphereTreeResult fast = bvh.intersect(camera, radius);
+    ASSERT_EQ(fast.collided, scan.collided) << q;
+    if (fast.collided) {
+      ++colliding;
+      const std::vector<TriangleRef> within = trees.trianglesWithin(camera, radius);
+      EXPECT_TRUE(std::find(within.begin(), within.end(), fast.hit) != within.end()) << q;
+    }
+    scanTests += scan.sphereTests;
+    bvhTests += fast.sphereTests;
+  }
+  EXPECT_GT(colliding, kQueries / 5);
+  EXPECT_LT(colliding, kQueries * 4 / 5);
+  std::printf("%zu tiles: sphere tests per query %.1f scanning, %.1f through the BVH\n",
+              trees.tileCount(), static_cast<double>(scanTests) / kQueries,
+              static_cast<double>(bvhTests) / kQueries);
+  EXPECT_FALSE(bvh.intersect({std::nan(""), 0, 0}, 50.0).collided);
+  SphereTreeSet empty;
+  empty.build(RenderingTileArray{}, wgs84);
+  EXPECT_FALSE(SphereTreeBvh(empty).intersect(glm::dvec3(6.4e6, 0, 0), 50.0).collided);
 }
 
 TEST(SphereTree, StopsAtTheFirstHit) {

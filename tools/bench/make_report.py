@@ -23,6 +23,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 SIZES = [10, 100, 1000, 10000, 100000]
 METHODS = {  # benchmark name -> (label, colour, marker)
     "BM_SphereTree": ("sphere tree", "tab:red", "o"),
+    "BM_SphereTreeBvh": ("sphere tree + BVH (fair baseline)", "tab:purple", "P"),
     "BM_QotcdLinear": ("QOTCD linear (paper)", "tab:orange", "s"),
     "BM_QotcdIndexed": ("QOTCD indexed", "tab:blue", "^"),
     "BM_ExactSurface": ("exact surface", "tab:green", "D"),
@@ -198,19 +199,22 @@ def write_readme_summary(readme, bench, machine):
         raise SystemExit(f"{readme}: no {README_BEGIN} ... {README_END} block")
     idx = median_of(bench, "BM_QotcdIndexed")
     sphere = median_of(bench, "BM_SphereTree")
+    bvh = median_of(bench, "BM_SphereTreeBvh") or [float("nan")]
     on_sphere = median_of(bench, "BM_QotcdIndexedOnSphere") or [float("nan")]
     ratio = sphere[-1] / idx[-1] if sphere and idx else float("nan")
+    fair = bvh[-1] / idx[-1] if idx else float("nan")
     block = (
         "* **Collision** ([docs/performance-collision.md](docs/performance-collision.md), "
         "regenerate with\n  `tools/bench/run-benchmarks.sh`, which also rewrites this bullet): "
-        "the paper's Fig. 7 measured\n  here, QOTCD against the sphere-tree baseline over 10 to "
-        f"100,000 real 17×17 tiles\n  (commit {machine['commit']}, {machine['cpu']}, "
-        f"{machine['date_utc'][:10]}). QOTCD indexed: {span(idx)} ns per query\n  "
-        "from 10 to 100,000 tiles; the sphere tree grows with the tile count "
-        f"({fmt_ns(sphere[0])} → {fmt_ns(sphere[-1])},\n  {ratio:.0f}× QOTCD at 100,000 tiles), "
-        "as does the paper's linear QOTCD. Targets missed and why (the\n  ellipsoidal "
-        f"ECEF→geodetic conversion dominates: {span(on_sphere)} ns on the paper's sphere) are "
-        "in the\n  document, with run time against error.\n")
+        "the paper's Fig. 7 measured\n  here over 10 to 100,000 real 17×17 tiles "
+        f"(commit {machine['commit']}, {machine['cpu']},\n  {machine['date_utc'][:10]}). "
+        f"QOTCD indexed: {span(idx)} ns per query at every size. Against a fair\n  baseline, "
+        "a sphere tree whose tiles are found through a BVH, QOTCD is "
+        f"**{fair:.2f}×** faster at\n  100,000 tiles ({fmt_ns(bvh[-1])} a query) and needs no "
+        "per-tile trees (~18 kB a tile); the paper's\n  sphere tree, which scans every tile's "
+        f"root, grows to {fmt_ns(sphere[-1])} ({ratio:.0f}× QOTCD). Targets missed and\n  why "
+        f"(the ellipsoidal ECEF→geodetic conversion dominates: {span(on_sphere)} ns on the "
+        "paper's sphere)\n  are in the document, with run time against error.\n")
     readme.write_text(text[:begin + len(README_BEGIN)] + "\n" + block + text[end:])
 
 
@@ -262,6 +266,9 @@ def main():
       "within 50 m of the camera (3-D distance; the camera sphere of radius 50 m meets the "
       "mesh) | per tile: the mesh's vertices in ECEF and a quadtree of bounding spheres "
       "16×16 → 8×8 → 4×4 → 2×2 → 1 quad (341 spheres), two triangles per leaf |")
+    w("| sphere tree + BVH (a fair baseline) | the same | the same trees, and a bounding volume "
+      "hierarchy over the tiles' root spheres (boxes, median split, ≤ 4 tiles a leaf): the "
+      "roots are found in O(log n) instead of scanned |")
     w("| QOTCD linear (the paper's method) | D ≤ H + 50 m: D the camera's height along the "
       "Oriented Ray (geodetic normal), H the paper's height (the highest of the 2–4 vertices "
       "around the Intersecting Point) | none; the tile is found by testing every tile's "
@@ -289,16 +296,20 @@ def main():
       "positions over the whole array instead.\n")
     w(f"![Fig. 7]({rel(fig7)})\n")
     header = "| tiles | " + " | ".join(METHODS[n][0] for n in METHODS) + \
-        " | sphere tree ÷ QOTCD indexed | sphere tree Nv / Np per query |"
+        " | sphere tree ÷ QOTCD indexed | sphere tree + BVH ÷ QOTCD indexed" \
+        " | sphere tree Nv / Np per query | with the BVH |"
     w(header)
-    w("|" + "---|" * (len(METHODS) + 3))
+    w("|" + "---|" * (len(METHODS) + 5))
     for t in SIZES:
         cells = [fmt_ns(med(n, t)) if (n, t) in bench else "–" for n in METHODS]
         ratio = med("BM_SphereTree", t) / med("BM_QotcdIndexed", t)
+        fair = med("BM_SphereTreeBvh", t) / med("BM_QotcdIndexed", t)
         st = bench.get(("BM_SphereTree", t), {}).get("median", {})
+        bv = bench.get(("BM_SphereTreeBvh", t), {}).get("median", {})
         w(f"| {t:,} | " + " | ".join(cells) +
-          f" | {ratio:.1f}× | {st.get('Nv', float('nan')):,.0f} / "
-          f"{st.get('Np', float('nan')):.1f} |")
+          f" | {ratio:.1f}× | {fair:.2f}× | {st.get('Nv', float('nan')):,.0f} / "
+          f"{st.get('Np', float('nan')):.1f} | {bv.get('Nv', float('nan')):,.0f} / "
+          f"{bv.get('Np', float('nan')):.1f} |")
     coll = bench.get(("BM_QotcdIndexed", 10), {}).get("median", {}).get("collided")
     coll_st = bench.get(("BM_SphereTree", 10), {}).get("median", {}).get("collided")
     if coll is not None and coll_st is not None:
@@ -399,6 +410,19 @@ def main():
           "positions (`BM_QotcdIndexedRandom`) the indexed lookup pays cache misses for the "
           "table, the tile record and the block once the array outgrows the caches: "
           f"{fmt_ns(rnd[0])} at 10 tiles, {fmt_ns(rnd[-1])} at 100,000 (≈ 60 MB of blocks).\n")
+
+    bvh = median_of(bench, "BM_SphereTreeBvh")
+    if len(bvh) == len(SIZES) and len(idx) == len(SIZES):
+        w("**Against a fair baseline.** The paper's \"dozens of times\" compares an indexed "
+          "QOTCD with a sphere tree that scans every root. Given a hierarchy over the roots "
+          "(`BM_SphereTreeBvh`), the sphere tree stops growing too: "
+          f"{fmt_ns(bvh[0])} at 10 tiles, {fmt_ns(bvh[2])} at 1,000, {fmt_ns(bvh[-1])} at "
+          f"100,000, against QOTCD indexed's {span(idx)} ns: QOTCD is "
+          f"{bvh[2] / idx[2]:.2f}× faster at 1,000 tiles and {bvh[-1] / idx[-1]:.2f}× at "
+          "100,000, not hundreds of times. What QOTCD keeps: no precomputation beyond the "
+          "tile hash (the trees take ~18 kB a tile, 1.8 GB at 100,000 tiles, and must be "
+          "rebuilt for every tile that streams in), a cost that does not depend on the "
+          "terrain's shape, and no triangle tests.\n")
 
     # Accuracy.
     w("## Run time against error\n")

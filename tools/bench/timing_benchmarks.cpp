@@ -16,6 +16,7 @@
 #include "collision/lateral_clearance.hpp"
 #include "collision/qotcd.hpp"
 #include "collision/sphere_tree.hpp"
+#include "collision/sphere_tree_bvh.hpp"
 #include "geo/ecef.hpp"
 #include "tools/bench/bench_terrain.hpp"
 
@@ -42,6 +43,8 @@ struct Shared {
   uint32_t treeTiles = 0;
   std::unique_ptr<collision::SphereTreeSet> trees;
   double treeBuildSeconds = 0;
+  std::unique_ptr<collision::SphereTreeBvh> bvh;  // over `trees`
+  double bvhBuildSeconds = 0;
 
   Pyramid* openPyramid() {
     if (!pyramid && error.empty()) {
@@ -97,6 +100,7 @@ struct Shared {
     if (trees && treeTiles == tiles) return trees.get();
     const BenchArray* a = array(tiles);
     if (a == nullptr) return nullptr;
+    bvh.reset();
     trees.reset();
     auto built = std::make_unique<collision::SphereTreeSet>();
     const auto start = std::chrono::steady_clock::now();
@@ -106,6 +110,17 @@ struct Shared {
     trees = std::move(built);
     treeTiles = tiles;
     return trees.get();
+  }
+  const collision::SphereTreeBvh* sphereTreeBvh(uint32_t tiles) {
+    const collision::SphereTreeSet* set = sphereTrees(tiles);
+    if (set == nullptr) return nullptr;
+    if (!bvh) {
+      const auto start = std::chrono::steady_clock::now();
+      bvh = std::make_unique<collision::SphereTreeBvh>(*set);
+      bvhBuildSeconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    return bvh.get();
   }
 };
 
@@ -165,6 +180,32 @@ void BM_SphereTree(benchmark::State& state) {
       benchmark::Counter(static_cast<double>(triangleTests), benchmark::Counter::kAvgIterations);
   state.counters["build_ns_per_tile"] = shared().treeBuildSeconds * 1e9 / tiles;
   state.counters["bytes_per_tile"] = static_cast<double>(trees->memoryBytes()) / tiles;
+}
+
+// The fair baseline: the same sphere trees found through a BVH over their root spheres.
+void BM_SphereTreeBvh(benchmark::State& state) {
+  const BenchArray* array = nullptr;
+  const std::vector<CameraQuery>* queries = nullptr;
+  if (!prepare(state, array, queries, false)) return;
+  const collision::SphereTreeBvh* bvh =
+      shared().sphereTreeBvh(static_cast<uint32_t>(state.range(0)));
+  int64_t sphereTests = 0, triangleTests = 0;
+  runQueries(state, *queries, [&](const CameraQuery& camera) {
+    const collision::SphereTreeResult result =
+        bvh->intersect(camera.ecefMeters, collision::kCameraSphereRadiusMeters);
+    sphereTests += result.sphereTests;
+    triangleTests += result.triangleTests;
+    return result.collided;
+  });
+  const double tiles = static_cast<double>(shared().trees->tileCount());
+  state.counters["Nv"] =
+      benchmark::Counter(static_cast<double>(sphereTests), benchmark::Counter::kAvgIterations);
+  state.counters["Np"] =
+      benchmark::Counter(static_cast<double>(triangleTests), benchmark::Counter::kAvgIterations);
+  state.counters["build_ns_per_tile"] =
+      (shared().treeBuildSeconds + shared().bvhBuildSeconds) * 1e9 / tiles;
+  state.counters["bytes_per_tile"] =
+      static_cast<double>(shared().trees->memoryBytes() + bvh->memoryBytes()) / tiles;
 }
 
 void BM_QotcdLinear(benchmark::State& state) {
@@ -316,6 +357,7 @@ void registerSizes(const char* name, void (*function)(benchmark::State&),
 void registerTimingBenchmarks(const std::filesystem::path& pyramidDirectory) {
   shared().pyramidDirectory = pyramidDirectory;
   registerSizes("BM_SphereTree", &BM_SphereTree, kTileCounts);
+  registerSizes("BM_SphereTreeBvh", &BM_SphereTreeBvh, kTileCounts);
   registerSizes("BM_QotcdLinear", &BM_QotcdLinear, kTileCounts);
   registerSizes("BM_QotcdIndexed", &BM_QotcdIndexed, kTileCounts);
   registerSizes("BM_ExactSurface", &BM_ExactSurface, kTileCounts);
