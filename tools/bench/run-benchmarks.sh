@@ -29,6 +29,10 @@ if command -v taskset >/dev/null; then
   PIN=(taskset -c "$CPU")
 fi
 mkdir -p "$RESULTS"
+# The commit measured, and whether the sources differ from it (before the outputs change).
+COMMIT=$(git -C "$REPO" rev-parse --short HEAD 2>/dev/null || echo unknown)
+DIRTY=$(git -C "$REPO" status --porcelain --untracked-files=no -- src tools/bench/*.cpp \
+  tools/bench/*.hpp CMakeLists.txt 2>/dev/null | head -c1)
 LOAD_BEFORE=$(cut -d' ' -f1-3 /proc/loadavg)
 STARTED=$(date -u +%Y-%m-%dT%H:%M:%SZ)
 
@@ -45,7 +49,6 @@ echo "== accuracy (3 x ${QUERIES} queries)"
 LOAD_AFTER=$(cut -d' ' -f1-3 /proc/loadavg)
 export STARTED LOAD_BEFORE LOAD_AFTER REPETITIONS MIN_TIME
 export PINNED="${PIN[*]:-}"
-export COMMIT=$(git -C "$REPO" rev-parse --short HEAD 2>/dev/null || echo unknown)
-export DIRTY=$(git -C "$REPO" status --porcelain 2>/dev/null | head -c1)
+export COMMIT DIRTY
 MPLBACKEND=Agg "$PYTHON" "$REPO/tools/bench/make_report.py" --results "$RESULTS" \
   --doc "$REPO/docs/performance-collision.md" --plots "$REPO/tools/bench" --readme "$REPO/README.md"
