@@ -11,6 +11,7 @@
 
 #include "tools/bench/accuracy.hpp"
 #include "tools/bench/bench_terrain.hpp"
+#include "tools/bench/ratio_reporter.hpp"
 #include "tools/bench/timing_benchmarks.hpp"
 
 namespace {
@@ -81,7 +82,8 @@ int main(int argc, char** argv) {
   rest.push_back(nullptr);
   benchmark::Initialize(&benchmarkArgc, rest.data());
   if (benchmark::ReportUnrecognizedArguments(benchmarkArgc, rest.data())) return 1;
-  benchmark::RunSpecifiedBenchmarks();
+  globe::bench::RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();
   return 0;
 }

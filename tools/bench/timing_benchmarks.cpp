@@ -18,6 +18,7 @@
 #include "collision/sphere_tree.hpp"
 #include "collision/sphere_tree_bvh.hpp"
 #include "geo/ecef.hpp"
+#include "geo/tiling_scheme.hpp"
 #include "tools/bench/bench_terrain.hpp"
 
 namespace globe::bench {
@@ -230,6 +231,39 @@ void BM_QotcdIndexed(benchmark::State& state) {
   });
 }
 
+// The floor any vertical test pays, as plain as it can be written: the same geodetic
+// conversion, the tile at the array's one level (positionToTile) and one hash probe (find), the
+// quad's four heights, one compare with their highest. No edge rules, no other levels, no
+// no-data or sea handling: QOTCD indexed divided by this is what its own bookkeeping costs.
+void BM_FloorKernel(benchmark::State& state) {
+  const BenchArray* array = nullptr;
+  const std::vector<CameraQuery>* queries = nullptr;
+  if (!prepare(state, array, queries, false)) return;
+  const geo::Ellipsoid ellipsoid = shared().pyramid->ellipsoid();
+  const uint32_t level = array->array.levelsFinestFirst().front();
+  runQueries(state, *queries, [&](const CameraQuery& camera) {
+    const auto at = geo::ecefToCartographic(ellipsoid, camera.ecefMeters);
+    if (!at) return false;
+    const auto id = geo::GeographicTilingScheme::positionToTile(at->longitudeRadians,
+                                                                at->latitudeRadians, level);
+    if (!id) return false;
+    const collision::ArrayTile* tile = array->array.find(*id);
+    if (tile == nullptr) return false;
+    const terrain::HeightBlock& block = *tile->block;
+    const uint32_t cells = block.verticesPerSide - 1;
+    const double u = (at->longitudeRadians - tile->westRadians) /
+                     (tile->eastRadians - tile->westRadians) * cells;
+    const double v = (tile->northRadians - at->latitudeRadians) /
+                     (tile->northRadians - tile->southRadians) * cells;
+    const auto column = std::min(static_cast<uint32_t>(u), cells - 1);
+    const auto row = std::min(static_cast<uint32_t>(v), cells - 1);
+    const int16_t* h = &block.heights[size_t{row} * block.verticesPerSide + column];
+    const int16_t highest = std::max(
+        std::max(h[0], h[1]), std::max(h[block.verticesPerSide], h[block.verticesPerSide + 1]));
+    return at->heightMeters <= highest + kClearanceMeters;
+  });
+}
+
 void BM_ExactSurface(benchmark::State& state) {
   const BenchArray* array = nullptr;
   const std::vector<CameraQuery>* queries = nullptr;
@@ -360,6 +394,7 @@ void registerTimingBenchmarks(const std::filesystem::path& pyramidDirectory) {
   registerSizes("BM_SphereTreeBvh", &BM_SphereTreeBvh, kTileCounts);
   registerSizes("BM_QotcdLinear", &BM_QotcdLinear, kTileCounts);
   registerSizes("BM_QotcdIndexed", &BM_QotcdIndexed, kTileCounts);
+  registerSizes("BM_FloorKernel", &BM_FloorKernel, kTileCounts);
   registerSizes("BM_ExactSurface", &BM_ExactSurface, kTileCounts);
   registerSizes("BM_QotcdIndexedRandom", &BM_QotcdIndexedRandom, kTileCounts);
   // Diagnostics (the conversion does not depend on the array: one size).
