@@ -20,6 +20,7 @@
 #include "collision/qotcd.hpp"
 #include "collision/sphere_tree.hpp"
 #include "geo/ecef.hpp"
+#include "tests/collision/mesh_ray_cast.hpp"
 #include "tools/bench/accuracy_table.hpp"
 #include "tools/bench/memory_use.hpp"
 #include "tools/bench/query_timer.hpp"
@@ -161,8 +162,15 @@ int runAccuracy(Pyramid& pyramid, const AccuracyOptions& options) {
       const double lonDeg = geo::radiansToDegrees(q.longitude);
       const double latDeg = geo::radiansToDegrees(q.latitude);
       const auto source = reference->heightMeters(lonDeg, latDeg);
-      const auto drawn = collision::exactSurfaceHeight(array, ellipsoid, q.longitude, q.latitude);
-      if (!source || !drawn) continue;
+      // Reference (a), the drawn surface, by the tests' brute-force ray caster (every triangle
+      // of the tile, written apart from exactSurfaceHeight), so the exact method is measured
+      // against it rather than equal to it by construction.
+      const collision::ArrayTile* tile = array.findIndexed(q.longitude, q.latitude);
+      const auto drawn = tile == nullptr ? std::nullopt
+                                         : collision::testing::castOntoTileMesh(
+                                               *tile, ellipsoid, q.longitude, q.latitude);
+      const auto exact = collision::exactSurfaceHeight(array, ellipsoid, q.longitude, q.latitude);
+      if (!source || !drawn || !exact) continue;
       if (region.wholeGlobe) {
         bool finer = false;
         for (const Region& other : regions()) {
@@ -178,7 +186,7 @@ int runAccuracy(Pyramid& pyramid, const AccuracyOptions& options) {
                                                  collision::HeightMode::Qotcd);
       q.effectiveHeight[kQotcdLinear] = q.effectiveHeight[kQotcdIndexed] =
           qotcd ? qotcd->heightMeters : 0.0;
-      q.effectiveHeight[kExactSurface] = q.drawn;
+      q.effectiveHeight[kExactSurface] = exact->heightMeters;
       q.effectiveHeight[kSphereTree] = sphereEffectiveHeight(trees, roots, ellipsoid, q);
       queries.push_back(q);
     }

@@ -1,32 +1,52 @@
-// Reading the source rasters and sampling the finest one bilinearly.
+// Reading the source rasters through GDAL and sampling the finest one bilinearly.
 #include "tools/bench/source_reference.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
-#include "io/gtopo30.hpp"
+#include <gdal.h>
+
+#include "io/gtopo30_header.hpp"
 
 namespace globe::bench {
 
 Result<SourceReference> SourceReference::load(const std::vector<std::filesystem::path>& rasters) {
+  // Through GDAL (its EHdr driver for GTOPO30's .DEM + .HDR), not the project's own reader, so
+  // that reference (b) is independent of it.
+  GDALAllRegister();
   SourceReference reference;
   for (const std::filesystem::path& path : rasters) {
-    auto raster = io::readGtopo30(path);
-    if (!raster) return Error{raster.error()};
-    const io::Gtopo30Header& h = raster->header;
+    const std::unique_ptr<void, decltype(&GDALClose)> dataset(GDALOpen(path.c_str(), GA_ReadOnly),
+                                                              &GDALClose);
+    if (!dataset) return makeError(path.string() + ": GDAL cannot open it");
+    double transform[6] = {};
+    if (GDALGetGeoTransform(dataset.get(), transform) != CE_None || transform[2] != 0.0 ||
+        transform[4] != 0.0 || !(transform[1] > 0.0) || !(transform[5] < 0.0)) {
+      return makeError(path.string() + ": no north-up geotransform");
+    }
+    GDALRasterBandH band = GDALGetRasterBand(dataset.get(), 1);
+    if (band == nullptr) return makeError(path.string() + ": no band 1");
     io::SampleGrid grid;
-    grid.cols = h.cols;
-    grid.rows = h.rows;
-    grid.firstColumnLongitudeDegrees = h.ulxMapDegrees;
-    grid.firstRowLatitudeDegrees = h.ulyMapDegrees;
-    grid.columnStepDegrees = h.xDimDegrees;
-    grid.rowStepDegrees = h.yDimDegrees;
+    grid.cols = GDALGetRasterXSize(dataset.get());
+    grid.rows = GDALGetRasterYSize(dataset.get());
+    grid.columnStepDegrees = transform[1];
+    grid.rowStepDegrees = -transform[5];
+    grid.firstColumnLongitudeDegrees = transform[0] + 0.5 * transform[1];  // corner -> centre
+    grid.firstRowLatitudeDegrees = transform[3] + 0.5 * transform[5];
     Raster r;
     r.path = path.string();
     r.grid = io::snapSampleGrid(grid);
-    r.samples = std::move(raster->heights);
-    for (int16_t& s : r.samples) {
-      if (s == h.noData) s = io::kNoDataHeight;
+    r.samples.resize(static_cast<size_t>(grid.cols * grid.rows));
+    if (GDALRasterIO(band, GF_Read, 0, 0, static_cast<int>(grid.cols), static_cast<int>(grid.rows),
+                     r.samples.data(), static_cast<int>(grid.cols), static_cast<int>(grid.rows),
+                     GDT_Int16, 0, 0) != CE_None) {
+      return makeError(path.string() + ": GDAL cannot read band 1");
+    }
+    int hasNoData = 0;
+    const double noData = GDALGetRasterNoDataValue(band, &hasNoData);
+    for (int16_t& sample : r.samples) {
+      if (hasNoData && sample == noData) sample = io::kNoDataHeight;
     }
     r.step = std::min(r.grid.columnStepDegrees, r.grid.rowStepDegrees);
     reference.rasters_.push_back(std::move(r));

@@ -1,5 +1,6 @@
-// The finest source data at a point, for the accuracy mode: the original GTOPO30 rasters read
-// whole (io::readGtopo30) and sampled bilinearly as the tiler samples them, unrounded.
+// The finest source data at a point, for the accuracy mode: the original rasters read whole
+// through GDAL (not the project's reader) and sampled bilinearly as the tiler samples them,
+// unrounded.
 #pragma once
 
 #include <cstdint>
