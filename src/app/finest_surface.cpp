@@ -2,8 +2,8 @@
 #include "app/finest_surface.hpp"
 
 #include "collision/exact_surface.hpp"
-#include "collision/rendering_tile_array.hpp"
 #include "geo/tiling_scheme.hpp"
+#include "terrain/rendering_tile_array.hpp"
 
 namespace globe::app {
 
@@ -21,7 +21,7 @@ Result<double> FinestSurface::heightMeters(double longitudeRadians, double latit
       block_ = std::move(*block);
       tile_ = *tile;
     }
-    const collision::ArrayTile arrayTile = collision::makeArrayTile(*tile_, block_);
+    const terrain::ArrayTile arrayTile = terrain::makeArrayTile(*tile_, block_);
     return collision::exactTileSurfaceHeight(arrayTile, ellipsoid_, lon, latitudeRadians)
         .heightMeters;
   }

@@ -84,8 +84,8 @@ Result<QueryReport> runQuery(const QueryOptions& options, std::istream& in, std:
       if (!block) return Error{block.error()};
       found = blocks.emplace(*tile, std::move(*block)).first;
     }
-    collision::RenderingTileArray array;
-    array.assign({collision::makeArrayTile(*tile, found->second)});
+    terrain::RenderingTileArray array;
+    array.assign({terrain::makeArrayTile(*tile, found->second)});
     const auto sample =
         collision::sampleHeight(array, ellipsoid, position->first, position->second, options.mode);
     if (!sample) return makeError("internal: no height in the tile that contains the point");

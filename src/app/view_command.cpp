@@ -160,7 +160,7 @@ Result<ViewReport> runView(const ViewOptions& options) {
   const geo::Ellipsoid& ellipsoid = (*scene)->ellipsoid();
   const double fovY = options.scene.fovYRadians;
   // Picks march through the tiles drawn now (the scene keeps one array, updated each frame).
-  const collision::RenderingTileArray& drawnArray = (*scene)->renderingTileArray();
+  const terrain::RenderingTileArray& drawnArray = (*scene)->renderingTileArray();
   camera::Navigator navigator(
       ellipsoid, options.pose, fovY, [&](double lon, double lat) -> std::optional<double> {
         const auto surface = collision::surfaceHeightAt(drawnArray, ellipsoid, lon, lat,

@@ -114,7 +114,7 @@ bool CameraController::setNearPlane(const NearPlane& nearPlane) {
 }
 
 const CollisionState& CameraController::update(double dtSeconds,
-                                               const collision::RenderingTileArray& array,
+                                               const terrain::RenderingTileArray& array,
                                                const geo::Ellipsoid& ellipsoid) {
   CollisionState state;
   state.inputRejected = rejected_;
@@ -190,7 +190,7 @@ const CollisionState& CameraController::update(double dtSeconds,
   return state_ = state;
 }
 
-void CameraController::moveBy(const Move& move, const collision::RenderingTileArray& array,
+void CameraController::moveBy(const Move& move, const terrain::RenderingTileArray& array,
                               const geo::Ellipsoid& ellipsoid, double clearanceMeters,
                               CollisionState& state) {
   const geo::Cartographic& from = pose_.position;
@@ -240,8 +240,7 @@ void CameraController::moveBy(const Move& move, const collision::RenderingTileAr
   }
 }
 
-void CameraController::moveByVelocities(double dtSeconds,
-                                        const collision::RenderingTileArray& array,
+void CameraController::moveByVelocities(double dtSeconds, const terrain::RenderingTileArray& array,
                                         const geo::Ellipsoid& ellipsoid, double clearanceMeters,
                                         CollisionState& state) {
   const glm::dvec3 angularVelocity = angularVelocity_ + angularAcceleration_ * dtSeconds;
@@ -286,7 +285,7 @@ void CameraController::moveByVelocities(double dtSeconds,
   velocity_ = velocity;
 }
 
-void CameraController::describeTerrain(const collision::RenderingTileArray& array,
+void CameraController::describeTerrain(const terrain::RenderingTileArray& array,
                                        const geo::Ellipsoid& ellipsoid,
                                        CollisionState& state) const {
   const auto surface =

@@ -10,9 +10,9 @@
 #include "camera/camera_pose.hpp"
 #include "collision/clearance_settings.hpp"
 #include "collision/collision_response.hpp"
-#include "collision/rendering_tile_array.hpp"
 #include "geo/ellipsoid.hpp"
 #include "geo/tile_id.hpp"
+#include "terrain/rendering_tile_array.hpp"
 
 namespace globe::camera {
 
@@ -81,7 +81,7 @@ class CameraController {
   // the position reached (the surface may have risen under it: a finer tile); (3)
   // pushAboveNearPlane with the near plane's corners at the final pose. A non-finite or negative
   // dt changes nothing.
-  const CollisionState& update(double dtSeconds, const collision::RenderingTileArray& array,
+  const CollisionState& update(double dtSeconds, const terrain::RenderingTileArray& array,
                                const geo::Ellipsoid& ellipsoid);
 
   const CameraPose& pose() const { return pose_; }
@@ -97,12 +97,12 @@ class CameraController {
     CameraPose pose;
     MotionKind kind;
   };
-  void moveBy(const Move& move, const collision::RenderingTileArray& array,
+  void moveBy(const Move& move, const terrain::RenderingTileArray& array,
               const geo::Ellipsoid& ellipsoid, double clearanceMeters, CollisionState& state);
-  void moveByVelocities(double dtSeconds, const collision::RenderingTileArray& array,
+  void moveByVelocities(double dtSeconds, const terrain::RenderingTileArray& array,
                         const geo::Ellipsoid& ellipsoid, double clearanceMeters,
                         CollisionState& state);
-  void describeTerrain(const collision::RenderingTileArray& array, const geo::Ellipsoid& ellipsoid,
+  void describeTerrain(const terrain::RenderingTileArray& array, const geo::Ellipsoid& ellipsoid,
                        CollisionState& state) const;
 
   ControllerSettings settings_;

@@ -8,7 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "collision/grid_location.hpp"
-#include "collision/tile_containment.hpp"
+#include "collision/terrain_array.hpp"
 #include "geo/ecef.hpp"
 #include "terrain/block_grid.hpp"
 #include "terrain/tile_mesh.hpp"

@@ -7,7 +7,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "collision/rendering_tile_array.hpp"
+#include "collision/terrain_array.hpp"
 #include "geo/cartographic.hpp"
 #include "geo/ellipsoid.hpp"
 #include "geo/tile_id.hpp"

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "collision/tile_containment.hpp"
+#include "collision/terrain_array.hpp"
 
 namespace globe::collision {
 namespace {
@@ -31,12 +31,6 @@ Axis locateOnAxis(double coordinate, double cells, double spanRadians) {
 }
 
 }  // namespace
-
-bool hasReadableBlock(const ArrayTile& tile) {
-  if (tile.block == nullptr) return false;
-  const size_t n = tile.block->verticesPerSide;
-  return n >= 2 && tile.block->heights.size() == n * n;
-}
 
 GridLocation locateInGrid(const ArrayTile& tile, double longitudeRadians, double latitudeRadians) {
   const uint32_t cells = tile.block->verticesPerSide - 1;

@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-#include "collision/rendering_tile_array.hpp"
+#include "collision/terrain_array.hpp"
 
 namespace globe::collision {
 
@@ -30,11 +30,6 @@ struct GridLocation {
   bool atPole = false;
   uint32_t poleRow = 0;
 };
-
-// True when the tile has a block of N x N heights with N >= 2: the functions that read a tile
-// (locateInGrid, qotcdTileHeight, exactTileSurfaceHeight) need one; RenderingTileArray::assign
-// admits only such tiles.
-bool hasReadableBlock(const ArrayTile& tile);
 
 // For a point (canonical longitude, see tile_containment.hpp) contained in the tile. Points
 // slightly outside (by rounding) are clamped onto the grid; the block is never read outside.

@@ -1,7 +1,7 @@
 // sampleHeight: the indexed tile lookup followed by the QOTCD or exact height in that tile.
 #include "collision/height_service.hpp"
 
-#include "collision/tile_containment.hpp"
+#include "collision/terrain_array.hpp"
 
 namespace globe::collision {
 

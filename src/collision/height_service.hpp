@@ -7,7 +7,7 @@
 
 #include "collision/exact_surface.hpp"
 #include "collision/qotcd_height.hpp"
-#include "collision/rendering_tile_array.hpp"
+#include "collision/terrain_array.hpp"
 #include "geo/ellipsoid.hpp"
 #include "geo/tile_id.hpp"
 

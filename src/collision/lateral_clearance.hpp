@@ -9,7 +9,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "collision/rendering_tile_array.hpp"
+#include "collision/terrain_array.hpp"
 #include "geo/ellipsoid.hpp"
 
 namespace globe::collision {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <optional>
 
-#include "collision/tile_containment.hpp"
+#include "collision/terrain_array.hpp"
 #include "geo/ecef.hpp"
 
 namespace globe::collision {

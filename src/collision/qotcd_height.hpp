@@ -2,7 +2,7 @@
 // vertex, the higher of the two neighbours on a row or column, the highest of four in a quad.
 #pragma once
 
-#include "collision/rendering_tile_array.hpp"
+#include "collision/terrain_array.hpp"
 
 namespace globe::collision {
 

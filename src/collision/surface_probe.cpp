@@ -10,7 +10,7 @@
 #include "collision/exact_surface.hpp"
 #include "collision/qotcd.hpp"
 #include "collision/qotcd_height.hpp"
-#include "collision/tile_containment.hpp"
+#include "collision/terrain_array.hpp"
 #include "geo/ecef.hpp"
 #include "terrain/block_grid.hpp"
 #include "terrain/tile_mesh.hpp"

@@ -9,7 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "collision/grid_location.hpp"
-#include "collision/tile_containment.hpp"
+#include "collision/terrain_array.hpp"
 #include "geo/ecef.hpp"
 
 namespace globe::collision {

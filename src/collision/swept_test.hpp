@@ -6,8 +6,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "collision/rendering_tile_array.hpp"
 #include "collision/surface_probe.hpp"
+#include "collision/terrain_array.hpp"
 #include "geo/cartographic.hpp"
 #include "geo/ellipsoid.hpp"
 

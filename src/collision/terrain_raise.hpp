@@ -3,8 +3,8 @@
 #pragma once
 
 #include "collision/clearance_settings.hpp"
-#include "collision/rendering_tile_array.hpp"
 #include "collision/surface_probe.hpp"
+#include "collision/terrain_array.hpp"
 #include "geo/cartographic.hpp"
 #include "geo/ellipsoid.hpp"
 

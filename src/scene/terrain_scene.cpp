@@ -157,13 +157,13 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
 
   tiles_.clear();
   blocks_.clear();
-  std::vector<collision::ArrayTile> arrayTiles;
+  std::vector<terrain::ArrayTile> arrayTiles;
   for (const geo::TileId& tile : selection.tiles) {
     const bool onGpu = gpu.hasTile(tile);
     auto block = loader_->get(tile);
     if (block && uploadIfNeeded(tile, *block, gpu)) {
       tiles_.push_back(tile);
-      arrayTiles.push_back(collision::makeArrayTile(tile, *block));
+      arrayTiles.push_back(terrain::makeArrayTile(tile, *block));
       blocks_.push_back(std::move(block));
       info.uploaded += onGpu ? 0 : 1;
     }
@@ -182,7 +182,8 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
       const auto tile = geo::GeographicTilingScheme::positionToTile(lon, lat, level);
       if (!tile) break;
       if (auto block = loader_->isResident(*tile) ? loader_->get(*tile) : nullptr) {
-        arrayTiles.push_back(collision::makeArrayTile(*tile, *block));
+        arrayTiles.push_back(terrain::makeArrayTile(*tile, *block));
+        arrayTiles.back().drawn = false;  // for collision only
         blocks_.push_back(std::move(block));
         array_.assign(std::move(arrayTiles));  // rebuilt only in this rare case
         break;

@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "camera/camera_pose.hpp"
-#include "collision/rendering_tile_array.hpp"
 #include "geo/ellipsoid.hpp"
 #include "geo/result.hpp"
 #include "io/block_cache.hpp"
@@ -22,6 +21,7 @@
 #include "scene/tile_gpu.hpp"
 #include "terrain/height_block.hpp"
 #include "terrain/render_view.hpp"
+#include "terrain/rendering_tile_array.hpp"
 #include "terrain/tile_selection.hpp"
 
 namespace globe::scene {
@@ -81,7 +81,7 @@ class TerrainScene {
   const std::vector<geo::TileId>& tiles() const { return tiles_; }
   // This frame's rendering tile array with its blocks: what collision runs against (the paper's
   // "rendering terrain tiles array"), exactly the tiles drawn.
-  const collision::RenderingTileArray& renderingTileArray() const { return array_; }
+  const terrain::RenderingTileArray& renderingTileArray() const { return array_; }
   // Blocks until a load completes or the timeout passes (loads run on worker threads).
   void waitForLoads(std::chrono::milliseconds timeout) const;
   // Surface height at a position from the finest tile the pyramid has there (loads it if needed).
@@ -109,7 +109,7 @@ class TerrainScene {
   std::vector<geo::TileId> tiles_;
   std::vector<std::shared_ptr<const terrain::HeightBlock>>
       blocks_;  // keep the array's blocks alive
-  collision::RenderingTileArray array_;
+  terrain::RenderingTileArray array_;
   terrain::RenderView view_;
   uint64_t frame_ = 0;
   std::unordered_map<geo::TileId, uint64_t> gpuLastUsedFrame_;

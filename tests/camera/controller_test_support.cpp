@@ -6,10 +6,10 @@
 #include <map>
 
 #include "collision/exact_surface.hpp"
-#include "collision/tile_containment.hpp"
 #include "geo/ecef.hpp"
 #include "geo/globe_rectangle.hpp"
 #include "geo/tiling_scheme.hpp"
+#include "terrain/tile_containment.hpp"
 #include "tests/collision/collision_test_support.hpp"
 #include "tests/collision/mesh_ray_cast.hpp"
 
@@ -38,8 +38,8 @@ geo::Cartographic fujiSummit(double heightMeters) {
 
 uint32_t finestLevel() { return RealPyramid::bundled().maxLevel(); }
 
-const collision::RenderingTileArray& fujiArray(uint32_t level) {
-  static std::map<uint32_t, collision::RenderingTileArray> arrays;
+const terrain::RenderingTileArray& fujiArray(uint32_t level) {
+  static std::map<uint32_t, terrain::RenderingTileArray> arrays;
   const auto it = arrays.find(level);
   if (it != arrays.end()) return it->second;
   RealPyramid& pyramid = RealPyramid::bundled();
@@ -49,8 +49,8 @@ const collision::RenderingTileArray& fujiArray(uint32_t level) {
   return arrays.emplace(level, pyramid.array(tiles)).first->second;
 }
 
-const collision::RenderingTileArray& globalArray() {
-  static const collision::RenderingTileArray array = [] {
+const terrain::RenderingTileArray& globalArray() {
+  static const terrain::RenderingTileArray array = [] {
     RealPyramid& pyramid = RealPyramid::bundled();
     const auto tiles = collision::testing::quadtreeCut(pyramid, [](const geo::TileId& id) {
       if (id.level < 2) return true;
@@ -65,7 +65,7 @@ const collision::RenderingTileArray& globalArray() {
   return array;
 }
 
-double drawnHeight(const collision::RenderingTileArray& array, double longitudeRadians,
+double drawnHeight(const terrain::RenderingTileArray& array, double longitudeRadians,
                    double latitudeRadians) {
   const auto sample = collision::exactSurfaceHeight(array, geo::Ellipsoid::wgs84(),
                                                     longitudeRadians, latitudeRadians);
@@ -94,10 +94,10 @@ glm::dvec3 direction(const geo::Cartographic& position, double headingRadians,
 namespace {
 
 // The drawn surface by the brute-force oracle; -infinity where no tile holds the point.
-double oracleHeight(const collision::RenderingTileArray& array, const geo::Cartographic& p) {
-  const auto point = collision::makeQueryPoint(p.longitudeRadians, p.latitudeRadians);
+double oracleHeight(const terrain::RenderingTileArray& array, const geo::Cartographic& p) {
+  const auto point = terrain::makeQueryPoint(p.longitudeRadians, p.latitudeRadians);
   if (!point) return -std::numeric_limits<double>::infinity();
-  const collision::ArrayTile* tile =
+  const terrain::ArrayTile* tile =
       array.findIndexed(point->longitudeRadians, point->latitudeRadians);
   if (tile == nullptr) return -std::numeric_limits<double>::infinity();
   const auto hit = collision::testing::castOntoTileMesh(
@@ -108,7 +108,7 @@ double oracleHeight(const collision::RenderingTileArray& array, const geo::Carto
 }  // namespace
 
 double deepestInsideView(const CameraPose& pose, const NearPlane& nearPlane,
-                         const collision::RenderingTileArray& array) {
+                         const terrain::RenderingTileArray& array) {
   const geo::Ellipsoid ellipsoid = geo::Ellipsoid::wgs84();
   const CameraFrame frame = cameraFrame(ellipsoid, pose);
   const auto c = nearPlaneCornerOffsets(frame, nearPlane);
@@ -132,7 +132,7 @@ double deepestInsideView(const CameraPose& pose, const NearPlane& nearPlane,
 }
 
 bool FrameAudit::check(const CameraPose& pose, const NearPlane& nearPlane,
-                       const collision::RenderingTileArray& array) {
+                       const terrain::RenderingTileArray& array) {
   ++frames;
   if (!pose.isFinite()) {
     ++nonFinite;

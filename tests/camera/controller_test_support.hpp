@@ -9,9 +9,9 @@
 
 #include "camera/camera_motion.hpp"
 #include "camera/camera_pose.hpp"
-#include "collision/rendering_tile_array.hpp"
 #include "geo/cartographic.hpp"
 #include "geo/ellipsoid.hpp"
+#include "terrain/rendering_tile_array.hpp"
 
 namespace globe::camera::testing {
 
@@ -26,13 +26,13 @@ uint32_t finestLevel();
 // A quadtree cut covering the globe: tiles intersecting the box 138.55..138.90 E,
 // 35.22..35.50 N (Fuji and its slopes, ~30 km) refined down to `level`, coarser away from it.
 // Cached per level for the whole run.
-const collision::RenderingTileArray& fujiArray(uint32_t level);
+const terrain::RenderingTileArray& fujiArray(uint32_t level);
 // A quadtree cut covering the globe at level 2, refined to the pyramid's finest (ETOPO20, ~level 5)
 // at |latitude| >= 80 deg and |longitude| >= 175 deg.
-const collision::RenderingTileArray& globalArray();
+const terrain::RenderingTileArray& globalArray();
 
 // The drawn surface under (lon, lat): exactSurfaceHeight, 0 m where no tile holds it.
-double drawnHeight(const collision::RenderingTileArray& array, double longitudeRadians,
+double drawnHeight(const terrain::RenderingTileArray& array, double longitudeRadians,
                    double latitudeRadians);
 
 // The point distanceMeters from `origin` along the local tangent plane towards bearingRadians
@@ -47,7 +47,7 @@ glm::dvec3 direction(const geo::Cartographic& position, double headingRadians, d
 // grid over the near-plane rectangle, each sampled at 1/4, 1/2, 3/4 and 1, against the
 // brute-force mesh ray cast (tests/collision/mesh_ray_cast.hpp); the eye itself too.
 double deepestInsideView(const CameraPose& pose, const NearPlane& nearPlane,
-                         const collision::RenderingTileArray& array);
+                         const terrain::RenderingTileArray& array);
 
 // Counts frames whose eye or near-plane corners are below the drawn surface (+ 0 m), or whose
 // pose is not finite; keeps the lowest clearances seen.
@@ -59,7 +59,7 @@ struct FrameAudit {
   double lowestCornerClearanceMeters = std::numeric_limits<double>::infinity();
   // Returns false when this frame is a violation.
   bool check(const CameraPose& pose, const NearPlane& nearPlane,
-             const collision::RenderingTileArray& array);
+             const terrain::RenderingTileArray& array);
   void add(const FrameAudit& other);
 };
 

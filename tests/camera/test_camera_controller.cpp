@@ -27,7 +27,7 @@ constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
 
-const collision::RenderingTileArray& fuji() { return testing::fujiArray(testing::finestLevel()); }
+const terrain::RenderingTileArray& fuji() { return testing::fujiArray(testing::finestLevel()); }
 
 double drawn(const geo::Cartographic& c) {
   return drawnHeight(fuji(), c.longitudeRadians, c.latitudeRadians);

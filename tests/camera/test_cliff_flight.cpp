@@ -44,7 +44,7 @@ TEST(CliffFlight, SpeedNeverJumpsFlyingOffZionCanyonsRim) {
   const auto tiles = collision::testing::quadtreeCut(pyramid, [&](const geo::TileId& id) {
     return id.level < 2 || (id.level < finest && intersectsCanyon(id));
   });
-  const collision::RenderingTileArray array = pyramid.array(tiles);
+  const terrain::RenderingTileArray array = pyramid.array(tiles);
   const auto terrain = [&](double lon, double lat) -> std::optional<double> {
     return testing::drawnHeight(array, lon, lat);
   };

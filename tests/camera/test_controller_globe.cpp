@@ -21,7 +21,7 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kDt = 1.0 / 30.0;
 const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
 
-geo::Cartographic above(const collision::RenderingTileArray& array, double longitudeDegrees,
+geo::Cartographic above(const terrain::RenderingTileArray& array, double longitudeDegrees,
                         double latitudeDegrees, double aboveMeters) {
   geo::Cartographic c = geo::Cartographic::fromDegrees(longitudeDegrees, latitudeDegrees);
   c.heightMeters = testing::drawnHeight(array, c.longitudeRadians, c.latitudeRadians) + aboveMeters;
@@ -30,7 +30,7 @@ geo::Cartographic above(const collision::RenderingTileArray& array, double longi
 
 // Runs the controller for `frames` frames, auditing each; returns the audit.
 template <class PerFrame>
-FrameAudit run(CameraController& controller, const collision::RenderingTileArray& array, int frames,
+FrameAudit run(CameraController& controller, const terrain::RenderingTileArray& array, int frames,
                PerFrame perFrame) {
   FrameAudit audit;
   for (int frame = 0; frame < frames; ++frame) {

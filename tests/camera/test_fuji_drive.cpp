@@ -43,7 +43,7 @@ struct RunTotals {
 };
 
 // One run: from `distance` towards the summit along bearing + 180 deg at `step` metres a frame.
-void drive(const collision::RenderingTileArray& array, const ControllerSettings& settings,
+void drive(const terrain::RenderingTileArray& array, const ControllerSettings& settings,
            const Profile& profile, double bearing, double step, RunTotals& totals) {
   const double distance = std::clamp(step * 20.0, 200.0, 12000.0);
   geo::Cartographic start = testing::offsetPosition(testing::fujiSummit(), bearing, distance, 0.0);
@@ -70,7 +70,7 @@ void drive(const collision::RenderingTileArray& array, const ControllerSettings&
 }
 
 void driveAll(SurfaceModel model, const std::vector<double>& steps, int headings) {
-  const collision::RenderingTileArray& array = testing::fujiArray(testing::finestLevel());
+  const terrain::RenderingTileArray& array = testing::fujiArray(testing::finestLevel());
   ControllerSettings settings;
   settings.response.surface = model;
   RunTotals all;

@@ -18,7 +18,7 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kDt = 1.0 / 30.0;
 const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
 
-const collision::RenderingTileArray& fuji() { return testing::fujiArray(testing::finestLevel()); }
+const terrain::RenderingTileArray& fuji() { return testing::fujiArray(testing::finestLevel()); }
 
 double drawn(const geo::Cartographic& c) {
   return testing::drawnHeight(fuji(), c.longitudeRadians, c.latitudeRadians);

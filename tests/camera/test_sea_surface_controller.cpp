@@ -55,7 +55,7 @@ class SeaSurfaceController : public ::testing::TestWithParam<SeaSurface> {
     // The blocks as the viewer gets them: from a store opened with the view's sea surface.
     auto store = io::TileStore::open(dir_, GetParam());
     ASSERT_TRUE(store) << store.error();
-    std::vector<collision::ArrayTile> tiles;
+    std::vector<terrain::ArrayTile> tiles;
     for (uint32_t dy = 0; dy < 2; ++dy) {
       for (uint32_t dx = 0; dx < 2; ++dx) {
         const geo::TileId id{io::test::kSeaTestLevel, io::test::kSeaTile.x + dx,
@@ -63,7 +63,7 @@ class SeaSurfaceController : public ::testing::TestWithParam<SeaSurface> {
         auto block = (*store)->loadBlock(id);
         ASSERT_TRUE(block) << block.error();
         blocks_.push_back(std::move(*block));
-        tiles.push_back(collision::makeArrayTile(id, blocks_.back()));
+        tiles.push_back(terrain::makeArrayTile(id, blocks_.back()));
       }
     }
     array_.assign(std::move(tiles));
@@ -80,7 +80,7 @@ class SeaSurfaceController : public ::testing::TestWithParam<SeaSurface> {
 
   fs::path dir_;
   std::deque<terrain::HeightBlock> blocks_;  // stable addresses for the array's tiles
-  collision::RenderingTileArray array_;
+  terrain::RenderingTileArray array_;
 };
 
 TEST_P(SeaSurfaceController, TheDrawnMeshAndCollisionStandOnTheSameGround) {

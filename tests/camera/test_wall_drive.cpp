@@ -31,8 +31,8 @@ constexpr double kDt = 1.0 / 30.0;
 constexpr int kFrames = 40;
 const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
 
-const collision::RenderingTileArray& canyonArray() {
-  static const collision::RenderingTileArray array = [] {
+const terrain::RenderingTileArray& canyonArray() {
+  static const terrain::RenderingTileArray array = [] {
     RealPyramid& pyramid = RealPyramid::zion();
     const uint32_t finest = pyramid.maxLevel();
     const auto tiles = collision::testing::quadtreeCut(pyramid, [&](const geo::TileId& id) {
@@ -55,7 +55,7 @@ struct Totals {
 
 void driveAtTheWall(const ControllerSettings& settings, double bearing, double step,
                     Totals& totals) {
-  const collision::RenderingTileArray& array = canyonArray();
+  const terrain::RenderingTileArray& array = canyonArray();
   // The target: half way up the wall.
   geo::Cartographic target = geo::Cartographic::fromDegrees(-112.9425, 37.2797, 0.0);
   target.heightMeters =
@@ -134,7 +134,7 @@ TEST(WallDrive, BesideANeedleTheCornersAloneLetTheViewIntoIt) {
   }
   const terrain::HeightBlock block = collision::testing::makeBlock(
       17, [](uint32_t i, uint32_t j) -> int16_t { return i == 8 && j == 8 ? 2000 : 1000; });
-  const collision::RenderingTileArray array = collision::testing::arrayOf(tiles, block);
+  const terrain::RenderingTileArray array = collision::testing::arrayOf(tiles, block);
   const geo::Cartographic apex{collision::testing::gridLongitude(centre, 17, 8),
                                collision::testing::gridLatitude(centre, 17, 8), 2000.0};
   ControllerSettings with;
@@ -181,7 +181,7 @@ namespace {
 // frame: the camera slides up and over and makes at least a tenth of its step along its heading
 // every frame (the slide costs the part into the rock; a stall would be ~0).
 TEST(RidgeSlide, KeepsMovingEveryFrameAtEverySpeed) {
-  const collision::RenderingTileArray& array = canyonArray();
+  const terrain::RenderingTileArray& array = canyonArray();
   const geo::Cartographic ridge = geo::Cartographic::fromDegrees(-112.9485, 37.2692, 0.0);
   int frames = 0, slid = 0;
   double smallest = INFINITY;

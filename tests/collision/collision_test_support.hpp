@@ -10,7 +10,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "collision/rendering_tile_array.hpp"
+#include "collision/terrain_array.hpp"
 #include "geo/tile_id.hpp"
 #include "io/tile_store.hpp"
 #include "terrain/height_block.hpp"

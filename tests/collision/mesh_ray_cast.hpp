@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "collision/rendering_tile_array.hpp"
+#include "collision/terrain_array.hpp"
 #include "geo/ellipsoid.hpp"
 
 namespace globe::collision::testing {

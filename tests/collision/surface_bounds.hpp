@@ -2,7 +2,7 @@
 // QOTCD's H with E: the row-sliver allowance (E above H) and the chord sag (E below the vertices).
 #pragma once
 
-#include "collision/rendering_tile_array.hpp"
+#include "collision/terrain_array.hpp"
 #include "geo/ellipsoid.hpp"
 
 namespace globe::collision::testing {

@@ -12,7 +12,7 @@
 
 #include "collision/exact_surface.hpp"
 #include "collision/lateral_clearance.hpp"
-#include "collision/tile_containment.hpp"
+#include "collision/terrain_array.hpp"
 #include "geo/ecef.hpp"
 #include "geo/tiling_scheme.hpp"
 #include "terrain/block_grid.hpp"

@@ -31,6 +31,12 @@ TEST(TerrainScene, NadirTileJoinsTheCollisionArrayWhenNotDrawn) {
   bool drawn = false;
   for (const geo::TileId& tile : (*scene)->tiles()) drawn = drawn || tile == found.tile->id;
   EXPECT_FALSE(drawn) << "this view does not draw its nadir: the test needs that";
+  EXPECT_FALSE(found.tile->drawn) << "flagged as collision-only";
+  for (const terrain::ArrayTile& tile : array.tiles()) {
+    if (&tile != found.tile) {
+      EXPECT_TRUE(tile.drawn);
+    }
+  }
 }
 
 // SceneOptions::sea reaches every block the scene reads: the height under the camera here (the

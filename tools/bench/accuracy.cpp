@@ -134,10 +134,10 @@ int runAccuracy(Pyramid& pyramid, const AccuracyOptions& options) {
     const io::BoundsDegrees& b = region.tileBounds;
     const std::vector<geo::TileId> ids =
         pyramid.tilesOfLevel(region.level, b.west, b.south, b.east, b.north);
-    std::vector<collision::ArrayTile> tiles;
+    std::vector<terrain::ArrayTile> tiles;
     for (const geo::TileId& id : ids)
-      tiles.push_back(collision::makeArrayTile(id, pyramid.block(id)));
-    collision::RenderingTileArray array;
+      tiles.push_back(terrain::makeArrayTile(id, pyramid.block(id)));
+    terrain::RenderingTileArray array;
     array.assign(std::move(tiles));
     collision::SphereTreeSet trees;
     trees.build(array, ellipsoid);
@@ -165,7 +165,7 @@ int runAccuracy(Pyramid& pyramid, const AccuracyOptions& options) {
       // Reference (a), the drawn surface, by the tests' brute-force ray caster (every triangle
       // of the tile, written apart from exactSurfaceHeight), so the exact method is measured
       // against it rather than equal to it by construction.
-      const collision::ArrayTile* tile = array.findIndexed(q.longitude, q.latitude);
+      const terrain::ArrayTile* tile = array.findIndexed(q.longitude, q.latitude);
       const auto drawn = tile == nullptr ? std::nullopt
                                          : collision::testing::castOntoTileMesh(
                                                *tile, ellipsoid, q.longitude, q.latitude);

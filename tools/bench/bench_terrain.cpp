@@ -26,7 +26,7 @@ std::pair<uint32_t, uint32_t> rectangleOf(uint32_t tiles) {
   return {tiles / height, height};
 }
 
-double surfaceHeight(const collision::RenderingTileArray& array, const geo::Ellipsoid& ellipsoid,
+double surfaceHeight(const terrain::RenderingTileArray& array, const geo::Ellipsoid& ellipsoid,
                      double longitude, double latitude) {
   const auto surface = collision::exactSurfaceHeight(array, ellipsoid, longitude, latitude);
   return surface ? surface->heightMeters : 0.0;
@@ -151,7 +151,7 @@ Result<std::unique_ptr<BenchArray>> makeBenchArray(Pyramid& pyramid, uint32_t ti
     return origin + static_cast<uint32_t>(offset < 0 ? offset + period : offset);
   };
   result->blocks.reserve(tiles);
-  std::vector<collision::ArrayTile> arrayTiles;
+  std::vector<terrain::ArrayTile> arrayTiles;
   arrayTiles.reserve(tiles);
   for (uint32_t y = y0; y < y0 + height; ++y) {
     for (uint32_t x = x0; x < x0 + width; ++x) {
@@ -159,7 +159,7 @@ Result<std::unique_ptr<BenchArray>> makeBenchArray(Pyramid& pyramid, uint32_t ti
       if (source.x == x && source.y == y) ++result->realPositionTiles;
       result->blocks.push_back(pyramid.block(source));
       if (result->blocks.back().heights.empty()) return Error{"a block could not be read"};
-      arrayTiles.push_back(collision::makeArrayTile({kBenchLevel, x, y}, result->blocks.back()));
+      arrayTiles.push_back(terrain::makeArrayTile({kBenchLevel, x, y}, result->blocks.back()));
     }
   }
   result->array.assign(std::move(arrayTiles));
@@ -177,7 +177,7 @@ geo::GlobeRectangle flightArea() {
   return {first.westRadians, last.southRadians, last.eastRadians, first.northRadians};
 }
 
-std::vector<CameraQuery> flightPath(const collision::RenderingTileArray& array,
+std::vector<CameraQuery> flightPath(const terrain::RenderingTileArray& array,
                                     const geo::GlobeRectangle& area,
                                     const geo::Ellipsoid& ellipsoid, size_t frames, uint64_t seed) {
   constexpr double kSpeedMetersPerSecond = 50.0;
@@ -215,7 +215,7 @@ std::vector<CameraQuery> flightPath(const collision::RenderingTileArray& array,
   return path;
 }
 
-std::vector<CameraQuery> randomQueries(const collision::RenderingTileArray& array,
+std::vector<CameraQuery> randomQueries(const terrain::RenderingTileArray& array,
                                        const geo::GlobeRectangle& rectangle,
                                        const geo::Ellipsoid& ellipsoid, size_t count,
                                        uint64_t seed) {

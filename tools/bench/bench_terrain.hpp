@@ -11,13 +11,13 @@
 
 #include <glm/vec3.hpp>
 
-#include "collision/rendering_tile_array.hpp"
 #include "geo/ellipsoid.hpp"
 #include "geo/globe_rectangle.hpp"
 #include "geo/result.hpp"
 #include "geo/tile_id.hpp"
 #include "io/tile_store.hpp"
 #include "terrain/height_block.hpp"
+#include "terrain/rendering_tile_array.hpp"
 
 namespace globe::bench {
 
@@ -64,7 +64,7 @@ struct BenchArray {
   geo::GlobeRectangle bounds{};    // of the rectangle
   uint32_t realPositionTiles = 0;  // tiles whose block is the pyramid's block of that tile
   std::vector<terrain::HeightBlock> blocks;
-  collision::RenderingTileArray array;
+  terrain::RenderingTileArray array;
 };
 Result<std::unique_ptr<BenchArray>> makeBenchArray(Pyramid& pyramid, uint32_t tiles);
 
@@ -81,13 +81,13 @@ struct CameraQuery {
 // One frame per query at 60 Hz: a camera flying at 50 m/s with a randomly wandering heading
 // (bouncing off the flight area's edges, 50 m inside them) at 20..300 m above the drawn surface
 // (a sinusoid of ~10 s with a wandering phase). The same path for every array size.
-std::vector<CameraQuery> flightPath(const collision::RenderingTileArray& flightAreaArray,
+std::vector<CameraQuery> flightPath(const terrain::RenderingTileArray& flightAreaArray,
                                     const geo::GlobeRectangle& area,
                                     const geo::Ellipsoid& ellipsoid, size_t frames, uint64_t seed);
 
 // Independent positions, uniform in longitude and latitude over the rectangle, 20..300 m above
 // the drawn surface of the array.
-std::vector<CameraQuery> randomQueries(const collision::RenderingTileArray& array,
+std::vector<CameraQuery> randomQueries(const terrain::RenderingTileArray& array,
                                        const geo::GlobeRectangle& rectangle,
                                        const geo::Ellipsoid& ellipsoid, size_t count,
                                        uint64_t seed);

@@ -1,8 +1,8 @@
 // Memory each collision method holds per tile beyond the tile's height block.
 #pragma once
 
-#include "collision/rendering_tile_array.hpp"
 #include "collision/sphere_tree.hpp"
+#include "terrain/rendering_tile_array.hpp"
 
 namespace globe::bench {
 
@@ -13,7 +13,7 @@ struct MemoryUse {
   double exactSurfaceBytesPerTile = 0;  // as indexed: the vertices are computed per query
 };
 
-MemoryUse memoryUse(const collision::RenderingTileArray& array,
+MemoryUse memoryUse(const terrain::RenderingTileArray& array,
                     const collision::SphereTreeSet& trees);
 
 }  // namespace globe::bench

@@ -247,7 +247,7 @@ void BM_FloorKernel(benchmark::State& state) {
     const auto id = geo::GeographicTilingScheme::positionToTile(at->longitudeRadians,
                                                                 at->latitudeRadians, level);
     if (!id) return false;
-    const collision::ArrayTile* tile = array->array.find(*id);
+    const terrain::ArrayTile* tile = array->array.find(*id);
     if (tile == nullptr) return false;
     const terrain::HeightBlock& block = *tile->block;
     const uint32_t cells = block.verticesPerSide - 1;

@@ -1,14 +1,19 @@
 // Building the rendering tile array's index, and its linear and indexed tile lookups.
-#include "collision/rendering_tile_array.hpp"
+#include "terrain/rendering_tile_array.hpp"
 
 #include <bit>
 #include <optional>
 
-#include "collision/grid_location.hpp"
-#include "collision/tile_containment.hpp"
 #include "geo/tiling_scheme.hpp"
+#include "terrain/tile_containment.hpp"
 
-namespace globe::collision {
+namespace globe::terrain {
+
+bool hasReadableBlock(const ArrayTile& tile) {
+  if (tile.block == nullptr) return false;
+  const size_t n = tile.block->verticesPerSide;
+  return n >= 2 && tile.block->heights.size() == n * n;
+}
 namespace {
 
 using Scheme = geo::GeographicTilingScheme;
@@ -48,7 +53,7 @@ uint64_t mix(uint64_t key) {
 
 }  // namespace
 
-ArrayTile makeArrayTile(const geo::TileId& id, const terrain::HeightBlock& block) {
+ArrayTile makeArrayTile(const geo::TileId& id, const HeightBlock& block) {
   const geo::GlobeRectangle rectangle = Scheme::tileRectangle(id);
   return {id,
           rectangle.westRadians,
@@ -186,4 +191,4 @@ TileLookup RenderingTileArray::lookupIndexed(double longitudeRadians,
   return {nullptr, probes};
 }
 
-}  // namespace globe::collision
+}  // namespace globe::terrain

@@ -1,12 +1,12 @@
 // Canonical lookup points, closed containment and the tie-breaking key between tiles.
-#include "collision/tile_containment.hpp"
+#include "terrain/tile_containment.hpp"
 
 #include <cmath>
 #include <numbers>
 
 #include "geo/cartographic.hpp"
 
-namespace globe::collision {
+namespace globe::terrain {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -63,4 +63,4 @@ double longitudeInTile(const ArrayTile& tile, double longitudeRadians) {
   return longitudeRadians;
 }
 
-}  // namespace globe::collision
+}  // namespace globe::terrain

@@ -10,7 +10,7 @@
 #include "geo/tile_id.hpp"
 #include "terrain/height_block.hpp"
 
-namespace globe::collision {
+namespace globe::terrain {
 
 // One drawn tile. The bounds must be exactly GeographicTilingScheme::tileRectangle(id) (closed:
 // a point on an edge is in the tile). The block is owned elsewhere and must outlive the array.
@@ -22,12 +22,20 @@ struct ArrayTile {
   double southRadians = 0.0;
   double eastRadians = 0.0;
   double northRadians = 0.0;
-  const terrain::HeightBlock* block = nullptr;
+  const HeightBlock* block = nullptr;
   int16_t maximumHeightMeters = 0;
+  // False for a tile collision holds but the frame does not draw (the ground under a camera
+  // looking away from it, scene/terrain_scene.cpp): collision uses it all the same.
+  bool drawn = true;
 };
 
+// True when the tile has a block of N x N heights with N >= 2: the functions that read a tile
+// (collision's locateInGrid, qotcdTileHeight, exactTileSurfaceHeight) need one;
+// RenderingTileArray::assign admits only such tiles.
+bool hasReadableBlock(const ArrayTile& tile);
+
 // An ArrayTile with the scheme's bounds and the block's maximum surface height.
-ArrayTile makeArrayTile(const geo::TileId& id, const terrain::HeightBlock& block);
+ArrayTile makeArrayTile(const geo::TileId& id, const HeightBlock& block);
 
 // Result of a tile lookup: the tile (nullptr if none contains the point) and how many tiles were
 // examined (bounds tests for the linear scan, hash probes for the indexed lookup).
@@ -94,4 +102,4 @@ class RenderingTileArray {
   uint32_t rejected_ = 0;
 };
 
-}  // namespace globe::collision
+}  // namespace globe::terrain

@@ -1,6 +1,6 @@
-// Tests for collision/rendering_tile_array.hpp: validation in assign(), the finest-tile rule,
+// Tests for terrain/rendering_tile_array.hpp: validation in assign(), the finest-tile rule,
 // and the deterministic choice on edges, corners, +-180 deg and the poles, linear and indexed.
-#include "collision/rendering_tile_array.hpp"
+#include "collision/terrain_array.hpp"
 
 #include <gtest/gtest.h>
 

@@ -5,9 +5,9 @@
 #include <cstdint>
 #include <optional>
 
-#include "collision/rendering_tile_array.hpp"
+#include "terrain/rendering_tile_array.hpp"
 
-namespace globe::collision {
+namespace globe::terrain {
 
 enum class Pole { None, North, South };
 
@@ -37,4 +37,4 @@ uint64_t selectionKey(const ArrayTile& tile, const QueryPoint& point);
 // The tile's longitude for a canonical point: lon + 2 pi when the tile holds -pi on its +pi edge.
 double longitudeInTile(const ArrayTile& tile, double longitudeRadians);
 
-}  // namespace globe::collision
+}  // namespace globe::terrain
