@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# Installs the Debian package on a fresh Debian 12 (a minimal bookworm root made with debootstrap
+# in a temporary directory, nothing else in it) with apt, which must find every runtime
+# dependency the package declares; then tiles the bundled Fuji data and renders a headless
+# snapshot there with the installed programs, and compares it byte for byte with the build tree's
+# own. Needs root and Debian's package mirror (not run by CI: it downloads ~150 MB).
+#
+#   sudo tools/check-package-fresh-debian.sh BUILD_DIR
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD=${1:?build directory (built, with globe and globe-tiler)}
+MIRROR=${MIRROR:-http://deb.debian.org/debian}
+command -v debootstrap >/dev/null || apt-get install -y -q debootstrap >/dev/null
+bash tools/check-package.sh "$BUILD" >/dev/null
+DEB=$(ls "$BUILD"/package/globe_*.deb)
+ROOT=$(mktemp -d /tmp/globe-fresh-debian.XXXXXX)
+cleanup() {
+  umount "$ROOT/proc" "$ROOT/dev" 2>/dev/null || true
+  rm -rf --one-file-system "$ROOT"
+}
+trap cleanup EXIT
+echo "== debootstrap --variant=minbase bookworm $ROOT"
+debootstrap --variant=minbase bookworm "$ROOT" "$MIRROR" >/dev/null
+cp /etc/resolv.conf "$ROOT/etc/resolv.conf"
+mount --bind /proc "$ROOT/proc"
+mount --bind /dev "$ROOT/dev"
+mkdir -p "$ROOT/tmp/data"
+cp "$DEB" "$ROOT/tmp/"
+cp data/dem/ETOPO20.DEM data/dem/ETOPO20.HDR data/dem/E138N35_FUJI.DEM data/dem/E138N35_FUJI.HDR \
+  "$ROOT/tmp/data/"
+echo "== apt-get install ./$(basename "$DEB") (its declared dependencies from the mirror)"
+START=$(date +%s)
+if ! chroot "$ROOT" bash -c "apt-get update -q && DEBIAN_FRONTEND=noninteractive \
+  apt-get install -y -q /tmp/$(basename "$DEB")" >"$ROOT/tmp/apt.log" 2>&1; then
+  cat "$ROOT/tmp/apt.log" >&2
+  exit 1
+fi
+echo "installed in $(($(date +%s) - START)) s"
+chroot "$ROOT" globe --version
+VIEW=(--camera 138.60,35.20,6000,30,-15,0 --size 640x360)
+chroot "$ROOT" bash -c "cd /tmp && globe-tiler -q -o pyramid data/ETOPO20.DEM data/E138N35_FUJI.DEM \
+  >/dev/null && globe snapshot pyramid ${VIEW[*]} -o fresh.png >/dev/null"
+HOST=$(mktemp -d)
+"$BUILD/tools/tiler/globe-tiler" -q -o "$HOST/pyramid" "$ROOT/tmp/data/ETOPO20.DEM" \
+  "$ROOT/tmp/data/E138N35_FUJI.DEM" >/dev/null
+"$BUILD/src/app/globe" snapshot "$HOST/pyramid" "${VIEW[@]}" -o "$HOST/build.png" >/dev/null
+if cmp -s "$HOST/build.png" "$ROOT/tmp/fresh.png"; then
+  echo "the installed package renders the same image as the build tree (byte for byte)"
+  rm -rf "$HOST"
+else
+  echo "the installed package's image differs from the build tree's: $HOST/build.png" >&2
+  cp "$ROOT/tmp/fresh.png" "$HOST/fresh.png"
+  exit 1
+fi
