@@ -49,3 +49,9 @@ set(CPACK_DEBIAN_PACKAGE_DEPENDS "libgl1-mesa-dri")
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "ffmpeg")
 set(CPACK_STRIP_FILES ON)
 include(CPack)
+
+# Bash completion (bash-completion loads completions/<command>; both names share one script).
+install(FILES ${PROJECT_SOURCE_DIR}/tools/completion/globe.bash
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions RENAME globe)
+install(FILES ${PROJECT_SOURCE_DIR}/tools/completion/globe.bash
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions RENAME globe-tiler)

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# `cmake --install` into a temporary prefix gives a globe that runs with nothing from the checkout:
+# `cmake --install` into a temporary prefix gives a globe that runs with nothing from the checkout
+# (and bash completion for both programs):
 # with the source tree's shaders/ hidden (an empty tmpfs mounted over it in a private mount
 # namespace) the installed program renders the same image, byte for byte, as the build tree's.
 #
@@ -15,6 +16,23 @@ for f in bin/globe bin/globe-tiler share/man/man1/globe.1.gz share/man/man1/glob
 done
 "$WORK/prefix/bin/globe" --version | grep -q '^globe [0-9]' || { echo "globe --version" >&2; exit 1; }
 "$WORK/prefix/bin/globe-tiler" --version | grep -q '^globe-tiler [0-9]'
+
+# Bash completion, installed under both names, completes from the installed programs' --help.
+COMPLETIONS="$WORK/prefix/share/bash-completion/completions"
+[ -e "$COMPLETIONS/globe" ] && [ -e "$COMPLETIONS/globe-tiler" ] ||
+  { echo "bash completion not installed" >&2; exit 1; }
+complete_line() {  # words of a command line being typed -> what TAB offers
+  PATH="$WORK/prefix/bin:$PATH" bash -c 'source "$1"; shift; COMP_WORDS=("$@");
+    COMP_CWORD=$(($# - 1)); _globe_complete "$1"; echo "${COMPREPLY[*]}"' _ \
+    "$COMPLETIONS/globe" "$@"
+}
+for check in "globe sn=snapshot" "globe snapshot --ca=--camera" "globe view --lay=--layer" \
+  "globe-tiler imagery --sc=--scale" "globe --=--help --version"; do
+  words=${check%%=*} wanted=${check#*=}
+  # shellcheck disable=SC2086
+  got=$(complete_line $words)
+  [ "$got" = "$wanted" ] || { echo "completing '$words': '$got', wanted '$wanted'" >&2; exit 1; }
+done
 
 # A small real pyramid: the whole globe at 20' and Mount Fuji's SRTM tile.
 "$WORK/prefix/bin/globe-tiler" -q -o "$WORK/pyramid" "$SOURCE/data/dem/ETOPO20.DEM" \
