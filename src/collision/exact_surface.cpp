@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "collision/grid_location.hpp"
+#include "collision/mesh_vertex_cache.hpp"
 #include "collision/terrain_array.hpp"
 #include "geo/ecef.hpp"
 #include "terrain/block_grid.hpp"
@@ -69,7 +70,7 @@ std::optional<PlaneHit> meetPlane(const ArrayTile& tile, const geo::Ellipsoid& e
     const uint32_t row = vertices[k][0], column = vertices[k][1];
     const double h = tile.block->surfaceHeightMetersAt(row, column);
     // Relative to the surface point: the differences are small, so little is lost to rounding.
-    p[k] = terrain::tileVertexEcefMeters(ellipsoid, grid, row, column, h) - surface;
+    p[k] = cachedTileVertexEcefMeters(ellipsoid, grid, row, column, h) - surface;
   }
   const glm::dvec3 planeNormal = glm::cross(p[1] - p[0], p[2] - p[0]);
   const double lengthSquared = glm::dot(planeNormal, planeNormal);
@@ -105,9 +106,11 @@ SurfaceSample exactTileSurfaceHeight(const ArrayTile& tile, const geo::Ellipsoid
   }
   const uint32_t i = at.quadRow;
   const uint32_t j = at.quadColumn;
-  const geo::Cartographic nadir{longitudeRadians, latitudeRadians, 0.0};
-  const glm::dvec3 surface = geo::cartographicToEcef(ellipsoid, nadir);
-  const glm::dvec3 normal = geo::geodeticSurfaceNormal(ellipsoid, nadir);
+  // One set of sines and cosines for both (bit for bit cartographicToEcef's and
+  // geodeticSurfaceNormal's).
+  const SurfacePoint nadir = surfacePointAndNormal(ellipsoid, longitudeRadians, latitudeRadians);
+  const glm::dvec3& surface = nadir.pointEcefMeters;
+  const glm::dvec3& normal = nadir.normal;
 
   Triangle current{i, j, at.row - i >= at.column - j};
   std::optional<PlaneHit> hit = meetPlane(tile, ellipsoid, current, surface, normal);
