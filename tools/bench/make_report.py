@@ -389,12 +389,13 @@ def main():
     if exact and exact_own:
         w(f"**The exact surface** spends the same {conv:.0f} ns on the conversion and "
           f"{span(exact_own)} ns on the height "
-          "(`BM_ExactSurfaceGeodetic`): the nadir point and normal and three mesh vertices, "
-          "each with its own sines and cosines of latitude and longitude, in "
-          "`exact_surface.cpp`, which this work did not change. Precomputing each tile's 17 "
-          "row and 17 column sines and cosines (~700 B per tile) and reusing the nadir's would "
-          "remove most of it; together with a cheaper conversion that would approach the "
-          "150 ns target.\n")
+          "(`BM_ExactSurfaceGeodetic`): the nadir point and normal (one set of sines and "
+          "cosines) and the three vertices of the triangle under it, whose rows' and columns' "
+          "sines, cosines and radii of curvature come from a small per-thread table "
+          "(`collision/mesh_vertex_cache`, bit for bit the mesh's vertices); before that table "
+          "the exact query was 2.4× QOTCD indexed. What is left above QOTCD is the nadir's "
+          "sines and cosines and the plane arithmetic; a conversion that also returned the "
+          "camera's sines and cosines would save the former.\n")
     lin = median_of(bench, "BM_QotcdLinear")
     rnd = median_of(bench, "BM_QotcdIndexedRandom")
     if all(len(v) == len(SIZES) for v in (sphere, idx, lin, rnd)):
