@@ -5,13 +5,20 @@ SUDO=""
 if [ "$(id -u)" != 0 ]; then SUDO=sudo; fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
+HAD_NGINX=0
+if dpkg -s nginx-light >/dev/null 2>&1 || dpkg -s nginx >/dev/null 2>&1; then HAD_NGINX=1; fi
 $SUDO apt-get install -y -qq --no-install-recommends \
   build-essential cmake pkg-config git ca-certificates \
   libosmesa6-dev libgl-dev libgl1-mesa-dri libegl-dev libglfw3-dev libglew-dev libglm-dev \
   libstb-dev libgdal-dev gdal-bin libjpeg-dev libdeflate-dev nlohmann-json3-dev libcli11-dev libfmt-dev \
-  libgtest-dev libgmock-dev libbenchmark-dev libtinyxml2-dev ffmpeg ccache help2man \
-  python3-glad time xvfb xdotool x11-apps imagemagick gnuplot-nox python3-matplotlib mesa-utils \
+  libgtest-dev libgmock-dev libbenchmark-dev libtinyxml2-dev libcurl4-openssl-dev ffmpeg ccache help2man \
+  python3-glad time xvfb xdotool x11-apps imagemagick gnuplot-nox python3-matplotlib mesa-utils nginx-light \
   >/dev/null
+# nginx-light is for the HTTP tests, which start their own on 127.0.0.1 and stop it; the
+# distribution's service (port 80 on every address) is not wanted where we installed it.
+if [ "$HAD_NGINX" = 0 ] && command -v systemctl >/dev/null 2>&1; then
+  $SUDO systemctl disable --now nginx >/dev/null 2>&1 || true
+fi
 # Optional: clang with libFuzzer for the fuzz targets (tests/fuzz, -DGLOBE_FUZZ=ON). CI does not
 # need it: the corpora replay under g++ and the sanitizer builds use g++'s libasan/libtsan.
 if [ "${GLOBE_INSTALL_FUZZ:-0}" = 1 ]; then

@@ -13,6 +13,8 @@
 #include "app/view_command.hpp"
 #include "geo/ellipsoid.hpp"
 #include "globe_version.hpp"
+#include "io/layer_manifest.hpp"
+#include "io/network_settings.hpp"
 #include "io/pyramid_manifest.hpp"
 #include "terrain/height_block.hpp"
 
@@ -51,6 +53,19 @@ int main(int argc, char** argv) {
                       "refine by each level's nominal error, not the tiler's measured one (more "
                       "triangles where the ground is smooth; as before pack format 3)");
   };
+  std::string cacheDir;
+  bool offline = false;
+  uint64_t cacheMegabytes = 2048;
+  auto addNetwork = [&](CLI::App* command) {
+    command->add_option("--cache-dir", cacheDir,
+                        "disk cache of pyramids and layers read over http(s) (default: "
+                        "$XDG_CACHE_HOME/globe, else ~/.cache/globe)");
+    command->add_option("--cache-size-mb", cacheMegabytes, "the disk cache's bound (LRU)")
+        ->capture_default_str()
+        ->check(CLI::Range(uint64_t{16}, uint64_t{1} << 24));
+    command->add_flag("--offline", offline,
+                      "read http(s) pyramids and layers from the disk cache alone");
+  };
   // --layer, --lighting, --no-sky and --nominal-lod into the scene options; false (after printing
   // why) on a bad --layer.
   auto applyLayers = [&](const char* command, globe::scene::SceneOptions& scene) {
@@ -72,10 +87,12 @@ int main(int argc, char** argv) {
       "info", "print a pyramid's (or an imagery layer's) levels, tile counts, bounds and sources");
   std::string pyramid;
   bool json = false;
-  info->add_option("DIR", pyramid, "pyramid or imagery layer directory made by globe-tiler")
+  info->add_option("DIR", pyramid,
+                   "pyramid or imagery layer made by globe-tiler: a directory or its http(s) URL")
       ->required();
   info->add_flag("--json", json, "machine-readable output");
   addGlobe(info);
+  addNetwork(info);
 
   CLI::App* snapshot = app.add_subcommand(
       "snapshot", "render one view headless (OSMesa) once every tile it needs is loaded");
@@ -83,7 +100,10 @@ int main(int argc, char** argv) {
   bool aboveTerrain = false;
   std::string sseText = "2";  // numbers as text: checked and named by parseNumberArgument
   uint32_t maxLoadLevel = globe::geo::kMaxLevel;
-  snapshot->add_option("PYRAMID", pyramid, "pyramid directory made by globe-tiler")->required();
+  snapshot
+      ->add_option("PYRAMID", pyramid,
+                   "pyramid made by globe-tiler: a directory or its http(s) URL")
+      ->required();
   snapshot
       ->add_option("--camera", cameraText,
                    "LON,LAT,HEIGHT[,HEADING,PITCH,ROLL]: degrees, metres above the ellipsoid; "
@@ -99,6 +119,7 @@ int main(int argc, char** argv) {
   snapshot->add_option("--max-load-level", maxLoadLevel,
                        "never load tiles deeper than this (shows a view mid-refinement)");
   addGlobe(snapshot);
+  addNetwork(snapshot);
   addSeaFloor(snapshot);
   addLayers(snapshot);
 
@@ -106,7 +127,10 @@ int main(int argc, char** argv) {
       "query", "heights: reads lon,lat lines (degrees) on stdin, prints lon,lat,level,height_m");
   std::string mode = "qotcd";
   uint32_t queryLevel = 0;
-  query->add_option("PYRAMID", pyramid, "pyramid directory made by globe-tiler")->required();
+  query
+      ->add_option("PYRAMID", pyramid,
+                   "pyramid made by globe-tiler: a directory or its http(s) URL")
+      ->required();
   query
       ->add_option("--mode", mode,
                    "qotcd (the paper's conservative height) | exact (the drawn surface)")
@@ -114,6 +138,7 @@ int main(int argc, char** argv) {
   auto* queryLevelOption =
       query->add_option("--level", queryLevel, "query this level (default: the finest there)");
   addGlobe(query);
+  addNetwork(query);
   addSeaFloor(query);
 
   CLI::App* view = app.add_subcommand(
@@ -125,7 +150,9 @@ int main(int argc, char** argv) {
   std::string viewRecordDir;
   int viewFrames = 0;
   bool viewLog = false;
-  view->add_option("PYRAMID", pyramid, "pyramid directory made by globe-tiler")->required();
+  view->add_option("PYRAMID", pyramid,
+                   "pyramid made by globe-tiler: a directory or its http(s) URL")
+      ->required();
   view->add_option("--camera", viewCamera, "LON,LAT,HEIGHT[,HEADING,PITCH,ROLL] to start from")
       ->capture_default_str();
   view->add_option("--size", viewSize, "WxH window size")->capture_default_str();
@@ -136,6 +163,7 @@ int main(int argc, char** argv) {
   view->add_option("--record-dir", viewRecordDir,
                    "where P (globe-path-*.json) and K/F12 (globe-shot-*.png) write (default: .)");
   addGlobe(view);
+  addNetwork(view);
   addSeaFloor(view);
   addLayers(view);
 
@@ -146,7 +174,9 @@ int main(int argc, char** argv) {
   std::string playPath, playOut, playSize = "1280x720", playVideo;
   std::string playFps = "30";
   bool playNoFrames = false, playWindow = false;
-  play->add_option("PYRAMID", pyramid, "pyramid directory made by globe-tiler")->required();
+  play->add_option("PYRAMID", pyramid,
+                   "pyramid made by globe-tiler: a directory or its http(s) URL")
+      ->required();
   play->add_option("PATH", playPath, "camera path: .json keyframes or a .kml gx:Tour")->required();
   play->add_option("--out", playOut, "output directory")->required();
   play->add_option("--fps", playFps, "frames per second of path time (0..1000]")
@@ -156,10 +186,18 @@ int main(int argc, char** argv) {
   play->add_flag("--window", playWindow, "show the playback in a GLFW window (same loop)");
   play->add_option("--video", playVideo, "encode the frames into this MP4 with ffmpeg");
   addGlobe(play);
+  addNetwork(play);
   addSeaFloor(play);
   addLayers(play);
 
   CLI11_PARSE(app, argc, argv);
+  {
+    globe::io::NetworkSettings network;
+    network.cacheDirectory = cacheDir;
+    network.cacheBudgetBytes = cacheMegabytes << 20;
+    network.remote.offline = offline;
+    globe::io::setNetworkSettings(network);
+  }
   const auto globeModel = globe::geo::parseGlobeModel(globeName);
   if (!globeModel) {
     std::fprintf(stderr, "globe: --globe must be wgs84 or sphere, not '%s'\n", globeName.c_str());
@@ -247,6 +285,10 @@ int main(int argc, char** argv) {
     options.scene.globeModel = *globeModel;
     options.scene.sea = sea;
     if (!applyLayers("view", options.scene)) return 2;
+    // A server that failed may come back: its tiles are asked for again every 10 s.
+    bool remote = globe::io::isHttpUrl(pyramid);
+    for (const auto& layer : options.scene.layers) remote |= globe::io::isHttpUrl(layer.directory);
+    if (remote) options.scene.retryFailedLoadsSeconds = 10;
     if (auto report = globe::app::runView(options); !report) {
       std::fprintf(stderr, "globe view: %s\n", report.error().c_str());
       return 1;
@@ -282,21 +324,28 @@ int main(int argc, char** argv) {
   }
 
   if (info->parsed()) {
+    auto source = globe::io::openByteSource(pyramid);
+    if (!source) {
+      std::fprintf(stderr, "globe info: %s\n", source.error().c_str());
+      return 1;
+    }
     // An imagery layer (globe-tiler imagery) rather than a pyramid.
-    if (std::filesystem::exists(std::filesystem::path(pyramid) /
-                                globe::io::kLayerManifestFileName) &&
-        !std::filesystem::exists(std::filesystem::path(pyramid) / globe::io::kManifestFileName)) {
-      auto layer = globe::io::readLayerManifest(pyramid);
-      if (!layer) {
+    auto pyramidManifest =
+        (*source)->readWhole(globe::io::kManifestFileName, globe::io::kMaxManifestFileBytes);
+    if (pyramidManifest && !*pyramidManifest) {
+      auto layer = globe::io::readLayerManifest(**source);
+      if (layer) {
+        const std::string text = json ? globe::io::layerManifestToJson(*layer) + "\n"
+                                      : globe::app::formatLayerInfoText(*layer, pyramid);
+        std::fputs(text.c_str(), stdout);
+        return 0;
+      }
+      if (layer.error().find("not found (is") == std::string::npos) {
         std::fprintf(stderr, "globe info: %s\n", layer.error().c_str());
         return 1;
       }
-      const std::string text = json ? globe::io::layerManifestToJson(*layer) + "\n"
-                                    : globe::app::formatLayerInfoText(*layer, pyramid);
-      std::fputs(text.c_str(), stdout);
-      return 0;
     }
-    auto manifest = globe::io::readManifest(pyramid);
+    auto manifest = globe::io::readManifest(**source);
     if (!manifest) {
       std::fprintf(stderr, "globe info: %s\n", manifest.error().c_str());
       return 1;

@@ -22,7 +22,7 @@ Result<std::optional<ImageRgba>> ImagerySource::load(const geo::TileId& tile) {
 }
 
 std::string ImagerySource::location(const geo::TileId& tile) const {
-  return store_.packFileOf(tile).string();
+  return store_.packFileOf(tile);
 }
 
 }  // namespace globe::io

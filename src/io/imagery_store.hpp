@@ -15,6 +15,7 @@
 
 #include "geo/result.hpp"
 #include "geo/tile_id.hpp"
+#include "io/byte_source.hpp"
 #include "io/image_pack.hpp"
 #include "io/layer_manifest.hpp"
 #include "io/open_packs.hpp"
@@ -23,13 +24,16 @@ namespace globe::io {
 
 class ImageryStore {
  public:
-  static Result<std::unique_ptr<ImageryStore>> open(const std::filesystem::path& layerDir);
+  // `layer`: a directory, or the http(s) URL of one on a static server (io/byte_source.hpp).
+  static Result<std::unique_ptr<ImageryStore>> open(const std::string& layer);
   ~ImageryStore() = default;
   ImageryStore(const ImageryStore&) = delete;
   ImageryStore& operator=(const ImageryStore&) = delete;
 
   const LayerManifest& manifest() const { return manifest_; }
-  const std::filesystem::path& directory() const { return dir_; }
+  // The layer's directory or URL.
+  const std::string& location() const { return source_->location(); }
+  bool remote() const { return source_->remote(); }
 
   // Whether the layer has this tile (reads the pack's index on first use). Thread-safe.
   Result<bool> hasTile(const geo::TileId& tile);
@@ -37,7 +41,7 @@ class ImageryStore {
   // has no such tile. Thread-safe.
   Result<std::optional<std::vector<std::byte>>> loadEncoded(const geo::TileId& tile);
   // Where a tile lives (its pack file path), for error messages.
-  std::filesystem::path packFileOf(const geo::TileId& tile) const;
+  std::string packFileOf(const geo::TileId& tile) const;
 
   // The first error of each pack found missing or damaged since the last call, each pack once.
   std::vector<std::string> takeNewPackErrors();
@@ -49,12 +53,12 @@ class ImageryStore {
 
  private:
   using OpenPack = OpenPackFile<ImagePackIndex>;
-  ImageryStore(std::filesystem::path dir, LayerManifest manifest);
+  ImageryStore(std::shared_ptr<ByteSource> source, LayerManifest manifest);
   // nullptr when the layer has no such pack.
   Result<std::shared_ptr<const OpenPack>> pack(const PackId& id);
   Result<std::shared_ptr<const OpenPack>> openPack(const PackId& id);
 
-  std::filesystem::path dir_;
+  std::shared_ptr<ByteSource> source_;
   LayerManifest manifest_;
   OpenPacks<OpenPack> packs_;
   std::atomic<uint64_t> tileReads_{0};

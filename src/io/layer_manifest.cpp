@@ -168,15 +168,20 @@ Result<LayerManifest> layerManifestFromJson(std::string_view text,
   }
 }
 
-Result<LayerManifest> readLayerManifest(const std::filesystem::path& layerDir) {
-  const std::filesystem::path path = layerDir / kLayerManifestFileName;
-  auto bytes = readWholeFile(path, kMaxManifestBytes);
-  if (!bytes) {
-    return makeError(bytes.error() + " (is " + layerDir.string() +
+Result<LayerManifest> readLayerManifest(ByteSource& source) {
+  const std::string path = source.locationOf(kLayerManifestFileName);
+  auto bytes = source.readWhole(kLayerManifestFileName, kMaxManifestBytes);
+  if (!bytes) return Error{bytes.error()};
+  if (!*bytes) {
+    return makeError(path + ": cannot open: not found (is " + source.location() +
                      " an imagery layer made by globe-tiler imagery?)");
   }
   return layerManifestFromJson(
-      std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()), path);
+      std::string_view(reinterpret_cast<const char*>((*bytes)->data()), (*bytes)->size()), path);
+}
+
+Result<LayerManifest> readLayerManifest(const std::filesystem::path& layerDir) {
+  return readLayerManifest(*localByteSource(layerDir));
 }
 
 Result<void> writeLayerManifest(const std::filesystem::path& layerDir,

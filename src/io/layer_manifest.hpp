@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "geo/result.hpp"
+#include "io/byte_source.hpp"
 #include "io/image_pack.hpp"
 #include "io/pack_format.hpp"
 #include "io/pyramid_manifest.hpp"
@@ -54,6 +55,8 @@ std::string layerManifestToJson(const LayerManifest& manifest);
 Result<LayerManifest> layerManifestFromJson(std::string_view text,
                                             const std::filesystem::path& path);
 Result<LayerManifest> readLayerManifest(const std::filesystem::path& layerDir);
+// The manifest of a layer in a directory or on a server.
+Result<LayerManifest> readLayerManifest(ByteSource& source);
 // Through writeFileAtomically.
 Result<void> writeLayerManifest(const std::filesystem::path& layerDir,
                                 const LayerManifest& manifest);

@@ -4,8 +4,6 @@
 // height-block and imagery stores. Thread-safe.
 #pragma once
 
-#include <unistd.h>
-
 #include <cstddef>
 #include <map>
 #include <memory>
@@ -16,22 +14,19 @@
 #include <vector>
 
 #include "geo/result.hpp"
+#include "io/byte_source.hpp"
 #include "io/pack_format.hpp"
 
 namespace globe::io {
 
-// An open pack file and its parsed index. Owns its descriptor, so a pack dropped from the open
-// set stays readable while a reader still holds it.
+// An open pack file (local or remote) and its parsed index. Holds its file, so a pack dropped
+// from the open set stays readable while a reader still holds it.
 template <class Index>
 struct OpenPackFile {
-  int fd = -1;
+  std::shared_ptr<const ByteFile> file;
   Index index;
-  OpenPackFile(int descriptor, Index packIndex) : fd(descriptor), index(std::move(packIndex)) {}
-  OpenPackFile(const OpenPackFile&) = delete;
-  OpenPackFile& operator=(const OpenPackFile&) = delete;
-  ~OpenPackFile() {
-    if (fd >= 0) ::close(fd);
-  }
+  OpenPackFile(std::shared_ptr<const ByteFile> opened, Index packIndex)
+      : file(std::move(opened)), index(std::move(packIndex)) {}
 };
 
 template <class Pack>

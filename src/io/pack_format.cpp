@@ -73,9 +73,13 @@ geo::TileId tileOfSlot(const PackId& pack, size_t slot, uint32_t tilesPerSide) {
   return {pack.level, pack.x * tilesPerSide + localX, pack.y * tilesPerSide + localY};
 }
 
+std::string packName(const PackId& pack) {
+  return "L" + std::to_string(pack.level) + "/" + std::to_string(pack.x) + "_" +
+         std::to_string(pack.y) + ".pack";
+}
+
 std::filesystem::path packPath(const std::filesystem::path& pyramidDir, const PackId& pack) {
-  return pyramidDir / ("L" + std::to_string(pack.level)) /
-         (std::to_string(pack.x) + "_" + std::to_string(pack.y) + ".pack");
+  return pyramidDir / packName(pack);
 }
 
 Pack Pack::empty(const PackId& id, const PackLayout& layout) {

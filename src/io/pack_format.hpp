@@ -26,6 +26,7 @@
 #include <limits>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "geo/result.hpp"
@@ -84,6 +85,8 @@ PackId packOf(const geo::TileId& tile, uint32_t tilesPerSide);
 size_t slotOf(const geo::TileId& tile, uint32_t tilesPerSide);
 geo::TileId tileOfSlot(const PackId& pack, size_t slot, uint32_t tilesPerSide);
 
+// "L<level>/<x>_<y>.pack": a pack's name inside its pyramid or layer (a file or a URL's tail).
+std::string packName(const PackId& pack);
 // PYRAMID/L<level>/<x>_<y>.pack
 std::filesystem::path packPath(const std::filesystem::path& pyramidDir, const PackId& pack);
 

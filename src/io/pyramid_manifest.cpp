@@ -191,16 +191,20 @@ Result<PyramidManifest> manifestFromJson(std::string_view text, const std::files
   }
 }
 
-Result<PyramidManifest> readManifest(const std::filesystem::path& pyramidDir) {
-  const std::filesystem::path path = pyramidDir / kManifestFileName;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    return makeError(path.string() + ": cannot open (is " + pyramidDir.string() +
+Result<PyramidManifest> readManifest(ByteSource& source) {
+  const std::string path = source.locationOf(kManifestFileName);
+  auto bytes = source.readWhole(kManifestFileName, kMaxManifestFileBytes);
+  if (!bytes) return Error{bytes.error()};
+  if (!*bytes) {
+    return makeError(path + ": cannot open: not found (is " + source.location() +
                      " a pyramid made by globe-tiler?)");
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return manifestFromJson(text.str(), path);
+  return manifestFromJson(
+      std::string_view(reinterpret_cast<const char*>((*bytes)->data()), (*bytes)->size()), path);
+}
+
+Result<PyramidManifest> readManifest(const std::filesystem::path& pyramidDir) {
+  return readManifest(*localByteSource(pyramidDir));
 }
 
 }  // namespace globe::io

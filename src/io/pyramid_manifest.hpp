@@ -8,6 +8,7 @@
 
 #include "geo/ellipsoid.hpp"
 #include "geo/result.hpp"
+#include "io/byte_source.hpp"
 #include "io/pack_format.hpp"
 
 namespace globe::io {
@@ -65,5 +66,9 @@ struct PyramidManifest {
 std::string manifestToJson(const PyramidManifest& manifest);
 Result<PyramidManifest> manifestFromJson(std::string_view text, const std::filesystem::path& path);
 Result<PyramidManifest> readManifest(const std::filesystem::path& pyramidDir);
+// The manifest of a pyramid in a directory or on a server.
+Result<PyramidManifest> readManifest(ByteSource& source);
+// Manifests larger than this are refused (a server cannot make the viewer allocate more).
+inline constexpr size_t kMaxManifestFileBytes = size_t{1} << 28;
 
 }  // namespace globe::io

@@ -1,47 +1,46 @@
 #include "io/tile_store.hpp"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <utility>
-
-#include "io/file_reads.hpp"
 
 namespace globe::io {
 namespace {
 
 // A pyramid of another pack format version is refused as a whole: its first level-0 pack's
 // header says so. Unreadable or damaged packs are left to be reported one by one when read.
-Result<void> checkFormatVersion(const std::filesystem::path& dir, const PyramidManifest& manifest) {
+Result<void> checkFormatVersion(ByteSource& source, const PyramidManifest& manifest) {
   if (manifest.levels.empty() || manifest.levels[0].packs.empty()) return {};
-  const std::filesystem::path path = packPath(dir, manifest.levels[0].packs.front());
-  FdCloser file{::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK)};
-  struct stat info {};
-  if (file.fd < 0 || ::fstat(file.fd, &info) != 0 || !S_ISREG(info.st_mode)) return {};
-  std::byte head[kPackHeaderBytes];
-  if (!preadFully(file.fd, head, sizeof head, 0, path)) return {};
-  const std::optional<uint32_t> version = packFormatVersionOf(head);
-  return version ? checkPackFormatVersion(*version, path) : Result<void>{};
+  const std::string name = packName(manifest.levels[0].packs.front());
+  auto opened = source.open(name, kPackHeaderBytes);
+  if (!opened || opened->head.size() < kPackHeaderBytes) return {};
+  const std::optional<uint32_t> version = packFormatVersionOf(opened->head);
+  return version ? checkPackFormatVersion(*version, source.locationOf(name)) : Result<void>{};
 }
 
 }  // namespace
 
-TileStore::TileStore(std::filesystem::path dir, PyramidManifest manifest, terrain::SeaSurface sea)
-    : dir_(std::move(dir)), manifest_(std::move(manifest)), sea_(sea) {}
+TileStore::TileStore(std::shared_ptr<ByteSource> source, PyramidManifest manifest,
+                     terrain::SeaSurface sea)
+    : source_(std::move(source)), manifest_(std::move(manifest)), sea_(sea) {}
 
-Result<std::unique_ptr<TileStore>> TileStore::open(const std::filesystem::path& pyramidDir,
+Result<std::unique_ptr<TileStore>> TileStore::open(const std::string& pyramid,
                                                    terrain::SeaSurface sea) {
-  auto manifest = readManifest(pyramidDir);
+  auto source = openByteSource(pyramid);
+  if (!source) return Error{source.error()};
+  return open(std::move(*source), sea);
+}
+
+Result<std::unique_ptr<TileStore>> TileStore::open(std::shared_ptr<ByteSource> source,
+                                                   terrain::SeaSurface sea) {
+  auto manifest = readManifest(*source);
   if (!manifest) return Error{manifest.error()};
   for (LevelInfo& level : manifest->levels) std::sort(level.packs.begin(), level.packs.end());
-  if (auto version = checkFormatVersion(pyramidDir, *manifest); !version) {
+  if (auto version = checkFormatVersion(*source, *manifest); !version) {
     return Error{version.error()};
   }
-  return std::unique_ptr<TileStore>(new TileStore(pyramidDir, std::move(*manifest), sea));
+  return std::unique_ptr<TileStore>(new TileStore(std::move(source), std::move(*manifest), sea));
 }
 
 Result<std::shared_ptr<const TileStore::OpenPack>> TileStore::pack(const PackId& id) {
@@ -56,40 +55,34 @@ Result<std::shared_ptr<const TileStore::OpenPack>> TileStore::pack(const PackId&
 }
 
 Result<std::shared_ptr<const TileStore::OpenPack>> TileStore::openPack(const PackId& id) {
-  const std::filesystem::path path = packPath(dir_, id);
-  // O_NONBLOCK: a FIFO in the pack's place must not block the viewer; it is refused below.
-  FdCloser file{::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK)};
-  if (file.fd < 0) return makeError(path.string() + ": cannot open: " + std::strerror(errno));
-  struct stat info {};
-  if (::fstat(file.fd, &info) != 0) {
-    return makeError(path.string() + ": cannot stat: " + std::strerror(errno));
-  }
-  if (!S_ISREG(info.st_mode)) return makeError(path.string() + ": not a regular file");
-  std::vector<std::byte> head;
+  const std::string name = packName(id);
+  const std::string path = source_->locationOf(name);
   PackLayout layout = manifest_.packLayout();
-  auto readHead = [&](size_t bytes) -> Result<void> {
-    if (static_cast<uint64_t>(info.st_size) < bytes) {
-      return makeError(path.string() + ": truncated pack (" + std::to_string(info.st_size) +
-                       " bytes)");
-    }
-    head.resize(bytes);
-    return preadFully(file.fd, head.data(), head.size(), 0, path);
+  // One read (one range request) for the header and the index the manifest's layout predicts;
+  // a pack of another readable version has another index size and takes a second read.
+  auto opened = source_->open(name, layout.indexEndOffset());
+  if (!opened) return Error{opened.error()};
+  const uint64_t fileBytes = opened->file->sizeBytes();
+  std::vector<std::byte> head = std::move(opened->head);
+  auto truncated = [&] {
+    return makeError(path + ": truncated pack (" + std::to_string(fileBytes) + " bytes)");
   };
-  // The header's version sets the index's size; decodePackIndex refuses unknown versions.
-  if (auto read = readHead(kPackHeaderBytes); !read) return Error{read.error()};
+  if (head.size() < kPackHeaderBytes) return truncated();
   const std::optional<uint32_t> version = packFormatVersionOf(head);
   if (version && checkPackFormatVersion(*version, path)) layout.formatVersion = *version;
-  if (auto read = readHead(layout.indexEndOffset()); !read) return Error{read.error()};
-  auto index = decodePackIndex(head, static_cast<uint64_t>(info.st_size), path);
+  if (head.size() != layout.indexEndOffset()) {
+    if (fileBytes < layout.indexEndOffset()) return truncated();
+    head.resize(layout.indexEndOffset());
+    if (auto read = opened->file->read(head, 0); !read) return Error{read.error()};
+  }
+  auto index = decodePackIndex(head, fileBytes, path);
   if (!index) return Error{index.error()};
   if (index->id != id || index->layout.tilesPerSide != layout.tilesPerSide ||
       index->layout.verticesPerSide != layout.verticesPerSide) {
-    return makeError(path.string() + ": pack header disagrees with the manifest");
+    return makeError(path + ": pack header disagrees with the manifest");
   }
   ++packIndexReads_;
-  auto opened = std::make_shared<const OpenPack>(file.fd, std::move(*index));
-  file.fd = -1;
-  return opened;
+  return std::make_shared<const OpenPack>(std::move(opened->file), std::move(*index));
 }
 
 std::vector<std::string> TileStore::takeNewPackErrors() { return packs_.takeNewErrors(); }
@@ -108,15 +101,13 @@ Result<terrain::HeightBlock> TileStore::loadBlock(const geo::TileId& tile) {
   auto opened = pack(packOf(tile, manifest_.packTilesPerSide));
   if (!opened) return Error{opened.error()};
   const std::string name = geo::tileName(tile);
-  if (!*opened) return makeError(dir_.string() + ": the pyramid has no " + name);
+  if (!*opened) return makeError(location() + ": the pyramid has no " + name);
   const OpenPack& p = **opened;
   const PackEntry& e = p.index.entries[slotOf(tile, manifest_.packTilesPerSide)];
-  if (!e.present()) return makeError(dir_.string() + ": the pyramid has no " + name);
+  if (!e.present()) return makeError(location() + ": the pyramid has no " + name);
 
   std::vector<std::byte> bytes(p.index.layout.blockBytes());
-  if (auto read =
-          preadFully(p.fd, bytes.data(), bytes.size(), e.blockOffset, packPath(dir_, p.index.id));
-      !read) {
+  if (auto read = p.file->read(bytes, e.blockOffset); !read) {
     packs_.noteError(p.index.id, read.error());
     return Error{read.error()};
   }
@@ -139,7 +130,7 @@ Result<std::optional<terrain::HeightBlock>> TileStore::load(const geo::TileId& t
 }
 
 std::string TileStore::location(const geo::TileId& tile) const {
-  return packPath(dir_, packOf(tile, manifest_.packTilesPerSide)).string();
+  return source_->locationOf(packName(packOf(tile, manifest_.packTilesPerSide)));
 }
 
 }  // namespace globe::io

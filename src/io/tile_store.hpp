@@ -13,6 +13,7 @@
 
 #include "geo/result.hpp"
 #include "geo/tile_id.hpp"
+#include "io/byte_source.hpp"
 #include "io/open_packs.hpp"
 #include "io/pack_format.hpp"
 #include "io/pyramid_manifest.hpp"
@@ -28,15 +29,19 @@ class TileStore final : public TileSource<terrain::HeightBlock> {
   // (HeightBlock::sea): the one place a viewer's --sea-floor reaches rendering, collision and
   // heights alike. Refuses a pyramid whose packs have another format version (checked on the
   // first level-0 pack; every pack is checked again when opened).
+  // `pyramid`: a directory, or the http(s) URL of one on a static server (io/byte_source.hpp).
   static Result<std::unique_ptr<TileStore>> open(
-      const std::filesystem::path& pyramidDir,
-      terrain::SeaSurface sea = terrain::SeaSurface::Water);
+      const std::string& pyramid, terrain::SeaSurface sea = terrain::SeaSurface::Water);
+  static Result<std::unique_ptr<TileStore>> open(
+      std::shared_ptr<ByteSource> source, terrain::SeaSurface sea = terrain::SeaSurface::Water);
   ~TileStore() override = default;
   TileStore(const TileStore&) = delete;
   TileStore& operator=(const TileStore&) = delete;
 
   const PyramidManifest& manifest() const { return manifest_; }
-  const std::filesystem::path& directory() const { return dir_; }
+  // The pyramid's directory or URL.
+  const std::string& location() const { return source_->location(); }
+  bool remote() const { return source_->remote(); }
   terrain::SeaSurface sea() const { return sea_; }
 
   // The tile's index entry, or nullopt when the pyramid has no such tile. Thread-safe.
@@ -66,12 +71,12 @@ class TileStore final : public TileSource<terrain::HeightBlock> {
 
  private:
   using OpenPack = OpenPackFile<PackIndex>;
-  TileStore(std::filesystem::path dir, PyramidManifest manifest, terrain::SeaSurface sea);
+  TileStore(std::shared_ptr<ByteSource> source, PyramidManifest manifest, terrain::SeaSurface sea);
   // nullptr when the level has no such pack.
   Result<std::shared_ptr<const OpenPack>> pack(const PackId& id);
   Result<std::shared_ptr<const OpenPack>> openPack(const PackId& id);
 
-  std::filesystem::path dir_;
+  std::shared_ptr<ByteSource> source_;
   PyramidManifest manifest_;
   terrain::SeaSurface sea_;
   OpenPacks<OpenPack> packs_;

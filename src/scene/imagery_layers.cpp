@@ -9,6 +9,7 @@
 
 #include "geo/ecef.hpp"
 #include "geo/tiling_scheme.hpp"
+#include "io/network_settings.hpp"
 #include "terrain/imagery_level.hpp"
 
 namespace globe::scene {
@@ -28,7 +29,9 @@ struct ImageryLayers::Layer {
         store(std::move(layerStore)),
         source(std::make_unique<io::ImagerySource>(*store)),
         cache(decodedBytes),
-        loader(std::make_unique<io::ImageryLoader>(*source, runner, cache)) {}
+        loader(std::make_unique<io::ImageryLoader>(*source, runner, cache)) {
+    if (store->remote()) loader->setMaxInFlight(io::kRemoteLoadsInFlight);
+  }
   ~Layer() { loader.reset(); }  // waits for its running loads before the store goes
 
   // Whether the layer has the tile; an unreadable pack counts as "no" (reported once, by the
@@ -232,6 +235,13 @@ io::LoaderCounters ImageryLayers::counters() const {
     sum.inFlight += c.inFlight;
   }
   return sum;
+}
+
+void ImageryLayers::forgetFailures() {
+  for (const auto& layer : layers_) {
+    layer->loader->forgetFailures();
+    layer->present.clear();  // a pack that failed answered "no tile"
+  }
 }
 
 void ImageryLayers::waitForLoads(std::chrono::milliseconds timeout) const {

@@ -73,6 +73,8 @@ class ImageryLayers {
   io::LoaderCounters counters() const;
   // Blocks until some layer's load completes or the timeout passes.
   void waitForLoads(std::chrono::milliseconds timeout) const;
+  // Lets failed tiles and packs be tried again (a server that was down may be back).
+  void forgetFailures();
 
  private:
   struct Layer;

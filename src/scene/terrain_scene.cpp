@@ -7,6 +7,7 @@
 #include "geo/ecef.hpp"
 #include "geo/frustum.hpp"
 #include "geo/tiling_scheme.hpp"
+#include "io/network_settings.hpp"
 #include "terrain/block_grid.hpp"
 #include "terrain/tile_mesh.hpp"
 
@@ -62,7 +63,9 @@ TerrainScene::TerrainScene(std::unique_ptr<io::TileStore> store, const SceneOpti
       store_(std::move(store)),
       cache_(options.cacheBudgetBytes),
       runner_(options.loaderThreads),
-      loader_(std::make_unique<io::TileLoader>(*store_, runner_, cache_)) {}
+      loader_(std::make_unique<io::TileLoader>(*store_, runner_, cache_)) {
+  if (store_->remote()) loader_->setMaxInFlight(io::kRemoteLoadsInFlight);
+}
 
 TerrainScene::~TerrainScene() {
   imagery_.reset();
@@ -74,7 +77,15 @@ Result<std::unique_ptr<TerrainScene>> TerrainScene::open(const std::filesystem::
                                                          const SceneOptions& options) {
   auto store = io::TileStore::open(pyramidDir, options.sea);
   if (!store) return Error{store.error()};
-  std::unique_ptr<TerrainScene> scene(new TerrainScene(std::move(*store), options));
+  SceneOptions sceneOptions = options;
+  const bool remote = (*store)->remote() ||
+                      std::any_of(options.layers.begin(), options.layers.end(),
+                                  [](const LayerOptions& l) { return io::isHttpUrl(l.directory); });
+  if (remote) {
+    sceneOptions.loaderThreads =
+        std::max<unsigned>(sceneOptions.loaderThreads, io::kRemoteLoadsInFlight);
+  }
+  std::unique_ptr<TerrainScene> scene(new TerrainScene(std::move(*store), sceneOptions));
   if (!options.layers.empty()) {
     auto layers = ImageryLayers::open(options.layers, scene->runner_, options.imageryBudget);
     if (!layers) return Error{layers.error()};
@@ -97,6 +108,7 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
                                TileGpu& gpu) {
   ++frame_;
   FrameInfo info;
+  retryFailedLoadsWhenDue();
   cache_.beginFrame();
   const io::PollResult polled = loader_->poll();
   info.arrived = polled.arrived.size();
@@ -215,6 +227,17 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   info.requests = requests.size();
   info.complete = requests.empty() && loader_->counters().inFlight == 0 && info.imagery.complete;
   return info;
+}
+
+void TerrainScene::retryFailedLoadsWhenDue() {
+  if (options_.retryFailedLoadsSeconds <= 0) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (std::chrono::duration<double>(now - lastRetry_).count() < options_.retryFailedLoadsSeconds) {
+    return;
+  }
+  lastRetry_ = now;
+  if (loader_->counters().failed > 0) loader_->forgetFailures();
+  if (imagery_) imagery_->forgetFailures();
 }
 
 void TerrainScene::updateImagery(const glm::dvec3& cameraEcefMeters, TileGpu& gpu,

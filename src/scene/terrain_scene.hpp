@@ -45,6 +45,9 @@ struct SceneOptions {
   // --nominal-lod; not with imagery layers.
   bool measuredLod = true;
   bool sky = true;  // the sky and distance fog (render/sky_model.hpp); --no-sky: black space
+  // Failed loads (a server down, a 503) are tried again this long after the last try; 0: never
+  // (snapshots and playback, whose result must not depend on when a server came back).
+  double retryFailedLoadsSeconds = 0;
 };
 
 struct FrameInfo {
@@ -95,6 +98,7 @@ class TerrainScene {
  private:
   TerrainScene(std::unique_ptr<io::TileStore> store, const SceneOptions& options);
   void updateImagery(const glm::dvec3& cameraEcefMeters, TileGpu& gpu, FrameInfo& info);
+  void retryFailedLoadsWhenDue();
   Result<void> uploadIfNeeded(const geo::TileId& tile, const terrain::HeightBlock& block,
                               TileGpu& gpu);
 
@@ -104,6 +108,7 @@ class TerrainScene {
   io::BlockCache cache_;
   io::ThreadPoolRunner runner_;
   std::unique_ptr<io::TileLoader> loader_;
+  std::chrono::steady_clock::time_point lastRetry_ = std::chrono::steady_clock::now();
   std::unique_ptr<ImageryLayers> imagery_;
   std::vector<terrain::TileDrapes> drapes_;  // per tile of tiles_, with imagery
   std::vector<geo::TileId> tiles_;

@@ -9,7 +9,11 @@
 #include <string>
 
 #include "io/camera_path_file.hpp"
+#include "io/crc32.hpp"
 #include "io/gtopo30_header.hpp"
+#include "io/http_client.hpp"
+#include "io/image_pack.hpp"
+#include "io/layer_manifest.hpp"
 #include "io/pack_format.hpp"
 #include "io/pyramid_manifest.hpp"
 
@@ -74,12 +78,27 @@ void pathKml(const uint8_t* data, size_t size) {
   std::filesystem::remove(path, ignored);
 }
 
+void remote(const uint8_t* data, size_t size) {
+  const std::string_view text = asText(data, size);
+  uint64_t first = 0;
+  uint64_t last = 0;
+  uint64_t total = 0;
+  (void)io::parseContentRange(std::string(text.substr(0, text.find('\n'))), &first, &last, &total);
+  const std::span<const std::byte> bytes(reinterpret_cast<const std::byte*>(data), size);
+  const uint32_t trailer = size >= 4 ? io::crc32(bytes.first(size - 4)) : 0;
+  (void)io::decodeImagePackIndex(bytes, trailer, size + 4, "fuzz.pack");
+  (void)io::decodeImagePackIndex(bytes, 0, uint64_t{1} << 40, "fuzz.pack");
+  auto layer = io::layerManifestFromJson(text, "fuzz/layer.json");
+  if (layer) (void)io::layerManifestToJson(*layer);
+}
+
 Entry entryNamed(std::string_view target) {
   if (target == "gtopo30_header") return gtopo30Header;
   if (target == "pack") return pack;
   if (target == "manifest") return manifest;
   if (target == "path_json") return pathJson;
   if (target == "path_kml") return pathKml;
+  if (target == "remote") return remote;
   return nullptr;
 }
 

@@ -13,6 +13,9 @@ void pack(const uint8_t* data, size_t size);
 void manifest(const uint8_t* data, size_t size);
 void pathJson(const uint8_t* data, size_t size);
 void pathKml(const uint8_t* data, size_t size);
+// What a web server controls beyond the pyramid's own formats: a Content-Range header, an
+// imagery pack's head and index, a layer manifest.
+void remote(const uint8_t* data, size_t size);
 
 // The entry for a corpus folder name (gtopo30_header, pack, ...), or nullptr.
 using Entry = void (*)(const uint8_t*, size_t);

@@ -36,6 +36,7 @@ TEST(FuzzCorpus, Pack) { EXPECT_GT(replay("pack"), 0U); }
 TEST(FuzzCorpus, Manifest) { EXPECT_GT(replay("manifest"), 0U); }
 TEST(FuzzCorpus, PathJson) { EXPECT_GT(replay("path_json"), 0U); }
 TEST(FuzzCorpus, PathKml) { EXPECT_GT(replay("path_kml"), 0U); }
+TEST(FuzzCorpus, Remote) { EXPECT_GT(replay("remote"), 0U); }
 
 // The hand-made seeds are valid packs of the current format; the version-1 seed (negative samples
 // meant sea then) is refused by name as made by an older globe-tiler.

@@ -73,7 +73,7 @@ TEST(ImageryStore, LoadsEachTileWithOneReadAndIndexesEachPackOnce) {
   ASSERT_TRUE(again && again->has_value());
   EXPECT_EQ(s.packIndexReads(), 3u);  // the pack's index came from memory
   EXPECT_EQ(s.tileReads(), 6u);
-  EXPECT_EQ(s.packFileOf({1, 3, 1}), dir / "L1" / "1_0.pack");
+  EXPECT_EQ(s.packFileOf({1, 3, 1}), (dir / "L1" / "1_0.pack").string());
   EXPECT_TRUE(s.takeNewPackErrors().empty());
 }
 

@@ -273,7 +273,7 @@ class DamagedPyramidTest : public ::testing::Test {
     ASSERT_NE(store_, nullptr);
   }
   std::filesystem::path packFile(const TileId& tile) const {
-    return packPath(store_->directory(), packOf(tile, store_->manifest().packTilesPerSide));
+    return packPath(store_->location(), packOf(tile, store_->manifest().packTilesPerSide));
   }
   test::TempDir dir_;
   std::unique_ptr<TileStore> store_;

@@ -38,8 +38,8 @@ class UnreadablePackTest : public ::testing::Test {
     auto store = TileStore::open(dir_.path() / "pyramid");
     ASSERT_TRUE(store) << store.error();
     store_ = std::move(*store);
-    pack_ = packPath(store_->directory(), packOf(tiles_[0], store_->manifest().packTilesPerSide));
-    ASSERT_EQ(pack_, packPath(store_->directory(),
+    pack_ = packPath(store_->location(), packOf(tiles_[0], store_->manifest().packTilesPerSide));
+    ASSERT_EQ(pack_, packPath(store_->location(),
                               packOf(tiles_[2], store_->manifest().packTilesPerSide)));
     fs::copy_file(pack_, dir_ / "good.pack");
   }

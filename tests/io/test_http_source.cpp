@@ -1,0 +1,334 @@
+// Pyramids over HTTP from a real nginx on 127.0.0.1: the same blocks as from the directory, one
+// range request per block and per pack index, a disk cache that serves --offline and is
+// revalidated when the pyramid is republished, and every fault a clear error naming the URL.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <regex>
+
+#include "io/atomic_file.hpp"
+#include "io/disk_cache.hpp"
+#include "io/network_settings.hpp"
+#include "io/pack_format.hpp"
+#include "io/tile_store.hpp"
+#include "tests/io/loader_test_pyramid.hpp"
+#include "tests/io/nginx_server.hpp"
+#include "tests/io/test_io_util.hpp"
+
+namespace globe::io {
+namespace {
+
+namespace fs = std::filesystem;
+using test::NginxServer;
+using test::TempDir;
+
+// Every present tile of the pyramid, read from its packs whole (the oracle's own reader).
+std::vector<geo::TileId> presentTiles(const fs::path& pyramid, uint32_t maxLevel) {
+  std::vector<geo::TileId> tiles;
+  for (const auto& entry : fs::recursive_directory_iterator(pyramid)) {
+    if (entry.path().extension() != ".pack") continue;
+    auto bytes = readWholeFile(entry.path(), uint64_t{1} << 30);
+    if (!bytes) continue;
+    auto pack = decodePack(*bytes, entry.path());
+    if (!pack || pack->id.level > maxLevel) continue;
+    for (size_t slot = 0; slot < pack->entries.size(); ++slot) {
+      if (pack->entries[slot].present()) {
+        tiles.push_back(tileOfSlot(pack->id, slot, pack->layout.tilesPerSide));
+      }
+    }
+  }
+  return tiles;
+}
+
+struct Served {
+  TempDir scratch;
+  fs::path root;  // served at /, holds the pyramid as /pyramid
+  std::unique_ptr<NginxServer> server;
+
+  explicit Served(const std::string& directives = "") {
+    root = scratch / "www";
+    fs::create_directories(root);
+    fs::copy(test::loaderTestPyramid(), root / "pyramid", fs::copy_options::recursive);
+    server = NginxServer::start({root, directives});
+  }
+  std::string url() const { return server->url("/pyramid"); }
+};
+
+HttpSettings quickSettings() {
+  HttpSettings s;
+  s.connectTimeoutMs = 2000;
+  s.stallTimeoutMs = 1000;
+  s.totalTimeoutMs = 10'000;
+  return s;
+}
+
+RemoteOptions quickRetries(bool offline = false) {
+  RemoteOptions o;
+  o.offline = offline;
+  o.attempts = 3;
+  o.firstRetryDelayMs = 20;
+  return o;
+}
+
+std::shared_ptr<DiskCache> cacheIn(const fs::path& dir) {
+  auto cache = DiskCache::open(dir, uint64_t{1} << 30);
+  EXPECT_TRUE(cache) << cache.error();
+  return cache ? std::shared_ptr<DiskCache>(std::move(*cache)) : nullptr;
+}
+
+std::unique_ptr<TileStore> openRemote(const std::string& url, std::shared_ptr<HttpClient> client,
+                                      std::shared_ptr<DiskCache> cache,
+                                      RemoteOptions options = quickRetries()) {
+  auto store = TileStore::open(httpByteSource(url, std::move(client), std::move(cache), options));
+  EXPECT_TRUE(store) << store.error();
+  return store ? std::move(*store) : nullptr;
+}
+
+size_t countMatching(const std::vector<std::string>& log, const std::string& pattern) {
+  const std::regex re(pattern);
+  return static_cast<size_t>(std::count_if(log.begin(), log.end(), [&](const std::string& line) {
+    return std::regex_search(line, re);
+  }));
+}
+
+TEST(HttpTileStore, EveryBlockEqualsTheLocalOneWithOneRangeRequestEach) {
+  Served served;
+  ASSERT_TRUE(served.server);
+  auto client = std::make_shared<HttpClient>(quickSettings());
+  TempDir cacheDir;
+  auto remote = openRemote(served.url(), client, cacheIn(cacheDir.path()));
+  ASSERT_TRUE(remote);
+  auto local = TileStore::open(test::loaderTestPyramid().string());
+  ASSERT_TRUE(local) << local.error();
+  EXPECT_TRUE(remote->remote());
+  EXPECT_EQ(remote->location(), served.url());
+
+  const auto tiles = presentTiles(test::loaderTestPyramid(), 5);
+  ASSERT_GT(tiles.size(), 50u);
+  for (const geo::TileId& tile : tiles) {
+    auto a = (*local)->load(tile);
+    auto b = remote->load(tile);
+    ASSERT_TRUE(a && *a) << geo::tileName(tile);
+    ASSERT_TRUE(b && *b) << geo::tileName(tile) << ": " << (b ? "absent" : b.error());
+    EXPECT_EQ((*a)->heights, (*b)->heights) << geo::tileName(tile);
+    EXPECT_EQ((*a)->apron, (*b)->apron) << geo::tileName(tile);
+    auto ea = (*local)->entry(tile);
+    auto eb = remote->entry(tile);
+    ASSERT_TRUE(ea && eb && *ea && *eb);
+    EXPECT_EQ((*ea)->subtreeRange.maximumMeters, (*eb)->subtreeRange.maximumMeters);
+  }
+  EXPECT_EQ(remote->blockReads(), tiles.size());
+
+  const auto log = served.server->accessLog();
+  // Every pack request is a range request (never a whole-pack download): the index once per
+  // pack (the format-version probe of the first level-0 pack aside), then one per block.
+  const size_t packGets = countMatching(log, R"(^GET /pyramid/L\d+/\S+\.pack )");
+  EXPECT_EQ(countMatching(log, R"(^GET /pyramid/L\d+/\S+\.pack 206 "bytes=\d+-\d+")"), packGets);
+  EXPECT_EQ(packGets, tiles.size() + remote->packIndexReads() + 1);
+  EXPECT_EQ(countMatching(log, R"(^GET /pyramid/manifest.json 200)"), 1u);
+}
+
+TEST(HttpTileStore, OfflineServesWhatTheCacheHoldsAndNamesWhatItLacks) {
+  Served served;
+  ASSERT_TRUE(served.server);
+  TempDir cacheDir;
+  const auto tiles = presentTiles(test::loaderTestPyramid(), 4);
+  ASSERT_GT(tiles.size(), 10u);
+  std::map<geo::TileId, std::vector<int16_t>> online;
+  {
+    auto remote = openRemote(served.url(), std::make_shared<HttpClient>(quickSettings()),
+                             cacheIn(cacheDir.path()));
+    ASSERT_TRUE(remote);
+    for (size_t i = 0; i + 1 < tiles.size(); ++i) {  // all but the last
+      auto block = remote->load(tiles[i]);
+      ASSERT_TRUE(block && *block);
+      online[tiles[i]] = (*block)->heights;
+    }
+  }
+  served.server->stop();  // nothing to reach: the cache alone
+  auto offline = openRemote(served.url(), nullptr, cacheIn(cacheDir.path()), quickRetries(true));
+  ASSERT_TRUE(offline);
+  for (const auto& [tile, heights] : online) {
+    auto block = offline->load(tile);
+    ASSERT_TRUE(block && *block) << geo::tileName(tile) << (block ? "" : block.error());
+    EXPECT_EQ((*block)->heights, heights);
+  }
+  auto missing = offline->load(tiles.back());
+  ASSERT_FALSE(missing);
+  EXPECT_NE(missing.error().find(served.url() + "/L"), std::string::npos) << missing.error();
+  EXPECT_NE(missing.error().find("not in the disk cache (offline)"), std::string::npos)
+      << missing.error();
+}
+
+TEST(HttpTileStore, AWarmStartAsksOnlyWhetherTheManifestChanged) {
+  Served served;
+  ASSERT_TRUE(served.server);
+  TempDir cacheDir;
+  const auto tiles = presentTiles(test::loaderTestPyramid(), 4);
+  size_t coldRequests = 0;
+  for (int run = 0; run < 2; ++run) {
+    auto remote = openRemote(served.url(), std::make_shared<HttpClient>(quickSettings()),
+                             cacheIn(cacheDir.path()));
+    ASSERT_TRUE(remote);
+    for (const geo::TileId& tile : tiles) ASSERT_TRUE(remote->load(tile));
+    if (run == 0) coldRequests = served.server->accessLog().size();
+  }
+  const auto log = served.server->accessLog();
+  EXPECT_GT(coldRequests, tiles.size());
+  // The warm run: one conditional GET of the manifest (304), nothing else.
+  ASSERT_EQ(log.size(), coldRequests + 1);
+  EXPECT_EQ(log.back().rfind("GET /pyramid/manifest.json 304", 0), 0u) << log.back();
+}
+
+TEST(HttpTileStore, ARepublishedPyramidIsNotServedStale) {
+  Served served;
+  ASSERT_TRUE(served.server);
+  TempDir cacheDir;
+  const auto tiles = presentTiles(test::loaderTestPyramid(), 3);
+  const geo::TileId tile = tiles.back();
+  const fs::path packFile = packPath(served.root / "pyramid", packOf(tile, 64));
+  std::vector<int16_t> before;
+  {
+    auto remote = openRemote(served.url(), std::make_shared<HttpClient>(quickSettings()),
+                             cacheIn(cacheDir.path()));
+    auto block = remote->load(tile);
+    ASSERT_TRUE(block && *block);
+    before = (*block)->heights;
+  }
+  // Republish: the same pack with every height of the tile raised by 7 m (a new file, a new ETag).
+  auto bytes = readWholeFile(packFile, uint64_t{1} << 30);
+  ASSERT_TRUE(bytes);
+  auto pack = decodePack(*bytes, packFile);
+  ASSERT_TRUE(pack) << pack.error();
+  for (int16_t& h : pack->block(slotOf(tile, 64))) h = static_cast<int16_t>(h + 7);
+  ASSERT_TRUE(writeFileAtomically(packFile, encodePack(*pack)));
+  fs::last_write_time(packFile, fs::last_write_time(packFile) + std::chrono::seconds(5));
+  // The tiler rewrites the manifest on every run: its new ETag is how a republish is seen.
+  const fs::path manifest = served.root / "pyramid" / "manifest.json";
+  fs::last_write_time(manifest, fs::last_write_time(manifest) + std::chrono::seconds(5));
+
+  auto remote = openRemote(served.url(), std::make_shared<HttpClient>(quickSettings()),
+                           cacheIn(cacheDir.path()));
+  auto block = remote->load(tile);
+  ASSERT_TRUE(block && *block);
+  ASSERT_EQ((*block)->heights.size(), before.size());
+  for (size_t i = 0; i < before.size(); ++i) EXPECT_EQ((*block)->heights[i], before[i] + 7);
+}
+
+// One fault per case: the load fails with one message naming the URL and the problem, in
+// bounded time, and never crashes.
+struct FaultCase {
+  const char* name;
+  std::string directives;  // nginx server { } lines
+  std::function<void(const fs::path& pyramid, const geo::TileId& tile)> damage;  // on disk
+  const char* expected;                                                          // in the message
+};
+
+TEST(HttpTileStore, EachFaultIsOneClearErrorNamingTheUrl) {
+  const auto tiles = presentTiles(test::loaderTestPyramid(), 3);
+  geo::TileId tile{};
+  for (const auto& t : tiles) {
+    if (t.level == 3) tile = t;
+  }
+  ASSERT_EQ(tile.level, 3u);
+  const std::vector<FaultCase> cases = {
+      {"404", "",
+       [](const fs::path& p, const geo::TileId& t) { fs::remove(packPath(p, packOf(t, 64))); },
+       "not found (HTTP 404)"},
+      {"truncated", "",
+       [](const fs::path& p, const geo::TileId& t) {
+         fs::resize_file(packPath(p, packOf(t, 64)), 100);
+       },
+       "truncated pack"},
+      {"500", "location /pyramid/L3/ { return 500; }", nullptr, "HTTP 500"},
+      {"503", "location /pyramid/L3/ { return 503; }", nullptr, "HTTP 503"},
+      {"ignores ranges", "max_ranges 0;", nullptr, "ignores Range requests"},
+      {"stalled", "location /pyramid/L3/ { limit_rate 1; }", nullptr, "timed out"},
+  };
+  for (const FaultCase& c : cases) {
+    SCOPED_TRACE(c.name);
+    Served served(c.directives);
+    ASSERT_TRUE(served.server);
+    if (c.damage) c.damage(served.root / "pyramid", tile);
+    auto remote = openRemote(served.url(), std::make_shared<HttpClient>(quickSettings()), nullptr);
+    ASSERT_TRUE(remote);
+    const auto start = std::chrono::steady_clock::now();
+    auto block = remote->load(tile);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_FALSE(block);
+    EXPECT_NE(block.error().find(served.url() + "/L3/"), std::string::npos) << block.error();
+    EXPECT_NE(block.error().find(c.expected), std::string::npos) << block.error();
+    EXPECT_LT(seconds, 8.0);  // retries and timeouts are bounded
+    // Reported once for the viewer, and the tile's pack is not asked again.
+    EXPECT_EQ(remote->takeNewPackErrors().size(), 1u);
+    auto again = remote->load(tile);
+    EXPECT_FALSE(again);
+    // The rest of the pyramid still loads (unless no range request can work at all).
+    if (std::string(c.name) != "ignores ranges") {
+      auto root = remote->load({0, 0, 0});
+      EXPECT_TRUE(root && *root) << (root ? "" : root.error());
+    }
+  }
+}
+
+TEST(HttpTileStore, AServerThatStopsIsAnErrorNotAHang) {
+  Served served;
+  ASSERT_TRUE(served.server);
+  auto remote = openRemote(served.url(), std::make_shared<HttpClient>(quickSettings()), nullptr);
+  ASSERT_TRUE(remote);
+  ASSERT_TRUE(remote->load({0, 0, 0}));
+  served.server->stop();
+  const auto start = std::chrono::steady_clock::now();
+  auto block = remote->load({1, 1, 0});
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_FALSE(block);
+  EXPECT_NE(block.error().find(served.url() + "/L1/"), std::string::npos) << block.error();
+  EXPECT_LT(seconds, 5.0);
+}
+
+TEST(HttpClient, RefusesBodiesLargerThanAsked) {
+  Served served;
+  ASSERT_TRUE(served.server);
+  HttpClient client(quickSettings());
+  HttpRequest q;
+  q.url = served.url() + "/manifest.json";
+  q.maxBodyBytes = 16;
+  const HttpResponse r = client.perform(q);
+  EXPECT_TRUE(r.bodyTooLong);
+  EXPECT_LE(r.body.size(), 16u);
+  auto source = httpByteSource(served.url(), std::make_shared<HttpClient>(quickSettings()), nullptr,
+                               quickRetries());
+  auto whole = source->readWhole("manifest.json", 16);
+  ASSERT_FALSE(whole);
+  EXPECT_NE(whole.error().find("larger than 16 bytes"), std::string::npos) << whole.error();
+  auto missing = source->readWhole("nothing.json", 16);
+  ASSERT_TRUE(missing);
+  EXPECT_FALSE(*missing);
+}
+
+TEST(HttpClient, ContentRangeParsing) {
+  uint64_t first = 0, last = 0, total = 0;
+  EXPECT_TRUE(parseContentRange("bytes 0-99/1000", &first, &last, &total));
+  EXPECT_EQ(first, 0u);
+  EXPECT_EQ(last, 99u);
+  EXPECT_EQ(total, 1000u);
+  EXPECT_FALSE(parseContentRange("bytes 5-4/10", &first, &last, &total));
+  EXPECT_FALSE(parseContentRange("bytes 0-10/10", &first, &last, &total));
+  EXPECT_FALSE(parseContentRange("bytes */10", &first, &last, &total));
+  EXPECT_FALSE(parseContentRange("bytes 0-9/10 ", &first, &last, &total));
+  EXPECT_FALSE(parseContentRange("items 0-9/10", &first, &last, &total));
+  EXPECT_FALSE(parseContentRange("bytes 0-99999999999999999999999/1", &first, &last, &total));
+  EXPECT_TRUE(isHttpUrl("HTTPS://example.org/x"));
+  EXPECT_FALSE(isHttpUrl("file:///etc"));
+  EXPECT_FALSE(isHttpUrl("pyramid"));
+}
+
+}  // namespace
+}  // namespace globe::io
