@@ -8,6 +8,7 @@
 #include <span>
 #include <string>
 
+#include "io/big_endian.hpp"
 #include "io/camera_path_file.hpp"
 #include "io/crc32.hpp"
 #include "io/gtopo30_header.hpp"
@@ -85,9 +86,14 @@ void remote(const uint8_t* data, size_t size) {
   uint64_t total = 0;
   (void)io::parseContentRange(std::string(text.substr(0, text.find('\n'))), &first, &last, &total);
   const std::span<const std::byte> bytes(reinterpret_cast<const std::byte*>(data), size);
-  const uint32_t trailer = size >= 4 ? io::crc32(bytes.first(size - 4)) : 0;
-  (void)io::decodeImagePackIndex(bytes, trailer, size + 4, "fuzz.pack");
-  (void)io::decodeImagePackIndex(bytes, 0, uint64_t{1} << 40, "fuzz.pack");
+  // As a whole pack (its trailer CRC in its last 4 bytes), and as a head of a longer file.
+  if (size >= 4) {
+    const uint32_t trailer = io::loadBigEndian32(bytes.data() + size - 4);
+    (void)io::decodeImagePackIndex(bytes, trailer, size, "fuzz.pack");
+    auto whole = io::decodeImagePack(bytes, "fuzz.pack");
+    if (whole) (void)whole->payloads.size();
+  }
+  (void)io::decodeImagePackIndex(bytes, io::crc32(bytes), uint64_t{1} << 40, "fuzz.pack");
   auto layer = io::layerManifestFromJson(text, "fuzz/layer.json");
   if (layer) (void)io::layerManifestToJson(*layer);
 }
