@@ -9,7 +9,6 @@
 #include <fstream>
 #include <functional>
 #include <map>
-#include <regex>
 
 #include "io/atomic_file.hpp"
 #include "io/disk_cache.hpp"
@@ -89,11 +88,21 @@ std::unique_ptr<TileStore> openRemote(const std::string& url, std::shared_ptr<Ht
   return store ? std::move(*store) : nullptr;
 }
 
-size_t countMatching(const std::vector<std::string>& log, const std::string& pattern) {
-  const std::regex re(pattern);
+// Access log lines ("METHOD URI STATUS \"RANGE\" BYTES") that start with `prefix` and contain
+// `part` (no std::regex: GCC 12 warns inside <regex> under the sanitizers).
+size_t countMatching(const std::vector<std::string>& log, const std::string& prefix,
+                     const std::string& part = "") {
   return static_cast<size_t>(std::count_if(log.begin(), log.end(), [&](const std::string& line) {
-    return std::regex_search(line, re);
+    return line.rfind(prefix, 0) == 0 && line.find(part) != std::string::npos;
   }));
+}
+
+bool isPackRange(const std::string& line) {
+  // "GET /pyramid/L3/0_1.pack 206 \"bytes=40-1234\" 2000"
+  const size_t pack = line.find(".pack 206 \"bytes=");
+  const size_t dash = line.find('-', pack == std::string::npos ? line.size() : pack);
+  return pack != std::string::npos && dash != std::string::npos &&
+         line.find('"', dash) != std::string::npos;
 }
 
 TEST(HttpTileStore, EveryBlockEqualsTheLocalOneWithOneRangeRequestEach) {
@@ -127,10 +136,10 @@ TEST(HttpTileStore, EveryBlockEqualsTheLocalOneWithOneRangeRequestEach) {
   const auto log = served.server->accessLog();
   // Every pack request is a range request (never a whole-pack download): the index once per
   // pack (the format-version probe of the first level-0 pack aside), then one per block.
-  const size_t packGets = countMatching(log, R"(^GET /pyramid/L\d+/\S+\.pack )");
-  EXPECT_EQ(countMatching(log, R"(^GET /pyramid/L\d+/\S+\.pack 206 "bytes=\d+-\d+")"), packGets);
+  const size_t packGets = countMatching(log, "GET /pyramid/L", ".pack ");
+  EXPECT_EQ(static_cast<size_t>(std::count_if(log.begin(), log.end(), isPackRange)), packGets);
   EXPECT_EQ(packGets, tiles.size() + remote->packIndexReads() + 1);
-  EXPECT_EQ(countMatching(log, R"(^GET /pyramid/manifest.json 200)"), 1u);
+  EXPECT_EQ(countMatching(log, "GET /pyramid/manifest.json 200"), 1u);
 }
 
 TEST(HttpTileStore, OfflineServesWhatTheCacheHoldsAndNamesWhatItLacks) {
