@@ -16,7 +16,7 @@ struct HttpSettings {
   // A transfer that receives nothing for this long is abandoned (a stalled server).
   long stallTimeoutMs = 15'000;
   long totalTimeoutMs = 120'000;
-  long maxConnectionsPerHost = 6;
+  long maxConnectionsPerHost = 16;
   bool verifyTls = true;
 };
 

@@ -63,6 +63,19 @@ Result<bool> ImageryStore::hasTile(const geo::TileId& tile) {
   return (*opened)->index.entries[slotOf(tile, manifest_.packTilesPerSide)].present();
 }
 
+ImageryStore::Peek ImageryStore::peekTile(const geo::TileId& tile) {
+  const PackId id = packOf(tile, manifest_.packTilesPerSide);
+  if (id.level >= manifest_.levels.size()) return Peek::Absent;
+  const auto& packs = manifest_.levels[id.level].packs;
+  if (!std::binary_search(packs.begin(), packs.end(), id)) return Peek::Absent;
+  const auto opened = packs_.peek(id);
+  if (!opened) return Peek::NotOpen;
+  if (!*opened) return Peek::Absent;
+  return (**opened)->index.entries[slotOf(tile, manifest_.packTilesPerSide)].present()
+             ? Peek::Present
+             : Peek::Absent;
+}
+
 Result<std::optional<std::vector<std::byte>>> ImageryStore::loadEncoded(const geo::TileId& tile) {
   if (tile.level > geo::kMaxLevel) return makeError(location() + ": no " + geo::tileName(tile));
   auto opened = pack(packOf(tile, manifest_.packTilesPerSide));

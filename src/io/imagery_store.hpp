@@ -37,6 +37,11 @@ class ImageryStore {
 
   // Whether the layer has this tile (reads the pack's index on first use). Thread-safe.
   Result<bool> hasTile(const geo::TileId& tile);
+  // For a render thread that must not wait on a server: whether the layer has the tile, from its
+  // pack's index without any I/O; Absent also for a pack that failed; NotOpen when the pack was
+  // not read yet (hasTile, on a worker, reads it).
+  enum class Peek { Absent, Present, NotOpen };
+  Peek peekTile(const geo::TileId& tile);
   // The tile's encoded bytes (JPEG or PNG) with one read, CRC checked; nullopt when the layer
   // has no such tile. Thread-safe.
   Result<std::optional<std::vector<std::byte>>> loadEncoded(const geo::TileId& tile);

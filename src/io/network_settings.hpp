@@ -17,7 +17,7 @@ class DiskCache;
 
 // Loads at once (and loader threads) for a store on a server: they wait on round trips, not on
 // the CPU, so many in flight hide the latency.
-inline constexpr unsigned kRemoteLoadsInFlight = 12;
+inline constexpr unsigned kRemoteLoadsInFlight = 24;
 
 struct RemoteOptions {
   bool offline = false;          // the disk cache alone; a miss is an error

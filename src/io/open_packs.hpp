@@ -4,10 +4,12 @@
 // height-block and imagery stores. Thread-safe.
 #pragma once
 
+#include <condition_variable>
 #include <cstddef>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <string>
 #include <utility>
@@ -35,15 +37,22 @@ class OpenPacks {
   static constexpr size_t kMaxOpenPacks = 256;
   using Opened = Result<std::shared_ptr<const Pack>>;
 
-  // The pack if open; its remembered error if it failed before; else open(id) (called with the
-  // lock held), whose failure is remembered and queued for reporting. *openedNowFailed is set
-  // when this call's open failed.
+  // The pack if open; its remembered error if it failed before; else open(id), whose failure is
+  // remembered and queued for reporting. open runs without the lock (over a network it takes a
+  // round trip: other packs open meanwhile); a second caller for the same pack waits for it.
+  // *openedNowFailed is set when this call's open failed.
   template <class Open>
   Opened get(const PackId& id, Open&& open, bool* openedNowFailed = nullptr) {
-    std::lock_guard lock(mutex_);
+    std::unique_lock lock(mutex_);
+    opened_.wait(lock, [&] { return !opening_.contains(id); });
     if (auto it = open_.find(id); it != open_.end()) return it->second;
     if (auto it = failed_.find(id); it != failed_.end()) return makeError(it->second);
+    opening_.insert(id);
+    lock.unlock();
     Opened opened = open(id);
+    lock.lock();
+    opening_.erase(id);
+    opened_.notify_all();
     if (!opened) {
       failed_.emplace(id, opened.error());
       note(id, opened.error());
@@ -53,6 +62,14 @@ class OpenPacks {
     if (open_.size() >= kMaxOpenPacks) open_.clear();
     open_.emplace(id, *opened);
     return opened;
+  }
+
+  // Without opening anything: the pack if open, its error if it failed, nullopt if not tried yet.
+  std::optional<Opened> peek(const PackId& id) {
+    std::lock_guard lock(mutex_);
+    if (auto it = open_.find(id); it != open_.end()) return Opened(it->second);
+    if (auto it = failed_.find(id); it != failed_.end()) return Opened(makeError(it->second));
+    return std::nullopt;
   }
 
   // Queues a pack's error (a read that failed after it opened), once per pack.
@@ -79,6 +96,8 @@ class OpenPacks {
   }
 
   std::mutex mutex_;
+  std::condition_variable opened_;
+  std::set<PackId> opening_;  // being opened by some thread
   std::map<PackId, std::shared_ptr<const Pack>> open_;
   std::map<PackId, std::string> failed_;  // open failed: the error, not retried
   std::set<PackId> reported_;             // packs whose error was queued for reporting

@@ -97,6 +97,20 @@ Result<std::optional<PackEntry>> TileStore::entry(const geo::TileId& tile) {
   return e.present() ? std::optional<PackEntry>(e) : std::nullopt;
 }
 
+TileStore::Peek TileStore::peekEntry(const geo::TileId& tile, PackEntry* entry) {
+  const PackId id = packOf(tile, manifest_.packTilesPerSide);
+  if (id.level >= manifest_.levels.size()) return Peek::Absent;
+  const auto& packs = manifest_.levels[id.level].packs;
+  if (!std::binary_search(packs.begin(), packs.end(), id)) return Peek::Absent;
+  const auto opened = packs_.peek(id);
+  if (!opened) return Peek::NotOpen;
+  if (!*opened) return Peek::Absent;
+  const PackEntry& e = (**opened)->index.entries[slotOf(tile, manifest_.packTilesPerSide)];
+  if (!e.present()) return Peek::Absent;
+  *entry = e;
+  return Peek::Present;
+}
+
 Result<terrain::HeightBlock> TileStore::loadBlock(const geo::TileId& tile) {
   auto opened = pack(packOf(tile, manifest_.packTilesPerSide));
   if (!opened) return Error{opened.error()};

@@ -46,6 +46,12 @@ class TileStore final : public TileSource<terrain::HeightBlock> {
 
   // The tile's index entry, or nullopt when the pyramid has no such tile. Thread-safe.
   Result<std::optional<PackEntry>> entry(const geo::TileId& tile);
+  // For a render thread that must not wait on a server: the tile's entry from its pack's index
+  // without any I/O. Absent also for a pack that failed (its parent is drawn); NotOpen when the
+  // pack was not read yet: entry() (on a worker) reads it.
+  enum class Peek { Absent, Present, NotOpen };
+  Peek peekEntry(const geo::TileId& tile, PackEntry* entry);
+
   // Loads a present tile's block with one read (its pack's index is parsed once), its `sea` set
   // to the store's. Thread-safe.
   Result<terrain::HeightBlock> loadBlock(const geo::TileId& tile);

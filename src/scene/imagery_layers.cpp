@@ -1,8 +1,12 @@
 #include "scene/imagery_layers.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <mutex>
+#include <set>
+#include <thread>
 #include <tuple>
 
 #include <glm/geometric.hpp>
@@ -15,35 +19,74 @@
 namespace globe::scene {
 
 struct ImageryLayers::Layer {
+  // Pack indexes of a remote layer being read on the loader's threads. Shared with those tasks
+  // (with the store), so a layer may go while one is still running.
+  struct Opening {
+    std::mutex mutex;
+    std::set<io::PackId> packs;  // guarded by mutex
+    std::atomic<int> pending{0};
+  };
+
   LayerOptions options;
-  std::unique_ptr<io::ImageryStore> store;
+  std::shared_ptr<io::ImageryStore> store;
   std::unique_ptr<io::ImagerySource> source;
   io::ImageryCache cache;
   std::unique_ptr<io::ImageryLoader> loader;
+  io::TaskRunner& runner;
+  std::shared_ptr<Opening> opening = std::make_shared<Opening>();
   std::unordered_map<geo::TileId, uint64_t> textureLastUsedFrame;  // textures on the GPU
   std::unordered_map<geo::TileId, bool> present;  // the layer's index, asked once per tile
 
   Layer(LayerOptions layerOptions, std::unique_ptr<io::ImageryStore> layerStore,
-        io::TaskRunner& runner, size_t decodedBytes)
+        io::TaskRunner& taskRunner, size_t decodedBytes)
       : options(std::move(layerOptions)),
         store(std::move(layerStore)),
         source(std::make_unique<io::ImagerySource>(*store)),
         cache(decodedBytes),
-        loader(std::make_unique<io::ImageryLoader>(*source, runner, cache)) {
+        loader(std::make_unique<io::ImageryLoader>(*source, taskRunner, cache)),
+        runner(taskRunner) {
     if (store->remote()) loader->setMaxInFlight(io::kRemoteLoadsInFlight);
   }
   ~Layer() { loader.reset(); }  // waits for its running loads before the store goes
 
   // Whether the layer has the tile; an unreadable pack counts as "no" (reported once, by the
-  // store) so the view draws a coarser tile instead.
-  bool has(const geo::TileId& tile) {
+  // store) so the view draws a coarser tile instead. nullopt for a remote layer whose pack index
+  // is not read yet: it is read in the background, never on the render thread.
+  std::optional<bool> has(const geo::TileId& tile) {
     if (auto it = present.find(tile); it != present.end()) return it->second;
-    auto answer = store->hasTile(tile);
-    const bool has = answer && *answer;
+    bool has = false;
+    if (store->remote()) {
+      const io::ImageryStore::Peek peek = store->peekTile(tile);
+      if (peek == io::ImageryStore::Peek::NotOpen) {
+        openInBackground(tile);
+        return std::nullopt;
+      }
+      has = peek == io::ImageryStore::Peek::Present;
+    } else {
+      auto answer = store->hasTile(tile);
+      has = answer && *answer;
+    }
     // Bounded: a long flight asks about ever new tiles (the store answers from its index anyway).
     if (present.size() >= kPresentEntries) present.clear();
     present.emplace(tile, has);
     return has;
+  }
+
+  void openInBackground(const geo::TileId& tile) {
+    const io::PackId pack = io::packOf(tile, store->manifest().packTilesPerSide);
+    {
+      std::lock_guard lock(opening->mutex);
+      if (!opening->packs.insert(pack).second) return;
+    }
+    ++opening->pending;
+    runner.post([store = store, opening = opening, tile, pack] {
+      (void)store->hasTile(tile);  // opens the pack: an error is the store's to report
+      {
+        std::lock_guard lock(opening->mutex);
+        opening->packs.erase(pack);
+      }
+      --opening->pending;
+    });
   }
   static constexpr size_t kPresentEntries = 1u << 16;
 };
@@ -158,8 +201,15 @@ Result<ImageryFrame> ImageryLayers::update(std::span<const geo::TileId> tiles,
                                                       maximumScreenSpaceErrorPixels, maxLevel);
       // The tile this terrain tile wants: the deepest the layer has at or above that level.
       geo::TileId want = terrain::ancestorAt(tile, level);
-      while (!layer.has(want) && want.level > 0) want = want.parent();
-      if (!layer.has(want)) continue;  // the layer does not cover this tile
+      bool unknown = false;  // a pack index still on its way: a coarser tile for now
+      auto has = [&](const geo::TileId& t) {
+        const std::optional<bool> answer = layer.has(t);
+        unknown = unknown || !answer;
+        return answer.value_or(false);
+      };
+      while (!has(want) && want.level > 0) want = want.parent();
+      if (unknown) frame.complete = false;
+      if (!has(want)) continue;  // the layer does not cover this tile (or not known yet)
       const geo::TileId target = terrain::ancestorAt(want, std::min(want.level, maximumLoadLevel));
       wantedTiles.push_back(target);
       // Drawn with the nearest ancestor (or itself) that has a texture or a decoded image.
@@ -198,7 +248,9 @@ Result<ImageryFrame> ImageryLayers::update(std::span<const geo::TileId> tiles,
     layer.cache.touch(wantedTiles);
     layer.loader->request(wanted);
     frame.requests += wanted.size();
-    if (layer.loader->counters().inFlight > 0) frame.complete = false;
+    if (layer.loader->counters().inFlight > 0 || layer.opening->pending.load() > 0) {
+      frame.complete = false;
+    }
   }
   evictTextures(gpu);
   return frame;
@@ -245,6 +297,12 @@ void ImageryLayers::forgetFailures() {
 }
 
 void ImageryLayers::waitForLoads(std::chrono::milliseconds timeout) const {
+  for (const auto& layer : layers_) {
+    if (layer->opening->pending.load() > 0) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));  // a pack index on its way
+      return;
+    }
+  }
   for (const auto& layer : layers_) {
     if (layer->loader->counters().inFlight > 0) {
       layer->loader->waitForCompletion(timeout);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <thread>
 
 #include "geo/ecef.hpp"
 #include "geo/frustum.hpp"
@@ -14,12 +15,30 @@
 namespace globe::scene {
 namespace {
 
-// The pyramid index says what exists; the loader's cache says what is drawable.
+// Levels requested ahead of the refinement from a remote pyramid (SelectionOptions).
+constexpr uint32_t kRemoteLookaheadLevels = 6;
+
+// The pyramid index says what exists; the loader's cache says what is drawable. With
+// `notOpen`, a tile whose pack index was not read yet reads as a leaf's child would (its parent
+// is drawn) and is listed there, so that a server's round trip never blocks the frame.
 class SceneCatalog final : public terrain::TileCatalog {
  public:
-  SceneCatalog(io::TileStore& store, const io::TileLoader& loader)
-      : store_(store), loader_(loader) {}
+  SceneCatalog(io::TileStore& store, const io::TileLoader& loader,
+               std::vector<geo::TileId>* notOpen)
+      : store_(store), loader_(loader), notOpen_(notOpen) {}
   std::optional<terrain::TileSummary> find(const geo::TileId& tile) const override {
+    if (notOpen_ != nullptr) {
+      io::PackEntry e;
+      switch (store_.peekEntry(tile, &e)) {
+        case io::TileStore::Peek::Present:
+          return terrain::TileSummary{e.subtreeRange, e.geometricErrorMeters};
+        case io::TileStore::Peek::Absent:
+          return std::nullopt;
+        case io::TileStore::Peek::NotOpen:
+          notOpen_->push_back(tile);
+          return std::nullopt;
+      }
+    }
     auto entry = store_.entry(tile);
     if (!entry || !*entry) return std::nullopt;  // an unreadable pack draws its parent instead
     return terrain::TileSummary{(*entry)->subtreeRange, (*entry)->geometricErrorMeters};
@@ -29,6 +48,7 @@ class SceneCatalog final : public terrain::TileCatalog {
  private:
   io::TileStore& store_;
   const io::TileLoader& loader_;
+  std::vector<geo::TileId>* notOpen_;
 };
 
 // Bilinear height inside a block at a position of its tile (water: 0 m, or its sea floor).
@@ -152,7 +172,21 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   if (!options_.hysteresis) selectionOptions.hysteresisFraction = 0;
   // Imagery's resolution follows the terrain's level: flat ground keeps refining under it.
   selectionOptions.measuredErrors = options_.measuredLod && options_.layers.empty();
-  const SceneCatalog catalog(*store_, *loader_);
+  if (store_->remote()) selectionOptions.lookaheadLevels = kRemoteLookaheadLevels;
+  std::vector<geo::TileId> notOpen;
+  if (store_->remote()) {
+    // Every level's pack under the camera at once, rather than one level per round trip as the
+    // refinement reaches it: the packs a view needs are mostly these (a pack spans 64 tiles).
+    io::PackEntry ignored;
+    for (uint32_t level = 0; level <= store_->manifest().maxLevel(); ++level) {
+      const auto tile = geo::GeographicTilingScheme::positionToTile(
+          pose.position.longitudeRadians, pose.position.latitudeRadians, level);
+      if (tile && store_->peekEntry(*tile, &ignored) == io::TileStore::Peek::NotOpen) {
+        notOpen.push_back(*tile);
+      }
+    }
+  }
+  const SceneCatalog catalog(*store_, *loader_, store_->remote() ? &notOpen : nullptr);
   terrain::SelectionResult selection =
       terrain::selectTiles(selectionView, catalog, selectionOptions,
                            options_.hysteresis ? tiles_ : std::vector<geo::TileId>{});
@@ -166,6 +200,7 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
     }
   }
   loader_->request(requests);
+  openPacksInBackground(notOpen);
 
   tiles_.clear();
   blocks_.clear();
@@ -225,8 +260,30 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   info.selection = selection.counters;
   info.tilesSelected = tiles_.size();
   info.requests = requests.size();
-  info.complete = requests.empty() && loader_->counters().inFlight == 0 && info.imagery.complete;
+  info.arrived += packsOpened_.exchange(0);
+  info.complete = requests.empty() && loader_->counters().inFlight == 0 && notOpen.empty() &&
+                  packOpensPending_.load() == 0 && info.imagery.complete;
   return info;
+}
+
+void TerrainScene::openPacksInBackground(const std::vector<geo::TileId>& tiles) {
+  for (const geo::TileId& tile : tiles) {
+    const io::PackId pack = io::packOf(tile, store_->manifest().packTilesPerSide);
+    {
+      std::lock_guard lock(packMutex_);
+      if (!packsOpening_.insert(pack).second) continue;
+    }
+    ++packOpensPending_;
+    runner_.post([this, tile, pack] {
+      (void)store_->entry(tile);  // opens the pack: an error is the store's to report
+      {
+        std::lock_guard lock(packMutex_);
+        packsOpening_.erase(pack);
+      }
+      ++packsOpened_;
+      --packOpensPending_;
+    });
+  }
 }
 
 void TerrainScene::retryFailedLoadsWhenDue() {
@@ -256,7 +313,9 @@ void TerrainScene::updateImagery(const glm::dvec3& cameraEcefMeters, TileGpu& gp
 }
 
 void TerrainScene::waitForLoads(std::chrono::milliseconds timeout) const {
-  if (loader_->counters().inFlight > 0) {
+  if (packOpensPending_.load() > 0) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));  // a pack index on its way
+  } else if (loader_->counters().inFlight > 0) {
     loader_->waitForCompletion(timeout);
   } else if (imagery_) {
     imagery_->waitForLoads(timeout);

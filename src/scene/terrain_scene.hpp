@@ -3,10 +3,13 @@
 // `play`, the soak and the benchmarks; the caller draws view(), tiles() and drapes().
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <mutex>
 #include <optional>
+#include <set>
 #include <unordered_map>
 #include <vector>
 
@@ -99,6 +102,8 @@ class TerrainScene {
   TerrainScene(std::unique_ptr<io::TileStore> store, const SceneOptions& options);
   void updateImagery(const glm::dvec3& cameraEcefMeters, TileGpu& gpu, FrameInfo& info);
   void retryFailedLoadsWhenDue();
+  // Reads these tiles' pack indexes on the loader's threads (a remote pyramid).
+  void openPacksInBackground(const std::vector<geo::TileId>& tiles);
   Result<void> uploadIfNeeded(const geo::TileId& tile, const terrain::HeightBlock& block,
                               TileGpu& gpu);
 
@@ -108,6 +113,10 @@ class TerrainScene {
   io::BlockCache cache_;
   io::ThreadPoolRunner runner_;
   std::unique_ptr<io::TileLoader> loader_;
+  std::mutex packMutex_;
+  std::set<io::PackId> packsOpening_;  // guarded by packMutex_
+  std::atomic<int> packOpensPending_{0};
+  std::atomic<int> packsOpened_{0};  // since the last frame: a reason to redraw
   std::chrono::steady_clock::time_point lastRetry_ = std::chrono::steady_clock::now();
   std::unique_ptr<ImageryLayers> imagery_;
   std::vector<terrain::TileDrapes> drapes_;  // per tile of tiles_, with imagery

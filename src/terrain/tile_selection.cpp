@@ -85,16 +85,17 @@ class Traversal {
   }
 
  private:
-  // Counts the visit; nullopt when the tile is culled.
-  std::optional<VisibleTile> cull(const geo::TileId& tile, const TileSummary& summary) {
-    ++result_.counters.visited;
+  // Counts the visit (unless `count` is false: a lookahead); nullopt when the tile is culled.
+  std::optional<VisibleTile> cull(const geo::TileId& tile, const TileSummary& summary,
+                                  bool count = true) {
+    if (count) ++result_.counters.visited;
     const geo::RegionVolume volume = volumeOf(tile, summary, view_.ellipsoid);
     if (geo::cullRegion(view_.frustum, volume) == geo::CullResult::Outside) {
-      ++result_.counters.culledByFrustum;
+      if (count) ++result_.counters.culledByFrustum;
       return std::nullopt;
     }
     if (geo::isBelowHorizon(view_.cameraEcefMeters, volume)) {
-      ++result_.counters.culledByHorizon;
+      if (count) ++result_.counters.culledByHorizon;
       return std::nullopt;
     }
     const double faceOn =
@@ -109,6 +110,27 @@ class Traversal {
   void request(const geo::TileId& tile, double priority) {
     ++result_.counters.wantedNotResident;
     result_.requests.push_back({tile, priority});
+  }
+
+  // The descendants of a tile waiting to be drawn that the refinement will want once it is:
+  // requested now, at lower priority, `levels` deep (SelectionOptions::lookaheadLevels).
+  void lookahead(const VisibleTile& visible, uint32_t levels, double priority) {
+    const geo::TileId& tile = visible.tile;
+    if (levels == 0 || tile.level >= options_.maximumLevel || tile.level >= geo::kMaxLevel) return;
+    const double factor = refined_.contains(tile) ? 1.0 - hysteresis_ : 1.0 + hysteresis_;
+    if (!(errorPixels(visible, visible.distanceMeters) > factor * threshold_)) return;
+    const std::array<geo::TileId, 4> children = tile.children();
+    std::array<std::optional<TileSummary>, 4> summaries;
+    for (size_t i = 0; i < 4; ++i) {
+      summaries[i] = catalog_.find(children[i]);
+      if (!summaries[i]) return;
+    }
+    for (size_t i = 0; i < 4; ++i) {
+      const std::optional<VisibleTile> child = cull(children[i], *summaries[i], false);
+      if (!child) continue;
+      if (!catalog_.isResident(children[i])) result_.requests.push_back({children[i], priority});
+      lookahead(*child, levels - 1, priority / 4);
+    }
   }
 
   double errorPixels(const VisibleTile& visible, double distanceMeters) const {
@@ -164,6 +186,8 @@ class Traversal {
         // What loading it fixes: this tile's error, seen at the child's distance.
         request(children[i], errorPixels(visible, visibleChildren[i]->distanceMeters));
       }
+      lookahead(*visibleChildren[i], options_.lookaheadLevels,
+                errorPixels(visible, visibleChildren[i]->distanceMeters) / 4);
     }
   }
 

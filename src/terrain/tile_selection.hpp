@@ -31,6 +31,11 @@ struct SelectionOptions {
   // tiles stop refining early. The scene turns it off where imagery is draped: its resolution
   // follows the terrain's level.
   bool measuredErrors = true;
+  // Where a tile waits for its children, also request the descendants the refinement will want
+  // next, this many levels further (each level at a quarter of the priority): over a network the
+  // chain of round trips, one level per frame, is otherwise what a view waits on. They are loads
+  // only: what is drawn and the counters are the same. 0: off.
+  uint32_t lookaheadLevels = 0;
 };
 
 struct TileRequest {

@@ -26,7 +26,7 @@ complete_line() {  # words of a command line being typed -> what TAB offers
     COMP_CWORD=$(($# - 1)); _globe_complete "$1"; echo "${COMPREPLY[*]}"' _ \
     "$COMPLETIONS/globe" "$@"
 }
-for check in "globe sn=snapshot" "globe snapshot --ca=--camera" "globe view --lay=--layer" \
+for check in "globe sn=snapshot" "globe snapshot --cam=--camera" "globe snapshot --off=--offline" "globe view --lay=--layer" \
   "globe-tiler imagery --sc=--scale" "globe --=--help --version"; do
   words=${check%%=*} wanted=${check#*=}
   # shellcheck disable=SC2086

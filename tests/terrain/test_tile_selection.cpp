@@ -250,3 +250,53 @@ TEST(TileSelection, TheBruteForceChecksCatchFabricatedMistakes) {
 
 }  // namespace
 }  // namespace globe::terrain
+
+namespace globe::terrain {
+namespace {
+
+// Lookahead (for remote pyramids): with only the coarse levels resident, the tiles the full
+// refinement will draw, and their ancestors, are requested up to 1 + lookaheadLevels below what
+// is resident, each under a tile already requested; what is drawn and every counter stay the
+// same. (A requested tile may still draw nothing: its bounding volume is visible while every
+// child's tighter one is culled, as for the plain requests.)
+TEST(TileSelection, LookaheadRequestsExactlyWhatTheRefinementWillWant) {
+  SyntheticCatalog catalog(12, {0, 100});
+  const auto view = testing::cameraView(10.0, 45.0, 3e4, 20.0, -30.0, "lookahead");
+  SelectionOptions options;
+  const SelectionResult full = selectTiles(view.view, catalog, options, {});
+  ASSERT_TRUE(full.complete());
+  catalog.setResidency([](const geo::TileId& t) { return t.level <= 3; });
+  const SelectionResult plain = selectTiles(view.view, catalog, options, {});
+  options.lookaheadLevels = 3;
+  const SelectionResult ahead = selectTiles(view.view, catalog, options, {});
+
+  EXPECT_EQ(ahead.tiles, plain.tiles);
+  EXPECT_EQ(ahead.counters.visited, plain.counters.visited);
+  EXPECT_EQ(ahead.counters.wantedNotResident, plain.counters.wantedNotResident);
+  std::set<geo::TileId> wanted;  // what the full refinement draws, and every ancestor of it
+  for (const geo::TileId& t : full.tiles) {
+    for (geo::TileId a = t;; a = a.parent()) {
+      wanted.insert(a);
+      if (a.level == 0) break;
+    }
+  }
+  std::set<geo::TileId> requested;
+  for (const TileRequest& r : ahead.requests) requested.insert(r.tile);
+  for (const TileRequest& r : plain.requests) EXPECT_TRUE(requested.contains(r.tile));
+  EXPECT_GT(requested.size(), plain.requests.size());
+  for (const geo::TileId& t : requested) {
+    EXPECT_GE(t.level, 4u);
+    EXPECT_LE(t.level, 7u);
+    if (t.level > 4) {
+      EXPECT_TRUE(requested.contains(t.parent())) << geo::tileName(t);
+    }
+  }
+  for (const geo::TileId& t : wanted) {
+    if (t.level >= 4 && t.level <= 7) {
+      EXPECT_TRUE(requested.contains(t)) << geo::tileName(t);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace globe::terrain
