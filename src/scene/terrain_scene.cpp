@@ -16,7 +16,7 @@ namespace globe::scene {
 namespace {
 
 // Levels requested ahead of the refinement from a remote pyramid (SelectionOptions).
-constexpr uint32_t kRemoteLookaheadLevels = 6;
+constexpr uint32_t kRemoteLookaheadLevels = 3;
 
 // The pyramid index says what exists; the loader's cache says what is drawable. With
 // `notOpen`, a tile whose pack index was not read yet reads as a leaf's child would (its parent
