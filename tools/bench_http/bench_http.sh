@@ -93,12 +93,12 @@ for entry in "${VIEWS[@]}"; do
     warmNear+=("$(seconds snap "$NEAR/pyramid" --cache-dir "$WORK/cache")")
     local_+=("$(seconds snap "$WORK/www/pyramid")")
   done
-  python3 tools/bench_http/zxy_from_log.py "$WORK/cold.log" "$WORK/www" "zxy-$name" \
+  python3 tools/bench_http/zxy_from_log.py "$WORK/cold.log" "$WORK/www" "zxy-$name" 2>/dev/null \
     "$FAR" > "$WORK/curl-$name.cfg"
   zxy=()
   for run in $(seq "$RUNS"); do
     before=$(log_lines)
-    zxy+=("$(seconds curl --parallel --parallel-max 24 --parallel-immediate -s -K "$WORK/curl-$name.cfg")")
+    zxy+=("$(seconds curl --parallel --parallel-max 24 --parallel-immediate -s -K "$WORK/curl-$name.cfg" 2>/dev/null)")
     read -r zxyRequests zxyBytes <<< "$(log_stats "$before")"
   done
   ROWS+="| $name | $coldRequests | $((coldBytes / 1024)) | $(median "${cold[@]}") | $zxyRequests | $((zxyBytes / 1024)) | $(median "${zxy[@]}") | $warmRequests | $(median "${warmFar[@]}") | $(median "${warmNear[@]}") | $(median "${local_[@]}") |
