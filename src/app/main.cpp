@@ -1,5 +1,6 @@
 // globe: the virtual-globe viewer's command line. Subcommands wire the libraries together.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -56,6 +57,7 @@ int main(int argc, char** argv) {
   std::string cacheDir;
   bool offline = false;
   uint64_t cacheMegabytes = 2048;
+  double httpTimeoutSeconds = 120;
   auto addNetwork = [&](CLI::App* command) {
     command->add_option("--cache-dir", cacheDir,
                         "disk cache of pyramids and layers read over http(s) (default: "
@@ -65,6 +67,12 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(uint64_t{16}, uint64_t{1} << 24));
     command->add_flag("--offline", offline,
                       "read http(s) pyramids and layers from the disk cache alone");
+    command
+        ->add_option("--http-timeout", httpTimeoutSeconds,
+                     "seconds a request may take, and may go without data (a stalled server); "
+                     "each is tried 3 times")
+        ->capture_default_str()
+        ->check(CLI::Range(1.0, 3600.0));
   };
   // --layer, --lighting, --no-sky and --nominal-lod into the scene options; false (after printing
   // why) on a bad --layer.
@@ -196,6 +204,11 @@ int main(int argc, char** argv) {
     network.cacheDirectory = cacheDir;
     network.cacheBudgetBytes = cacheMegabytes << 20;
     network.remote.offline = offline;
+    network.http.totalTimeoutMs = static_cast<long>(httpTimeoutSeconds * 1000);
+    network.http.stallTimeoutMs =
+        std::min(network.http.stallTimeoutMs, network.http.totalTimeoutMs);
+    network.http.connectTimeoutMs =
+        std::min(network.http.connectTimeoutMs, network.http.totalTimeoutMs);
     globe::io::setNetworkSettings(network);
   }
   const auto globeModel = globe::geo::parseGlobeModel(globeName);

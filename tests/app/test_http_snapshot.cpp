@@ -6,9 +6,14 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
+#include <thread>
 
 #include "io/image_io.hpp"
 #include "tests/io/nginx_server.hpp"
@@ -121,28 +126,143 @@ TEST(HttpSnapshot, SameImageAsLocalThenOfflineFromTheCache) {
   EXPECT_FALSE(fs::exists(site.dir / "none.png"));
 }
 
-TEST(HttpSnapshot, FaultsEndWithAnImageOfCoarserTilesAndOneMessage) {
-  Site site;
-  // The finest terrain level's packs fail with 500; one imagery pack is gone.
+uint32_t finestLevel(const fs::path& pyramid) {
   uint32_t maxLevel = 0;
-  for (const auto& e : fs::directory_iterator(site.root / "zion")) {
+  for (const auto& e : fs::directory_iterator(pyramid)) {
     const std::string name = e.path().filename().string();
-    if (e.is_directory() && name[0] == 'L')
+    if (e.is_directory() && name[0] == 'L') {
       maxLevel = std::max(maxLevel, static_cast<uint32_t>(std::stoul(name.substr(1))));
+    }
   }
-  ASSERT_GT(maxLevel, 8u);
-  const std::string failing = "/zion/L" + std::to_string(maxLevel) + "/";
-  auto server = NginxServer::start({site.root, "location " + failing + " { return 500; }"});
+  return maxLevel;
+}
+
+size_t blackPixels(const std::vector<uint8_t>& rgba) {
+  size_t n = 0;
+  for (size_t i = 0; i < rgba.size(); i += 4) n += rgba[i] + rgba[i + 1] + rgba[i + 2] == 0 ? 1 : 0;
+  return n;
+}
+
+// A level that fails on the server (500 after the retries, or a response so slow it times out)
+// draws exactly what the local pyramid draws when that level is never loaded (its parents);
+// one message names the level's URL and the problem; exit status 0 with the image written.
+TEST(HttpSnapshot, AFailingLevelDrawsItsParentsWithOneMessage) {
+  Site site;
+  const uint32_t finest = finestLevel(site.root / "zion");
+  ASSERT_GT(finest, 8u);
+  const std::string failing = "/zion/L" + std::to_string(finest) + "/";
+  const fs::path reference = site.dir / "reference.png";
+  const ProcessResult local = runGlobe(
+      snapshotArgs((site.root / "zion").string(), (site.root / "zion-rgb").string(), reference) +
+      " --max-load-level " + std::to_string(finest - 1));
+  ASSERT_EQ(local.exitCode, 0) << local.output;
+  struct Fault {
+    std::string directive;
+    std::string message;
+  };
+  for (const Fault& fault : {Fault{"return 500;", "HTTP 500; drawing coarser tiles there"},
+                             Fault{"limit_rate 20;", "timed out"}}) {
+    SCOPED_TRACE(fault.directive);
+    auto server =
+        NginxServer::start({site.root, "location " + failing + " { " + fault.directive + " }"});
+    ASSERT_TRUE(server);
+    const fs::path output = site.dir / "fault.png";
+    fs::remove(output);
+    const ProcessResult run =
+        runGlobe(snapshotArgs(server->url("/zion"), server->url("/zion-rgb"), output) +
+                 " --http-timeout 2 --cache-dir " + (site.dir / "cache-fault").string());
+    EXPECT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find(server->url(failing)), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find(fault.message), std::string::npos) << run.output;
+    EXPECT_EQ(differingPixels(pixelsOf(reference), pixelsOf(output)), 0u);
+  }
+}
+
+// A pack deleted or truncated on the server draws what the local pyramid with the same damage
+// draws (the pack's parents); one message names the pack's URL.
+TEST(HttpSnapshot, ADamagedPackDrawsWhatTheSameDamageDrawsLocally) {
+  Site site;
+  const uint32_t finest = finestLevel(site.root / "zion");
+  // The finest pack under the camera (-112.95, 37.25): level L has 2^(L+1) x 2^L tiles, 64 a pack.
+  const double tilesPerDegree = std::ldexp(1.0, static_cast<int>(finest)) / 180.0;
+  const auto x = static_cast<uint32_t>((-112.95 + 180.0) * tilesPerDegree) / 64;
+  const auto y = static_cast<uint32_t>((90.0 - 37.25) * tilesPerDegree) / 64;
+  const std::string pack =
+      "L" + std::to_string(finest) + "/" + std::to_string(x) + "_" + std::to_string(y) + ".pack";
+  ASSERT_TRUE(fs::exists(site.root / "zion" / pack)) << pack;
+  const fs::path whole = site.dir / "whole.png";
+  ASSERT_EQ(runGlobe(snapshotArgs((site.root / "zion").string(), (site.root / "zion-rgb").string(),
+                                  whole))
+                .exitCode,
+            0);
+  for (const std::string damage : {"deleted", "truncated"}) {
+    SCOPED_TRACE(damage);
+    const fs::path copy = site.dir / ("zion-" + damage);
+    fs::remove_all(copy);
+    fs::copy(site.root / "zion", copy, fs::copy_options::recursive);
+    if (damage == "deleted") {
+      fs::remove(copy / pack);
+    } else {
+      fs::resize_file(copy / pack, fs::file_size(copy / pack) / 2);
+    }
+    fs::create_symlink(copy, site.root / ("zion-" + damage));
+    const fs::path local = site.dir / "local.png";
+    const fs::path remote = site.dir / "remote.png";
+    const ProcessResult a =
+        runGlobe(snapshotArgs(copy.string(), (site.root / "zion-rgb").string(), local));
+    ASSERT_EQ(a.exitCode, 0) << a.output;
+    auto server = NginxServer::start({site.root, ""});
+    ASSERT_TRUE(server);
+    const ProcessResult b =
+        runGlobe(snapshotArgs(server->url("/zion-" + damage), server->url("/zion-rgb"), remote) +
+                 " --cache-dir " + (site.dir / ("cache-" + damage)).string());
+    EXPECT_EQ(b.exitCode, 0) << b.output;
+    EXPECT_NE(b.output.find(server->url("/zion-" + damage + "/" + pack)), std::string::npos)
+        << b.output;
+    EXPECT_EQ(differingPixels(pixelsOf(local), pixelsOf(remote)), 0u);
+    EXPECT_GT(differingPixels(pixelsOf(whole), pixelsOf(remote)), 0u);  // the damage shows
+  }
+}
+
+// The server stops while the snapshot loads: it still ends with an image (what had arrived, and
+// the parents of what had not), a message naming the URL, exit status 0.
+TEST(HttpSnapshot, AServerStoppedMidFlightStillEndsWithAnImage) {
+  Site site;
+  auto server = NginxServer::start({site.root, "location /zion/ { limit_rate 300k; }"});
   ASSERT_TRUE(server);
-  const fs::path output = site.dir / "fault.png";
-  const ProcessResult run =
-      runGlobe(snapshotArgs(server->url("/zion"), server->url("/zion-rgb"), output) +
-               " --cache-dir " + (site.dir / "cache").string());
-  EXPECT_EQ(run.exitCode, 0) << run.output;
-  EXPECT_TRUE(fs::exists(output));
-  EXPECT_NE(run.output.find(server->url(failing)), std::string::npos) << run.output;
-  EXPECT_NE(run.output.find("HTTP 500; drawing coarser tiles there"), std::string::npos)
-      << run.output;
+  const fs::path output = site.dir / "stopped.png";
+  const std::string command = std::string(GLOBE_EXE) + " " +
+                              snapshotArgs(server->url("/zion"), server->url("/zion-rgb"), output) +
+                              " --no-sky --http-timeout 5 --cache-dir " +
+                              (site.dir / "cache").string() + " > " +
+                              (site.dir / "stopped.log").string() + " 2>&1";
+  std::thread snapshot([&] { (void)std::system(command.c_str()); });
+  // Stop once some blocks have arrived (every request of the run is logged when answered).
+  for (int i = 0; i < 400 && server->accessLog().size() < 60; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(25));
+  }
+  const size_t served = server->accessLog().size();
+  server->stop();
+  snapshot.join();
+  std::ifstream in(site.dir / "stopped.log");
+  const std::string log{std::istreambuf_iterator<char>(in), {}};
+  EXPECT_GE(served, 60u) << log;
+  ASSERT_TRUE(fs::exists(output)) << log;
+  EXPECT_NE(log.find(server->url("/zion/")), std::string::npos) << log;
+  EXPECT_NE(log.find("drawing coarser tiles there"), std::string::npos) << log;
+  // Coarser, not holes: without the sky, a hole is black like space; the image has no more black
+  // than the complete one, but for the coarser horizon (1 % of the pixels).
+  const fs::path whole = site.dir / "whole.png";
+  ASSERT_EQ(runGlobe(snapshotArgs((site.root / "zion").string(), (site.root / "zion-rgb").string(),
+                                  whole) +
+                     " --no-sky")
+                .exitCode,
+            0);
+  const auto complete = pixelsOf(whole);
+  const auto stopped = pixelsOf(output);
+  ASSERT_EQ(complete.size(), stopped.size());
+  EXPECT_GT(differingPixels(complete, stopped), complete.size() / 40);  // it is coarser
+  EXPECT_LE(blackPixels(stopped), blackPixels(complete) + complete.size() / 4 / 100);
 }
 
 }  // namespace
