@@ -26,6 +26,10 @@ std::string describe(const std::string& url, const HttpResponse& r) {
   }
   if (r.status == 404 || r.status == 410)
     return url + ": not found (HTTP " + std::to_string(r.status) + ")";
+  if (r.status >= 300 && r.status < 400) {
+    return url + ": HTTP " + std::to_string(r.status) +
+           ", a redirect not followed (only within its scheme, at most 5)";
+  }
   return url + ": HTTP " + std::to_string(r.status);
 }
 

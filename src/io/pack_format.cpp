@@ -26,6 +26,7 @@ void storeEntry(std::byte* out, const PackEntry& entry, uint32_t formatVersion) 
   if (formatVersion >= 3) {
     storeBigEndian32(out + 16, std::bit_cast<uint32_t>(entry.geometricErrorMeters));
   }
+  if (formatVersion >= 4) storeBigEndian32(out + 20, entry.blockCrc);
 }
 
 PackEntry loadEntry(const std::byte* in, uint32_t formatVersion) {
@@ -38,6 +39,7 @@ PackEntry loadEntry(const std::byte* in, uint32_t formatVersion) {
   if (formatVersion >= 3) {
     entry.geometricErrorMeters = std::bit_cast<float>(loadBigEndian32(in + 16));
   }
+  if (formatVersion >= 4) entry.blockCrc = loadBigEndian32(in + 20);
   return entry;
 }
 
@@ -148,6 +150,8 @@ std::vector<std::byte> encodePack(const Pack& pack) {
         storeBigEndian16(out, static_cast<uint16_t>(inside ? heights[index] : apron[index]));
         out += 2;
       });
+      entry.blockCrc =
+          layout.hasBlockCrc() ? crc32(std::span(bytes).subspan(offset, layout.blockBytes())) : 0;
       offset += layout.blockBytes();
     }
     storeEntry(&bytes[kPackHeaderBytes + slot * layout.entryBytes()], entry, layout.formatVersion);

@@ -2,19 +2,22 @@
 //
 //   offset 0   "GLOBEPK1", u32 version, u32 level, u32 packX, u32 packY, u32 P, u32 N,
 //              u32 present tile count, u32 reserved                         (40 bytes)
-//   offset 40  index: P×P entries in slot order (slot = localY·P + localX), 20 bytes each:
+//   offset 40  index: P×P entries in slot order (slot = localY·P + localX), 24 bytes each:
 //              u64 block offset (0 = tile absent), i16 vertex min, i16 vertex max,
 //              i16 subtree min, i16 subtree max     (metres: min with sea floors, max with water
 //                                                        at 0 m, terrain::surfaceHeightRange),
 //              f32 geometric error (metres: how far the tile's surface, drawn with the mesh's
 //                  diagonal rule, lies from its children's vertices, above or below, and at
-//                  least its children's errors: tools/tiler/pack_builder.hpp)
+//                  least its children's errors: tools/tiler/pack_builder.hpp),
+//              u32 CRC-32 of the block's stored bytes (a block read alone, by one range request
+//                  over HTTP, is checked on its own)
 //   then       the present blocks, (N+4)×(N+4) int16 samples each: the N×N vertices with their
 //              apron (terrain::HeightBlock::apron, 2 vertices wide) around them, rows from the
 //              north (row -2)
 //              (terrain/height_block.hpp: GTOPO30 heights, -9999 and -32767..-20001 water)
 //   last       u32 CRC-32 of everything before it
 //
+// Version 3 (still read): 20-byte entries without the block CRC.
 // Version 2 (still read): 16-byte entries without the geometric error, N×N blocks, no apron.
 //
 // A reader parses the header and index once per pack, then loads any block with one read.
@@ -37,11 +40,14 @@ namespace globe::io {
 
 // 2: samples below 0 m are land, water is -9999 or band-coded with its sea floor (version 1
 // read every negative sample as sea: such packs are refused, the pyramid must be re-tiled).
-// 3: blocks carry their apron, entries their geometric error. The tiler writes 3; 2 is read.
-inline constexpr uint32_t kPackFormatVersion = 3;
+// 3: blocks carry their apron, entries their geometric error. 4: entries carry their block's
+// CRC. The tiler writes 4; 3 and 2 are read.
+inline constexpr uint32_t kPackFormatVersion = 4;
 inline constexpr uint32_t kOldestReadPackFormatVersion = 2;
 inline constexpr size_t kPackHeaderBytes = 40;
-constexpr size_t packEntryBytes(uint32_t formatVersion) { return formatVersion >= 3 ? 20 : 16; }
+constexpr size_t packEntryBytes(uint32_t formatVersion) {
+  return formatVersion >= 4 ? 24 : formatVersion >= 3 ? 20 : 16;
+}
 // decodePack refuses a pack whose in-memory blocks (all P×P slots) would exceed this.
 inline constexpr uint64_t kPackMaximumMemoryBytes = uint64_t{1} << 30;
 
@@ -58,6 +64,7 @@ struct PackEntry {
   terrain::HeightRange subtreeRange;  // of this tile's vertices and all its descendants'
   // Metres; NaN when the pack (version 2) does not say.
   float geometricErrorMeters = std::numeric_limits<float>::quiet_NaN();
+  uint32_t blockCrc = 0;  // CRC-32 of the stored block (version 4; 0 before)
   bool present() const { return blockOffset != 0; }
 };
 
@@ -67,6 +74,7 @@ struct PackLayout {
   uint32_t formatVersion = kPackFormatVersion;
 
   bool hasApron() const { return formatVersion >= 3; }
+  bool hasBlockCrc() const { return formatVersion >= 4; }
   // Samples per stored block: N², or (N+2w)² with the apron (w = terrain::kApronWidth).
   size_t blockSamples() const {
     const size_t side = size_t{verticesPerSide} + (hasApron() ? 2 * terrain::kApronWidth : 0);

@@ -5,6 +5,8 @@
 #include <cstring>
 #include <utility>
 
+#include "io/crc32.hpp"
+
 namespace globe::io {
 namespace {
 
@@ -125,8 +127,14 @@ Result<terrain::HeightBlock> TileStore::loadBlock(const geo::TileId& tile) {
     packs_.noteError(p.index.id, read.error());
     return Error{read.error()};
   }
-  ++blockReads_;
   const PackLayout& layout = p.index.layout;
+  if (layout.hasBlockCrc() && crc32(bytes) != e.blockCrc) {
+    const std::string message =
+        p.file->location() + ": the block of " + name + " fails its CRC (corrupt pack)";
+    packs_.noteError(p.index.id, message);
+    return makeError(message);
+  }
+  ++blockReads_;
   terrain::HeightBlock block{manifest_.verticesPerSide, {}, sea_};
   block.heights.resize(size_t{layout.verticesPerSide} * layout.verticesPerSide);
   if (layout.hasApron()) block.apron.resize(terrain::apronSampleCount(layout.verticesPerSide));

@@ -254,6 +254,18 @@ TEST(HttpTileStore, EachFaultIsOneClearErrorNamingTheUrl) {
          fs::resize_file(packPath(p, packOf(t, 64)), 100);
        },
        "truncated pack"},
+      {"corrupt block", "",
+       [](const fs::path& p, const geo::TileId& t) {
+         // One flipped byte inside the tile's block: the index and every size are still right.
+         const fs::path file = packPath(p, packOf(t, 64));
+         auto bytes = readWholeFile(file, uint64_t{1} << 30);
+         ASSERT_TRUE(bytes);
+         auto pack = decodePack(*bytes, file);
+         ASSERT_TRUE(pack) << pack.error();
+         (*bytes)[pack->entries[slotOf(t, 64)].blockOffset + 100] ^= std::byte{0x40};
+         ASSERT_TRUE(writeFileAtomically(file, *bytes));
+       },
+       "fails its CRC"},
       {"500", "location /pyramid/L3/ { return 500; }", nullptr, "HTTP 500"},
       {"503", "location /pyramid/L3/ { return 503; }", nullptr, "HTTP 503"},
       {"ignores ranges", "max_ranges 0;", nullptr, "ignores Range requests"},
@@ -320,6 +332,30 @@ TEST(HttpClient, RefusesBodiesLargerThanAsked) {
   auto missing = source->readWhole("nothing.json", 16);
   ASSERT_TRUE(missing);
   EXPECT_FALSE(*missing);
+}
+
+// A redirect within the scheme is followed; to another scheme (file, ftp, or https -> http) it is
+// refused with a message naming the URL.
+TEST(HttpClient, RedirectsStayWithinTheirScheme) {
+  Served served(
+      "location /moved/ { rewrite ^/moved/(.*)$ /pyramid/$1 permanent; }\n"
+      "location /to-file/ { return 302 file:///etc/hostname; }\n"
+      "location /to-ftp/ { return 302 ftp://127.0.0.1/x; }");
+  ASSERT_TRUE(served.server);
+  auto client = std::make_shared<HttpClient>(quickSettings());
+  auto moved = httpByteSource(served.server->url("/moved"), client, nullptr, quickRetries());
+  auto manifest = moved->readWhole("manifest.json", 1 << 20);
+  ASSERT_TRUE(manifest && *manifest) << (manifest ? "absent" : manifest.error());
+  EXPECT_GT((*manifest)->size(), 100u);
+  for (const char* path : {"/to-file", "/to-ftp"}) {
+    auto source = httpByteSource(served.server->url(path), client, nullptr, quickRetries());
+    auto refused = source->readWhole("manifest.json", 1 << 20);
+    ASSERT_FALSE(refused) << path;
+    EXPECT_NE(refused.error().find(served.server->url(path) +
+                                   "/manifest.json: HTTP 302, a redirect not followed"),
+              std::string::npos)
+        << refused.error();
+  }
 }
 
 TEST(HttpClient, ContentRangeParsing) {
