@@ -5,9 +5,11 @@
 #include <atomic>
 #include <chrono>
 #include <cstring>
+#include <ctime>
 #include <thread>
 #include <utility>
 
+#include "io/big_endian.hpp"
 #include "io/disk_cache.hpp"
 #include "io/network_settings.hpp"
 
@@ -86,6 +88,11 @@ class HttpByteSource final : public ByteSource,
       if (!cached) return makeError(url + ": not in the disk cache (offline)");
       return std::optional<std::vector<std::byte>>(std::move(cached->body));
     }
+    // Still fresh by the server's Cache-Control max-age: no round trip at all.
+    if (cached && freshUntil(url, cached->validator) > std::time(nullptr)) {
+      headsTrusted_ = true;
+      return std::optional<std::vector<std::byte>>(std::move(cached->body));
+    }
     HttpRequest q;
     q.url = url;
     q.maxBodyBytes = maxBytes;
@@ -94,11 +101,13 @@ class HttpByteSource final : public ByteSource,
     if (r.status == 304 && cached) {
       // The manifest is unchanged: the tiler rewrites it on every run, so the packs are too.
       headsTrusted_ = true;
+      keepFresh(url, cached->validator, r.maxAgeSeconds);
       return std::optional<std::vector<std::byte>>(std::move(cached->body));
     }
     headsTrusted_ = false;
     if (r.status == 200 && !r.bodyTooLong) {
       store(key, r.etag, r.body.size(), r.body);
+      keepFresh(url, r.etag, r.maxAgeSeconds);
       return std::optional<std::vector<std::byte>>(std::move(r.body));
     }
     if (r.status == 404 || r.status == 410) return std::optional<std::vector<std::byte>>();
@@ -222,6 +231,27 @@ class HttpByteSource final : public ByteSource,
       std::this_thread::sleep_for(std::chrono::milliseconds(delayMs));
       delayMs *= 2;
     }
+  }
+
+  // When a whole file served with `etag` stops being fresh (unix seconds; 0: not known), kept
+  // as its own small cache entry: the server's Cache-Control max-age from its last answer.
+  std::time_t freshUntil(const std::string& url, const std::string& etag) {
+    if (!cache_) return 0;
+    std::optional<CacheEntry> fresh = cache_->get("fresh " + url);
+    if (!fresh || fresh->validator != etag || fresh->body.size() != 8) return 0;
+    return static_cast<std::time_t>(loadBigEndian64(fresh->body.data()));
+  }
+  void keepFresh(const std::string& url, const std::string& etag, long maxAgeSeconds) {
+    if (!cache_ || etag.empty()) return;
+    if (maxAgeSeconds <= 0) {
+      cache_->erase("fresh " + url);
+      return;
+    }
+    CacheEntry entry{etag, 0, std::vector<std::byte>(8)};
+    storeBigEndian64(
+        entry.body.data(),
+        static_cast<uint64_t>(std::time(nullptr) + std::min(maxAgeSeconds, 86400L * 365)));
+    (void)cache_->put("fresh " + url, entry);
   }
 
   void store(const std::string& key, const std::string& etag, uint64_t fileBytes,

@@ -48,6 +48,21 @@ bool startsWithNoCase(std::string_view text, std::string_view prefix) {
   return true;
 }
 
+// "max-age=300, public" -> 300; no-cache / no-store -> 0; otherwise -1.
+long parseMaxAge(const std::string& value) {
+  std::string lower(value);
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (lower.find("no-cache") != std::string::npos || lower.find("no-store") != std::string::npos) {
+    return 0;
+  }
+  const size_t at = lower.find("max-age=");
+  if (at == std::string::npos) return -1;
+  long seconds = -1;
+  const char* first = lower.data() + at + 8;
+  auto [next, ec] = std::from_chars(first, lower.data() + lower.size(), seconds);
+  return ec == std::errc() && next != first && seconds >= 0 ? seconds : -1;
+}
+
 size_t onBody(char* data, size_t size, size_t count, void* user) {
   auto* transfer = static_cast<Transfer*>(user);
   const size_t bytes = size * count;
@@ -69,12 +84,15 @@ size_t onHeader(char* data, size_t size, size_t count, void* user) {
     r.etag.clear();
     r.lastModified.clear();
     r.contentRange.clear();
+    r.maxAgeSeconds = -1;
   } else if (startsWithNoCase(line, "etag:")) {
     r.etag = trim(line.substr(5));
   } else if (startsWithNoCase(line, "last-modified:")) {
     r.lastModified = trim(line.substr(14));
   } else if (startsWithNoCase(line, "content-range:")) {
     r.contentRange = trim(line.substr(14));
+  } else if (startsWithNoCase(line, "cache-control:")) {
+    r.maxAgeSeconds = parseMaxAge(trim(line.substr(14)));
   }
   return size * count;
 }

@@ -40,6 +40,8 @@ struct HttpResponse {
   std::string etag;
   std::string lastModified;
   std::string contentRange;  // "bytes FIRST-LAST/TOTAL" as sent
+  // Cache-Control's max-age in seconds (0 for no-cache or no-store); -1 when it says neither.
+  long maxAgeSeconds = -1;
 };
 
 class HttpClient {

@@ -194,6 +194,29 @@ TEST(HttpTileStore, AWarmStartAsksOnlyWhetherTheManifestChanged) {
   EXPECT_EQ(log.back().rfind("GET /pyramid/manifest.json 304", 0), 0u) << log.back();
 }
 
+// A server that says how long its manifest stays fresh (Cache-Control max-age, nginx's
+// `expires`) spares a warm start every round trip; one that says no-cache does not.
+TEST(HttpTileStore, AManifestFreshByMaxAgeCostsNoRequestAtAll) {
+  for (const bool fresh : {true, false}) {
+    SCOPED_TRACE(fresh ? "expires 5m" : "no-cache");
+    Served served(std::string("location = /pyramid/manifest.json { ") +
+                  (fresh ? "expires 5m;" : "add_header Cache-Control no-cache;") + " }");
+    ASSERT_TRUE(served.server);
+    TempDir cacheDir;
+    const auto tiles = presentTiles(test::loaderTestPyramid(), 3);
+    size_t coldRequests = 0;
+    for (int run = 0; run < 2; ++run) {
+      auto remote = openRemote(served.url(), std::make_shared<HttpClient>(quickSettings()),
+                               cacheIn(cacheDir.path()));
+      ASSERT_TRUE(remote);
+      for (const geo::TileId& tile : tiles) ASSERT_TRUE(remote->load(tile));
+      if (run == 0) coldRequests = served.server->accessLog().size();
+    }
+    EXPECT_GT(coldRequests, tiles.size());
+    EXPECT_EQ(served.server->accessLog().size(), coldRequests + (fresh ? 0 : 1));
+  }
+}
+
 TEST(HttpTileStore, ARepublishedPyramidIsNotServedStale) {
   Served served;
   ASSERT_TRUE(served.server);
