@@ -12,7 +12,7 @@ $SUDO apt-get install -y -qq --no-install-recommends \
   libosmesa6-dev libgl-dev libgl1-mesa-dri libegl-dev libglfw3-dev libglew-dev libglm-dev \
   libstb-dev libgdal-dev gdal-bin libjpeg-dev libdeflate-dev nlohmann-json3-dev libcli11-dev libfmt-dev \
   libgtest-dev libgmock-dev libbenchmark-dev libtinyxml2-dev libcurl4-openssl-dev ffmpeg ccache help2man \
-  python3-glad time xvfb xdotool x11-apps imagemagick gnuplot-nox python3-matplotlib mesa-utils nginx-light \
+  python3-glad time xvfb xdotool x11-apps imagemagick gnuplot-nox python3-matplotlib mesa-utils nginx-light openssl \
   >/dev/null
 # nginx-light is for the HTTP tests, which start their own on 127.0.0.1 and stop it; the
 # distribution's service (port 80 on every address) is not wanted where we installed it.

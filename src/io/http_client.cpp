@@ -129,6 +129,7 @@ struct HttpClient::Impl {
     curl_easy_setopt(e, CURLOPT_LOW_SPEED_TIME, std::max(1L, settings.stallTimeoutMs / 1000));
     curl_easy_setopt(e, CURLOPT_SSL_VERIFYPEER, settings.verifyTls ? 1L : 0L);
     curl_easy_setopt(e, CURLOPT_SSL_VERIFYHOST, settings.verifyTls ? 2L : 0L);
+    if (!settings.caFile.empty()) curl_easy_setopt(e, CURLOPT_CAINFO, settings.caFile.c_str());
     curl_easy_setopt(e, CURLOPT_HTTP_VERSION, static_cast<long>(CURL_HTTP_VERSION_2TLS));
     curl_easy_setopt(e, CURLOPT_PIPEWAIT, 1L);  // wait for a multiplexed connection over a new one
     curl_easy_setopt(e, CURLOPT_ACCEPT_ENCODING, nullptr);  // ranges are of the stored bytes

@@ -18,6 +18,7 @@ struct HttpSettings {
   long totalTimeoutMs = 120'000;
   long maxConnectionsPerHost = 16;
   bool verifyTls = true;
+  std::string caFile;  // PEM certificates to trust instead of the system's (empty: the system's)
 };
 
 struct HttpRequest {

@@ -66,6 +66,7 @@ std::unique_ptr<NginxServer> NginxServer::start(const Options& options) {
   std::filesystem::remove_all(server->dir_);
   std::filesystem::create_directories(server->dir_ / "tmp");
   server->port_ = options.port != 0 ? options.port : freeLoopbackPort();
+  server->tls_ = !options.certificate.empty() && !options.key.empty();
   const std::string d = server->dir_.string();
   {
     std::ofstream conf(server->dir_ / "nginx.conf");
@@ -74,7 +75,8 @@ std::unique_ptr<NginxServer> NginxServer::start(const Options& options) {
          << "pid " << d << "/nginx.pid;\nerror_log " << d << "/error.log warn;\n"
          << "events { worker_connections 256; }\n"
          << "http {\n"
-         << "  log_format ranges '$request_method $uri $status \"$http_range\" $bytes_sent';\n"
+         << "  log_format ranges '$request_method $uri $status \"$http_range\" $bytes_sent "
+            "$server_protocol';\n"
          << "  access_log " << d << "/access.log ranges;\n"
          << "  client_body_temp_path " << d << "/tmp/body;\n"
          << "  proxy_temp_path " << d << "/tmp/proxy;\n"
@@ -85,7 +87,10 @@ std::unique_ptr<NginxServer> NginxServer::start(const Options& options) {
          << "  default_type application/octet-stream;\n"
          << "  keepalive_requests 10000;\n"
          << "  server {\n"
-         << "    listen 127.0.0.1:" << server->port_ << ";\n"
+         << "    listen 127.0.0.1:" << server->port_ << (server->tls_ ? " ssl http2" : "") << ";\n"
+         << (server->tls_ ? "    ssl_certificate " + options.certificate.string() +
+                                ";\n    ssl_certificate_key " + options.key.string() + ";\n"
+                          : std::string())
          << "    root " << std::filesystem::absolute(options.root).string() << ";\n"
          << options.serverDirectives << "\n"
          << "  }\n"
@@ -130,8 +135,8 @@ void NginxServer::stop() {
 }
 
 std::string NginxServer::url(const std::string& path) const {
-  return "http://127.0.0.1:" + std::to_string(port_) + (path.empty() || path[0] != '/' ? "/" : "") +
-         path;
+  return (tls_ ? "https" : "http") + std::string("://127.0.0.1:") + std::to_string(port_) +
+         (path.empty() || path[0] != '/' ? "/" : "") + path;
 }
 
 std::vector<std::string> NginxServer::accessLog() const {

@@ -18,6 +18,9 @@ class NginxServer {
     std::filesystem::path root;    // served at /
     std::string serverDirectives;  // extra lines inside server { } (locations, limit_rate ...)
     int port = 0;                  // 0: a free one
+    // With both: https (and HTTP/2) with this certificate and key instead of plain http.
+    std::filesystem::path certificate{};
+    std::filesystem::path key{};
   };
   // Starts nginx and waits until it accepts connections; a test failure (with nginx's error
   // log) when it cannot.
@@ -29,9 +32,9 @@ class NginxServer {
   void stop();  // kills it and waits for it; idempotent
   bool running() const { return pid_ > 0; }
   int port() const { return port_; }
-  // http://127.0.0.1:PORT/path
+  // http(s)://127.0.0.1:PORT/path
   std::string url(const std::string& path) const;
-  // The requests served so far: one line each, "METHOD URI STATUS RANGE BYTES".
+  // The requests served so far: one line each, "METHOD URI STATUS \"RANGE\" BYTES PROTOCOL".
   std::vector<std::string> accessLog() const;
 
  private:
@@ -39,6 +42,7 @@ class NginxServer {
   std::filesystem::path dir_;
   pid_t pid_ = -1;
   int port_ = 0;
+  bool tls_ = false;
 };
 
 }  // namespace globe::io::test
