@@ -294,6 +294,19 @@ TEST(HttpTileStore, EachFaultIsOneClearErrorNamingTheUrl) {
       {"503", "location /pyramid/L3/ { return 503; }", nullptr, "HTTP 503"},
       {"ignores ranges", "max_ranges 0;", nullptr, "ignores Range requests"},
       {"stalled", "location /pyramid/L3/ { limit_rate 1; }", nullptr, "timed out"},
+      // Blocks answered from another (longer) file than the index was: Content-Range's total
+      // disagrees with the size the index was read at.
+      {"changed under the reader",
+       "location /pyramid/L3/ { if ($http_range !~ \"^bytes=0-\") { "
+       "rewrite ^/pyramid/(.*)$ /other/$1 break; } }",
+       [](const fs::path& p, const geo::TileId& t) {
+         const fs::path file = packPath(p, packOf(t, 64));
+         const fs::path other = packPath(p.parent_path() / "other", packOf(t, 64));
+         fs::create_directories(other.parent_path());
+         fs::copy_file(file, other);
+         fs::resize_file(other, fs::file_size(file) + 1000);
+       },
+       "changed on the server since its index was read"},
   };
   for (const FaultCase& c : cases) {
     SCOPED_TRACE(c.name);
