@@ -126,6 +126,41 @@ TEST(HttpSnapshot, SameImageAsLocalThenOfflineFromTheCache) {
   EXPECT_FALSE(fs::exists(site.dir / "none.png"));
 }
 
+// Two viewers at once on one cache directory (cold): both images are the local one, and a third
+// run offline from that cache is too.
+TEST(HttpSnapshot, TwoProcessesShareOneCache) {
+  Site site;
+  auto server = NginxServer::start({site.root, ""});
+  ASSERT_TRUE(server);
+  const fs::path cache = site.dir / "shared-cache";
+  const fs::path local = site.dir / "local.png";
+  ASSERT_EQ(runGlobe(snapshotArgs((site.root / "zion").string(), (site.root / "zion-rgb").string(),
+                                  local))
+                .exitCode,
+            0);
+  ProcessResult runs[2];
+  std::thread other([&] {
+    runs[1] =
+        runGlobe(snapshotArgs(server->url("/zion"), server->url("/zion-rgb"), site.dir / "b.png") +
+                 " --cache-dir " + cache.string());
+  });
+  runs[0] =
+      runGlobe(snapshotArgs(server->url("/zion"), server->url("/zion-rgb"), site.dir / "a.png") +
+               " --cache-dir " + cache.string());
+  other.join();
+  ASSERT_EQ(runs[0].exitCode, 0) << runs[0].output;
+  ASSERT_EQ(runs[1].exitCode, 0) << runs[1].output;
+  const auto pixels = pixelsOf(local);
+  EXPECT_EQ(differingPixels(pixels, pixelsOf(site.dir / "a.png")), 0u);
+  EXPECT_EQ(differingPixels(pixels, pixelsOf(site.dir / "b.png")), 0u);
+  server->stop();
+  const ProcessResult offline =
+      runGlobe(snapshotArgs(server->url("/zion"), server->url("/zion-rgb"), site.dir / "c.png") +
+               " --offline --cache-dir " + cache.string());
+  ASSERT_EQ(offline.exitCode, 0) << offline.output;
+  EXPECT_EQ(differingPixels(pixels, pixelsOf(site.dir / "c.png")), 0u);
+}
+
 uint32_t finestLevel(const fs::path& pyramid) {
   uint32_t maxLevel = 0;
   for (const auto& e : fs::directory_iterator(pyramid)) {
