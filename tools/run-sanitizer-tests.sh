@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# CI's sanitizer pass: the whole test suite under ASan+UBSan+LSan (build-asan) and the loader
-# tests under TSan (build-tsan). Halts on the first report. See docs/robustness.md.
+# CI's sanitizer pass: the whole test suite under ASan+UBSan+LSan (build-asan); the loader tests,
+# the HTTP client and the disk cache under TSan (build-tsan). Halts on the first report. See
+# docs/robustness.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 JOBS=$(nproc)
@@ -22,9 +23,11 @@ ASAN_OPTIONS=halt_on_error=1:abort_on_error=1:detect_leaks=0:strict_string_check
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
   ctest --test-dir build-asan -j"$JOBS" -R "$WINDOW_TESTS" --output-on-failure --timeout 1800
 
-echo "== TSan: globe_loader_tests"
+echo "== TSan: globe_loader_tests, the HTTP client and the disk cache"
 cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLOBE_WERROR=ON \
   -DGLOBE_SANITIZE_THREAD=ON >/dev/null
-cmake --build build-tsan -j"$JOBS" --target globe_loader_tests
+cmake --build build-tsan -j"$JOBS" --target globe_loader_tests globe_http_tests \
+  globe_disk_cache_tests
 TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
-  ctest --test-dir build-tsan -j"$JOBS" -R '^globe_loader_tests\.' --output-on-failure --timeout 1800
+  ctest --test-dir build-tsan -j"$JOBS" -R '^(globe_loader_tests|globe_http_tests|globe_disk_cache_tests)\.' \
+  --output-on-failure --timeout 1800
