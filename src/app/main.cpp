@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <iostream>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "app/camera_argument.hpp"
 #include "app/info_command.hpp"
@@ -342,23 +344,41 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "globe info: %s\n", source.error().c_str());
       return 1;
     }
-    // An imagery layer (globe-tiler imagery) rather than a pyramid.
-    auto pyramidManifest =
+    auto asText = [](const std::vector<std::byte>& bytes) {
+      return std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    };
+    auto pyramidBytes =
         (*source)->readWhole(globe::io::kManifestFileName, globe::io::kMaxManifestFileBytes);
-    if (pyramidManifest && !*pyramidManifest) {
-      auto layer = globe::io::readLayerManifest(**source);
-      if (layer) {
-        const std::string text = json ? globe::io::layerManifestToJson(*layer) + "\n"
-                                      : globe::app::formatLayerInfoText(*layer, pyramid);
-        std::fputs(text.c_str(), stdout);
-        return 0;
-      }
-      if (layer.error().find("not found (is") == std::string::npos) {
-        std::fprintf(stderr, "globe info: %s\n", layer.error().c_str());
+    if (!pyramidBytes) {
+      std::fprintf(stderr, "globe info: %s\n", pyramidBytes.error().c_str());
+      return 1;
+    }
+    if (!*pyramidBytes) {
+      // An imagery layer (globe-tiler imagery) rather than a pyramid?
+      auto layerBytes =
+          (*source)->readWhole(globe::io::kLayerManifestFileName, globe::io::kMaxManifestFileBytes);
+      if (!layerBytes) {
+        std::fprintf(stderr, "globe info: %s\n", layerBytes.error().c_str());
         return 1;
       }
+      if (*layerBytes) {
+        auto layer = globe::io::layerManifestFromJson(
+            asText(**layerBytes), (*source)->locationOf(globe::io::kLayerManifestFileName));
+        if (!layer) {
+          std::fprintf(stderr, "globe info: %s\n", layer.error().c_str());
+          return 1;
+        }
+        const std::string out = json ? globe::io::layerManifestToJson(*layer) + "\n"
+                                     : globe::app::formatLayerInfoText(*layer, pyramid);
+        std::fputs(out.c_str(), stdout);
+        return 0;
+      }
     }
-    auto manifest = globe::io::readManifest(**source);
+    // The pyramid's manifest, or what is missing or wrong with it.
+    auto manifest = *pyramidBytes ? globe::io::manifestFromJson(
+                                        asText(**pyramidBytes),
+                                        (*source)->locationOf(globe::io::kManifestFileName))
+                                  : globe::io::readManifest(**source);
     if (!manifest) {
       std::fprintf(stderr, "globe info: %s\n", manifest.error().c_str());
       return 1;

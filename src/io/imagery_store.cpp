@@ -25,9 +25,7 @@ std::string ImageryStore::packFileOf(const geo::TileId& tile) const {
 }
 
 Result<std::shared_ptr<const ImageryStore::OpenPack>> ImageryStore::pack(const PackId& id) {
-  if (id.level >= manifest_.levels.size()) return std::shared_ptr<const OpenPack>();
-  const auto& packs = manifest_.levels[id.level].packs;
-  if (!std::binary_search(packs.begin(), packs.end(), id)) return std::shared_ptr<const OpenPack>();
+  if (!listsPack(manifest_.levels, id)) return std::shared_ptr<const OpenPack>();
   return packs_.get(id, [this](const PackId& p) { return openPack(p); });
 }
 
@@ -65,9 +63,7 @@ Result<bool> ImageryStore::hasTile(const geo::TileId& tile) {
 
 ImageryStore::Peek ImageryStore::peekTile(const geo::TileId& tile) {
   const PackId id = packOf(tile, manifest_.packTilesPerSide);
-  if (id.level >= manifest_.levels.size()) return Peek::Absent;
-  const auto& packs = manifest_.levels[id.level].packs;
-  if (!std::binary_search(packs.begin(), packs.end(), id)) return Peek::Absent;
+  if (!listsPack(manifest_.levels, id)) return Peek::Absent;
   const auto opened = packs_.peek(id);
   if (!opened) return Peek::NotOpen;
   if (!*opened) return Peek::Absent;

@@ -12,8 +12,6 @@ namespace {
 
 using nlohmann::json;
 
-constexpr uint64_t kMaxManifestBytes = uint64_t{1} << 28;
-
 json boundsToJson(const BoundsDegrees& b) {
   return {{"west", b.west}, {"south", b.south}, {"east", b.east}, {"north", b.north}};
 }
@@ -170,7 +168,7 @@ Result<LayerManifest> layerManifestFromJson(std::string_view text,
 
 Result<LayerManifest> readLayerManifest(ByteSource& source) {
   const std::string path = source.locationOf(kLayerManifestFileName);
-  auto bytes = source.readWhole(kLayerManifestFileName, kMaxManifestBytes);
+  auto bytes = source.readWhole(kLayerManifestFileName, kMaxManifestFileBytes);
   if (!bytes) return Error{bytes.error()};
   if (!*bytes) {
     return makeError(path + ": cannot open: not found (is " + source.location() +

@@ -4,6 +4,7 @@
 // height-block and imagery stores. Thread-safe.
 #pragma once
 
+#include <algorithm>
 #include <condition_variable>
 #include <cstddef>
 #include <map>
@@ -30,6 +31,14 @@ struct OpenPackFile {
   OpenPackFile(std::shared_ptr<const ByteFile> opened, Index packIndex)
       : file(std::move(opened)), index(std::move(packIndex)) {}
 };
+
+// Whether a manifest's levels (a pyramid's or a layer's: levels[l].packs, sorted) list the pack.
+template <class Levels>
+bool listsPack(const Levels& levels, const PackId& id) {
+  if (id.level >= levels.size()) return false;
+  const auto& packs = levels[id.level].packs;
+  return std::binary_search(packs.begin(), packs.end(), id);
+}
 
 template <class Pack>
 class OpenPacks {

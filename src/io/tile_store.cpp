@@ -46,9 +46,7 @@ Result<std::unique_ptr<TileStore>> TileStore::open(std::shared_ptr<ByteSource> s
 }
 
 Result<std::shared_ptr<const TileStore::OpenPack>> TileStore::pack(const PackId& id) {
-  if (id.level >= manifest_.levels.size()) return std::shared_ptr<const OpenPack>();
-  const auto& packs = manifest_.levels[id.level].packs;
-  if (!std::binary_search(packs.begin(), packs.end(), id)) return std::shared_ptr<const OpenPack>();
+  if (!listsPack(manifest_.levels, id)) return std::shared_ptr<const OpenPack>();
   bool failed = false;
   auto opened = packs_.get(
       id, [this](const PackId& p) { return openPack(p); }, &failed);
@@ -101,9 +99,7 @@ Result<std::optional<PackEntry>> TileStore::entry(const geo::TileId& tile) {
 
 TileStore::Peek TileStore::peekEntry(const geo::TileId& tile, PackEntry* entry) {
   const PackId id = packOf(tile, manifest_.packTilesPerSide);
-  if (id.level >= manifest_.levels.size()) return Peek::Absent;
-  const auto& packs = manifest_.levels[id.level].packs;
-  if (!std::binary_search(packs.begin(), packs.end(), id)) return Peek::Absent;
+  if (!listsPack(manifest_.levels, id)) return Peek::Absent;
   const auto opened = packs_.peek(id);
   if (!opened) return Peek::NotOpen;
   if (!*opened) return Peek::Absent;

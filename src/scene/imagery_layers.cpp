@@ -1,11 +1,8 @@
 #include "scene/imagery_layers.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
-#include <mutex>
-#include <set>
 #include <thread>
 #include <tuple>
 
@@ -13,27 +10,22 @@
 
 #include "geo/ecef.hpp"
 #include "geo/tiling_scheme.hpp"
+#include "io/background_pack_opens.hpp"
 #include "io/network_settings.hpp"
 #include "terrain/imagery_level.hpp"
 
 namespace globe::scene {
 
 struct ImageryLayers::Layer {
-  // Pack indexes of a remote layer being read on the loader's threads. Shared with those tasks
-  // (with the store), so a layer may go while one is still running.
-  struct Opening {
-    std::mutex mutex;
-    std::set<io::PackId> packs;  // guarded by mutex
-    std::atomic<int> pending{0};
-  };
-
   LayerOptions options;
   std::shared_ptr<io::ImageryStore> store;
   std::unique_ptr<io::ImagerySource> source;
   io::ImageryCache cache;
   std::unique_ptr<io::ImageryLoader> loader;
   io::TaskRunner& runner;
-  std::shared_ptr<Opening> opening = std::make_shared<Opening>();
+  // A remote layer's pack indexes, read on the loader's threads; the tasks hold the store, so a
+  // layer may go while one still runs.
+  io::BackgroundPackOpens opening;
   std::unordered_map<geo::TileId, uint64_t> textureLastUsedFrame;  // textures on the GPU
   std::unordered_map<geo::TileId, bool> present;  // the layer's index, asked once per tile
 
@@ -73,20 +65,10 @@ struct ImageryLayers::Layer {
   }
 
   void openInBackground(const geo::TileId& tile) {
-    const io::PackId pack = io::packOf(tile, store->manifest().packTilesPerSide);
-    {
-      std::lock_guard lock(opening->mutex);
-      if (!opening->packs.insert(pack).second) return;
-    }
-    ++opening->pending;
-    runner.post([store = store, opening = opening, tile, pack] {
-      (void)store->hasTile(tile);  // opens the pack: an error is the store's to report
-      {
-        std::lock_guard lock(opening->mutex);
-        opening->packs.erase(pack);
-      }
-      --opening->pending;
-    });
+    opening.post(runner, io::packOf(tile, store->manifest().packTilesPerSide),
+                 [store = store, tile] {
+                   (void)store->hasTile(tile);  // opens the pack: an error is the store's to report
+                 });
   }
   static constexpr size_t kPresentEntries = 1u << 16;
 };
@@ -248,7 +230,7 @@ Result<ImageryFrame> ImageryLayers::update(std::span<const geo::TileId> tiles,
     layer.cache.touch(wantedTiles);
     layer.loader->request(wanted);
     frame.requests += wanted.size();
-    if (layer.loader->counters().inFlight > 0 || layer.opening->pending.load() > 0) {
+    if (layer.loader->counters().inFlight > 0 || layer.opening.pending() > 0) {
       frame.complete = false;
     }
   }
@@ -298,7 +280,7 @@ void ImageryLayers::forgetFailures() {
 
 void ImageryLayers::waitForLoads(std::chrono::milliseconds timeout) const {
   for (const auto& layer : layers_) {
-    if (layer->opening->pending.load() > 0) {
+    if (layer->opening.pending() > 0) {
       std::this_thread::sleep_for(std::chrono::milliseconds(2));  // a pack index on its way
       return;
     }

@@ -260,28 +260,16 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   info.selection = selection.counters;
   info.tilesSelected = tiles_.size();
   info.requests = requests.size();
-  info.arrived += packsOpened_.exchange(0);
+  info.arrived += packOpens_.takeFinished();
   info.complete = requests.empty() && loader_->counters().inFlight == 0 && notOpen.empty() &&
-                  packOpensPending_.load() == 0 && info.imagery.complete;
+                  packOpens_.pending() == 0 && info.imagery.complete;
   return info;
 }
 
 void TerrainScene::openPacksInBackground(const std::vector<geo::TileId>& tiles) {
   for (const geo::TileId& tile : tiles) {
-    const io::PackId pack = io::packOf(tile, store_->manifest().packTilesPerSide);
-    {
-      std::lock_guard lock(packMutex_);
-      if (!packsOpening_.insert(pack).second) continue;
-    }
-    ++packOpensPending_;
-    runner_.post([this, tile, pack] {
+    packOpens_.post(runner_, io::packOf(tile, store_->manifest().packTilesPerSide), [this, tile] {
       (void)store_->entry(tile);  // opens the pack: an error is the store's to report
-      {
-        std::lock_guard lock(packMutex_);
-        packsOpening_.erase(pack);
-      }
-      ++packsOpened_;
-      --packOpensPending_;
     });
   }
 }
@@ -313,7 +301,7 @@ void TerrainScene::updateImagery(const glm::dvec3& cameraEcefMeters, TileGpu& gp
 }
 
 void TerrainScene::waitForLoads(std::chrono::milliseconds timeout) const {
-  if (packOpensPending_.load() > 0) {
+  if (packOpens_.pending() > 0) {
     std::this_thread::sleep_for(std::chrono::milliseconds(2));  // a pack index on its way
   } else if (loader_->counters().inFlight > 0) {
     loader_->waitForCompletion(timeout);

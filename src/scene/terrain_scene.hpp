@@ -3,19 +3,17 @@
 // `play`, the soak and the benchmarks; the caller draws view(), tiles() and drapes().
 #pragma once
 
-#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <memory>
-#include <mutex>
 #include <optional>
-#include <set>
 #include <unordered_map>
 #include <vector>
 
 #include "camera/camera_pose.hpp"
 #include "geo/ellipsoid.hpp"
 #include "geo/result.hpp"
+#include "io/background_pack_opens.hpp"
 #include "io/block_cache.hpp"
 #include "io/thread_pool_runner.hpp"
 #include "io/tile_loader.hpp"
@@ -113,10 +111,7 @@ class TerrainScene {
   io::BlockCache cache_;
   io::ThreadPoolRunner runner_;
   std::unique_ptr<io::TileLoader> loader_;
-  std::mutex packMutex_;
-  std::set<io::PackId> packsOpening_;  // guarded by packMutex_
-  std::atomic<int> packOpensPending_{0};
-  std::atomic<int> packsOpened_{0};  // since the last frame: a reason to redraw
+  io::BackgroundPackOpens packOpens_;  // a remote pyramid's pack indexes, read off this thread
   std::chrono::steady_clock::time_point lastRetry_ = std::chrono::steady_clock::now();
   std::unique_ptr<ImageryLayers> imagery_;
   std::vector<terrain::TileDrapes> drapes_;  // per tile of tiles_, with imagery

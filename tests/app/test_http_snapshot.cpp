@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -16,6 +15,7 @@
 #include <thread>
 
 #include "io/image_io.hpp"
+#include "tests/app/run_globe.hpp"
 #include "tests/io/nginx_server.hpp"
 #include "tests/tools/tiler/imagery_test_layers.hpp"
 #include "tests/tools/tiler/tiler_test_fixture.hpp"
@@ -25,21 +25,8 @@ namespace {
 namespace fs = std::filesystem;
 using globe::io::test::NginxServer;
 
-struct ProcessResult {
-  int exitCode;
-  std::string output;
-};
-
-ProcessResult runGlobe(const std::string& arguments) {
-  const std::string command = std::string(GLOBE_EXE) + " " + arguments + " 2>&1";
-  FILE* pipe = ::popen(command.c_str(), "r");
-  std::string output;
-  std::array<char, 4096> buffer{};
-  while (pipe != nullptr && std::fgets(buffer.data(), buffer.size(), pipe) != nullptr)
-    output += buffer.data();
-  const int status = pipe != nullptr ? ::pclose(pipe) : -1;
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
+using globe::app::test::ProcessResult;
+using globe::app::test::runGlobe;
 
 // A low oblique view over Zion Canyon: many levels of terrain and imagery.
 const std::string kCamera = "--camera -112.95,37.25,4200,20,-25,0 --size 320x200";

@@ -1,31 +1,18 @@
 // `globe info`: the real program on the bundled pyramid, text and JSON, and its bad-input errors.
 #include <gtest/gtest.h>
 
-#include <array>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "tests/app/run_globe.hpp"
 #include "tests/tools/tiler/imagery_test_layers.hpp"
 #include "tests/tools/tiler/tiler_test_fixture.hpp"
 
 namespace {
 
-struct ProcessResult {
-  int exitCode;
-  std::string output;
-};
-
-ProcessResult runGlobe(const std::string& arguments) {
-  const std::string command = std::string(GLOBE_EXE) + " " + arguments + " 2>&1";
-  FILE* pipe = ::popen(command.c_str(), "r");
-  std::string output;
-  std::array<char, 4096> buffer{};
-  while (pipe != nullptr && std::fgets(buffer.data(), buffer.size(), pipe) != nullptr)
-    output += buffer.data();
-  const int status = pipe != nullptr ? ::pclose(pipe) : -1;
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
+using globe::app::test::ProcessResult;
+using globe::app::test::runGlobe;
 
 TEST(GlobeInfo, JsonListsLevelsTilesBoundsAndHeights) {
   const auto pyramid = globe::tiler::testing::bundledPyramid();

@@ -140,9 +140,21 @@ std::string NginxServer::url(const std::string& path) const {
 }
 
 std::vector<std::string> NginxServer::accessLog() const {
-  std::ifstream in(dir_ / "access.log");
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  // nginx logs a request after sending its response, so a client may be done before its last
+  // line is written: read until two reads 30 ms apart agree.
+  auto read = [this] {
+    std::ifstream in(dir_ / "access.log");
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+  };
+  std::vector<std::string> lines = read();
+  for (int i = 0; i < 100; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(30));
+    std::vector<std::string> again = read();
+    if (again.size() == lines.size()) break;
+    lines = std::move(again);
+  }
   return lines;
 }
 

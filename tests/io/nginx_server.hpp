@@ -34,7 +34,8 @@ class NginxServer {
   int port() const { return port_; }
   // http(s)://127.0.0.1:PORT/path
   std::string url(const std::string& path) const;
-  // The requests served so far: one line each, "METHOD URI STATUS \"RANGE\" BYTES PROTOCOL".
+  // The requests served so far (once the log has settled): one line each, "METHOD URI STATUS
+  // \"RANGE\" BYTES PROTOCOL".
   std::vector<std::string> accessLog() const;
 
  private:

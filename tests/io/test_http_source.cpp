@@ -175,21 +175,30 @@ TEST(HttpTileStore, OfflineServesWhatTheCacheHoldsAndNamesWhatItLacks) {
       << missing.error();
 }
 
+// Loads `tiles` twice, each time through a new store on the same cache (a cold start, then a
+// warm one); the requests the server saw after the cold start.
+size_t requestsAfterAColdStart(const Served& served, const fs::path& cacheDir,
+                               const std::vector<geo::TileId>& tiles) {
+  size_t coldRequests = 0;
+  for (int run = 0; run < 2; ++run) {
+    auto remote =
+        openRemote(served.url(), std::make_shared<HttpClient>(quickSettings()), cacheIn(cacheDir));
+    EXPECT_TRUE(remote);
+    if (!remote) return 0;
+    for (const geo::TileId& tile : tiles) EXPECT_TRUE(remote->load(tile));
+    if (run == 0) coldRequests = served.server->accessLog().size();
+  }
+  EXPECT_GT(coldRequests, tiles.size());
+  return coldRequests;
+}
+
 TEST(HttpTileStore, AWarmStartAsksOnlyWhetherTheManifestChanged) {
   Served served;
   ASSERT_TRUE(served.server);
   TempDir cacheDir;
-  const auto tiles = presentTiles(test::loaderTestPyramid(), 4);
-  size_t coldRequests = 0;
-  for (int run = 0; run < 2; ++run) {
-    auto remote = openRemote(served.url(), std::make_shared<HttpClient>(quickSettings()),
-                             cacheIn(cacheDir.path()));
-    ASSERT_TRUE(remote);
-    for (const geo::TileId& tile : tiles) ASSERT_TRUE(remote->load(tile));
-    if (run == 0) coldRequests = served.server->accessLog().size();
-  }
+  const size_t coldRequests =
+      requestsAfterAColdStart(served, cacheDir.path(), presentTiles(test::loaderTestPyramid(), 4));
   const auto log = served.server->accessLog();
-  EXPECT_GT(coldRequests, tiles.size());
   // The warm run: one conditional GET of the manifest (304), nothing else.
   ASSERT_EQ(log.size(), coldRequests + 1);
   EXPECT_EQ(log.back().rfind("GET /pyramid/manifest.json 304", 0), 0u) << log.back();
@@ -204,16 +213,8 @@ TEST(HttpTileStore, AManifestFreshByMaxAgeCostsNoRequestAtAll) {
                   (fresh ? "expires 5m;" : "add_header Cache-Control no-cache;") + " }");
     ASSERT_TRUE(served.server);
     TempDir cacheDir;
-    const auto tiles = presentTiles(test::loaderTestPyramid(), 3);
-    size_t coldRequests = 0;
-    for (int run = 0; run < 2; ++run) {
-      auto remote = openRemote(served.url(), std::make_shared<HttpClient>(quickSettings()),
-                               cacheIn(cacheDir.path()));
-      ASSERT_TRUE(remote);
-      for (const geo::TileId& tile : tiles) ASSERT_TRUE(remote->load(tile));
-      if (run == 0) coldRequests = served.server->accessLog().size();
-    }
-    EXPECT_GT(coldRequests, tiles.size());
+    const size_t coldRequests = requestsAfterAColdStart(served, cacheDir.path(),
+                                                        presentTiles(test::loaderTestPyramid(), 3));
     EXPECT_EQ(served.server->accessLog().size(), coldRequests + (fresh ? 0 : 1));
   }
 }
