@@ -59,64 +59,136 @@ std::optional<Triangle> across(const Triangle& t, size_t k, uint32_t cells) {
   return Triangle{i, j, true};  // the diagonal
 }
 
-// nullopt when the triangle is degenerate or (nearly) parallel to the normal.
-std::optional<PlaneHit> meetPlane(const ArrayTile& tile, const geo::Ellipsoid& ellipsoid,
-                                  const Triangle& triangle, const glm::dvec3& surface,
-                                  const glm::dvec3& normal) {
-  const terrain::BlockGrid grid{tile.id, tile.block->verticesPerSide};
-  std::array<glm::dvec3, 3> p{};
-  const auto vertices = corners(triangle);
-  for (size_t k = 0; k < 3; ++k) {
-    const uint32_t row = vertices[k][0], column = vertices[k][1];
-    const double h = tile.block->surfaceHeightMetersAt(row, column);
-    // Relative to the surface point: the differences are small, so little is lost to rounding.
-    p[k] = cachedTileVertexEcefMeters(ellipsoid, grid, row, column, h) - surface;
+// Where a tile's vertices lie: the vertex spacing computed once (the same value
+// terrain::BlockGrid computes per vertex, so the positions are the mesh's bit for bit).
+struct TileVertexPlacement {
+  const ArrayTile& tile;
+  const geo::Ellipsoid& ellipsoid;
+  double spacingDegrees;
+
+  glm::dvec3 ecefMeters(uint32_t row, uint32_t column) const {
+    const uint64_t cells = tile.block->verticesPerSide - 1;
+    const double latitude =
+        90.0 - static_cast<double>(uint64_t{tile.id.y} * cells + row) * spacingDegrees;
+    const double longitude =
+        -180.0 + static_cast<double>(uint64_t{tile.id.x} * cells + column) * spacingDegrees;
+    return cachedVertexEcefMeters(ellipsoid, latitude, longitude,
+                                  tile.block->surfaceHeightMetersAt(row, column));
   }
+};
+
+// The four corners of the last quad a thread queried, with everything that determines them: a
+// camera stays over one quad for many frames (50 m/s at 60 Hz crosses a 60 m quad in 70), and
+// then they are reused instead of recomputed.
+struct QuadCorners {
+  double a = 0.0, b = 0.0;
+  geo::TileId tile{};
+  uint32_t verticesPerSide = 0, row = 0, column = 0;
+  std::array<double, 4> heightsMeters{};
+  std::array<glm::dvec3, 4> ecefMeters{};
+  bool valid = false;
+};
+
+const QuadCorners& quadCorners(const TileVertexPlacement& placement, uint32_t row,
+                               uint32_t column) {
+  thread_local QuadCorners last;
+  const terrain::HeightBlock& block = *placement.tile.block;
+  const std::array<double, 4> heights{block.surfaceHeightMetersAt(row, column),
+                                      block.surfaceHeightMetersAt(row, column + 1),
+                                      block.surfaceHeightMetersAt(row + 1, column),
+                                      block.surfaceHeightMetersAt(row + 1, column + 1)};
+  const geo::Ellipsoid& e = placement.ellipsoid;
+  if (last.valid && last.a == e.semiMajorAxisMeters && last.b == e.semiMinorAxisMeters &&
+      last.tile == placement.tile.id && last.verticesPerSide == block.verticesPerSide &&
+      last.row == row && last.column == column && last.heightsMeters == heights) {
+    return last;
+  }
+  last = {e.semiMajorAxisMeters,
+          e.semiMinorAxisMeters,
+          placement.tile.id,
+          block.verticesPerSide,
+          row,
+          column,
+          heights,
+          {},
+          true};
+  for (uint32_t corner = 0; corner < 4; ++corner) {
+    last.ecefMeters[corner] = placement.ecefMeters(row + corner / 2, column + corner % 2);
+  }
+  return last;
+}
+
+// The tile's vertices relative to the nadir point: the quad under it from QuadCorners, its
+// neighbours (where the stepping below goes, rarely) computed.
+class RelativeVertices {
+ public:
+  RelativeVertices(const ArrayTile& tile, const geo::Ellipsoid& ellipsoid,
+                   const glm::dvec3& surface, uint32_t quadRow, uint32_t quadColumn)
+      : placement_{tile, ellipsoid,
+                   terrain::vertexSpacingDegrees(tile.id.level, tile.block->verticesPerSide)},
+        surface_(surface),
+        quadRow_(quadRow),
+        quadColumn_(quadColumn),
+        corners_(quadCorners(placement_, quadRow, quadColumn).ecefMeters) {}
+
+  glm::dvec3 at(uint32_t row, uint32_t column) const {
+    const uint32_t dr = row - quadRow_, dc = column - quadColumn_;
+    // Relative to the surface point: the differences are small, so little is lost to rounding.
+    if (dr > 1 || dc > 1) return placement_.ecefMeters(row, column) - surface_;  // unsigned wrap
+    return corners_[dr * 2 + dc] - surface_;
+  }
+
+ private:
+  TileVertexPlacement placement_;
+  glm::dvec3 surface_;
+  uint32_t quadRow_, quadColumn_;
+  std::array<glm::dvec3, 4> corners_;
+};
+
+// nullopt when the triangle is degenerate or (nearly) parallel to the normal.
+std::optional<PlaneHit> meetPlane(const RelativeVertices& vertices, const Triangle& triangle,
+                                  const glm::dvec3& normal) {
+  std::array<glm::dvec3, 3> p{};
+  const auto corner = corners(triangle);
+  for (size_t k = 0; k < 3; ++k) p[k] = vertices.at(corner[k][0], corner[k][1]);
   const glm::dvec3 planeNormal = glm::cross(p[1] - p[0], p[2] - p[0]);
   const double lengthSquared = glm::dot(planeNormal, planeNormal);
   const double along = glm::dot(planeNormal, normal);
+  // |along| > cos * |planeNormal|, squared (no square root).
   if (!(lengthSquared > 0.0) ||
-      !(std::abs(along) > kMinimumNormalCosine * std::sqrt(lengthSquared))) {
+      !(along * along > kMinimumNormalCosine * kMinimumNormalCosine * lengthSquared)) {
     return std::nullopt;
   }
   PlaneHit hit{};
   hit.heightMeters = glm::dot(planeNormal, p[0]) / along;
   const glm::dvec3 x = hit.heightMeters * normal;
+  const double inverseLengthSquared = 1.0 / lengthSquared;
   for (size_t k = 0; k < 3; ++k) {
     const glm::dvec3 a = p[(k + 1) % 3] - x, b = p[(k + 2) % 3] - x;
-    hit.barycentric[k] = glm::dot(planeNormal, glm::cross(a, b)) / lengthSquared;
+    hit.barycentric[k] = glm::dot(planeNormal, glm::cross(a, b)) * inverseLengthSquared;
   }
   return hit;
 }
 
 }  // namespace
 
-SurfaceSample exactTileSurfaceHeight(const ArrayTile& tile, const geo::Ellipsoid& ellipsoid,
-                                     double longitudeRadians, double latitudeRadians) {
-  if (!hasReadableBlock(tile)) return {};
+namespace {
+
+// The drawn surface's height along the normal line through surface (the nadir point on the
+// ellipsoid) for a point located in the tile's grid.
+SurfaceSample surfaceAlongNormal(const ArrayTile& tile, const geo::Ellipsoid& ellipsoid,
+                                 const GridLocation& at, const glm::dvec3& surface,
+                                 const glm::dvec3& normal) {
   const terrain::HeightBlock& block = *tile.block;
   const uint32_t cells = block.verticesPerSide - 1;
-  const GridLocation at = locateInGrid(tile, longitudeRadians, latitudeRadians);
-  if (at.atPole) {
-    double highest = block.surfaceHeightMetersAt(at.poleRow, 0);
-    for (uint32_t column = 1; column <= cells; ++column) {
-      highest = std::max(highest, block.surfaceHeightMetersAt(at.poleRow, column));
-    }
-    return {highest, SurfaceTriangle::Pole, at.poleRow == 0 ? 0 : cells - 1, 0};
-  }
   const uint32_t i = at.quadRow;
   const uint32_t j = at.quadColumn;
-  // One set of sines and cosines for both (bit for bit cartographicToEcef's and
-  // geodeticSurfaceNormal's).
-  const SurfacePoint nadir = surfacePointAndNormal(ellipsoid, longitudeRadians, latitudeRadians);
-  const glm::dvec3& surface = nadir.pointEcefMeters;
-  const glm::dvec3& normal = nadir.normal;
-
+  RelativeVertices vertices(tile, ellipsoid, surface, i, j);
   Triangle current{i, j, at.row - i >= at.column - j};
-  std::optional<PlaneHit> hit = meetPlane(tile, ellipsoid, current, surface, normal);
+  std::optional<PlaneHit> hit = meetPlane(vertices, current, normal);
   if (!hit) {
     current.southWest = !current.southWest;
-    hit = meetPlane(tile, ellipsoid, current, surface, normal);
+    hit = meetPlane(vertices, current, normal);
   }
   if (!hit) {
     const double highest = std::max(
@@ -131,7 +203,7 @@ SurfaceSample exactTileSurfaceHeight(const ArrayTile& tile, const geo::Ellipsoid
     if (b[outside] >= -kBarycentricTolerance) break;
     const std::optional<Triangle> next = across(current, outside, cells);
     if (!next) break;
-    const std::optional<PlaneHit> nextHit = meetPlane(tile, ellipsoid, *next, surface, normal);
+    const std::optional<PlaneHit> nextHit = meetPlane(vertices, *next, normal);
     if (!nextHit || nextHit->minimumBarycentric() <= hit->minimumBarycentric()) break;
     current = *next;
     hit = nextHit;
@@ -139,6 +211,29 @@ SurfaceSample exactTileSurfaceHeight(const ArrayTile& tile, const geo::Ellipsoid
   return {hit->heightMeters,
           current.southWest ? SurfaceTriangle::SouthWest : SurfaceTriangle::NorthEast, current.row,
           current.column};
+}
+
+// On a pole row every vertex is the pole: the highest of them.
+SurfaceSample poleSurface(const terrain::HeightBlock& block, const GridLocation& at) {
+  const uint32_t cells = block.verticesPerSide - 1;
+  double highest = block.surfaceHeightMetersAt(at.poleRow, 0);
+  for (uint32_t column = 1; column <= cells; ++column) {
+    highest = std::max(highest, block.surfaceHeightMetersAt(at.poleRow, column));
+  }
+  return {highest, SurfaceTriangle::Pole, at.poleRow == 0 ? 0 : cells - 1, 0};
+}
+
+}  // namespace
+
+SurfaceSample exactTileSurfaceHeight(const ArrayTile& tile, const geo::Ellipsoid& ellipsoid,
+                                     double longitudeRadians, double latitudeRadians) {
+  if (!hasReadableBlock(tile)) return {};
+  const GridLocation at = locateInGrid(tile, longitudeRadians, latitudeRadians);
+  if (at.atPole) return poleSurface(*tile.block, at);
+  // One set of sines and cosines for both (bit for bit cartographicToEcef's and
+  // geodeticSurfaceNormal's).
+  const SurfacePoint nadir = surfacePointAndNormal(ellipsoid, longitudeRadians, latitudeRadians);
+  return surfaceAlongNormal(tile, ellipsoid, at, nadir.pointEcefMeters, nadir.normal);
 }
 
 std::optional<ExactSurfaceSample> exactSurfaceHeight(const RenderingTileArray& array,
@@ -157,19 +252,30 @@ std::optional<ExactSurfaceSample> exactSurfaceHeight(const RenderingTileArray& a
 ExactSurfaceResult exactSurfaceTest(const RenderingTileArray& array,
                                     const geo::Ellipsoid& ellipsoid,
                                     const glm::dvec3& cameraEcefMeters, double clearanceMeters) {
-  const std::optional<geo::Cartographic> camera =
-      geo::ecefToCartographic(ellipsoid, cameraEcefMeters);
-  if (!camera) return {};
+  // The conversion's own normal: the camera lies on the normal line through its nadir, so the
+  // nadir point is the camera moved D down it, and no sines or cosines are needed.
+  const std::optional<geo::GeodeticFrame> frame =
+      geo::ecefToGeodeticFrame(ellipsoid, cameraEcefMeters);
+  if (!frame) return {};
+  const geo::Cartographic& camera = frame->cartographic;
   const double clearance = std::isfinite(clearanceMeters) ? clearanceMeters : 0.0;
   ExactSurfaceResult result;
   result.valid = true;
-  result.cameraHeightMeters = camera->heightMeters;
-  if (auto sample =
-          exactSurfaceHeight(array, ellipsoid, camera->longitudeRadians, camera->latitudeRadians)) {
+  result.cameraHeightMeters = camera.heightMeters;
+  const std::optional<QueryPoint> point =
+      makeQueryPoint(camera.longitudeRadians, camera.latitudeRadians);
+  const ArrayTile* tile = point ? array.lookupIndexed(*point).tile : nullptr;
+  if (tile != nullptr && hasReadableBlock(*tile)) {
+    const GridLocation at = locateInGrid(*tile, point->longitudeRadians, point->latitudeRadians);
+    const SurfaceSample sample =
+        at.atPole ? poleSurface(*tile->block, at)
+                  : surfaceAlongNormal(*tile, ellipsoid, at,
+                                       cameraEcefMeters - camera.heightMeters * frame->normal,
+                                       frame->normal);
     result.found = true;
-    result.surfaceHeightMeters = sample->heightMeters;
-    result.tile = sample->tile;
-    result.triangle = sample->triangle;
+    result.surfaceHeightMeters = sample.heightMeters;
+    result.tile = tile->id;
+    result.triangle = sample.triangle;
   }
   result.collided = result.cameraHeightMeters <= result.surfaceHeightMeters + clearance;
   return result;

@@ -12,8 +12,10 @@ namespace {
 
 enum class Lookup { Linear, Indexed };
 
+// A template on the lookup, so the indexed query carries no linear code.
+template <Lookup lookup>
 QotcdResult detect(const RenderingTileArray& array, const geo::Cartographic& camera,
-                   double clearanceMeters, Lookup lookup) {
+                   double clearanceMeters) {
   if (!std::isfinite(camera.heightMeters)) return {};
   const std::optional<QueryPoint> point =
       makeQueryPoint(camera.longitudeRadians, camera.latitudeRadians);
@@ -25,10 +27,12 @@ QotcdResult detect(const RenderingTileArray& array, const geo::Cartographic& cam
   result.cameraHeightMeters = camera.heightMeters;
   result.longitudeRadians = point->longitudeRadians;
   result.latitudeRadians = point->latitudeRadians;
-  const TileLookup found =
-      lookup == Lookup::Linear
-          ? array.lookupLinear(point->longitudeRadians, point->latitudeRadians)
-          : array.lookupIndexed(point->longitudeRadians, point->latitudeRadians);
+  TileLookup found;
+  if constexpr (lookup == Lookup::Linear) {
+    found = array.lookupLinear(point->longitudeRadians, point->latitudeRadians);
+  } else {
+    found = array.lookupIndexed(*point);
+  }
   result.tilesExamined = found.tilesExamined;
   if (found.tile != nullptr) {
     const ArrayTile& tile = *found.tile;
@@ -49,34 +53,35 @@ QotcdResult detect(const RenderingTileArray& array, const geo::Cartographic& cam
   return result;
 }
 
+template <Lookup lookup>
 QotcdResult detect(const RenderingTileArray& array, const geo::Ellipsoid& ellipsoid,
-                   const glm::dvec3& cameraEcefMeters, double clearanceMeters, Lookup lookup) {
+                   const glm::dvec3& cameraEcefMeters, double clearanceMeters) {
   const std::optional<geo::Cartographic> camera =
       geo::ecefToCartographic(ellipsoid, cameraEcefMeters);
   if (!camera) return {};
-  return detect(array, *camera, clearanceMeters, lookup);
+  return detect<lookup>(array, *camera, clearanceMeters);
 }
 
 }  // namespace
 
 QotcdResult qotcdLinear(const RenderingTileArray& array, const geo::Ellipsoid& ellipsoid,
                         const glm::dvec3& cameraEcefMeters, double clearanceMeters) {
-  return detect(array, ellipsoid, cameraEcefMeters, clearanceMeters, Lookup::Linear);
+  return detect<Lookup::Linear>(array, ellipsoid, cameraEcefMeters, clearanceMeters);
 }
 
 QotcdResult qotcdIndexed(const RenderingTileArray& array, const geo::Ellipsoid& ellipsoid,
                          const glm::dvec3& cameraEcefMeters, double clearanceMeters) {
-  return detect(array, ellipsoid, cameraEcefMeters, clearanceMeters, Lookup::Indexed);
+  return detect<Lookup::Indexed>(array, ellipsoid, cameraEcefMeters, clearanceMeters);
 }
 
 QotcdResult qotcdLinear(const RenderingTileArray& array, const geo::Cartographic& camera,
                         double clearanceMeters) {
-  return detect(array, camera, clearanceMeters, Lookup::Linear);
+  return detect<Lookup::Linear>(array, camera, clearanceMeters);
 }
 
 QotcdResult qotcdIndexed(const RenderingTileArray& array, const geo::Cartographic& camera,
                          double clearanceMeters) {
-  return detect(array, camera, clearanceMeters, Lookup::Indexed);
+  return detect<Lookup::Indexed>(array, camera, clearanceMeters);
 }
 
 void QotcdCounters::add(const QotcdResult& result) {

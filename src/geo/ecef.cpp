@@ -80,8 +80,11 @@ glm::dvec3 cartographicToEcef(const Ellipsoid& ellipsoid, const Cartographic& ca
           rho * std::sin(cartographic.longitudeRadians), (n * (b / a) * (b / a) + h) * sinLat};
 }
 
-std::optional<Cartographic> ecefToCartographic(const Ellipsoid& ellipsoid,
-                                               const glm::dvec3& ecefMeters) {
+namespace {
+
+// The inverse conversion; the normal too when asked for (one division more).
+std::optional<Cartographic> solveGeodetic(const Ellipsoid& ellipsoid, const glm::dvec3& ecefMeters,
+                                          glm::dvec3* normal) {
   if (!isFinite(ecefMeters)) return std::nullopt;
   const double x = ecefMeters.x;
   const double y = ecefMeters.y;
@@ -96,8 +99,10 @@ std::optional<Cartographic> ecefToCartographic(const Ellipsoid& ellipsoid,
   if (p == 0.0) {
     // Exactly on the polar axis: the longitude is arbitrary, pick 0.
     result = {0.0, z > 0.0 ? kHalfPi : -kHalfPi, std::abs(z) - b};
+    if (normal != nullptr) *normal = {0.0, 0.0, z > 0.0 ? 1.0 : -1.0};
   } else if (ellipsoid.isSphere()) {
     result = {std::atan2(y, x), std::atan2(z, p), r - a};
+    if (normal != nullptr) *normal = ecefMeters / r;
   } else {
     const Direction lat = bowringLatitude(a, b, p, z);
     // Sum of projections onto the normal: no division by cos(lat), so well conditioned at the
@@ -105,10 +110,32 @@ std::optional<Cartographic> ecefToCartographic(const Ellipsoid& ellipsoid,
     const double e2 = ellipsoid.eccentricitySquared();
     const double height = p * lat.cos + z * lat.sin - a * std::sqrt(1.0 - e2 * lat.sin * lat.sin);
     result = {std::atan2(y, x), std::atan2(lat.sin, lat.cos), height};
+    if (normal != nullptr) {
+      // (cos lon, sin lon) = (x, y) / p.
+      const double cosLatOverP = lat.cos / p;
+      *normal = {x * cosLatOverP, y * cosLatOverP, lat.sin};
+    }
   }
   // Overflow of huge (> ~1e307 m) inputs is the only way to get here without a finite height.
   if (!std::isfinite(result.heightMeters)) return std::nullopt;
   return result;
+}
+
+}  // namespace
+
+std::optional<Cartographic> ecefToCartographic(const Ellipsoid& ellipsoid,
+                                               const glm::dvec3& ecefMeters) {
+  return solveGeodetic(ellipsoid, ecefMeters, nullptr);
+}
+
+std::optional<GeodeticFrame> ecefToGeodeticFrame(const Ellipsoid& ellipsoid,
+                                                 const glm::dvec3& ecefMeters) {
+  GeodeticFrame frame{};
+  const std::optional<Cartographic> cartographic =
+      solveGeodetic(ellipsoid, ecefMeters, &frame.normal);
+  if (!cartographic) return std::nullopt;
+  frame.cartographic = *cartographic;
+  return frame;
 }
 
 glm::dvec3 geodeticSurfaceNormal(const Ellipsoid&, const Cartographic& cartographic) {

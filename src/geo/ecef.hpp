@@ -24,6 +24,16 @@ glm::dvec3 cartographicToEcef(const Ellipsoid& ellipsoid, const Cartographic& ca
 std::optional<Cartographic> ecefToCartographic(const Ellipsoid& ellipsoid,
                                                const glm::dvec3& ecefMeters);
 
+// ecefToCartographic and the unit ellipsoid normal at the result, taken from the same iteration
+// (no sines or cosines; equal to geodeticSurfaceNormal(cartographic) to ~1e-16): what a test
+// along the normal needs. nullopt where ecefToCartographic is.
+struct GeodeticFrame {
+  Cartographic cartographic;
+  glm::dvec3 normal;
+};
+std::optional<GeodeticFrame> ecefToGeodeticFrame(const Ellipsoid& ellipsoid,
+                                                 const glm::dvec3& ecefMeters);
+
 // Unit "up" vector (the ellipsoid normal) at a geodetic position.
 glm::dvec3 geodeticSurfaceNormal(const Ellipsoid& ellipsoid, const Cartographic& cartographic);
 // Unit "up" vector at an ECEF position: the ellipsoid normal through its nadir, at any height.

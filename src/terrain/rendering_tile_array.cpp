@@ -9,11 +9,6 @@
 
 namespace globe::terrain {
 
-bool hasReadableBlock(const ArrayTile& tile) {
-  if (tile.block == nullptr) return false;
-  const size_t n = tile.block->verticesPerSide;
-  return n >= 2 && tile.block->heights.size() == n * n;
-}
 namespace {
 
 using Scheme = geo::GeographicTilingScheme;
@@ -139,52 +134,66 @@ TileLookup RenderingTileArray::lookupLinear(double longitudeRadians, double lati
 TileLookup RenderingTileArray::lookupIndexed(double longitudeRadians,
                                              double latitudeRadians) const {
   const std::optional<QueryPoint> point = makeQueryPoint(longitudeRadians, latitudeRadians);
-  if (!point || levels_.empty()) return {};
-  const double lon = point->longitudeRadians;
-  const double lat = point->latitudeRadians;
+  if (!point) return {};
+  return lookupIndexed(*point);
+}
+
+TileLookup RenderingTileArray::lookupIndexed(const QueryPoint& point) const {
+  if (levels_.empty()) return {};
   // The tile owning the point (the scheme's half-open rule) at the finest level present; the
   // owner at a coarser level is its ancestor, since edges are identical across levels.
   const uint32_t finest = levels_.front();
-  const std::optional<geo::TileId> finestOwner = Scheme::positionToTile(lon, lat, finest);
+  const std::optional<geo::TileId> finestOwner =
+      Scheme::positionToTile(point.longitudeRadians, point.latitudeRadians, finest);
   if (!finestOwner) return {};  // unreachable for a canonical point
+  const ArrayTile* finestOwnerTile = find(*finestOwner);
+  // The common case: the finest owner is present and the point is neither a pole nor on the
+  // owner's west or north edge (its bounds are tileRectangle(owner)), so no other tile contains
+  // it at this level and no coarser tile can win: the search below would return the owner too.
+  if (finestOwnerTile != nullptr && point.pole == Pole::None &&
+      point.longitudeRadians != finestOwnerTile->westRadians &&
+      point.latitudeRadians != finestOwnerTile->northRadians) {
+    return {finestOwnerTile, 1};
+  }
+  return lookupAcrossLevels(point, *finestOwner, finestOwnerTile);
+}
 
-  uint32_t probes = 0;
+// Out of line, so that the common case above keeps a small frame.
+[[gnu::noinline]] TileLookup RenderingTileArray::lookupAcrossLevels(
+    const QueryPoint& point, const geo::TileId& finestOwner,
+    const ArrayTile* finestOwnerTile) const {
+  const double lon = point.longitudeRadians;
+  const double lat = point.latitudeRadians;
+  const uint32_t finest = finestOwner.level;
+  uint32_t probes = 1;  // the finest owner's
   auto probe = [&](uint32_t level, uint32_t x, uint32_t y) {
     ++probes;
     return find(geo::TileId{level, x, y});
   };
-  const ArrayTile* finestOwnerTile = probe(finest, finestOwner->x, finestOwner->y);
-  // The common case: the finest owner is present and the point is neither a pole nor on the
-  // owner's west or north edge (its bounds are tileRectangle(owner)), so no other tile contains
-  // it at this level and no coarser tile can win: the loop below would return the owner too.
-  if (finestOwnerTile != nullptr && point->pole == Pole::None &&
-      lon != finestOwnerTile->westRadians && lat != finestOwnerTile->northRadians) {
-    return {finestOwnerTile, probes};
-  }
   // A point owned by a tile lies on its west or north edge, never on its east or south one; an
   // edge of a coarser owner is an edge of the finer owners inside it.
-  const geo::GlobeRectangle finestRectangle = Scheme::tileRectangle(*finestOwner);
+  const geo::GlobeRectangle finestRectangle = Scheme::tileRectangle(finestOwner);
   const bool onWestEdge = lon == finestRectangle.westRadians;
   const bool onNorthEdge = lat == finestRectangle.northRadians;
 
   for (const uint32_t level : levels_) {
     const uint32_t shift = finest - level;
-    const geo::TileId owner{level, finestOwner->x >> shift, finestOwner->y >> shift};
+    const geo::TileId owner{level, finestOwner.x >> shift, finestOwner.y >> shift};
     BestTile best;
-    best.consider(level == finest ? finestOwnerTile : probe(level, owner.x, owner.y), *point);
-    if (point->pole != Pole::None) {
+    best.consider(level == finest ? finestOwnerTile : probe(level, owner.x, owner.y), point);
+    if (point.pole != Pole::None) {
       // Every tile of the polar row contains the pole: the owner, else the westernmost.
-      best.consider(
-          at(point->pole == Pole::North ? northPoleTiles_[level] : southPoleTiles_[level]), *point);
+      best.consider(at(point.pole == Pole::North ? northPoleTiles_[level] : southPoleTiles_[level]),
+                    point);
     } else if (onWestEdge || onNorthEdge) {
       // On an edge the neighbours sharing it contain the point too (across +-180 deg as well).
       const geo::GlobeRectangle rectangle = Scheme::tileRectangle(owner);
       const bool west = onWestEdge && lon == rectangle.westRadians;
       const bool north = onNorthEdge && lat == rectangle.northRadians && owner.y > 0;
       const uint32_t westX = owner.x > 0 ? owner.x - 1 : Scheme::tilesX(level) - 1;
-      if (west) best.consider(probe(level, westX, owner.y), *point);
-      if (north) best.consider(probe(level, owner.x, owner.y - 1), *point);
-      if (west && north) best.consider(probe(level, westX, owner.y - 1), *point);
+      if (west) best.consider(probe(level, westX, owner.y), point);
+      if (north) best.consider(probe(level, owner.x, owner.y - 1), point);
+      if (west && north) best.consider(probe(level, westX, owner.y - 1), point);
     }
     if (best.tile != nullptr) return {best.tile, probes};
   }

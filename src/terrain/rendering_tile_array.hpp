@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -11,6 +12,8 @@
 #include "terrain/height_block.hpp"
 
 namespace globe::terrain {
+
+struct QueryPoint;  // tile_containment.hpp
 
 // One drawn tile. The bounds must be exactly GeographicTilingScheme::tileRectangle(id) (closed:
 // a point on an edge is in the tile). The block is owned elsewhere and must outlive the array.
@@ -32,7 +35,11 @@ struct ArrayTile {
 // True when the tile has a block of N x N heights with N >= 2: the functions that read a tile
 // (collision's locateInGrid, qotcdTileHeight, exactTileSurfaceHeight) need one;
 // RenderingTileArray::assign admits only such tiles.
-bool hasReadableBlock(const ArrayTile& tile);
+inline bool hasReadableBlock(const ArrayTile& tile) {
+  if (tile.block == nullptr) return false;
+  const size_t n = tile.block->verticesPerSide;
+  return n >= 2 && tile.block->heights.size() == n * n;
+}
 
 // An ArrayTile with the scheme's bounds and the block's maximum surface height.
 ArrayTile makeArrayTile(const geo::TileId& id, const HeightBlock& block);
@@ -70,6 +77,8 @@ class RenderingTileArray {
   // The same tile from the tile ids of the point at each level present (finest first), with the
   // edge neighbours when the point lies exactly on an edge. O(levels present).
   TileLookup lookupIndexed(double longitudeRadians, double latitudeRadians) const;
+  // The same for a point already in canonical form (makeQueryPoint), as QOTCD has it.
+  TileLookup lookupIndexed(const QueryPoint& point) const;
   const ArrayTile* findLinear(double longitudeRadians, double latitudeRadians) const {
     return lookupLinear(longitudeRadians, latitudeRadians).tile;
   }
@@ -89,6 +98,9 @@ class RenderingTileArray {
   std::vector<Slot> slots_;
   uint64_t slotMask_ = 0;
   uint32_t findPosition(const geo::TileId& id) const;
+  // lookupIndexed beyond its common case: poles, edges, a finest owner that is not drawn.
+  TileLookup lookupAcrossLevels(const QueryPoint& point, const geo::TileId& finestOwner,
+                                const ArrayTile* finestOwnerTile) const;
   bool insertPosition(const geo::TileId& id, uint32_t position);
   std::vector<uint32_t> levels_;
   // Per level, the position of the westernmost tile of the northernmost / southernmost row, or

@@ -19,19 +19,6 @@ bool ownsLongitude(const ArrayTile& tile, double longitudeRadians) {
 
 }  // namespace
 
-std::optional<QueryPoint> makeQueryPoint(double longitudeRadians, double latitudeRadians) {
-  if (!std::isfinite(longitudeRadians) || !std::isfinite(latitudeRadians) ||
-      std::abs(latitudeRadians) > kHalfPi) {
-    return std::nullopt;
-  }
-  double longitude = geo::wrapLongitudeRadians(longitudeRadians);
-  if (longitude >= kPi) longitude = -kPi;
-  Pole pole = Pole::None;
-  if (latitudeRadians == kHalfPi) pole = Pole::North;
-  if (latitudeRadians == -kHalfPi) pole = Pole::South;
-  return QueryPoint{longitude, latitudeRadians, pole};
-}
-
 bool containsClosed(const ArrayTile& tile, const QueryPoint& point) {
   if (point.pole == Pole::North) return tile.northRadians >= kHalfPi;
   if (point.pole == Pole::South) return tile.southRadians <= -kHalfPi;
@@ -54,13 +41,6 @@ uint64_t selectionKey(const ArrayTile& tile, const QueryPoint& point) {
   // Rows are (south, north]; -pi/2 belongs to the southernmost row.
   const bool ownsLat = point.latitudeRadians > tile.southRadians || tile.southRadians <= -kHalfPi;
   return levelKey | (ownsLat ? 2u : 0u) | (ownsLon ? 1u : 0u);
-}
-
-double longitudeInTile(const ArrayTile& tile, double longitudeRadians) {
-  if (longitudeRadians < tile.westRadians && tile.eastRadians >= kPi) {
-    return longitudeRadians + 2.0 * kPi;
-  }
-  return longitudeRadians;
 }
 
 }  // namespace globe::terrain

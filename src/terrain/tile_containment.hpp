@@ -2,9 +2,12 @@
 // linear scan and the indexed lookup so that the two always agree.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <optional>
 
+#include "geo/cartographic.hpp"
 #include "terrain/rendering_tile_array.hpp"
 
 namespace globe::terrain {
@@ -21,7 +24,23 @@ struct QueryPoint {
 
 // Wraps the longitude (geo::wrapLongitudeRadians), maps +pi to -pi; nullopt for non-finite
 // input or |latitude| > pi/2.
-std::optional<QueryPoint> makeQueryPoint(double longitudeRadians, double latitudeRadians);
+// Inline: every collision query starts here.
+inline std::optional<QueryPoint> makeQueryPoint(double longitudeRadians, double latitudeRadians) {
+  constexpr double kPi = std::numbers::pi;
+  constexpr double kHalfPi = std::numbers::pi / 2.0;
+  if (!std::isfinite(longitudeRadians) || !std::isfinite(latitudeRadians) ||
+      std::abs(latitudeRadians) > kHalfPi) {
+    return std::nullopt;
+  }
+  double longitude = longitudeRadians >= -kPi && longitudeRadians <= kPi
+                         ? longitudeRadians
+                         : geo::wrapLongitudeRadians(longitudeRadians);
+  if (longitude >= kPi) longitude = -kPi;
+  Pole pole = Pole::None;
+  if (latitudeRadians == kHalfPi) pole = Pole::North;
+  if (latitudeRadians == -kHalfPi) pole = Pole::South;
+  return QueryPoint{longitude, latitudeRadians, pole};
+}
 
 // Closed bounds: west <= lon <= east and south <= lat <= north (4 comparisons); also true for
 // lon = -pi in a tile whose east edge is +pi, and for a pole in every tile touching it.
@@ -35,6 +54,13 @@ bool containsClosed(const ArrayTile& tile, const QueryPoint& point);
 uint64_t selectionKey(const ArrayTile& tile, const QueryPoint& point);
 
 // The tile's longitude for a canonical point: lon + 2 pi when the tile holds -pi on its +pi edge.
-double longitudeInTile(const ArrayTile& tile, double longitudeRadians);
+// Inline: every collision query calls it.
+inline double longitudeInTile(const ArrayTile& tile, double longitudeRadians) {
+  constexpr double kPi = std::numbers::pi;
+  if (longitudeRadians < tile.westRadians && tile.eastRadians >= kPi) {
+    return longitudeRadians + 2.0 * kPi;
+  }
+  return longitudeRadians;
+}
 
 }  // namespace globe::terrain

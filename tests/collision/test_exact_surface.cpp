@@ -147,6 +147,42 @@ TEST(ExactSurface, PoleQuadsAndPolePoint) {
   EXPECT_EQ(h.heightCase, HeightCase::Vertex);
 }
 
+// exactSurfaceTest keeps the last quad's corners per thread: a query over the same quad after
+// the heights changed (a block rewritten in place, another ellipsoid, another tile id at the same
+// address) must see the new surface, never the remembered one.
+TEST(ExactSurface, RememberedQuadFollowsHeightsEllipsoidAndTile) {
+  terrain::HeightBlock block = makeBlock(kN, hilly);
+  const TileId id{8, 300, 90};
+  RenderingTileArray array;
+  array.assign({makeArrayTile(id, block)});
+  const double lon = gridLongitude(id, kN, 6.4), lat = gridLatitude(id, kN, 9.1);
+  for (const geo::Ellipsoid& ellipsoid : {geo::Ellipsoid::wgs84(), geo::Ellipsoid::sphere()}) {
+    const glm::dvec3 camera = geo::cartographicToEcef(ellipsoid, {lon, lat, 5000.0});
+    const double before = exactSurfaceTest(array, ellipsoid, camera, 0.0).surfaceHeightMeters;
+    EXPECT_NEAR(before, exactSurfaceHeight(array, ellipsoid, lon, lat)->heightMeters, 1e-6);
+    for (int16_t& h : block.heights) h = static_cast<int16_t>(h + 300);
+    const double after = exactSurfaceTest(array, ellipsoid, camera, 0.0).surfaceHeightMeters;
+    // Raised vertices also spread apart a little: +300 m to ~1e-5 m, the uncached path exactly.
+    EXPECT_NEAR(after, before + 300.0, 1e-4);
+    EXPECT_NEAR(after, exactSurfaceHeight(array, ellipsoid, lon, lat)->heightMeters, 1e-6);
+    for (int16_t& h : block.heights) h = static_cast<int16_t>(h - 300);
+  }
+  // The same block under a neighbouring id: the same grid position is another place.
+  const TileId east{8, 301, 90};
+  RenderingTileArray moved;
+  moved.assign({makeArrayTile(east, block)});
+  const geo::Ellipsoid wgs84 = geo::Ellipsoid::wgs84();
+  const double eastLon = gridLongitude(east, kN, 6.4);
+  const glm::dvec3 camera = geo::cartographicToEcef(wgs84, {eastLon, lat, 5000.0});
+  ASSERT_TRUE(
+      exactSurfaceTest(array, wgs84, geo::cartographicToEcef(wgs84, {lon, lat, 5000.0}), 0.0)
+          .found);
+  const ExactSurfaceResult r = exactSurfaceTest(moved, wgs84, camera, 0.0);
+  ASSERT_TRUE(r.found);
+  EXPECT_NEAR(r.surfaceHeightMeters, exactSurfaceHeight(moved, wgs84, eastLon, lat)->heightMeters,
+              1e-6);
+}
+
 TEST(ExactSurface, SurfaceTestAndInvalidCameras) {
   const terrain::HeightBlock block = makeBlock(kN, hilly);
   const TileId id{8, 300, 90};

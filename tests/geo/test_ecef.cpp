@@ -2,6 +2,7 @@
 // undefined cases and surface normals.
 #include "geo/ecef.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -248,6 +249,40 @@ TEST(Ecef, SurfaceNormalFromEcefAtAnyHeight) {
     }
     EXPECT_EQ(geodeticSurfaceNormal(e, glm::dvec3{0.0}), glm::dvec3(0, 0, 1));
     EXPECT_EQ(geodeticSurfaceNormal(e, glm::dvec3{kNaN, 0, 0}), glm::dvec3(0, 0, 1));
+  }
+}
+
+// The frame's normal comes from the iteration (no trigonometry): it must be the normal at the
+// returned coordinates, and the coordinates exactly ecefToCartographic's, everywhere including the
+// polar axis, the equator, deep inside and far out; undefined where the conversion is.
+TEST(Ecef, GeodeticFrameIsTheConversionAndItsNormal) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> longitude(-kPi, kPi);
+  std::uniform_real_distribution<double> latitude(-kPi / 2.0, kPi / 2.0);
+  std::uniform_real_distribution<double> height(-6000e3, 4e7);
+  for (const Ellipsoid& e : {Ellipsoid::wgs84(), Ellipsoid::sphere()}) {
+    double worst = 0.0;
+    for (int i = 0; i < 200000; ++i) {
+      Cartographic c{longitude(rng), latitude(rng), height(rng)};
+      if (i % 10 == 0) c.latitudeRadians = (i % 20 == 0) ? 0.0 : kPi / 2.0;  // equator, pole
+      const glm::dvec3 ecef = cartographicToEcef(e, c);
+      const auto frame = ecefToGeodeticFrame(e, ecef);
+      const auto plain = ecefToCartographic(e, ecef);
+      ASSERT_TRUE(frame && plain);
+      ASSERT_EQ(frame->cartographic.longitudeRadians, plain->longitudeRadians);
+      ASSERT_EQ(frame->cartographic.latitudeRadians, plain->latitudeRadians);
+      ASSERT_EQ(frame->cartographic.heightMeters, plain->heightMeters);
+      const glm::dvec3 expected = geodeticSurfaceNormal(e, frame->cartographic);
+      worst = std::max(worst, glm::distance(frame->normal, expected));
+      ASSERT_LT(glm::distance(frame->normal, expected), 1e-15) << i;
+    }
+    std::cout << "[ frame normal ] worst distance to geodeticSurfaceNormal: " << worst << "\n";
+    // Exactly on the polar axis.
+    EXPECT_EQ(ecefToGeodeticFrame(e, {0.0, 0.0, 7e6})->normal, glm::dvec3(0, 0, 1));
+    EXPECT_EQ(ecefToGeodeticFrame(e, {0.0, 0.0, -7e6})->normal, glm::dvec3(0, 0, -1));
+    EXPECT_FALSE(ecefToGeodeticFrame(e, glm::dvec3{0.0}));
+    EXPECT_FALSE(ecefToGeodeticFrame(e, glm::dvec3{kNaN, 1.0, 1.0}));
+    EXPECT_FALSE(ecefToGeodeticFrame(e, glm::dvec3{kInf, 1.0, 1.0}));
   }
 }
 
