@@ -2,6 +2,9 @@
 // vertex, the higher of the two neighbours on a row or column, the highest of four in a quad.
 #pragma once
 
+#include <algorithm>
+
+#include "collision/grid_location.hpp"
 #include "collision/terrain_array.hpp"
 
 namespace globe::collision {
@@ -22,6 +25,37 @@ struct TileHeight {
 // H per the paper for a point (canonical longitude) contained in the tile; no-data counts as
 // 0 m. On a row at +-90 deg (all its vertices are the pole) H is the highest vertex of that row.
 // A tile without a readable block (hasReadableBlock) gives {0, None}.
-TileHeight qotcdTileHeight(const ArrayTile& tile, double longitudeRadians, double latitudeRadians);
+// Inline: every QOTCD query runs it, and the call with its result through memory cost as much
+// as the reads.
+inline TileHeight qotcdTileHeight(const ArrayTile& tile, double longitudeRadians,
+                                  double latitudeRadians) {
+  if (!hasReadableBlock(tile)) return {};
+  const terrain::HeightBlock& block = *tile.block;
+  const GridLocation at = locateInGrid(tile, longitudeRadians, latitudeRadians);
+  auto h = [&block](uint32_t row, uint32_t column) {
+    return block.surfaceHeightMetersAt(row, column);
+  };
+  if (at.atPole) {
+    double highest = h(at.poleRow, 0);
+    for (uint32_t column = 1; column < block.verticesPerSide; ++column) {
+      highest = std::max(highest, h(at.poleRow, column));
+    }
+    return {highest, HeightCase::Vertex};
+  }
+  const uint32_t row = at.quadRow;
+  const uint32_t column = at.quadColumn;
+  if (at.onRow && at.onColumn) return {h(at.snappedRow, at.snappedColumn), HeightCase::Vertex};
+  if (at.onColumn) {
+    return {std::max(h(row, at.snappedColumn), h(row + 1, at.snappedColumn)),
+            HeightCase::RowOrColumn};
+  }
+  if (at.onRow) {
+    return {std::max(h(at.snappedRow, column), h(at.snappedRow, column + 1)),
+            HeightCase::RowOrColumn};
+  }
+  return {
+      std::max({h(row, column), h(row, column + 1), h(row + 1, column), h(row + 1, column + 1)}),
+      HeightCase::Quad};
+}
 
 }  // namespace globe::collision

@@ -4,7 +4,9 @@
 #
 # Environment: BUILD_DIR (default build-bench; configured RelWithDebInfo if missing),
 # REPETITIONS (5), MIN_TIME (0.3 s per repetition), QUERIES_PER_REGION (40000, three regions),
-# BENCH_CPU (the core to pin to; default the last one), FILTER (a --benchmark_filter).
+# BENCH_CPU (the core to pin to; default the last one), FILTER (a --benchmark_filter). The
+# repetitions are interleaved at random, so a slow spell of the machine falls on every benchmark
+# alike and the ratios between them stay fair.
 set -euo pipefail
 
 REPO=$(cd "$(dirname "$0")/../.." && pwd)
@@ -37,7 +39,7 @@ LOAD_BEFORE=$(cut -d' ' -f1-3 /proc/loadavg)
 STARTED=$(date -u +%Y-%m-%dT%H:%M:%SZ)
 
 echo "== timings (${REPETITIONS} repetitions of >= ${MIN_TIME} s, pinned: ${PIN[*]:-no})"
-"${PIN[@]}" "$BENCH" --benchmark_filter="$FILTER" \
+"${PIN[@]}" "$BENCH" --benchmark_filter="$FILTER" --benchmark_enable_random_interleaving=true \
   --benchmark_repetitions="$REPETITIONS" --benchmark_min_time="$MIN_TIME" \
   --benchmark_report_aggregates_only=true \
   --benchmark_out="$RESULTS/benchmarks.json" --benchmark_out_format=json
