@@ -3,7 +3,7 @@
 # docs/performance-collision.md, tools/bench/*.png and tools/bench/results/. About 2 minutes.
 #
 # Environment: BUILD_DIR (default build-bench; configured RelWithDebInfo if missing),
-# REPETITIONS (5), MIN_TIME (0.3 s per repetition), QUERIES_PER_REGION (40000, three regions),
+# REPETITIONS (9), MIN_TIME (0.2 s per repetition), QUERIES_PER_REGION (40000, three regions),
 # BENCH_CPU (the core to pin to; default the last one), FILTER (a --benchmark_filter). The
 # repetitions are interleaved at random, so a slow spell of the machine falls on every benchmark
 # alike and the ratios between them stay fair.
@@ -11,8 +11,8 @@ set -euo pipefail
 
 REPO=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${BUILD_DIR:-$REPO/build-bench}
-REPETITIONS=${REPETITIONS:-5}
-MIN_TIME=${MIN_TIME:-0.3}
+REPETITIONS=${REPETITIONS:-9}
+MIN_TIME=${MIN_TIME:-0.2}
 QUERIES=${QUERIES_PER_REGION:-40000}
 FILTER=${FILTER:-.}
 RESULTS=$REPO/tools/bench/results
