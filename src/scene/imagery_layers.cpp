@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <thread>
 #include <tuple>
 
@@ -253,6 +254,41 @@ void ImageryLayers::evictTextures(TileGpu& gpu) {
     gpu.releaseImageryTile(index, tile);
     layers_[index]->textureLastUsedFrame.erase(tile);
   }
+}
+
+std::vector<terrain::NominalErrorRegion> ImageryLayers::nominalErrorRegions(
+    uint32_t verticesPerSide, double maximumScreenSpaceErrorPixels) const {
+  std::vector<terrain::NominalErrorRegion> regions;
+  for (const auto& layer : layers_) {
+    if (!(layer->options.opacity > 0.0f)) continue;  // draws nothing
+    const io::LayerManifest& manifest = layer->store->manifest();
+    auto imageryLevel = [&](uint32_t terrainLevel) {
+      return terrain::imageryLevelFor(terrainLevel, verticesPerSide, manifest.tileSizePixels,
+                                      maximumScreenSpaceErrorPixels, manifest.maxLevel());
+    };
+    std::optional<uint32_t> deepest;
+    for (uint32_t level = 0; level < geo::kMaxLevel; ++level) {
+      if (imageryLevel(level + 1) > imageryLevel(level)) deepest = level;
+    }
+    if (!deepest) continue;  // one level only: refining never sharpens it
+    // The sources' extent, not the tiles' (a coarse tile spans far beyond its data).
+    std::optional<io::BoundsDegrees> extent;
+    for (const io::ImagerySourceInfo& source : manifest.sources) {
+      if (!extent) {
+        extent = source.bounds;
+        continue;
+      }
+      extent->west = std::min(extent->west, source.bounds.west);
+      extent->south = std::min(extent->south, source.bounds.south);
+      extent->east = std::max(extent->east, source.bounds.east);
+      extent->north = std::max(extent->north, source.bounds.north);
+    }
+    const io::BoundsDegrees bounds = extent.value_or(manifest.bounds);
+    regions.push_back(
+        {geo::GlobeRectangle::fromDegrees(bounds.west, bounds.south, bounds.east, bounds.north),
+         *deepest});
+  }
+  return regions;
 }
 
 io::LoaderCounters ImageryLayers::counters() const {

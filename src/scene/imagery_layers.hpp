@@ -21,6 +21,7 @@
 #include "io/task_runner.hpp"
 #include "scene/tile_gpu.hpp"
 #include "terrain/tile_drape.hpp"
+#include "terrain/tile_selection.hpp"
 
 namespace globe::scene {
 
@@ -68,6 +69,13 @@ class ImageryLayers {
                               double maximumScreenSpaceErrorPixels, uint32_t maximumLoadLevel,
                               const glm::dvec3& cameraEcefMeters, const geo::Ellipsoid& ellipsoid,
                               TileGpu& gpu, std::vector<terrain::TileDrapes>& drapes);
+
+  // Where refining the terrain makes some layer sharper (its imagery level follows the terrain
+  // tile's: terrain/imagery_level.hpp): per visible layer, its sources' extent and the deepest
+  // terrain level whose children take a finer imagery level. Elsewhere the selection may stop
+  // refining smooth ground early (terrain::NominalErrorRegion).
+  std::vector<terrain::NominalErrorRegion> nominalErrorRegions(
+      uint32_t verticesPerSide, double maximumScreenSpaceErrorPixels) const;
 
   // Loader counters summed over the layers.
   io::LoaderCounters counters() const;

@@ -170,8 +170,13 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   selectionOptions.maximumScreenSpaceErrorPixels = options_.maximumScreenSpaceErrorPixels;
   selectionOptions.verticesPerSide = store_->manifest().verticesPerSide;
   if (!options_.hysteresis) selectionOptions.hysteresisFraction = 0;
-  // Imagery's resolution follows the terrain's level: flat ground keeps refining under it.
-  selectionOptions.measuredErrors = options_.measuredLod && options_.layers.empty();
+  // Imagery's resolution follows the terrain's level: flat ground keeps refining under a layer
+  // as long as that sharpens it.
+  selectionOptions.measuredErrors = options_.measuredLod;
+  if (imagery_) {
+    selectionOptions.nominalErrorRegions = imagery_->nominalErrorRegions(
+        selectionOptions.verticesPerSide, selectionOptions.maximumScreenSpaceErrorPixels);
+  }
   if (store_->remote()) selectionOptions.lookaheadLevels = kRemoteLookaheadLevels;
   std::vector<geo::TileId> notOpen;
   if (store_->remote()) {

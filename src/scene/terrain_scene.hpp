@@ -43,7 +43,8 @@ struct SceneOptions {
   uint32_t maximumImageryLoadLevel = geo::kMaxLevel;  // imagery deeper than this is never loaded
   bool lightImagery = false;  // --lighting: hill-shade the imagery too (it has its own shadows)
   // The tiler's measured geometric errors (terrain::SelectionOptions::measuredErrors), unless
-  // --nominal-lod; not with imagery layers.
+  // --nominal-lod; under an imagery layer only where refining would not sharpen it
+  // (ImageryLayers::nominalErrorRegions).
   bool measuredLod = true;
   bool sky = true;  // the sky and distance fog (render/sky_model.hpp); --no-sky: black space
   // Failed loads (a server down, a 503) are tried again this long after the last try; 0: never

@@ -45,6 +45,7 @@ struct VisibleTile {
   double distanceMeters;
   TileSummary summary;
   double faceOn;  // screen_space_error.hpp: faceOnFraction of its volume
+  bool measured;  // refines by the tiler's measured error (else the level's nominal one)
 };
 
 class Traversal {
@@ -98,13 +99,23 @@ class Traversal {
       if (count) ++result_.counters.culledByHorizon;
       return std::nullopt;
     }
+    const bool measured = options_.measuredErrors && !inNominalErrorRegion(tile);
     const double faceOn =
-        options_.measuredErrors
-            ? faceOnFraction(view_.cameraEcefMeters, volume.pointsEcefMeters, view_.ellipsoid)
-            : 1.0;
+        measured ? faceOnFraction(view_.cameraEcefMeters, volume.pointsEcefMeters, view_.ellipsoid)
+                 : 1.0;
     return VisibleTile{
         tile, distanceLowerBoundMeters(view_.cameraEcefMeters, cameraHeightMeters_, volume),
-        summary, faceOn};
+        summary, faceOn, measured};
+  }
+
+  bool inNominalErrorRegion(const geo::TileId& tile) const {
+    if (options_.nominalErrorRegions.empty()) return false;
+    const geo::GlobeRectangle rectangle = geo::GeographicTilingScheme::tileRectangle(tile);
+    return std::any_of(options_.nominalErrorRegions.begin(), options_.nominalErrorRegions.end(),
+                       [&](const NominalErrorRegion& region) {
+                         return tile.level <= region.throughLevel &&
+                                region.rectangle.intersects(rectangle);
+                       });
   }
 
   void request(const geo::TileId& tile, double priority) {
@@ -134,8 +145,8 @@ class Traversal {
   }
 
   double errorPixels(const VisibleTile& visible, double distanceMeters) const {
-    const double measured = options_.measuredErrors ? visible.summary.measuredGeometricErrorMeters
-                                                    : std::numeric_limits<double>::quiet_NaN();
+    const double measured = visible.measured ? visible.summary.measuredGeometricErrorMeters
+                                             : std::numeric_limits<double>::quiet_NaN();
     return screenSpaceErrorPixels(
         tileGeometricErrorMeters(visible.tile.level, options_.verticesPerSide, view_.ellipsoid,
                                  measured, visible.faceOn),

@@ -5,11 +5,21 @@
 #include <cstdint>
 #include <vector>
 
+#include "geo/globe_rectangle.hpp"
 #include "geo/tile_id.hpp"
 #include "terrain/selection_view.hpp"
 #include "terrain/tile_catalog.hpp"
 
 namespace globe::terrain {
+
+// Where something draped over the terrain takes its resolution from the terrain tile's level
+// (imagery: terrain/imagery_level.hpp), refining a tile of level <= throughLevel overlapping the
+// rectangle makes the drape sharper, so such tiles refine by the nominal error even when the
+// selection uses measured ones; elsewhere smooth ground stops refining early as usual.
+struct NominalErrorRegion {
+  geo::GlobeRectangle rectangle;
+  uint32_t throughLevel = 0;
+};
 
 struct SelectionOptions {
   // A tile is refined while its geometric error (screen_space_error.hpp) would cover more than
@@ -28,9 +38,9 @@ struct SelectionOptions {
   // Tiles of this level are never refined.
   uint32_t maximumLevel = geo::kMaxLevel;
   // Use the tiler's measured geometric errors (TileSummary, tileGeometricErrorMeters): smooth
-  // tiles stop refining early. The scene turns it off where imagery is draped: its resolution
-  // follows the terrain's level.
+  // tiles stop refining early, except inside nominalErrorRegions.
   bool measuredErrors = true;
+  std::vector<NominalErrorRegion> nominalErrorRegions;
   // Where a tile waits for its children, also request the descendants the refinement will want
   // next, this many levels further (each level at a quarter of the priority): over a network the
   // chain of round trips, one level per frame, is otherwise what a view waits on. They are loads

@@ -1,6 +1,7 @@
 // TerrainScene: the collision array always knows the ground under the camera, even when the
 // camera looks at the horizon and its nadir is not drawn; SceneOptions::sea picks the water
-// surface or the sea floor as the ground.
+// surface or the sea floor as the ground; imagery layers keep the terrain refining only where
+// that sharpens them.
 #include "scene/terrain_scene.hpp"
 
 #include <gtest/gtest.h>
@@ -8,10 +9,53 @@
 #include "geo/cartographic.hpp"
 #include "scene/bookkeeping_gpu.hpp"
 #include "tests/io/sea_test_pyramid.hpp"
+#include "tests/tools/tiler/imagery_test_layers.hpp"
 #include "tests/tools/tiler/tiler_test_fixture.hpp"
 
 namespace globe::scene {
 namespace {
+
+// The tiles a scene draws for a pose once everything it wants is loaded (no GL).
+std::vector<geo::TileId> drawnTiles(const std::filesystem::path& pyramid,
+                                    const std::vector<LayerOptions>& layers, bool measuredLod,
+                                    const camera::CameraPose& pose) {
+  BookkeepingGpu gpu;
+  SceneOptions options;
+  options.hysteresis = false;
+  options.layers = layers;
+  options.measuredLod = measuredLod;
+  auto scene = TerrainScene::open(pyramid, options);
+  EXPECT_TRUE(scene) << scene.error();
+  if (!scene) return {};
+  auto frame = (*scene)->updateUntilComplete(pose, 640, 360, gpu, std::chrono::seconds(120));
+  EXPECT_TRUE(frame) << frame.error();
+  return (*scene)->tiles();
+}
+
+// Imagery takes its level from the terrain tile's (terrain/imagery_level.hpp), so under a layer
+// the terrain refines by the nominal error as far as that sharpens the imagery, and by the
+// tiler's measured error beyond. The 5400-wide Blue Marble has nothing finer than level 4
+// (~5 km a texel): over Fuji it changes nothing, the terrain draws exactly what it draws without
+// imagery (before, any layer meant the nominal error everywhere: many more tiles). The Landsat
+// scene over Zion is 30 m: there the terrain refines as with the nominal error.
+TEST(TerrainScene, ImageryKeepsTheTerrainRefiningOnlyWhereThatSharpensIt) {
+  const auto fuji = camera::CameraPose::fromDegrees(138.60, 35.20, 6000, 30, -15, 0);
+  const std::vector<LayerOptions> blueMarble{{tiler::testing::blueMarbleLayer(), 1.0f}};
+  const auto measured = drawnTiles(tiler::testing::bundledPyramid(), {}, true, fuji);
+  const auto nominal = drawnTiles(tiler::testing::bundledPyramid(), {}, false, fuji);
+  ASSERT_LT(measured.size() * 10, nominal.size() * 8) << "the view needs measured errors to matter";
+  EXPECT_EQ(drawnTiles(tiler::testing::bundledPyramid(), blueMarble, true, fuji), measured);
+
+  const auto zion = camera::CameraPose::fromDegrees(-112.98, 37.25, 3500, 330, -20, 0);
+  const std::vector<LayerOptions> landsat{{tiler::testing::zionLayer(), 1.0f}};
+  const auto zionMeasured = drawnTiles(tiler::testing::zionPyramid(), {}, true, zion);
+  const auto zionNominal = drawnTiles(tiler::testing::zionPyramid(), {}, false, zion);
+  ASSERT_NE(zionMeasured, zionNominal);
+  EXPECT_EQ(drawnTiles(tiler::testing::zionPyramid(), landsat, true, zion), zionNominal);
+  // A layer drawn at opacity 0 shows nothing and refines nothing.
+  const std::vector<LayerOptions> hidden{{tiler::testing::zionLayer(), 0.0f}};
+  EXPECT_EQ(drawnTiles(tiler::testing::zionPyramid(), hidden, true, zion), zionMeasured);
+}
 
 TEST(TerrainScene, NadirTileJoinsTheCollisionArrayWhenNotDrawn) {
   BookkeepingGpu gpu;

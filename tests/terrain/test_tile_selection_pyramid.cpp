@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <set>
 
 #include "geo/bounding_region.hpp"
@@ -235,6 +236,69 @@ TEST(TileSelectionPyramid, MeasuredErrorsDrawFewerTilesWhereTheGroundIsFlat) {
     std::printf("%s: %zu -> %zu tiles\n", c.view.name.c_str(), before.tiles.size(),
                 after.tiles.size());
   }
+}
+
+// Under a nominal-error region (a draped layer whose imagery follows the terrain's level) tiles
+// of its levels refine as with nominal errors; outside it, and below its deepest level, the
+// measured errors still apply. The region over the whole view through a deep level gives the
+// nominal selection exactly; one far away, or through a level coarser than the view's, the
+// measured selection exactly; one over half the view lies between, with the measured selection
+// outside its rectangle.
+TEST(TileSelectionPyramid, NominalErrorRegionsRefineAsNominalInsideAndMeasuredOutside) {
+  PyramidCatalog& catalog = PyramidCatalog::bundled();
+  const TestView view = cameraView(138.73, 35.36, 6000.0, 70.0, 30.0, "Fuji's flanks");
+  SelectionOptions nominal;
+  nominal.measuredErrors = false;
+  SelectionOptions measured;
+  const SelectionResult nominalTiles = selectTiles(view.view, catalog, nominal, {});
+  const SelectionResult measuredTiles = selectTiles(view.view, catalog, measured, {});
+  ASSERT_LT(measuredTiles.tiles.size(), nominalTiles.tiles.size());
+
+  auto withRegion = [&](const geo::GlobeRectangle& rectangle, uint32_t throughLevel) {
+    SelectionOptions options;
+    options.nominalErrorRegions.push_back({rectangle, throughLevel});
+    SelectionResult result = selectTiles(view.view, catalog, options, {});
+    EXPECT_TRUE(result.complete());
+    EXPECT_TRUE(testing::checkInvariants(view, catalog, options, result));
+    EXPECT_TRUE(testing::checkCoverage(view, catalog, result));
+    return result.tiles;
+  };
+  const auto world = geo::GlobeRectangle::fromDegrees(-180, -90, 180, 90);
+  EXPECT_EQ(withRegion(world, geo::kMaxLevel), nominalTiles.tiles);
+  EXPECT_EQ(withRegion(geo::GlobeRectangle::fromDegrees(-10, -10, 10, 10), geo::kMaxLevel),
+            measuredTiles.tiles);
+  EXPECT_EQ(withRegion(world, 3), measuredTiles.tiles);  // no level <= 3 is drawn or near the limit
+
+  // East of Fuji's summit only: more tiles than measured, fewer than nominal, and every tile
+  // lies between the two (at or below a measured tile, at or above a nominal one): the region
+  // only adds refinement, and only as far as the nominal error goes.
+  const double boundaryDegrees = 138.73;
+  const auto half =
+      withRegion(geo::GlobeRectangle::fromDegrees(boundaryDegrees, -90, 180, 90), geo::kMaxLevel);
+  EXPECT_GT(half.size(), measuredTiles.tiles.size());
+  EXPECT_LT(half.size(), nominalTiles.tiles.size());
+  const std::set<geo::TileId> measuredSet(measuredTiles.tiles.begin(), measuredTiles.tiles.end());
+  std::set<geo::TileId> nominalAtOrBelow(nominalTiles.tiles.begin(), nominalTiles.tiles.end());
+  for (const geo::TileId& t : testing::ancestorsOf(nominalTiles.tiles)) nominalAtOrBelow.insert(t);
+  auto atOrBelowMeasured = [&](geo::TileId tile) {
+    for (;;) {
+      if (measuredSet.contains(tile)) return true;
+      if (tile.level == 0) return false;
+      tile = tile.parent();
+    }
+  };
+  size_t differentWest = 0, differentEast = 0;
+  for (const geo::TileId& tile : half) {
+    EXPECT_TRUE(atOrBelowMeasured(tile)) << tile.level << "/" << tile.x << "/" << tile.y;
+    EXPECT_TRUE(nominalAtOrBelow.contains(tile)) << tile.level << "/" << tile.x << "/" << tile.y;
+    if (measuredSet.contains(tile)) continue;
+    const geo::GlobeRectangle r = geo::GeographicTilingScheme::tileRectangle(tile);
+    const bool west = r.eastRadians * 180.0 / std::numbers::pi < boundaryDegrees;
+    (west ? differentWest : differentEast) += 1;
+  }
+  // The refinement the region adds is east of the boundary, bar the children of tiles that
+  // straddle it.
+  EXPECT_GT(differentEast, 4 * differentWest) << differentEast << " east, " << differentWest;
 }
 
 // Level-of-detail flips between two frames: tiles drawn in one and refined in the other (tiles

@@ -28,7 +28,12 @@ ARGS=(--pyramid "$WORK/pyramid" --layer "$WORK/blue-marble" --layer "$WORK/zion"
   echo
   echo "Steady frames (update + draw + glFinish, 1280x720, OSMesa llvmpipe) of four views with the"
   echo "bundled Blue Marble and Zion layers against the same views without imagery, in one process"
-  echo "and one GL context, 11 interleaved rounds of 3 frames per side: medians and their ratio."
+  echo "and one GL context, 11 interleaved rounds of 3 frames per side: medians and their ratios."
+  echo "Two sides without imagery: as the viewer draws it (the tiler's measured geometric errors)"
+  echo "and at the tiles the imagery side draws (with layers the selection uses the nominal error,"
+  echo "so that each terrain tile's imagery level stays fine enough: README, \"The viewer\"). The"
+  echo "first ratio is what turning imagery on costs in the viewer; the second the imagery's own"
+  echo "cost on the same triangles."
   echo "Made by \`tools/bench_drape/bench_drape.sh\` on $(date -u +%Y-%m-%d)."
   echo
   cat "$WORK/table.md"
