@@ -283,7 +283,12 @@ std::vector<terrain::NominalErrorRegion> ImageryLayers::nominalErrorRegions(
       extent->east = std::max(extent->east, source.bounds.east);
       extent->north = std::max(extent->north, source.bounds.north);
     }
-    const io::BoundsDegrees bounds = extent.value_or(manifest.bounds);
+    io::BoundsDegrees bounds = extent.value_or(manifest.bounds);
+    if (bounds.west > bounds.east || bounds.west < -180.0 || bounds.east > 180.0) {
+      // Across the antimeridian (either way of writing it): every longitude.
+      bounds.west = -180.0;
+      bounds.east = 180.0;
+    }
     regions.push_back(
         {geo::GlobeRectangle::fromDegrees(bounds.west, bounds.south, bounds.east, bounds.north),
          *deepest});
