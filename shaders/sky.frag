@@ -3,9 +3,8 @@
 // ray grazes the air around the globe; the two blended by the camera's height.
 #version 330 core
 
-in vec2 v_ndc;
+in vec4 v_near;  // sky.vert: the pixel's point on the near plane, homogeneous
 
-uniform mat4 u_inverseViewProjection;  // clip → camera-relative ECEF directions (no translation)
 uniform vec3 u_up;                     // unit, from the globe's centre through the camera
 uniform float u_cameraRadius;          // metres from the globe's centre
 uniform float u_globeRadius;           // metres
@@ -19,10 +18,7 @@ uniform float u_horizonCosine;
 out vec4 o_color;
 
 void main() {
-  // The camera sits at the origin of this space, so the near plane's point gives the direction
-  // (the far plane's w cancels to nothing in float when far/near is large).
-  vec4 near = u_inverseViewProjection * vec4(v_ndc, -1.0, 1.0);
-  vec3 direction = normalize(near.xyz / near.w);
+  vec3 direction = normalize(v_near.xyz / v_near.w);
   float mu = dot(direction, u_up);  // cosine of the ray's zenith angle
   float above = clamp((mu - u_horizonCosine) / (1.0 - u_horizonCosine), 0.0, 1.0);
   vec3 air = mix(u_horizon, u_zenith, pow(above, 0.45));
@@ -33,7 +29,8 @@ void main() {
   float closest = along < 0.0 ? sqrt(max(u_cameraRadius * u_cameraRadius - along * along, 0.0))
                               : u_cameraRadius;
   float x = (closest - u_globeRadius) / u_atmosphereHeight;
-  float glow = x <= 0.0 ? 1.0 : pow(max(1.0 - x, 0.0), 2.0);
+  float fade = max(1.0 - x, 0.0);
+  float glow = x <= 0.0 ? 1.0 : fade * fade;
   vec3 space = u_glow * glow;
 
   o_color = vec4(mix(air, space, u_spaceBlend), 1.0);

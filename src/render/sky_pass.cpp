@@ -49,7 +49,8 @@ void SkyPass::draw(const terrain::RenderView& view, const SkyParameters& sky,
                            : glm::vec3(0.0f, 0.0f, 1.0f);
   GLboolean depthTest = GL_FALSE;
   glGetBooleanv(GL_DEPTH_TEST, &depthTest);
-  glDisable(GL_DEPTH_TEST);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);  // the triangle is at depth 1: where nothing was drawn
   glDepthMask(GL_FALSE);
   glUseProgram(program_.id());
   glUniformMatrix4fv(u_.inverseViewProjection, 1, GL_FALSE, glm::value_ptr(inverse));
@@ -66,7 +67,8 @@ void SkyPass::draw(const terrain::RenderView& view, const SkyParameters& sky,
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
   glDepthMask(GL_TRUE);
-  if (depthTest == GL_TRUE) glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  if (depthTest != GL_TRUE) glDisable(GL_DEPTH_TEST);
 }
 
 }  // namespace globe::render

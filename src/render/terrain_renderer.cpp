@@ -428,15 +428,16 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
   glDepthMask(GL_TRUE);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   SkyParameters sky;  // all zero: no fog
-  if (style.sky && impl.skyPass()) {
+  double globeRadius = 0.0;
+  const bool drawSky = style.sky && impl.skyPass();
+  if (drawSky) {
     double height = view.cameraHeightMeters;
     if (!std::isfinite(height)) {
       const auto camera = geo::ecefToCartographic(geo::Ellipsoid::wgs84(), view.cameraEcefMeters);
       height = camera ? camera->heightMeters : 0.0;
     }
-    const double globeRadius = glm::length(view.cameraEcefMeters) - height;
-    sky = skyAt(height, globeRadius);
-    impl.sky->draw(view, sky, globeRadius);
+    globeRadius = glm::length(view.cameraEcefMeters) - height;
+    sky = skyAt(height, globeRadius);  // the fog needs it now; the sky is drawn last
   }
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -541,6 +542,8 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
     }
   }
   glBindVertexArray(0);
+  // Behind everything, only where nothing was drawn (sky_pass.hpp).
+  if (drawSky) impl.sky->draw(view, sky, globeRadius);
   if (useLayers) {
     for (uint32_t k = 0; k < terrain::kMaxDrapeLayers; ++k) {
       glActiveTexture(GL_TEXTURE1 + k);
