@@ -1,10 +1,10 @@
 // globe-bench-drape: the frame time of steady views with imagery layers against the same views
 // without, in one process and one GL context (OSMesa), rounds interleaved so that every side sees
-// the same machine load. Three sides: without imagery as the viewer draws it (the tiler's measured
-// errors), without imagery at the tiles the imagery side draws (layers select by the nominal
-// error: scene/terrain_scene.cpp), and with imagery. The first ratio is what a user sees when
-// turning imagery on; the second the imagery's own cost on the same geometry. A table printer,
-// not a timed test.
+// the same machine load. Three sides: without imagery as the viewer draws it, the imagery side's
+// scene drawn without its imagery (under a layer the terrain may refine further: the layer's
+// imagery follows the terrain's level, scene/imagery_layers.hpp), and with imagery. The first ratio
+// is what a user sees when turning imagery on; the second the imagery's own cost on the same
+// geometry. A table printer, not a timed test.
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
@@ -32,6 +32,7 @@ struct Side {
   std::vector<double> frameMs;
   uint64_t triangles = 0, imageryBytes = 0;
   size_t drapes = 0;
+  bool drawDrapes = true;  // false: the scene's tiles without their imagery
 };
 
 double median(std::vector<double> values) {
@@ -42,7 +43,7 @@ double median(std::vector<double> values) {
 }
 
 Result<Side> openSide(const std::string& pyramid, const std::vector<scene::LayerOptions>& layers,
-                      bool measuredLod, const camera::CameraPose& pose, int width, int height) {
+                      const camera::CameraPose& pose, int width, int height) {
   Side side;
   auto renderer = render::TerrainRenderer::create({});
   if (!renderer) return Error{renderer.error()};
@@ -50,7 +51,6 @@ Result<Side> openSide(const std::string& pyramid, const std::vector<scene::Layer
   scene::SceneOptions options;
   options.hysteresis = false;
   options.layers = layers;
-  options.measuredLod = measuredLod;
   auto scene = scene::TerrainScene::open(pyramid, options);
   if (!scene) return Error{scene.error()};
   side.scene = std::move(*scene);
@@ -66,7 +66,9 @@ Result<Side> openSide(const std::string& pyramid, const std::vector<scene::Layer
 double timeFrame(Side& side, const camera::CameraPose& pose, int width, int height) {
   const auto start = Clock::now();
   side.scene->update(pose, width, height, *side.gpu);
-  const render::FrameStats stats = side.gpu->draw(*side.scene);
+  const render::FrameStats stats =
+      side.drawDrapes ? side.gpu->draw(*side.scene)
+                      : side.renderer->draw(side.scene->view(), side.scene->tiles());
   render::finishGl();
   side.triangles = stats.triangles;
   side.imageryBytes = stats.imageryBytesResident;
@@ -130,11 +132,12 @@ int main(int argc, char** argv) {
                    pose.error().c_str());
       return 2;
     }
-    auto without = openSide(pyramid, {}, true, *pose, width, height);
+    auto without = openSide(pyramid, {}, *pose, width, height);
+    // The imagery side's scene (its tiles, its loads), drawn without the imagery.
     auto sameTiles =
-        without ? openSide(pyramid, {}, false, *pose, width, height) : Result<Side>(Error{});
-    auto with =
-        sameTiles ? openSide(pyramid, layers, true, *pose, width, height) : Result<Side>(Error{});
+        without ? openSide(pyramid, layers, *pose, width, height) : Result<Side>(Error{});
+    if (sameTiles) sameTiles->drawDrapes = false;
+    auto with = sameTiles ? openSide(pyramid, layers, *pose, width, height) : Result<Side>(Error{});
     if (!without || !sameTiles || !with) {
       const std::string& error =
           !without ? without.error() : (!sameTiles ? sameTiles.error() : with.error());
