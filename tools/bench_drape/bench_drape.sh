@@ -37,7 +37,7 @@ ARGS=(--pyramid "$WORK/pyramid" --layer "$WORK/blue-marble" --layer "$WORK/zion"
   echo
   cat "$WORK/table.md"
   echo
-  echo "- commit: $(git -C "$ROOT" rev-parse --short HEAD)$(git -C "$ROOT" diff --quiet || echo ' + uncommitted changes')"
+  echo "- commit: $(git -C "$ROOT" rev-parse --short HEAD)$(git -C "$ROOT" diff --quiet -- src shaders tools || echo " + uncommitted changes")"
   echo "- machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) cores; GL: llvmpipe"
   echo "- drapes: (terrain tile, layer) pairs drawn with a texture; imagery textures: on the GPU, mip chains included"
   echo "- goal (issue 12): with imagery at most 1.3x the frame without"
