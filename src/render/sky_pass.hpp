@@ -1,6 +1,6 @@
 // Draws the sky (render/sky_model.hpp) behind everything: one screen-covering triangle at the far
 // depth (1), drawn after the terrain with the depth test LEQUAL and writes off, so only pixels
-// nothing else covered are shaded (early depth test; on llvmpipe the sky cost a quarter of a
+// nothing else covered are shaded (early depth test; on llvmpipe the sky cost a fifth of a
 // low oblique frame when it was drawn first under everything).
 #pragma once
 
