@@ -59,21 +59,14 @@ std::optional<Triangle> across(const Triangle& t, size_t k, uint32_t cells) {
   return Triangle{i, j, true};  // the diagonal
 }
 
-// Where a tile's vertices lie: the vertex spacing computed once (the same value
-// terrain::BlockGrid computes per vertex, so the positions are the mesh's bit for bit).
+// Where a tile's vertices lie: the mesh's own positions (terrain::BlockGrid), bit for bit.
 struct TileVertexPlacement {
   const ArrayTile& tile;
   const geo::Ellipsoid& ellipsoid;
-  double spacingDegrees;
 
   glm::dvec3 ecefMeters(uint32_t row, uint32_t column) const {
-    const uint64_t cells = tile.block->verticesPerSide - 1;
-    const double latitude =
-        90.0 - static_cast<double>(uint64_t{tile.id.y} * cells + row) * spacingDegrees;
-    const double longitude =
-        -180.0 + static_cast<double>(uint64_t{tile.id.x} * cells + column) * spacingDegrees;
-    return cachedVertexEcefMeters(ellipsoid, latitude, longitude,
-                                  tile.block->surfaceHeightMetersAt(row, column));
+    return cachedTileVertexEcefMeters(ellipsoid, {tile.id, tile.block->verticesPerSide}, row,
+                                      column, tile.block->surfaceHeightMetersAt(row, column));
   }
 };
 
@@ -124,8 +117,7 @@ class RelativeVertices {
  public:
   RelativeVertices(const ArrayTile& tile, const geo::Ellipsoid& ellipsoid,
                    const glm::dvec3& surface, uint32_t quadRow, uint32_t quadColumn)
-      : placement_{tile, ellipsoid,
-                   terrain::vertexSpacingDegrees(tile.id.level, tile.block->verticesPerSide)},
+      : placement_{tile, ellipsoid},
         surface_(surface),
         quadRow_(quadRow),
         quadColumn_(quadColumn),

@@ -63,16 +63,11 @@ const ColumnTrig& columnTrig(double longitudeDegrees) {
 glm::dvec3 cachedTileVertexEcefMeters(const geo::Ellipsoid& ellipsoid,
                                       const terrain::BlockGrid& grid, uint32_t row, uint32_t column,
                                       double heightMeters) {
-  return cachedVertexEcefMeters(ellipsoid, grid.latitudeDegrees(row), grid.longitudeDegrees(column),
-                                heightMeters);
-}
-
-glm::dvec3 cachedVertexEcefMeters(const geo::Ellipsoid& ellipsoid, double latitudeDegrees,
-                                  double longitudeDegrees, double heightMeters) {
+  const double latitudeDegrees = grid.latitudeDegrees(row);
   const RowTrig& r = rowTrig(ellipsoid, latitudeDegrees);
   const double z = (r.nPolar + heightMeters) * r.sinLat;
   if (std::abs(latitudeDegrees) == 90.0) return {0.0, 0.0, z};  // on the polar axis
-  const ColumnTrig& c = columnTrig(longitudeDegrees);
+  const ColumnTrig& c = columnTrig(grid.longitudeDegrees(column));
   const double rho = (r.n + heightMeters) * r.cosLat;
   return {rho * c.cosLon, rho * c.sinLon, z};
 }

@@ -16,9 +16,6 @@ namespace globe::collision {
 glm::dvec3 cachedTileVertexEcefMeters(const geo::Ellipsoid& ellipsoid,
                                       const terrain::BlockGrid& grid, uint32_t row, uint32_t column,
                                       double heightMeters);
-// The same for a vertex given by its (exact, BlockGrid) latitude and longitude in degrees.
-glm::dvec3 cachedVertexEcefMeters(const geo::Ellipsoid& ellipsoid, double latitudeDegrees,
-                                  double longitudeDegrees, double heightMeters);
 
 struct SurfacePoint {
   glm::dvec3 pointEcefMeters;  // geo::cartographicToEcef at height 0

@@ -110,6 +110,8 @@ Result<std::unique_ptr<TerrainScene>> TerrainScene::open(const std::filesystem::
     auto layers = ImageryLayers::open(options.layers, scene->runner_, options.imageryBudget);
     if (!layers) return Error{layers.error()};
     scene->imagery_ = std::move(*layers);
+    scene->nominalErrorRegions_ = scene->imagery_->nominalErrorRegions(
+        scene->store_->manifest().verticesPerSide, options.maximumScreenSpaceErrorPixels);
   }
   return scene;
 }
@@ -173,10 +175,7 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   // Imagery's resolution follows the terrain's level: flat ground keeps refining under a layer
   // as long as that sharpens it.
   selectionOptions.measuredErrors = options_.measuredLod;
-  if (imagery_) {
-    selectionOptions.nominalErrorRegions = imagery_->nominalErrorRegions(
-        selectionOptions.verticesPerSide, selectionOptions.maximumScreenSpaceErrorPixels);
-  }
+  selectionOptions.nominalErrorRegions = nominalErrorRegions_;
   if (store_->remote()) selectionOptions.lookaheadLevels = kRemoteLookaheadLevels;
   std::vector<geo::TileId> notOpen;
   if (store_->remote()) {

@@ -115,6 +115,9 @@ class TerrainScene {
   io::BackgroundPackOpens packOpens_;  // a remote pyramid's pack indexes, read off this thread
   std::chrono::steady_clock::time_point lastRetry_ = std::chrono::steady_clock::now();
   std::unique_ptr<ImageryLayers> imagery_;
+  // Where the layers need the terrain's nominal refinement (ImageryLayers::nominalErrorRegions):
+  // fixed once the layers are open.
+  std::vector<terrain::NominalErrorRegion> nominalErrorRegions_;
   std::vector<terrain::TileDrapes> drapes_;  // per tile of tiles_, with imagery
   std::vector<geo::TileId> tiles_;
   std::vector<std::shared_ptr<const terrain::HeightBlock>>

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "geo/globe_rectangle.hpp"
@@ -40,7 +41,7 @@ struct SelectionOptions {
   // Use the tiler's measured geometric errors (TileSummary, tileGeometricErrorMeters): smooth
   // tiles stop refining early, except inside nominalErrorRegions.
   bool measuredErrors = true;
-  std::vector<NominalErrorRegion> nominalErrorRegions;
+  std::span<const NominalErrorRegion> nominalErrorRegions;  // not owned: outlives selectTiles
   // Where a tile waits for its children, also request the descendants the refinement will want
   // next, this many levels further (each level at a quarter of the priority): over a network the
   // chain of round trips, one level per frame, is otherwise what a view waits on. They are loads

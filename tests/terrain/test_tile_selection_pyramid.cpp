@@ -255,8 +255,9 @@ TEST(TileSelectionPyramid, NominalErrorRegionsRefineAsNominalInsideAndMeasuredOu
   ASSERT_LT(measuredTiles.tiles.size(), nominalTiles.tiles.size());
 
   auto withRegion = [&](const geo::GlobeRectangle& rectangle, uint32_t throughLevel) {
+    const std::vector<NominalErrorRegion> regions{{rectangle, throughLevel}};
     SelectionOptions options;
-    options.nominalErrorRegions.push_back({rectangle, throughLevel});
+    options.nominalErrorRegions = regions;
     SelectionResult result = selectTiles(view.view, catalog, options, {});
     EXPECT_TRUE(result.complete());
     EXPECT_TRUE(testing::checkInvariants(view, catalog, options, result));

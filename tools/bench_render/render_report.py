@@ -19,8 +19,7 @@ def rows(path):
     for line in lines[1:]:
         cells = [c.strip() for c in line.strip("|").split("|")]
         out.append(dict(zip(header, cells)))
-    footer = [l for l in path.read_text().splitlines() if l.startswith("1280x") or "renderer:" in l]
-    return out, footer[0] if footer else ""
+    return out
 
 
 def number(text):
@@ -39,11 +38,11 @@ def main():
     parser.add_argument("rounds", type=Path, nargs="+")
     args = parser.parse_args()
     rounds = [rows(p) for p in args.rounds]
-    scenarios = [r["scenario"] for r in rounds[0][0]]
+    scenarios = [r["scenario"] for r in rounds[0]]
     table = []
     summary = {}
     for name in scenarios:
-        per_round = [next(r for r in rs if r["scenario"] == name) for rs, _ in rounds]
+        per_round = [next(r for r in rs if r["scenario"] == name) for rs in rounds]
         frame = [number(r["ms/frame median"]) for r in per_round]
         wall = [number(r["wall ms"]) for r in per_round]
         values = [v for v in frame if v is not None] or [v for v in wall if v is not None]
@@ -74,7 +73,7 @@ def main():
         *table,
         "",
     ]
-    for i, (path, (_, footer)) in enumerate(zip(args.rounds, rounds), 1):
+    for i, path in enumerate(args.rounds, 1):
         doc += [f"## Round {i}", "", path.read_text().strip(), ""]
     tmp = args.doc.with_suffix(".md.tmp")
     tmp.write_text("\n".join(doc) + "\n")
