@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
@@ -84,6 +85,10 @@ class TerrainScene {
   FrameInfo update(const camera::CameraPose& pose, int widthPixels, int heightPixels, TileGpu& gpu);
   const terrain::RenderView& view() const { return view_; }
   const std::vector<geo::TileId>& tiles() const { return tiles_; }
+  // Where the layers keep the terrain's nominal refinement (computed when the scene opens).
+  std::span<const terrain::NominalErrorRegion> nominalErrorRegions() const {
+    return nominalErrorRegions_;
+  }
   // This frame's rendering tile array with its blocks: what collision runs against (the paper's
   // "rendering terrain tiles array"), exactly the tiles drawn.
   const terrain::RenderingTileArray& renderingTileArray() const { return array_; }

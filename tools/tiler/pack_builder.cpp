@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <optional>
+#include <vector>
 
 #include "geo/tiling_scheme.hpp"
 #include "terrain/block_grid.hpp"
@@ -30,19 +32,22 @@ void inheritFromChild(const io::Pack& childPack, const geo::TileId& child, size_
 }
 
 // How far the child's vertices lie from the parent's surface over the child's quadrant, in
-// metres, under either sea surface: the parent's vertices there are the child's even vertices,
-// drawn as two triangles per cell split along the north-west to south-east diagonal
-// (terrain/tile_mesh.hpp's rule).
+// metres (pack_builder.hpp: all but the largest kDeviationIgnoredFraction of them, and at least
+// kDeviationMaxFraction of the largest). Per vertex, the larger deviation under either sea
+// surface; the parent's vertices there are the child's even vertices, drawn as two triangles per
+// cell split along the north-west to south-east diagonal (terrain/tile_mesh.hpp's rule).
 double deviationFromParent(std::span<const int16_t> child, uint32_t n) {
-  double worst = 0;
-  for (const terrain::SeaSurface sea :
-       {terrain::SeaSurface::Water, terrain::SeaSurface::SeaFloor}) {
-    auto h = [&](uint32_t i, uint32_t j) {
-      return terrain::surfaceHeightMeters(child[size_t{i} * n + j], sea);
-    };
-    for (uint32_t i = 0; i < n; ++i) {
-      for (uint32_t j = 0; j < n; ++j) {
-        if (i % 2 == 0 && j % 2 == 0) continue;
+  std::vector<double> deviations;
+  deviations.reserve(size_t{n} * n);
+  for (uint32_t i = 0; i < n; ++i) {
+    for (uint32_t j = 0; j < n; ++j) {
+      if (i % 2 == 0 && j % 2 == 0) continue;
+      double deviation = 0;
+      for (const terrain::SeaSurface sea :
+           {terrain::SeaSurface::Water, terrain::SeaSurface::SeaFloor}) {
+        auto h = [&](uint32_t r, uint32_t c) {
+          return terrain::surfaceHeightMeters(child[size_t{r} * n + c], sea);
+        };
         // The parent cell's north-west corner; an even row or column lies on the cell's edge,
         // which may be the block's last row or column, so only the corners it needs are read.
         const uint32_t i0 = i & ~1u, j0 = j & ~1u;
@@ -55,14 +60,28 @@ double deviationFromParent(std::span<const int16_t> child, uint32_t n) {
         } else {
           surface = (a + h(i0 + 2, j0 + 2)) / 2;  // middle of the north-west to south-east diagonal
         }
-        worst = std::max(worst, std::abs(h(i, j) - surface));
+        deviation = std::max(deviation, std::abs(h(i, j) - surface));
       }
+      deviations.push_back(deviation);
     }
   }
-  return worst;
+  return geometricErrorOfDeviations(deviations);
 }
 
 }  // namespace
+
+double geometricErrorOfDeviations(std::span<double> deviationsMeters) {
+  if (deviationsMeters.empty()) return 0.0;
+  const auto ignored =
+      static_cast<size_t>(kDeviationIgnoredFraction * static_cast<double>(deviationsMeters.size()));
+  // Descending: position `ignored` is the largest deviation left once the ignored are dropped.
+  const auto kept = deviationsMeters.begin() + static_cast<std::ptrdiff_t>(ignored);
+  std::nth_element(deviationsMeters.begin(), kept, deviationsMeters.end(), std::greater<>());
+  const double largest =
+      *std::max_element(deviationsMeters.begin(),
+                        deviationsMeters.begin() + static_cast<std::ptrdiff_t>(ignored) + 1);
+  return std::max(*kept, kDeviationMaxFraction * largest);
+}
 
 Result<io::Pack> buildPack(const io::PackId& id, const io::PackLayout& layout,
                            const TilingPlan& plan, const std::vector<TilerSource>& sources,

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <map>
+#include <span>
 #include <vector>
 
 #include "geo/ellipsoid.hpp"
@@ -21,8 +22,22 @@ struct PackBuildStats {
   uint64_t sourceRowReads = 0;
 };
 
+// A tile's geometric error bounds how far its surface lies from its children's vertices, except
+// for the largest few: the deviations that all but the largest kDeviationIgnoredFraction stay
+// within, and at least kDeviationMaxFraction of the largest. On rough terrain the largest
+// deviations are a few vertices on cliff edges, which change few pixels; bounding them made the
+// selection refine canyons (Zion) a level further than the image needed. The fraction of the
+// largest keeps a lone peak from being ignored: at the 2 px threshold it moves at most 5 px.
+// tools/bench_render/bench_lod.sh measures the images (docs/performance-lod.md).
+inline constexpr double kDeviationIgnoredFraction = 0.03;
+inline constexpr double kDeviationMaxFraction = 0.4;
+
+// The geometric error of a set of vertex deviations in metres, by the rule above (reorders them);
+// 0 for none.
+double geometricErrorOfDeviations(std::span<double> deviationsMeters);
+
 // childPacks: the finished packs of the next finer level under this pack (absent ones omitted).
-// Each tile's geometric error is how far its surface lies from its children's vertices, and at
+// Each tile's geometric error is that of its children's vertices from its surface, and at
 // least its children's own errors (0 for a tile of the finest data), so it never decreases going
 // up; and at least terrain::geometricErrorMeters of its level where its children hold both water
 // and land: a coastline's shape is in its sea flags, which no height deviation measures. (The

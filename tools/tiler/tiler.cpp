@@ -68,11 +68,14 @@ std::string planFingerprint(const TilerOptions& options, const std::vector<Tiler
                       {"stepDegrees", s.stepDegrees},
                       {"finestLevel", s.finestLevel}});
   }
-  const nlohmann::json plan = {{"inputs", inputs},
-                               {"blockSize", options.verticesPerSide},
-                               {"packTilesPerSide", options.packTilesPerSide},
-                               {"globeModel", std::string(geo::toString(options.globeModel))},
-                               {"conditioning", kConditioningVersion}};
+  const nlohmann::json plan = {
+      {"inputs", inputs},
+      {"blockSize", options.verticesPerSide},
+      {"packTilesPerSide", options.packTilesPerSide},
+      {"globeModel", std::string(geo::toString(options.globeModel))},
+      {"conditioning", kConditioningVersion},
+      {"geometricError",
+       {{"ignoredFraction", kDeviationIgnoredFraction}, {"maxFraction", kDeviationMaxFraction}}}};
   return plan.dump(1) + "\n";
 }
 

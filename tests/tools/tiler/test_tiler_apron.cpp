@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -87,21 +89,23 @@ TEST_F(BundledPyramid, ApronHoldsWhatTheNeighbouringTilesHold) {
 
 // The tile's surface at grid position (row, column) in vertex units, with the mesh's diagonal
 // rule, by barycentric interpolation over the triangle that holds the point.
-double surfaceAt(const std::vector<int16_t>& samples, double row, double column) {
+double surfaceAt(const std::vector<int16_t>& samples, terrain::SeaSurface sea, double row,
+                 double column) {
   const auto i = std::min<uint32_t>(static_cast<uint32_t>(row), 15);
   const auto j = std::min<uint32_t>(static_cast<uint32_t>(column), 15);
   const double v = row - i, u = column - j;
   auto h = [&](uint32_t r, uint32_t c) {
-    return terrain::surfaceHeightMeters(samples[r * 17 + c], terrain::SeaSurface::Water);
+    return terrain::surfaceHeightMeters(samples[r * 17 + c], sea);
   };
   // South-west triangle (i,j),(i+1,j),(i+1,j+1) where u <= v, else (i,j),(i+1,j+1),(i,j+1).
   if (u <= v) return (1 - v) * h(i, j) + (v - u) * h(i + 1, j) + u * h(i + 1, j + 1);
   return (1 - u) * h(i, j) + v * h(i + 1, j + 1) + (u - v) * h(i, j + 1);
 }
 
-TEST_F(BundledPyramid, GeometricErrorBoundsTheChildrenAndNeverDecreasesUpwards) {
+TEST_F(BundledPyramid, GeometricErrorBoundsAllButTheLargestDeviationsAndNeverDecreasesUpwards) {
   const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
   uint64_t parents = 0, leaves = 0, coasts = 0;
+  uint64_t skewed = 0;  // children whose largest deviation is far beyond the rest
   double largest = 0;
   for (const auto& [tile, block] : *tiles_) {
     const float error = block.entry.geometricErrorMeters;
@@ -125,27 +129,47 @@ TEST_F(BundledPyramid, GeometricErrorBoundsTheChildrenAndNeverDecreasesUpwards) 
       EXPECT_GE(double{error}, terrain::geometricErrorMeters(tile.level, n, kWgs84))
           << tile.level << "/" << tile.x << "/" << tile.y;
     }
+    double boundOfAll = 0;  // the largest deviation or child error: the rule never exceeds it
     for (size_t q = 0; q < 4; ++q) {
       const Block* child = findBlock(children[q]);
       ASSERT_NE(child, nullptr);
       const double rowOffset = (q >= 2 ? 8.0 : 0.0), columnOffset = (q % 2 == 1 ? 8.0 : 0.0);
-      double worst = 0;
+      std::vector<double> deviations;  // of the child's vertices that the parent does not have
       for (uint32_t i = 0; i < n; ++i) {
         for (uint32_t j = 0; j < n; ++j) {
-          const double fine =
-              terrain::surfaceHeightMeters(child->samples[i * n + j], terrain::SeaSurface::Water);
-          worst = std::max(worst, std::abs(fine - surfaceAt(block.samples, rowOffset + i / 2.0,
-                                                            columnOffset + j / 2.0)));
+          if (i % 2 == 0 && j % 2 == 0) continue;
+          double deviation = 0;
+          for (const auto sea : {terrain::SeaSurface::Water, terrain::SeaSurface::SeaFloor}) {
+            const double fine = terrain::surfaceHeightMeters(child->samples[i * n + j], sea);
+            deviation = std::max(deviation,
+                                 std::abs(fine - surfaceAt(block.samples, sea, rowOffset + i / 2.0,
+                                                           columnOffset + j / 2.0)));
+          }
+          deviations.push_back(deviation);
         }
       }
-      ASSERT_GE(double{error}, std::max(worst, double{child->entry.geometricErrorMeters}) - 1e-3)
+      std::sort(deviations.begin(), deviations.end(), std::greater<>());
+      // All but the largest 3 % (of 208: the 6 largest) lie within the error, and the largest
+      // within 2.5 times it (pack_builder.hpp).
+      const size_t ignored = deviations.size() * 3 / 100;
+      const double childError = child->entry.geometricErrorMeters;
+      const double required = std::max({deviations[ignored], 0.4 * deviations.front(), childError});
+      ASSERT_GE(double{error}, required - 1e-3)
           << tile.level << "/" << tile.x << "/" << tile.y << " child " << q;
+      boundOfAll = std::max({boundOfAll, deviations.front(), childError});
+      if (deviations.front() > 2.5 * deviations[ignored] + 1.0) ++skewed;
+    }
+    if (!(water && land)) {
+      // Stored as a float rounded up (one step per level it is carried up).
+      EXPECT_LE(double{error}, boundOfAll * (1 + 1e-6) + 1e-3)
+          << tile.level << "/" << tile.x << "/" << tile.y;
     }
   }
   EXPECT_GT(parents, 5'000u);
   EXPECT_GT(leaves, 15'000u);
   EXPECT_GT(largest, 500.0);  // the sea floor and Fuji are anything but flat
   EXPECT_GT(coasts, 100u);
+  EXPECT_GT(skewed, 10u);  // the 0.4 x largest bound is exercised, not only the 97th percentile
 }
 
 terrain::HeightBlock heightBlockOf(const BundledPyramid::Block* block) {
