@@ -61,7 +61,8 @@ int main(int argc, char** argv) {
                  "the loader's block cache budget, MiB (below one view's working set, ~0.5 MiB "
                  "on the demo path, views thrash and the run stops at the view timeout)")
       ->capture_default_str();
-  app.add_option("--gpu-tiles", options.scene.gpuTileBudget, "meshes kept on the (OSMesa) GPU")
+  app.add_option("--gpu-tiles", options.scene.gpuTileBudget,
+                 "tile meshes counted as resident (bookkept: the soak opens no GL context)")
       ->capture_default_str();
   app.add_option("--globe", globeName, "wgs84 | sphere")->capture_default_str();
   bool seaFloor = false;
