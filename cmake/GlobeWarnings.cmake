@@ -29,12 +29,23 @@ if(GLOBE_FUZZ)
   add_link_options(-fsanitize=address,undefined)
 endif()
 
+# Precompiled headers (tools/bench/build_time.sh measures what they save: docs/build-time.md):
+# the standard and GLM headers nearly every file includes, and GoogleTest for the tests.
+option(GLOBE_PRECOMPILED_HEADERS "Precompile the common standard, GLM and GoogleTest headers" OFF)
+function(globe_precompile name)
+  if(GLOBE_PRECOMPILED_HEADERS)
+    target_precompile_headers(${name} PRIVATE <algorithm> <cmath> <cstdint> <memory> <optional>
+      <string> <vector> <glm/glm.hpp> ${ARGN})
+  endif()
+endfunction()
+
 # globe_module(NAME SOURCES... DEPENDS targets...): one static library per src/<module>.
 function(globe_module name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
   add_library(${name} STATIC ${ARG_SOURCES})
   target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR}/src)
   target_link_libraries(${name} PUBLIC ${ARG_DEPENDS} PRIVATE globe_warnings)
+  globe_precompile(${name})
 endfunction()
 
 # globe_test(NAME SOURCES... DEPENDS targets...): a GoogleTest executable registered with CTest.
@@ -44,5 +55,6 @@ function(globe_test name)
   target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} GTest::gtest_main GTest::gmock globe_warnings)
   target_compile_definitions(${name} PRIVATE
     GLOBE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  globe_precompile(${name} <gtest/gtest.h>)
   gtest_discover_tests(${name} TEST_PREFIX "${name}." DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 600)
 endfunction()

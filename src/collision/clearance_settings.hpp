@@ -18,6 +18,11 @@ namespace globe::collision {
 //   so beside a steep wall neither the near plane nor the view up to it is inside the terrain.
 // - raise: exponential approach with time constant 0.25 s, at most 4 m/s: a 1 m gap closes to
 //   1 cm in ~1.15 s (35 frames at 30 Hz; then it snaps), the first frame moving ~0.12 m.
+// A camera pushed out of the terrain goes this much beyond the required clearance (so rounding
+// does not leave it a hair inside), in at most this many pushes (each re-measures the terrain).
+inline constexpr double kClearancePushMarginMeters = 1e-3;
+inline constexpr int kMaximumClearancePushes = 4;
+
 struct ClearanceSettings {
   double eyeMeters = 2.0;
   double minimumEyeMeters = 1.0;

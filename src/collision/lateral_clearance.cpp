@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "collision/clearance_settings.hpp"
 #include "collision/grid_location.hpp"
 #include "collision/terrain_array.hpp"
 #include "geo/ecef.hpp"
@@ -19,9 +20,6 @@
 
 namespace globe::collision {
 namespace {
-
-constexpr double kMarginMeters = 1e-3;
-constexpr int kMaximumPushes = 4;
 
 // The point of triangle abc nearest the origin.
 glm::dvec3 closestToOrigin(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
@@ -145,11 +143,12 @@ LateralPush pushAwayFromTerrain(const RenderingTileArray& array, const geo::Elli
     return push;
   }
   glm::dvec3 eye = eyeEcefMeters;
-  for (int k = 0; k < kMaximumPushes; ++k) {
+  for (int k = 0; k < kMaximumClearancePushes; ++k) {
     const auto nearest = nearestDrawnTriangle(array, ellipsoid, eye, radiusMeters);
     if (!nearest) break;
     push.trianglesTested += nearest->trianglesTested;
-    eye += (radiusMeters - nearest->distanceMeters + kMarginMeters) * nearest->awayEcef;
+    eye +=
+        (radiusMeters - nearest->distanceMeters + kClearancePushMarginMeters) * nearest->awayEcef;
   }
   push.valid = true;
   push.eyeEcefMeters = eye;

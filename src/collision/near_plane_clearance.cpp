@@ -6,13 +6,11 @@
 #include <limits>
 #include <optional>
 
+#include "collision/clearance_settings.hpp"
 #include "geo/ecef.hpp"
 
 namespace globe::collision {
 namespace {
-
-constexpr double kMarginMeters = 1e-3;
-constexpr int kMaximumPushes = 4;
 
 // The lowest clearance of the points above the surface; nullopt if a point is invalid.
 std::optional<double> lowestClearance(const RenderingTileArray& array,
@@ -62,8 +60,8 @@ NearPlaneResult pushAboveNearPlane(const RenderingTileArray& array, const geo::E
       array, ellipsoid, geo::cartographicToEcef(ellipsoid, position), offsetsEcefMeters, model);
   if (!lowest) return result;
   result.lowestClearanceBeforeMeters = *lowest;
-  for (int k = 0; k < kMaximumPushes && *lowest < clearanceMeters; ++k) {
-    position.heightMeters += clearanceMeters - *lowest + kMarginMeters;
+  for (int k = 0; k < kMaximumClearancePushes && *lowest < clearanceMeters; ++k) {
+    position.heightMeters += clearanceMeters - *lowest + kClearancePushMarginMeters;
     lowest = lowestClearance(array, ellipsoid, geo::cartographicToEcef(ellipsoid, position),
                              offsetsEcefMeters, model);
     if (!lowest) return result;

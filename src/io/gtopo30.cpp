@@ -15,6 +15,7 @@
 #include <system_error>
 #include <utility>
 
+#include "io/ascii_case.hpp"
 #include "io/atomic_file.hpp"
 
 namespace globe::io {
@@ -23,16 +24,6 @@ namespace {
 
 constexpr uint64_t kMaxHeaderBytes = 1 << 20;
 constexpr char kHostByteOrder = std::endian::native == std::endian::big ? 'M' : 'I';
-
-std::string toLower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
-std::string toUpper(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return s;
-}
 
 bool isRegularFile(const fs::path& p) {
   std::error_code ec;
@@ -43,7 +34,7 @@ bool isRegularFile(const fs::path& p) {
 std::optional<fs::path> findWithExtension(const fs::path& dir, const std::string& base,
                                           std::initializer_list<std::string_view> lowerExts) {
   for (std::string_view ext : lowerExts) {
-    for (const std::string& e : {toUpper(std::string(ext)), std::string(ext)}) {
+    for (const std::string& e : {asciiUpper(std::string(ext)), std::string(ext)}) {
       if (fs::path p = dir / (base + e); isRegularFile(p)) return p;
     }
   }
@@ -54,7 +45,7 @@ std::optional<fs::path> findWithExtension(const fs::path& dir, const std::string
          it.increment(ec)) {
       const std::string name = it->path().filename().string();
       if (name.size() == base.size() + ext.size() && name.compare(0, base.size(), base) == 0 &&
-          toLower(name.substr(base.size())) == ext && isRegularFile(dir / name)) {
+          asciiLower(name.substr(base.size())) == ext && isRegularFile(dir / name)) {
         return dir / name;
       }
     }
@@ -75,7 +66,7 @@ Result<Gtopo30Paths> findGtopo30Files(const fs::path& path) {
     return makeError(path.string() + ": is a directory, not a GTOPO30 .DEM or .HDR file");
   }
   const fs::path dir = path.parent_path();
-  const std::string ext = toLower(path.extension().string());
+  const std::string ext = asciiLower(path.extension().string());
   const std::string stem = path.stem().string();
   const bool exists = fs::exists(path, ec);
 
@@ -297,7 +288,7 @@ Result<void> writeGtopo30(const fs::path& stem, const Gtopo30Raster& raster) {
   }
 
   std::string base = name;
-  const std::string ext = toLower(stem.extension().string());
+  const std::string ext = asciiLower(stem.extension().string());
   if (ext == ".dem" || ext == ".hdr") base.resize(base.size() - ext.size());
   if (auto r = writeFileAtomically(base + ".DEM", std::span<const std::byte>(dem)); !r) return r;
   if (auto r = writeFileAtomically(base + ".HDR", formatGtopo30Header(h)); !r) return r;

@@ -8,17 +8,13 @@
 #include <map>
 #include <optional>
 
+#include "io/ascii_case.hpp"
+
 namespace globe::io {
 namespace {
 
 constexpr int64_t kMaxDimension = 10'000'000;
 constexpr int64_t kMaxRasterBytes = int64_t{1} << 40;
-
-std::string toUpper(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return out;
-}
 
 bool isSpace(char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }
 
@@ -38,7 +34,7 @@ std::map<std::string, std::string> splitKeys(std::string_view text) {
     if (line.empty() || line.front() == '#') continue;
     size_t split = 0;
     while (split < line.size() && !isSpace(line[split])) ++split;
-    keys[toUpper(line.substr(0, split))] = std::string(trim(line.substr(split)));
+    keys[asciiUpper(line.substr(0, split))] = std::string(trim(line.substr(split)));
   }
   return keys;
 }
@@ -109,7 +105,7 @@ Result<Gtopo30Header> parseGtopo30Header(std::string_view text,
   Gtopo30Header h;
 
   if (const std::string* v = p.find("BYTEORDER")) {
-    const std::string order = toUpper(*v);
+    const std::string order = asciiUpper(*v);
     if (order == "M" || order == "MSBFIRST") {
       h.byteOrder = 'M';
     } else if (order == "I" || order == "LSBFIRST") {
@@ -119,7 +115,7 @@ Result<Gtopo30Header> parseGtopo30Header(std::string_view text,
     }
   }
   if (const std::string* v = p.find("LAYOUT")) {
-    if (toUpper(*v) != "BIL") return p.bad("LAYOUT", *v, "only BIL is supported");
+    if (asciiUpper(*v) != "BIL") return p.bad("LAYOUT", *v, "only BIL is supported");
   }
 
   auto bands = p.integer("NBANDS", 1);

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "io/ascii_case.hpp"
 #include "io/atomic_file.hpp"
 #include "io/gtopo30.hpp"
 
@@ -30,11 +31,6 @@ void snapAxis(double& step, double& first, int64_t count) {
 
 bool coversEveryLongitude(const SampleGrid& g) {
   return static_cast<double>(g.cols) * g.columnStepDegrees >= 360.0 - 1e-3 * g.columnStepDegrees;
-}
-
-std::string toLower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
 }
 
 }  // namespace
@@ -126,7 +122,7 @@ Result<void> ColumnMappedSource::readRow(int64_t row, int64_t firstColumn, int64
 Result<std::unique_ptr<RasterSource>> openRasterSource(const std::filesystem::path& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) return openGdalSource(path);  // e.g. Arc/Info grids
-  const std::string ext = toLower(path.extension().string());
+  const std::string ext = asciiLower(path.extension().string());
   const bool exists = std::filesystem::exists(path, ec);
   const bool gtopoName = ext == ".dem" || ext == ".bil" || ext == ".hdr";
   if (exists && !gtopoName) return openGdalSource(path);
@@ -136,7 +132,7 @@ Result<std::unique_ptr<RasterSource>> openRasterSource(const std::filesystem::pa
     // ENVI also writes .hdr files, in a different format that GDAL reads.
     auto text = readWholeFile(files->header, 1 << 20);
     if (text && text->size() >= 4 &&
-        toLower(std::string(reinterpret_cast<const char*>(text->data()), 4)) == "envi") {
+        asciiLower(std::string(reinterpret_cast<const char*>(text->data()), 4)) == "envi") {
       return openGdalSource(files->data);
     }
     return openGtopo30Source(path);
