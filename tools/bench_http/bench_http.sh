@@ -115,7 +115,9 @@ for entry in "${VIEWS[@]}"; do
     zxy+=("$(seconds curl --parallel --parallel-max 24 --parallel-immediate -s -K "$WORK/curl-$name.cfg" 2>/dev/null)")
     read -r zxyRequests zxyBytes <<< "$(log_stats "$before")"
   done
-  ROWS+="| $name | $coldRequests | $((coldBytes / 1024)) | $(median "${cold[@]}") | $zxyRequests | $((zxyBytes / 1024)) | $(median "${zxy[@]}") | $warmRequests | $(median "${warmFar[@]}") | $(median "${warmNear[@]}") | $freshRequests | $(median "${warmFresh[@]}") | $(median "${local_[@]}") |
+  localMedian=$(median "${local_[@]}")
+  ratio() { awk -v a="$1" -v b="$localMedian" 'BEGIN {printf "%.2f", b > 0 ? a / b : 0}'; }
+  ROWS+="| $name | $coldRequests | $((coldBytes / 1024)) | $(median "${cold[@]}") | $zxyRequests | $((zxyBytes / 1024)) | $(median "${zxy[@]}") | $warmRequests | $(median "${warmFar[@]}") | $(median "${warmNear[@]}") | $freshRequests | $(median "${warmFresh[@]}") | $localMedian | $(ratio "$(median "${warmFar[@]}")") | $(ratio "$(median "${warmFresh[@]}")") |
 "
 done
 
@@ -131,8 +133,8 @@ $(nproc) cores ($CPU), $(date -u +%Y-%m-%d). Medians of $RUNS runs, whole-proces
 through globe-delay-proxy adding a ${RTT} ms round trip (each chunk held ${RTT}/2 ms each way, and
 one round trip per new connection).
 
-| view | cold requests | cold KiB | cold s (far) | z/x/y requests | z/x/y KiB | z/x/y s (far, curl) | warm requests | warm s (far) | warm s (near) | warm requests, max-age | warm s (far, max-age) | local s |
-|---|---|---|---|---|---|---|---|---|---|---|---|---|
+| view | cold requests | cold KiB | cold s (far) | z/x/y requests | z/x/y KiB | z/x/y s (far, curl) | warm requests | warm s (far) | warm s (near) | warm requests, max-age | warm s (far, max-age) | local s | warm far / local | warm max-age / local |
+|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|
 $ROWS
 * **cold**: an empty disk cache: the manifest, each pack's header and index (one range request
   each, on the loader's threads, every level's pack under the camera at once), then one range
