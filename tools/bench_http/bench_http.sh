@@ -116,7 +116,7 @@ for entry in "${VIEWS[@]}"; do
     read -r zxyRequests zxyBytes <<< "$(log_stats "$before")"
   done
   localMedian=$(median "${local_[@]}")
-  ratio() { awk -v a="$1" -v b="$localMedian" 'BEGIN {printf "%.2f", b > 0 ? a / b : 0}'; }
+  ratio() { awk -v a="$1" -v b="$localMedian" 'BEGIN {printf "%.2f", (b > 0 ? a / b : 0)}'; }
   ROWS+="| $name | $coldRequests | $((coldBytes / 1024)) | $(median "${cold[@]}") | $zxyRequests | $((zxyBytes / 1024)) | $(median "${zxy[@]}") | $warmRequests | $(median "${warmFar[@]}") | $(median "${warmNear[@]}") | $freshRequests | $(median "${warmFresh[@]}") | $localMedian | $(ratio "$(median "${warmFar[@]}")") | $(ratio "$(median "${warmFresh[@]}")") |
 "
 done
