@@ -39,7 +39,7 @@ done
   echo "# Tiling the whole GTOPO30 world"
   echo
   echo "\`globe-tiler\` on a synthetic world-sized GTOPO30 set in the product's own layout (33 tiles:"
-  echo "27 of 40°×50° and 6 Antarctic tiles of 60°×30°, 43200×21600 samples, $SOURCE_MB MB, written by"
+  echo "27 of 40°×50° and 6 Antarctic tiles of 60°×30°, 43200×21600 samples, $SOURCE_MB MiB, written by"
   echo "\`globe-synth-gtopo30\`), levels 0..11, every core; \`/usr/bin/time -v\` per round."
   echo "Made by \`tools/bench-world-tiling.sh\` on $(date -u +%Y-%m-%d)."
   echo
