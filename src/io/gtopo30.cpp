@@ -6,7 +6,6 @@
 #include <unistd.h>
 
 #include <bit>
-#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -34,7 +33,7 @@ bool isRegularFile(const fs::path& p) {
 std::optional<fs::path> findWithExtension(const fs::path& dir, const std::string& base,
                                           std::initializer_list<std::string_view> lowerExts) {
   for (std::string_view ext : lowerExts) {
-    for (const std::string& e : {asciiUpper(std::string(ext)), std::string(ext)}) {
+    for (const std::string& e : {asciiUpper(ext), std::string(ext)}) {
       if (fs::path p = dir / (base + e); isRegularFile(p)) return p;
     }
   }

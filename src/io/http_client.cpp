@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "globe_version.hpp"
+#include "io/ascii_case.hpp"
 
 namespace globe::io {
 namespace {
@@ -50,8 +51,7 @@ bool startsWithNoCase(std::string_view text, std::string_view prefix) {
 
 // "max-age=300, public" -> 300; no-cache / no-store -> 0; otherwise -1.
 long parseMaxAge(const std::string& value) {
-  std::string lower(value);
-  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string lower = asciiLower(value);
   if (lower.find("no-cache") != std::string::npos || lower.find("no-store") != std::string::npos) {
     return 0;
   }

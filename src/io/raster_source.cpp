@@ -2,7 +2,6 @@
 #include "io/raster_source.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 
 #include "io/ascii_case.hpp"
@@ -132,7 +131,7 @@ Result<std::unique_ptr<RasterSource>> openRasterSource(const std::filesystem::pa
     // ENVI also writes .hdr files, in a different format that GDAL reads.
     auto text = readWholeFile(files->header, 1 << 20);
     if (text && text->size() >= 4 &&
-        asciiLower(std::string(reinterpret_cast<const char*>(text->data()), 4)) == "envi") {
+        asciiLower(std::string_view(reinterpret_cast<const char*>(text->data()), 4)) == "envi") {
       return openGdalSource(files->data);
     }
     return openGtopo30Source(path);
