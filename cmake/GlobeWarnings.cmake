@@ -53,6 +53,7 @@ function(globe_test name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} GTest::gtest_main GTest::gmock globe_warnings)
+  target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR})  # tests/support/...
   target_compile_definitions(${name} PRIVATE
     GLOBE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   globe_precompile(${name} <gtest/gtest.h>)

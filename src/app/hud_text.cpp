@@ -22,7 +22,7 @@ std::string meters(double value) {
   return format(magnitude < 100 ? "%.2f m" : magnitude < 10000 ? "%.1f m" : "%.0f m", value);
 }
 
-double headingDegrees(double radians) {
+double displayHeadingDegrees(double radians) {
   double degrees = std::fmod(geo::radiansToDegrees(radians), 360.0);
   if (degrees < 0) degrees += 360.0;
   return degrees >= 359.95 ? 0.0 : degrees;
@@ -49,7 +49,7 @@ std::vector<std::string> hudStatusLines(const HudState& s, bool withFrameTime) {
                          s.pose.position.latitudeDegrees()) +
                   meters(s.pose.position.heightMeters));
   lines.push_back(terrainStatus(s.collision));
-  lines.push_back(format("heading %.1f  pitch %.1f", headingDegrees(s.pose.headingRadians),
+  lines.push_back(format("heading %.1f  pitch %.1f", displayHeadingDegrees(s.pose.headingRadians),
                          geo::radiansToDegrees(s.pose.pitchRadians)));
   lines.push_back(s.collision.collided
                       ? "COLLISION " + std::string(collision::toString(s.collision.response))

@@ -10,7 +10,7 @@
 namespace globe::app {
 namespace {
 
-double headingDegrees(double radians) {
+double headingDegrees0To360(double radians) {
   double degrees = std::fmod(geo::radiansToDegrees(radians), 360.0);
   if (degrees < 0) degrees += 360.0;
   return degrees >= 360.0 ? 0.0 : degrees;
@@ -77,7 +77,7 @@ io::CameraPathFile recordedPathFile(const std::vector<PathKeyframe>& keyframes) 
         geo::radiansToDegrees(geo::wrapLongitudeRadians(p.position.longitudeRadians));
     key.latitudeDegrees = p.position.latitudeDegrees();
     key.heightMeters = p.position.heightMeters;
-    key.headingDegrees = headingDegrees(p.headingRadians);
+    key.headingDegrees = headingDegrees0To360(p.headingRadians);
     key.pitchDegrees = geo::radiansToDegrees(p.pitchRadians);
     key.rollDegrees = geo::radiansToDegrees(p.rollRadians);
     file.keyframes.push_back(key);

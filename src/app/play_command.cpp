@@ -27,7 +27,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr long kMaximumFrames = 10'000'000;
 
-double msSince(Clock::time_point start) {
+double millisecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
@@ -173,7 +173,7 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
     } else {
       render::finishGl();
     }
-    record.timings.drawMs = msSince(drawStart);
+    record.timings.drawMs = millisecondsSince(drawStart);
     if (options.writeFrames) {
       const auto writeStart = Clock::now();
       char name[32];
@@ -182,13 +182,13 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
           !written) {
         return Error{written.error()};
       }
-      record.timings.writeMs = msSince(writeStart);
+      record.timings.writeMs = millisecondsSince(writeStart);
     }
     if (surface->window) {
       surface->window->swapBuffers();
       surface->window->pollEvents();
     }
-    record.timings.totalMs = msSince(frameStart);
+    record.timings.totalMs = millisecondsSince(frameStart);
     records.push_back(record);
     if (surface->window && surface->window->shouldClose()) {
       report.stoppedEarly = i + 1 < frames;
@@ -224,7 +224,7 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
   }
   if (options.video) outputs += "video: " + options.video->string() + "\n";
   char wall[96];
-  std::snprintf(wall, sizeof wall, "wall time: %.1f s\n", msSince(runStart) / 1000.0);
+  std::snprintf(wall, sizeof wall, "wall time: %.1f s\n", millisecondsSince(runStart) / 1000.0);
   report.summaryText = header + formatSummary(report.summary, records) + wall + outputs;
   const std::pair<const char*, std::string> texts[] = {{"log.csv", formatPlayLog(records)},
                                                        {"timing.csv", formatTimingLog(records)},

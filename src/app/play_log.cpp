@@ -12,7 +12,7 @@ namespace globe::app {
 namespace {
 
 // Degrees in (-180, 180]; "-0.000" never printed.
-double headingDegrees(double radians) {
+double signedAngleDegrees(double radians) {
   double degrees = geo::radiansToDegrees(radians);
   degrees = std::fmod(degrees, 360.0);
   if (degrees > 180.0) degrees -= 360.0;
@@ -69,9 +69,9 @@ std::string formatPlayLog(const std::vector<FrameRecord>& frames) {
                   printable(r.terrainHeightMeters, 1e3), printable(r.clearanceMeters, 1e3),
                   r.collided ? 1 : 0, std::string(collision::toString(r.response)).c_str(),
                   r.tilesDrawn, std::string(toString(r.terrainSource)).c_str(),
-                  printable(headingDegrees(r.pose.headingRadians), 1e3),
+                  printable(signedAngleDegrees(r.pose.headingRadians), 1e3),
                   printable(geo::radiansToDegrees(r.pose.pitchRadians), 1e3),
-                  printable(headingDegrees(r.pose.rollRadians), 1e3),
+                  printable(signedAngleDegrees(r.pose.rollRadians), 1e3),
                   printable(r.scriptedHeightMeters, 1e3), printable(r.nearClearanceMeters, 1e3));
     text += line;
   }

@@ -17,10 +17,10 @@
 #include "io/ascii_case.hpp"
 
 namespace globe::io {
-namespace {
+namespace http_detail {
 
-std::once_flag curlInitialised;
-
+// Named, not anonymous: HttpClient::Impl holds these, and a class with external linkage may not
+// have members of an internal type once this file is compiled inside a unity build.
 struct Transfer {
   HttpRequest request;
   HttpResponse response;
@@ -29,6 +29,13 @@ struct Transfer {
   curl_slist* headers = nullptr;
   char errorText[CURL_ERROR_SIZE] = {};
 };
+
+}  // namespace http_detail
+using http_detail::Transfer;
+
+namespace {
+
+std::once_flag curlInitialised;
 
 std::string trim(std::string_view text) {
   size_t begin = 0;

@@ -17,6 +17,7 @@
 #include "camera/fly_to.hpp"
 #include "geo/ecef.hpp"
 #include "render/hud_renderer.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace {
 
@@ -28,8 +29,7 @@ using globe::camera::SpeedSteps;
 using globe::geo::degreesToRadians;
 using globe::geo::radiansToDegrees;
 
-constexpr double kPi = std::numbers::pi;
-const auto kWgs84 = globe::geo::Ellipsoid::wgs84();
+using globe::test::kWgs84;
 
 FlyKeys keys(const std::string& held) {
   FlyKeys k;
@@ -79,8 +79,8 @@ TEST(FlyControls, WasdMovesInTheEastNorthUpFrameOfTheHeading) {
   expectNear(flyDirectionEnu(keys("e"), 0, 0), {0, 0, 1});
   expectNear(flyDirectionEnu(keys("q"), 0, 0), {0, 0, -1});
   // Heading east: W east, D south. Heading 225 (south-west): W south-west, D north-west.
-  expectNear(flyDirectionEnu(keys("w"), kPi / 2, 0), {1, 0, 0});
-  expectNear(flyDirectionEnu(keys("d"), kPi / 2, 0), {0, -1, 0});
+  expectNear(flyDirectionEnu(keys("w"), std::numbers::pi / 2, 0), {1, 0, 0});
+  expectNear(flyDirectionEnu(keys("d"), std::numbers::pi / 2, 0), {0, -1, 0});
   const double h = std::sqrt(0.5);
   expectNear(flyDirectionEnu(keys("w"), degreesToRadians(225), 0), {-h, -h, 0});
   expectNear(flyDirectionEnu(keys("d"), degreesToRadians(225), 0), {-h, h, 0});
@@ -90,7 +90,7 @@ TEST(FlyControls, WasdMovesInTheEastNorthUpFrameOfTheHeading) {
   expectNear(flyDirectionEnu(keys("d"), 0, p), {1, 0, 0});
   expectNear(flyDirectionEnu(keys("e"), 0, p), {0, 0, 1});
   // Straight down: W descends; combinations are normalised; opposite keys cancel.
-  expectNear(flyDirectionEnu(keys("w"), 1.0, -kPi / 2), {0, 0, -1});
+  expectNear(flyDirectionEnu(keys("w"), 1.0, -std::numbers::pi / 2), {0, 0, -1});
   expectNear(flyDirectionEnu(keys("wd"), 0, 0), {h, h, 0});
   expectNear(flyDirectionEnu(keys("ws"), 0, 0), {0, 0, 0});
   EXPECT_FALSE(keys("ws").moving());
@@ -231,7 +231,8 @@ TEST(FlyTo, ThePixelRayHitsTheTerrainUnderIt) {
   // the plateau right below, 9,000 m away.
   const CameraPose pose = CameraPose::fromDegrees(10, 45, 10000, 0, -90);
   const auto frame = globe::camera::cameraFrame(kWgs84, pose);
-  const glm::dvec3 ray = globe::camera::pixelRayEcef(frame, 320, 180, 640, 360, kPi / 4);
+  const glm::dvec3 ray =
+      globe::camera::pixelRayEcef(frame, 320, 180, 640, 360, std::numbers::pi / 4);
   expectNear(ray, frame.forward, 1e-12);
   const auto plateau = [](double, double) -> std::optional<double> { return 1000.0; };
   const auto hit = globe::camera::intersectTerrain(kWgs84, frame.positionEcefMeters, ray, plateau);
@@ -240,8 +241,8 @@ TEST(FlyTo, ThePixelRayHitsTheTerrainUnderIt) {
   const auto point = globe::geo::ecefToCartographic(kWgs84, *hit);
   EXPECT_NEAR(point->heightMeters, 1000, 0.05);
   // The top edge's centre pixel looks 22.5 deg forward (north) of straight down.
-  const glm::dvec3 top = globe::camera::pixelRayEcef(frame, 320, 0, 640, 360, kPi / 4);
-  EXPECT_NEAR(std::acos(glm::dot(top, frame.forward)), kPi / 8, 1e-9);
+  const glm::dvec3 top = globe::camera::pixelRayEcef(frame, 320, 0, 640, 360, std::numbers::pi / 4);
+  EXPECT_NEAR(std::acos(glm::dot(top, frame.forward)), std::numbers::pi / 8, 1e-9);
   const auto north =
       globe::camera::intersectTerrain(kWgs84, frame.positionEcefMeters, top, plateau);
   ASSERT_TRUE(north);

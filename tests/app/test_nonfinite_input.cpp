@@ -25,7 +25,7 @@ struct GlobeRun {
 };
 
 // Runs `globe ARGUMENTS` with `input` on stdin, under a 60 s timeout (a hang fails the test).
-GlobeRun runGlobe(const std::string& arguments, const std::string& input = "") {
+GlobeRun runGlobeOnInput(const std::string& arguments, const std::string& input = "") {
   static int counter = 0;
   const fs::path dir = freshTempDir("nonfinite-" + std::to_string(++counter));
   { std::ofstream(dir / "in.txt") << input; }
@@ -64,7 +64,7 @@ void expectRefused(const std::vector<Case>& cases) {
     if (arguments.find("BUNDLED") != std::string::npos) {
       arguments = substitute(arguments, "BUNDLED", bundledPyramid().string());
     }
-    const GlobeRun run = runGlobe(arguments);
+    const GlobeRun run = runGlobeOnInput(arguments);
     SCOPED_TRACE("globe " + c.arguments);
     EXPECT_TRUE(run.exited) << run.output;
     EXPECT_EQ(run.exitCode, c.exitCode) << run.output;
@@ -231,9 +231,10 @@ TEST(NonFiniteInput, PlayRefusesKmlToursNamingFileLineAndElement) {
 }
 
 TEST(NonFiniteInput, QueryNamesEveryNonFiniteLineAndStillAnswersTheGoodOnes) {
-  const GlobeRun run = runGlobe("query " + bundledPyramid().string(),
-                                "nan,nan\n138.7,35.3\ninf,0\n0,-inf\n1e999,0\n0,-1e999\nnan\n,\n"
-                                "-nan,1\n1e-999,0\n");
+  const GlobeRun run =
+      runGlobeOnInput("query " + bundledPyramid().string(),
+                      "nan,nan\n138.7,35.3\ninf,0\n0,-inf\n1e999,0\n0,-1e999\nnan\n,\n"
+                      "-nan,1\n1e-999,0\n");
   EXPECT_TRUE(run.exited) << run.output;
   EXPECT_EQ(run.exitCode, 1) << run.output;
   const std::string expected[] = {

@@ -19,6 +19,7 @@
 #include "camera/orbit_controls.hpp"
 #include "geo/ecef.hpp"
 #include "io/image_io.hpp"
+#include "tests/support/test_constants.hpp"
 #include "tests/tools/tiler/tiler_test_fixture.hpp"
 
 namespace {
@@ -26,9 +27,8 @@ namespace {
 using globe::camera::CameraPose;
 using globe::camera::OrbitControls;
 
-constexpr double kPi = std::numbers::pi;
-const auto kWgs84 = globe::geo::Ellipsoid::wgs84();
-constexpr double kFov = kPi / 4;
+using globe::test::kWgs84;
+constexpr double kFov = std::numbers::pi / 4;
 
 TEST(OrbitControls, DragMovesTheCameraAgainstTheDragSoTheGroundFollows) {
   OrbitControls controls(kWgs84, CameraPose::fromDegrees(10, 20, 10000), kFov);
@@ -38,7 +38,7 @@ TEST(OrbitControls, DragMovesTheCameraAgainstTheDragSoTheGroundFollows) {
   // 100 px at 10 km straight down with a 45° view 720 px high: 100 · 2 · 10 km · tan 22.5° / 720.
   const double meters = 100 * 2 * 10000 * std::tan(kFov / 2) / 720;
   const double expectedDegrees = globe::geo::radiansToDegrees(
-      meters / (kWgs84.semiMajorAxisMeters * std::cos(20 * kPi / 180)));
+      meters / (kWgs84.semiMajorAxisMeters * std::cos(20 * std::numbers::pi / 180)));
   EXPECT_NEAR(10 - controls.pose().position.longitudeDegrees(), expectedDegrees, 1e-9);
   controls.rotateByDrag(0, 100, 720);  // drag down: the camera goes north
   EXPECT_GT(controls.pose().position.latitudeDegrees(), 20);
@@ -88,11 +88,11 @@ TEST(OrbitControls, TiltTurnsAndClampsThePitch) {
   controls.tiltByDrag(100, 0);
   EXPECT_NEAR(controls.pose().headingRadians, 100 * OrbitControls::kTiltRadiansPerPixel, 1e-12);
   controls.tiltByDrag(0, -100);  // drag up: towards the horizon
-  EXPECT_NEAR(controls.pose().pitchRadians, -kPi / 2 + 0.5, 1e-12);
+  EXPECT_NEAR(controls.pose().pitchRadians, -std::numbers::pi / 2 + 0.5, 1e-12);
   controls.tiltByDrag(0, -10000);
   EXPECT_DOUBLE_EQ(controls.pose().pitchRadians, 0);
   controls.tiltByDrag(0, 10000);
-  EXPECT_DOUBLE_EQ(controls.pose().pitchRadians, -kPi / 2);
+  EXPECT_DOUBLE_EQ(controls.pose().pitchRadians, -std::numbers::pi / 2);
 }
 
 TEST(OrbitControls, RisingGroundLiftsTheCamera) {

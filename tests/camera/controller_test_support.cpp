@@ -38,6 +38,12 @@ geo::Cartographic fujiSummit(double heightMeters) {
 
 uint32_t finestLevel() { return RealPyramid::bundled().maxLevel(); }
 
+const terrain::RenderingTileArray& fuji() { return fujiArray(finestLevel()); }
+
+double drawn(const geo::Cartographic& position) {
+  return drawnHeight(fuji(), position.longitudeRadians, position.latitudeRadians);
+}
+
 const terrain::RenderingTileArray& fujiArray(uint32_t level) {
   static std::map<uint32_t, terrain::RenderingTileArray> arrays;
   const auto it = arrays.find(level);

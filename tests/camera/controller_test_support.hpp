@@ -35,6 +35,10 @@ const terrain::RenderingTileArray& globalArray();
 double drawnHeight(const terrain::RenderingTileArray& array, double longitudeRadians,
                    double latitudeRadians);
 
+// fujiArray(finestLevel()), and the surface it draws under a position.
+const terrain::RenderingTileArray& fuji();
+double drawn(const geo::Cartographic& position);
+
 // The point distanceMeters from `origin` along the local tangent plane towards bearingRadians
 // (0 = north, clockwise), at heightMeters.
 geo::Cartographic offsetPosition(const geo::Cartographic& origin, double bearingRadians,

@@ -13,25 +13,22 @@
 #include "camera/camera_controller.hpp"
 #include "geo/ecef.hpp"
 #include "tests/camera/controller_test_support.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace globe::camera {
 namespace {
 
 using collision::Response;
+using globe::test::kDt;
 using testing::drawnHeight;
 using testing::fujiSummit;
 using testing::offsetPosition;
-constexpr double kPi = std::numbers::pi;
-constexpr double kDt = 1.0 / 30.0;
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
+using globe::test::kWgs84;
 
-const terrain::RenderingTileArray& fuji() { return testing::fujiArray(testing::finestLevel()); }
-
-double drawn(const geo::Cartographic& c) {
-  return drawnHeight(fuji(), c.longitudeRadians, c.latitudeRadians);
-}
+using testing::drawn;
+using testing::fuji;
 
 geo::Cartographic onSlope(double bearingRadians, double distanceMeters, double aboveMeters) {
   geo::Cartographic c = offsetPosition(fujiSummit(), bearingRadians, distanceMeters, 0.0);
@@ -75,12 +72,12 @@ TEST(CameraController, AStaticCameraJumpingIntoFujiIsStoppedAndKeepsItsPose) {
 }
 
 TEST(CameraController, ProposalsAreClassifiedAndAnsweredByTheirKind) {
-  const geo::Cartographic here = onSlope(kPi / 2, 3000.0, 2.0);
-  CameraController controller({here, -kPi / 2, 0.0, 0.0});
+  const geo::Cartographic here = onSlope(std::numbers::pi / 2, 3000.0, 2.0);
+  CameraController controller({here, -std::numbers::pi / 2, 0.0, 0.0});
   controller.update(kDt, fuji(), kWgs84);
   // Same height, 100 m towards the summit: an angular move, heightened onto the slope.
-  geo::Cartographic west = offsetPosition(here, 1.5 * kPi, 100.0, here.heightMeters);
-  ASSERT_TRUE(controller.propose({west, -kPi / 2, 0.0, 0.0}));
+  geo::Cartographic west = offsetPosition(here, 1.5 * std::numbers::pi, 100.0, here.heightMeters);
+  ASSERT_TRUE(controller.propose({west, -std::numbers::pi / 2, 0.0, 0.0}));
   CollisionState state = controller.update(kDt, fuji(), kWgs84);
   EXPECT_EQ(state.motion, MotionKind::Angular);
   EXPECT_EQ(state.response, Response::Heightened);
@@ -89,8 +86,9 @@ TEST(CameraController, ProposalsAreClassifiedAndAnsweredByTheirKind) {
   EXPECT_GE(state.clearanceMeters, 2.0 - 1e-9);
   // A move with a height change: linear, slides.
   const geo::Cartographic from = controller.pose().position;
-  geo::Cartographic lower = offsetPosition(from, 1.5 * kPi, 100.0, from.heightMeters - 5.0);
-  ASSERT_TRUE(controller.propose({lower, -kPi / 2, 0.0, 0.0}));
+  geo::Cartographic lower =
+      offsetPosition(from, 1.5 * std::numbers::pi, 100.0, from.heightMeters - 5.0);
+  ASSERT_TRUE(controller.propose({lower, -std::numbers::pi / 2, 0.0, 0.0}));
   state = controller.update(kDt, fuji(), kWgs84);
   EXPECT_EQ(state.motion, MotionKind::Linear);
   EXPECT_EQ(state.response, Response::Slid);
@@ -126,15 +124,17 @@ TEST(CameraController, ClassificationOfMoves) {
   EXPECT_EQ(classifyMotion(kWgs84, a, {east.longitudeRadians, east.latitudeRadians, 90.0}, 1e6),
             MotionKind::Linear);
   EXPECT_EQ(classifyMotion(kWgs84, a, east, 1000.0), MotionKind::Jump);  // 11 km > 1 km
-  const geo::Cartographic northPole{0.3, kPi / 2, 5.0};
-  EXPECT_TRUE(isSamePosition(kWgs84, northPole, {-2.0, kPi / 2, 5.0}));
+  const geo::Cartographic northPole{0.3, std::numbers::pi / 2, 5.0};
+  EXPECT_TRUE(isSamePosition(kWgs84, northPole, {-2.0, std::numbers::pi / 2, 5.0}));
 }
 
 TEST(CameraController, LinearVelocitySlidesUpTheSlopeFrameAfterFrame) {
-  for (const double bearing : {0.0, kPi / 2, kPi, 1.5 * kPi}) {
+  for (const double bearing :
+       {0.0, std::numbers::pi / 2, std::numbers::pi, 1.5 * std::numbers::pi}) {
     const geo::Cartographic start = onSlope(bearing, 3000.0, 2.0);
-    CameraController controller({start, bearing + kPi, 0.0, 0.0});
-    ASSERT_TRUE(controller.setVelocity(30.0 * testing::direction(start, bearing + kPi, 0.0)));
+    CameraController controller({start, bearing + std::numbers::pi, 0.0, 0.0});
+    ASSERT_TRUE(
+        controller.setVelocity(30.0 * testing::direction(start, bearing + std::numbers::pi, 0.0)));
     const glm::dvec3 velocity = controller.velocity();
     int slid = 0;
     double lowest = kInf;
@@ -148,7 +148,8 @@ TEST(CameraController, LinearVelocitySlidesUpTheSlopeFrameAfterFrame) {
     std::printf(
         "bearing %3.0f: 150 frames at 1 m/frame, %d slid, %.1f m nearer the summit, "
         "%.1f m higher, lowest clearance %.3f m\n",
-        bearing * 180 / kPi, slid, progress, end.heightMeters - start.heightMeters, lowest);
+        bearing * 180 / std::numbers::pi, slid, progress, end.heightMeters - start.heightMeters,
+        lowest);
     EXPECT_GT(slid, 50);
     EXPECT_GT(progress, 40.0);                                         // tangential progress
     EXPECT_GT(end.heightMeters - start.heightMeters, 0.1 * progress);  // up the slope
@@ -159,13 +160,14 @@ TEST(CameraController, LinearVelocitySlidesUpTheSlopeFrameAfterFrame) {
 
 TEST(CameraController, AngularVelocityIsHeightenedWithoutChangingIt) {
   for (const bool sweep : {false, true}) {
-    for (const double bearing : {kPi / 2, 1.5 * kPi}) {
+    for (const double bearing : {std::numbers::pi / 2, 1.5 * std::numbers::pi}) {
       const geo::Cartographic start = onSlope(bearing, 3000.0, 2.0);
       ControllerSettings settings;
       settings.response.sweep = sweep;
-      CameraController controller({start, bearing + kPi, 0.0, 0.0}, settings);
+      CameraController controller({start, bearing + std::numbers::pi, 0.0, 0.0}, settings);
       const glm::dvec3 p = geo::cartographicToEcef(kWgs84, start);
-      const double rate = (bearing < kPi ? -1.0 : 1.0) * 30.0 / std::hypot(p.x, p.y) / kDt;
+      const double rate =
+          (bearing < std::numbers::pi ? -1.0 : 1.0) * 30.0 / std::hypot(p.x, p.y) / kDt;
       const glm::dvec3 omega(0.0, 0.0, rate);  // about the polar axis, towards the summit
       ASSERT_TRUE(controller.setAngularVelocity(omega));
       int heightened = 0;
@@ -199,14 +201,14 @@ TEST(CameraController, AngularVelocityIsHeightenedWithoutChangingIt) {
       std::printf(
           "orbit towards the summit from %3.0f deg, sweep %d: 90 frames at 30 m, "
           "%d heightened, %.1f m higher\n",
-          bearing * 180 / kPi, sweep, heightened, climbed);
+          bearing * 180 / std::numbers::pi, sweep, heightened, climbed);
       EXPECT_GT(climbed, 100.0);
     }
   }
 }
 
 TEST(CameraController, AccelerationsAreTreatedLikeVelocities) {
-  const geo::Cartographic start = onSlope(kPi, 3000.0, 2.0);
+  const geo::Cartographic start = onSlope(std::numbers::pi, 3000.0, 2.0);
   CameraController controller({start, 0.0, 0.0, 0.0});
   const glm::dvec3 a = 20.0 * testing::direction(start, 0.0, 0.0);
   ASSERT_TRUE(controller.setAcceleration(a));
@@ -221,8 +223,8 @@ TEST(CameraController, AccelerationsAreTreatedLikeVelocities) {
   EXPECT_LT(distanceToSummit(controller.pose().position), distanceToSummit(start) - 50.0);
 
   // Angular acceleration about the polar axis, into the east flank: heightened.
-  const geo::Cartographic east = onSlope(kPi / 2, 3000.0, 2.0);
-  CameraController orbit({east, -kPi / 2, 0.0, 0.0});
+  const geo::Cartographic east = onSlope(std::numbers::pi / 2, 3000.0, 2.0);
+  CameraController orbit({east, -std::numbers::pi / 2, 0.0, 0.0});
   ASSERT_TRUE(orbit.setAngularAcceleration({0.0, 0.0, -2e-6}));
   int heightened = 0;
   for (int frame = 1; frame <= 90; ++frame) {
@@ -395,8 +397,11 @@ TEST(CameraController, HugeFiniteProposalsNeverGiveANonFinitePose) {
       {{1e300, at.latitudeRadians, 3000.0}, 0, 0, 0},
       {{at.longitudeRadians, at.latitudeRadians, 1e300}, 0, 0, 0},
       {{at.longitudeRadians, at.latitudeRadians, -1e300}, 0, 0, 0},
-      {{at.longitudeRadians, kPi / 2, 3000.0}, 0, 0, 0},
-      {{at.longitudeRadians, -kPi / 2, -6.0e6}, 0, 0, 0},  // near the centre of the Earth
+      {{at.longitudeRadians, std::numbers::pi / 2, 3000.0}, 0, 0, 0},
+      {{at.longitudeRadians, -std::numbers::pi / 2, -6.0e6},
+       0,
+       0,
+       0},  // near the centre of the Earth
       {at, 1e300, -1e300, 1e300},
       {{-std::numeric_limits<double>::max(), 0, std::numeric_limits<double>::max()}, 0, 0, 0},
   };

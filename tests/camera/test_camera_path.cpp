@@ -13,11 +13,12 @@
 
 #include "camera/camera_orientation.hpp"
 #include "geo/ecef.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace globe::camera {
 namespace {
 
-const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
+using globe::test::kWgs84;
 
 CameraPath makePath(PathInterpolation interpolation,
                     std::initializer_list<std::pair<double, CameraPose>> keys) {

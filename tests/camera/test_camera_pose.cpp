@@ -6,11 +6,12 @@
 #include <numbers>
 
 #include "geo/ecef.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace globe::camera {
 namespace {
 
-const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
+using globe::test::kWgs84;
 
 void expectOrthonormal(const CameraFrame& f) {
   EXPECT_NEAR(glm::length(f.forward), 1, 1e-12);

@@ -9,13 +9,14 @@
 #include "camera/fly_to.hpp"
 #include "camera/orbit_controls.hpp"
 #include "geo/ecef.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace globe::camera {
 namespace {
 
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
+using globe::test::kWgs84;
 const double kBad[] = {kNan, kInf, -kInf};
 
 void expectSamePose(const CameraPose& actual, const CameraPose& expected) {

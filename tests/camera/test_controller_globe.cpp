@@ -12,14 +12,14 @@
 #include "geo/ecef.hpp"
 #include "geo/tiling_scheme.hpp"
 #include "tests/camera/controller_test_support.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace globe::camera {
 namespace {
 
+using globe::test::kDt;
+using globe::test::kWgs84;
 using testing::FrameAudit;
-constexpr double kPi = std::numbers::pi;
-constexpr double kDt = 1.0 / 30.0;
-const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
 
 geo::Cartographic above(const terrain::RenderingTileArray& array, double longitudeDegrees,
                         double latitudeDegrees, double aboveMeters) {
@@ -53,7 +53,7 @@ TEST(GlobeController, FlyingLowOverBothPolesLinearly) {
         const double offset = geo::radiansToDegrees(20.0 * step / 6356752.0);
         const geo::Cartographic start =
             above(array, longitude, pole > 0 ? pole - offset : pole + offset, 5.0);
-        const double heading = pole > 0 ? 0.0 : kPi;
+        const double heading = pole > 0 ? 0.0 : std::numbers::pi;
         CameraController controller({start, heading, 0.0, 0.0});
         ASSERT_TRUE(controller.setVelocity(testing::direction(start, heading, 0.0) * (step / kDt)));
         double nearest = 90.0;
@@ -66,7 +66,7 @@ TEST(GlobeController, FlyingLowOverBothPolesLinearly) {
         EXPECT_LT(nearest, geo::radiansToDegrees(step / 6356752.0) + 1e-9);
         const double turned = std::abs(geo::wrapLongitudeRadians(
             controller.pose().position.longitudeRadians - start.longitudeRadians));
-        EXPECT_NEAR(turned, kPi, 1e-3);
+        EXPECT_NEAR(turned, std::numbers::pi, 1e-3);
         std::printf(
             "pole %+.0f, lon %6.1f, %4.0f m/frame: nearest %.5f deg, lowest eye %.3f m, "
             "corner %.3f m\n",
@@ -84,7 +84,7 @@ TEST(GlobeController, OrbitingLowOverBothPolesAboutTheGeocentre) {
     // About the local east axis: towards the pole, 10 km a frame.
     const glm::dvec3 east = eastNorthUp(kWgs84, start).east;
     const double rate = 10000.0 / 6356752.0 / kDt;
-    CameraController controller({start, pole > 0 ? 0.0 : kPi, -0.2, 0.0});
+    CameraController controller({start, pole > 0 ? 0.0 : std::numbers::pi, -0.2, 0.0});
     ASSERT_TRUE(controller.setAngularVelocity((pole > 0 ? -rate : rate) * east));
     int heightened = 0;
     double nearest = 90.0;
@@ -95,7 +95,7 @@ TEST(GlobeController, OrbitingLowOverBothPolesAboutTheGeocentre) {
     EXPECT_LT(nearest, 0.1);
     // 70 frames of 10 km: 6.31 deg of arc, 3 of them to the pole (geodetic and geocentric
     // latitudes differ by < 0.03 deg there).
-    const double arcDegrees = 70.0 * rate * kDt * 180.0 / kPi;
+    const double arcDegrees = 70.0 * rate * kDt * 180.0 / std::numbers::pi;
     EXPECT_NEAR(std::abs(controller.pose().position.latitudeDegrees()), 90.0 - (arcDegrees - 3.0),
                 0.05);
     std::printf("orbit over pole %+.0f: nearest %.4f deg, %d heightened, lowest eye %.3f m\n", pole,
@@ -109,8 +109,9 @@ TEST(GlobeController, CrossingTheAntimeridianLowOverChukotka) {
   ASSERT_GT(start.heightMeters, 50.0) << "land under the track";
   // Linear, level and descending into the terrain, and angular about the polar axis.
   for (const double pitch : {0.0, -0.1}) {
-    CameraController controller({start, kPi / 2, pitch, 0.0});
-    ASSERT_TRUE(controller.setVelocity(testing::direction(start, kPi / 2, pitch) * (300.0 / kDt)));
+    CameraController controller({start, std::numbers::pi / 2, pitch, 0.0});
+    ASSERT_TRUE(controller.setVelocity(testing::direction(start, std::numbers::pi / 2, pitch) *
+                                       (300.0 / kDt)));
     double previous = start.longitudeRadians;
     int crossed = 0, slid = 0;
     run(controller, array, 90, [&](int frame, const CollisionState& state) {
@@ -128,7 +129,7 @@ TEST(GlobeController, CrossingTheAntimeridianLowOverChukotka) {
       EXPECT_GT(slid, 10);
     }
   }
-  CameraController orbit({start, kPi / 2, 0.0, 0.0});
+  CameraController orbit({start, std::numbers::pi / 2, 0.0, 0.0});
   const double rate = 300.0 / (6378137.0 * std::cos(geo::degreesToRadians(66.0))) / kDt;
   ASSERT_TRUE(orbit.setAngularVelocity({0.0, 0.0, rate}));
   double previous = start.longitudeRadians;
@@ -145,7 +146,7 @@ TEST(GlobeController, AlongTileEdgesAndOntoTileCorners) {
   const auto& array = testing::fujiArray(testing::finestLevel());
   // The north-west corner of the finest tile 1.5 km east of the summit.
   const geo::Cartographic near =
-      testing::offsetPosition(testing::fujiSummit(), kPi / 2, 1500.0, 0.0);
+      testing::offsetPosition(testing::fujiSummit(), std::numbers::pi / 2, 1500.0, 0.0);
   const auto tile = geo::GeographicTilingScheme::positionToTile(
       near.longitudeRadians, near.latitudeRadians, testing::finestLevel());
   ASSERT_TRUE(tile);
@@ -155,7 +156,7 @@ TEST(GlobeController, AlongTileEdgesAndOntoTileCorners) {
       testing::drawnHeight(array, corner.longitudeRadians, corner.latitudeRadians) + 2.0;
 
   // Straight down onto the corner: stays on it at the clearance.
-  CameraController down({corner, 0.0, -kPi / 2, 0.0});
+  CameraController down({corner, 0.0, -std::numbers::pi / 2, 0.0});
   ASSERT_TRUE(down.setVelocity(-geo::geodeticSurfaceNormal(kWgs84, corner) * (50.0 / kDt)));
   run(down, array, 30, [&](int, const CollisionState& state) {
     EXPECT_GE(state.clearanceMeters, 2.0 - collision::kContactSkinMeters);
@@ -164,7 +165,7 @@ TEST(GlobeController, AlongTileEdgesAndOntoTileCorners) {
   // (angular moves, heightened): the longitude stays exactly on the edge; and along the north
   // edge (a parallel) by an angular velocity about the polar axis: the latitude stays on it to an
   // ulp (the ECEF round trip).
-  CameraController meridian({corner, kPi, 0.0, 0.0});
+  CameraController meridian({corner, std::numbers::pi, 0.0, 0.0});
   FrameAudit edge;
   for (int frame = 1; frame <= 60; ++frame) {
     CameraPose next = meridian.pose();
@@ -178,13 +179,13 @@ TEST(GlobeController, AlongTileEdgesAndOntoTileCorners) {
     edge.check(meridian.pose(), meridian.settings().nearPlane, array);
   }
   EXPECT_EQ(edge.violations, 0);
-  CameraController parallel({corner, kPi / 2, 0.0, 0.0});
+  CameraController parallel({corner, std::numbers::pi / 2, 0.0, 0.0});
   ASSERT_TRUE(parallel.setAngularVelocity({0.0, 0.0, 3e-6 / kDt}));
   run(parallel, array, 60, [&](int frame, const CollisionState&) {
     EXPECT_NEAR(parallel.pose().position.latitudeRadians, r.northRadians, 1e-15) << frame;
   });
   // Jumps exactly onto the corner: 0.5 m above is refused, 2 m above accepted.
-  CameraController jumper({testing::fujiSummit(6000.0), 0.0, -kPi / 2, 0.0});
+  CameraController jumper({testing::fujiSummit(6000.0), 0.0, -std::numbers::pi / 2, 0.0});
   geo::Cartographic low = corner;
   low.heightMeters -= 1.5;
   ASSERT_TRUE(jumper.setTargetPose({low, 0.0, 0.0, 0.0}));
@@ -196,9 +197,10 @@ TEST(GlobeController, AlongTileEdgesAndOntoTileCorners) {
   // Exact poles and +-180 deg tile corners of the global array, static and with a small move.
   const auto& globe = testing::globalArray();
   for (const geo::Cartographic at :
-       {geo::Cartographic{0.0, kPi / 2, 0.0}, geo::Cartographic{kPi, -kPi / 2, 0.0},
-        geo::Cartographic{-kPi, geo::degreesToRadians(67.5), 0.0},
-        geo::Cartographic{kPi, geo::degreesToRadians(-45.0), 0.0}}) {
+       {geo::Cartographic{0.0, std::numbers::pi / 2, 0.0},
+        geo::Cartographic{std::numbers::pi, -std::numbers::pi / 2, 0.0},
+        geo::Cartographic{-std::numbers::pi, geo::degreesToRadians(67.5), 0.0},
+        geo::Cartographic{std::numbers::pi, geo::degreesToRadians(-45.0), 0.0}}) {
     geo::Cartographic c = at;
     c.heightMeters = testing::drawnHeight(globe, c.longitudeRadians, c.latitudeRadians) + 2.0;
     CameraController still({c, 0.0, -1.0, 0.0});

@@ -10,17 +10,17 @@
 
 #include "camera/camera_controller.hpp"
 #include "tests/camera/controller_test_support.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace globe::camera {
 namespace {
 
 using collision::Response;
 using collision::SurfaceModel;
+using globe::test::kDt;
 using testing::FrameAudit;
-constexpr double kPi = std::numbers::pi;
-constexpr double kDt = 1.0 / 30.0;
 constexpr int kFrames = 60;
-const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
+using globe::test::kWgs84;
 
 struct Profile {
   const char* name;
@@ -49,7 +49,7 @@ void drive(const terrain::RenderingTileArray& array, const ControllerSettings& s
   geo::Cartographic start = testing::offsetPosition(testing::fujiSummit(), bearing, distance, 0.0);
   start.heightMeters = testing::drawnHeight(array, start.longitudeRadians, start.latitudeRadians) +
                        profile.startAboveMeters;
-  const double heading = bearing + kPi;
+  const double heading = bearing + std::numbers::pi;
   const double pitch = geo::degreesToRadians(profile.pitchDegrees);
   CameraController controller({start, heading, pitch, 0.0}, settings);
   ASSERT_TRUE(controller.setVelocity(testing::direction(start, heading, pitch) * (step / kDt)));
@@ -58,9 +58,9 @@ void drive(const terrain::RenderingTileArray& array, const ControllerSettings& s
     const CollisionState& state = controller.update(kDt, array, kWgs84);
     ASSERT_FALSE(state.inputRejected);
     const bool ok = totals.audit.check(controller.pose(), settings.nearPlane, array);
-    ASSERT_TRUE(ok) << profile.name << " bearing " << bearing * 180 / kPi << " step " << step
-                    << " frame " << frame << " clearance " << state.clearanceMeters << " corners "
-                    << state.nearPlaneClearanceMeters;
+    ASSERT_TRUE(ok) << profile.name << " bearing " << bearing * 180 / std::numbers::pi << " step "
+                    << step << " frame " << frame << " clearance " << state.clearanceMeters
+                    << " corners " << state.nearPlaneClearanceMeters;
     totals.collidedFrames += state.collided;
     totals.slidFrames += state.response == Response::Slid;
     totals.pushedFrames += state.nearPlanePushed;
@@ -82,7 +82,7 @@ void driveAll(SurfaceModel model, const std::vector<double>& steps, int headings
     const auto t0 = std::chrono::steady_clock::now();
     for (const Profile& profile : kProfiles) {
       for (int k = 0; k < headings; ++k) {
-        drive(array, settings, profile, 2.0 * kPi * k / headings, step, totals);
+        drive(array, settings, profile, 2.0 * std::numbers::pi * k / headings, step, totals);
         if (::testing::Test::HasFatalFailure()) return;
       }
     }

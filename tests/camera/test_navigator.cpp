@@ -12,22 +12,19 @@
 
 #include "camera/navigator.hpp"
 #include "geo/ecef.hpp"
+#include "tests/camera/hill_view.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace globe::camera {
 namespace {
 
-const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
-constexpr int kWidth = 1280, kHeight = 720;
-constexpr double kFovY = 0.7853981633974483;
-constexpr double kPi = std::numbers::pi;
+using globe::test::kFovY;
+using globe::test::kWgs84;
+using testing::hill;
+using testing::kHeight;
+using testing::kWidth;
+using testing::pixelsOff;
 const glm::dvec2 kCentre(kWidth / 2.0, kHeight / 2.0);
-
-// A smooth real-sized hill (3,700 m, 20 km wide) on the ellipsoid, around Mount Fuji.
-std::optional<double> hill(double lon, double lat) {
-  const double dLon = (lon - geo::degreesToRadians(138.73)) * 6.4e6 * std::cos(lat);
-  const double dLat = (lat - geo::degreesToRadians(35.36)) * 6.4e6;
-  return 3700.0 * std::exp(-(dLon * dLon + dLat * dLat) / (2 * 8000.0 * 8000.0));
-}
 
 Navigator makeNavigator(const CameraPose& start) {
   Navigator navigator(kWgs84, start, kFovY, hill);
@@ -44,14 +41,6 @@ void frame(Navigator& navigator, double dtSeconds = 1.0 / 60) {
   state.terrainHeightMeters = *hill(pose.position.longitudeRadians, pose.position.latitudeRadians);
   state.clearanceMeters = pose.position.heightMeters - state.terrainHeightMeters;
   navigator.adopt(pose, state);
-}
-
-// How far (pixels at this field of view) the point lies from the ray through the pixel.
-double pixelsOff(const CameraPose& pose, glm::dvec2 pixel, const glm::dvec3& point) {
-  const CameraFrame f = cameraFrame(kWgs84, pose);
-  const glm::dvec3 ray = pixelRayEcef(f, pixel.x, pixel.y, kWidth, kHeight, kFovY);
-  const glm::dvec3 toPoint = glm::normalize(point - f.positionEcefMeters);
-  return std::acos(std::clamp(glm::dot(ray, toPoint), -1.0, 1.0)) / (kFovY / kHeight);
 }
 
 double distanceTo(const CameraPose& pose, const glm::dvec3& point) {
@@ -151,17 +140,17 @@ TEST(Navigator, NorthUpTurnsAboutTheCentreInOrbitAndLevelsTheLookInFly) {
   ASSERT_TRUE(pivot);
   navigator.northUp();
   frame(navigator);
-  EXPECT_NEAR(std::remainder(navigator.pose().headingRadians, 2 * kPi), 0, 1e-3);
+  EXPECT_NEAR(std::remainder(navigator.pose().headingRadians, 2 * std::numbers::pi), 0, 1e-3);
   EXPECT_LT(pixelsOff(navigator.pose(), kCentre, *pivot), 1.0);
 
   navigator.toggleMode();
   ASSERT_EQ(navigator.mode(), NavigationMode::Fly);
   navigator.look(300, 200);
   frame(navigator);
-  EXPECT_GT(std::abs(std::remainder(navigator.pose().headingRadians, 2 * kPi)), 0.5);
+  EXPECT_GT(std::abs(std::remainder(navigator.pose().headingRadians, 2 * std::numbers::pi)), 0.5);
   navigator.northUp();
   frame(navigator);
-  EXPECT_NEAR(std::remainder(navigator.pose().headingRadians, 2 * kPi), 0, 1e-12);
+  EXPECT_NEAR(std::remainder(navigator.pose().headingRadians, 2 * std::numbers::pi), 0, 1e-12);
   EXPECT_NEAR(navigator.pose().pitchRadians, 0, 1e-12);
 }
 

@@ -9,20 +9,17 @@
 
 #include "camera/camera_controller.hpp"
 #include "tests/camera/controller_test_support.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace globe::camera {
 namespace {
 
 using collision::Response;
-constexpr double kPi = std::numbers::pi;
-constexpr double kDt = 1.0 / 30.0;
-const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
+using globe::test::kDt;
+using globe::test::kWgs84;
 
-const terrain::RenderingTileArray& fuji() { return testing::fujiArray(testing::finestLevel()); }
-
-double drawn(const geo::Cartographic& c) {
-  return testing::drawnHeight(fuji(), c.longitudeRadians, c.latitudeRadians);
-}
+using testing::drawn;
+using testing::fuji;
 
 struct Slope {
   geo::Cartographic position;  // on the surface
@@ -34,14 +31,15 @@ struct Slope {
 std::vector<Slope> steepSlopes() {
   std::vector<Slope> slopes;
   for (int k = 0; k < 32 && slopes.size() < 8; ++k) {
-    const geo::Cartographic c =
-        testing::offsetPosition(testing::fujiSummit(), k * kPi / 16, 1200.0 + 40.0 * k, 0.0);
-    const double e = drawn(testing::offsetPosition(c, kPi / 2, 5.0, 0.0)) -
-                     drawn(testing::offsetPosition(c, 1.5 * kPi, 5.0, 0.0));
+    const geo::Cartographic c = testing::offsetPosition(
+        testing::fujiSummit(), k * std::numbers::pi / 16, 1200.0 + 40.0 * k, 0.0);
+    const double e = drawn(testing::offsetPosition(c, std::numbers::pi / 2, 5.0, 0.0)) -
+                     drawn(testing::offsetPosition(c, 1.5 * std::numbers::pi, 5.0, 0.0));
     const double n = drawn(testing::offsetPosition(c, 0.0, 5.0, 0.0)) -
-                     drawn(testing::offsetPosition(c, kPi, 5.0, 0.0));
+                     drawn(testing::offsetPosition(c, std::numbers::pi, 5.0, 0.0));
     const double slope = std::hypot(e, n) / 10.0;
-    if (drawn(c) < 1000.0 || slope < std::tan(kPi * 25 / 180) || slope > std::tan(kPi * 50 / 180)) {
+    if (drawn(c) < 1000.0 || slope < std::tan(std::numbers::pi * 25 / 180) ||
+        slope > std::tan(std::numbers::pi * 50 / 180)) {
       continue;
     }
     slopes.push_back(
@@ -53,7 +51,8 @@ std::vector<Slope> steepSlopes() {
 TEST(NearPlane, LookingDownASlopeOneMetreAboveItIsPushedUp) {
   const std::vector<Slope> slopes = steepSlopes();
   ASSERT_GE(slopes.size(), 4u);
-  const NearPlane nearPlane{1.0, kPi / 3, 16.0 / 9.0};  // a renderer with a fixed 1 m near plane
+  const NearPlane nearPlane{1.0, std::numbers::pi / 3,
+                            16.0 / 9.0};  // a renderer with a fixed 1 m near plane
   ControllerSettings eyeOnly;
   eyeOnly.clearance.eyeMeters = 1.0;
   eyeOnly.clearance.minimumEyeMeters = 0.5;
@@ -63,7 +62,7 @@ TEST(NearPlane, LookingDownASlopeOneMetreAboveItIsPushedUp) {
   withCorners.nearPlaneCheck = true;
   withCorners.lateralCheck = false;  // the corners' own push, straight up
   for (const Slope& s : slopes) {
-    CameraPose pose{s.position, s.downhillHeadingRadians, -kPi * 55 / 180, 0.0};
+    CameraPose pose{s.position, s.downhillHeadingRadians, -std::numbers::pi * 55 / 180, 0.0};
     pose.position.heightMeters += 1.0;
 
     CameraController clipping(pose, eyeOnly);
@@ -92,11 +91,11 @@ TEST(NearPlane, LookingDownASlopeOneMetreAboveItIsPushedUp) {
     std::printf(
         "slope %4.1f deg, looking down it at -55 deg with a 1 m near plane, eye 1 m up: "
         "lowest near-plane corner %.3f m (cuts the surface); pushed up %.3f m, now %.3f m\n",
-        std::atan(s.slope) * 180 / kPi, audit.lowestCornerClearanceMeters, push,
+        std::atan(s.slope) * 180 / std::numbers::pi, audit.lowestCornerClearanceMeters, push,
         check.lowestCornerClearanceMeters);
 
     // The defaults (2 m eye, the renderer's 0.5 m near plane) need no push there.
-    CameraPose normal{s.position, s.downhillHeadingRadians, -kPi * 55 / 180, 0.0};
+    CameraPose normal{s.position, s.downhillHeadingRadians, -std::numbers::pi * 55 / 180, 0.0};
     normal.position.heightMeters += 2.0;
     CameraController defaults(normal);
     const CollisionState quiet = defaults.update(kDt, fuji(), kWgs84);
@@ -109,7 +108,7 @@ TEST(NearPlane, LookingDownASlopeOneMetreAboveItIsPushedUp) {
 TEST(NearPlane, CornerOffsetsSpanTheFrustumsNearRectangle) {
   const CameraPose pose = CameraPose::fromDegrees(10.0, 20.0, 100.0, 30.0, -10.0, 5.0);
   const CameraFrame frame = cameraFrame(kWgs84, pose);
-  const NearPlane near{2.0, kPi / 2, 2.0};
+  const NearPlane near{2.0, std::numbers::pi / 2, 2.0};
   const auto corners = nearPlaneCornerOffsets(frame, near);
   for (const glm::dvec3& c : corners) {
     EXPECT_NEAR(glm::dot(c, frame.forward), 2.0, 1e-12);

@@ -9,13 +9,14 @@
 #include "camera/camera_controller.hpp"
 #include "collision/terrain_raise.hpp"
 #include "tests/camera/controller_test_support.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace globe::camera {
 namespace {
 
 using collision::Response;
-constexpr double kDt = 1.0 / 30.0;
-const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
+using globe::test::kDt;
+using globe::test::kWgs84;
 
 struct Spot {
   geo::Cartographic position;  // height: the coarse surface

@@ -13,20 +13,18 @@
 #include "camera/fly_to.hpp"
 #include "camera/orbit_controls.hpp"
 #include "geo/ecef.hpp"
+#include "tests/camera/hill_view.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace globe::camera {
 namespace {
 
-const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
-constexpr int kWidth = 1280, kHeight = 720;
-constexpr double kFovY = 0.7853981633974483;
-
-// A smooth real-sized hill (3,700 m, 20 km wide) on the ellipsoid, around Mount Fuji.
-std::optional<double> hill(double lon, double lat) {
-  const double dLon = (lon - geo::degreesToRadians(138.73)) * 6.4e6 * std::cos(lat);
-  const double dLat = (lat - geo::degreesToRadians(35.36)) * 6.4e6;
-  return 3700.0 * std::exp(-(dLon * dLon + dLat * dLat) / (2 * 8000.0 * 8000.0));
-}
+using globe::test::kFovY;
+using globe::test::kWgs84;
+using testing::hill;
+using testing::kHeight;
+using testing::kWidth;
+using testing::pixelsOff;
 
 glm::dvec3 groundUnder(const CameraPose& pose, glm::dvec2 pixel) {
   const CameraFrame frame = cameraFrame(kWgs84, pose);
@@ -34,15 +32,6 @@ glm::dvec3 groundUnder(const CameraPose& pose, glm::dvec2 pixel) {
   const auto hit = intersectTerrain(kWgs84, frame.positionEcefMeters, ray, hill);
   EXPECT_TRUE(hit.has_value());
   return hit.value_or(glm::dvec3(0.0));
-}
-
-// How far (in pixels at this field of view) the point lies from the ray through the pixel.
-double pixelsOff(const CameraPose& pose, glm::dvec2 pixel, const glm::dvec3& point) {
-  const CameraFrame frame = cameraFrame(kWgs84, pose);
-  const glm::dvec3 ray = pixelRayEcef(frame, pixel.x, pixel.y, kWidth, kHeight, kFovY);
-  const glm::dvec3 toPoint = glm::normalize(point - frame.positionEcefMeters);
-  const double angle = std::acos(std::clamp(glm::dot(ray, toPoint), -1.0, 1.0));
-  return angle / (kFovY / kHeight);
 }
 
 TEST(OrbitControls, ZoomKeepsTheGroundUnderTheCursor) {

@@ -18,14 +18,15 @@
 #include "io/tile_store.hpp"
 #include "terrain/tile_mesh.hpp"
 #include "tests/io/sea_test_pyramid.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace globe::camera {
 namespace {
 
 namespace fs = std::filesystem;
+using globe::test::kDt;
+using globe::test::kWgs84;
 using terrain::SeaSurface;
-constexpr double kDt = 1.0 / 30.0;
-const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
 
 // A place to dive into, and the ground there under either sea surface.
 struct Spot {

@@ -21,15 +21,15 @@
 #include "geo/tiling_scheme.hpp"
 #include "tests/camera/controller_test_support.hpp"
 #include "tests/collision/collision_test_support.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace globe::camera {
 namespace {
 
 using collision::testing::RealPyramid;
-constexpr double kPi = std::numbers::pi;
-constexpr double kDt = 1.0 / 30.0;
+using globe::test::kDt;
 constexpr int kFrames = 40;
-const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
+using globe::test::kWgs84;
 
 const terrain::RenderingTileArray& canyonArray() {
   static const terrain::RenderingTileArray array = [] {
@@ -88,7 +88,7 @@ Totals driveAll(const ControllerSettings& settings) {
   Totals totals;
   for (const double step : {1.0, 10.0, 100.0, 1000.0}) {
     for (int k = 0; k < 16; ++k) {
-      driveAtTheWall(settings, 2 * kPi * k / 16, step, totals);
+      driveAtTheWall(settings, 2 * std::numbers::pi * k / 16, step, totals);
       if (::testing::Test::HasFatalFailure()) return totals;
     }
   }
@@ -144,11 +144,12 @@ TEST(WallDrive, BesideANeedleTheCornersAloneLetTheViewIntoIt) {
   double deepestWith = -INFINITY, deepestWithout = -INFINITY;
   for (double distance = 2.0; distance <= 60.0; distance += 2.0) {
     for (int k = 0; k < 24; ++k) {
-      const double bearing = 2 * kPi * k / 24;
+      const double bearing = 2 * std::numbers::pi * k / 24;
       geo::Cartographic at = testing::offsetPosition(apex, bearing, distance, 0.0);
       at.heightMeters = testing::drawnHeight(array, at.longitudeRadians, at.latitudeRadians) + 2.0;
       for (const double pitchDegrees : {0.0, -20.0, 20.0}) {
-        const CameraPose pose{at, bearing + kPi, geo::degreesToRadians(pitchDegrees), 0.0};
+        const CameraPose pose{at, bearing + std::numbers::pi, geo::degreesToRadians(pitchDegrees),
+                              0.0};
         CameraController a(pose, with), b(pose, without);
         a.update(kDt, array, kWgs84);
         b.update(kDt, array, kWgs84);
@@ -185,11 +186,11 @@ TEST(RidgeSlide, KeepsMovingEveryFrameAtEverySpeed) {
   const geo::Cartographic ridge = geo::Cartographic::fromDegrees(-112.9485, 37.2692, 0.0);
   int frames = 0, slid = 0;
   double smallest = INFINITY;
-  for (const double heading : {0.5 * kPi, 1.5 * kPi}) {
+  for (const double heading : {0.5 * std::numbers::pi, 1.5 * std::numbers::pi}) {
     for (const double pitch : {0.0, geo::degreesToRadians(-20.0)}) {
       for (const double step : {1.0, 10.0, 100.0, 1000.0, 10000.0, 100000.0}) {
-        geo::Cartographic start =
-            testing::offsetPosition(ridge, heading + kPi, std::clamp(3 * step, 150.0, 3000.0), 0.0);
+        geo::Cartographic start = testing::offsetPosition(ridge, heading + std::numbers::pi,
+                                                          std::clamp(3 * step, 150.0, 3000.0), 0.0);
         start.heightMeters =
             testing::drawnHeight(array, start.longitudeRadians, start.latitudeRadians) + 20.0;
         CameraController controller({start, heading, pitch, 0.0});

@@ -15,7 +15,6 @@ namespace globe::collision::testing {
 namespace {
 
 using Scheme = geo::GeographicTilingScheme;
-constexpr double kPi = std::numbers::pi;
 
 template <class T>
 T pick(std::mt19937_64& rng, const std::vector<T>& values) {
@@ -200,7 +199,8 @@ LonLat randomQueryPoint(std::mt19937_64& rng, const std::vector<geo::TileId>& ti
   switch (rng() % 10) {
     case 0:
     case 1:  // uniform over the sphere
-      return {-kPi + 2.0 * kPi * unit(rng), std::asin(2.0 * unit(rng) - 1.0)};
+      return {-std::numbers::pi + 2.0 * std::numbers::pi * unit(rng),
+              std::asin(2.0 * unit(rng) - 1.0)};
     case 2:
     case 3: {  // inside an array tile
       const geo::GlobeRectangle r = Scheme::tileRectangle(pick(rng, tiles));
@@ -224,21 +224,21 @@ LonLat randomQueryPoint(std::mt19937_64& rng, const std::vector<geo::TileId>& ti
       return {lon, lat};
     }
     case 7: {  // +-180 deg, at any latitude or on an edge latitude
-      const double lon = (rng() & 1) ? kPi : -kPi;
+      const double lon = (rng() & 1) ? std::numbers::pi : -std::numbers::pi;
       if (rng() & 1) return {lon, onEdge(rng, randomSchemeTile(rng, maxLevel)).latitudeRadians};
       return {lon, std::asin(2.0 * unit(rng) - 1.0)};
     }
     case 8: {  // a pole, at any longitude (+-180 deg included)
-      const double lat = (rng() & 1) ? kPi / 2.0 : -kPi / 2.0;
+      const double lat = (rng() & 1) ? std::numbers::pi / 2.0 : -std::numbers::pi / 2.0;
       const auto choice = rng() % 4;
-      if (choice == 0) return {(rng() & 1) ? kPi : -kPi, lat};
+      if (choice == 0) return {(rng() & 1) ? std::numbers::pi : -std::numbers::pi, lat};
       if (choice == 1) return {onEdge(rng, randomSchemeTile(rng, maxLevel)).longitudeRadians, lat};
-      return {-kPi + 2.0 * kPi * unit(rng), lat};
+      return {-std::numbers::pi + 2.0 * std::numbers::pi * unit(rng), lat};
     }
     default: {  // an array tile's corner, +-180 deg written either way
       const geo::GlobeRectangle r = Scheme::tileRectangle(pick(rng, tiles));
       double lon = (rng() & 1) ? r.westRadians : r.eastRadians;
-      if (std::abs(lon) == kPi && (rng() & 1)) lon = -lon;
+      if (std::abs(lon) == std::numbers::pi && (rng() & 1)) lon = -lon;
       return {lon, (rng() & 1) ? r.southRadians : r.northRadians};
     }
   }

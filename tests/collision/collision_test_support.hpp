@@ -17,6 +17,9 @@
 
 namespace globe::collision::testing {
 
+// A sample value that differs at every (row i, column j) of a 17x17 block: 100 i + j.
+inline int16_t distinct(uint32_t i, uint32_t j) { return static_cast<int16_t>(100 * i + j); }
+
 // An N x N block with heights h(row, column).
 terrain::HeightBlock makeBlock(uint32_t verticesPerSide,
                                const std::function<int16_t(uint32_t, uint32_t)>& height);

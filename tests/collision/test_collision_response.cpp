@@ -13,6 +13,7 @@
 #include "collision/height_service.hpp"
 #include "geo/ecef.hpp"
 #include "tests/camera/controller_test_support.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace globe::collision {
 namespace {
@@ -21,15 +22,11 @@ using camera::testing::drawnHeight;
 using camera::testing::fujiArray;
 using camera::testing::fujiSummit;
 using camera::testing::offsetPosition;
-constexpr double kPi = std::numbers::pi;
-constexpr double kClearance = 2.0;
-const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
+using globe::test::kClearance;
+using globe::test::kWgs84;
 
-const RenderingTileArray& fuji() { return fujiArray(camera::testing::finestLevel()); }
-
-double drawn(const geo::Cartographic& c) {
-  return drawnHeight(fuji(), c.longitudeRadians, c.latitudeRadians);
-}
+using camera::testing::drawn;
+using camera::testing::fuji;
 
 // A point on Fuji's slope `distance` from the summit towards `bearing`, `above` the surface.
 geo::Cartographic onSlope(double bearingRadians, double distanceMeters, double aboveMeters) {
@@ -67,7 +64,7 @@ TEST(StaticResponse, ThePapersQotcdModelIsMoreConservativeOnSlopes) {
   qotcd.surface = SurfaceModel::Qotcd;
   int compared = 0;
   for (int k = 0; k < 64 && compared < 8; ++k) {
-    const geo::Cartographic to = onSlope(k * kPi / 32.0, 1500.0 + 20.0 * k, 2.5);
+    const geo::Cartographic to = onSlope(k * std::numbers::pi / 32.0, 1500.0 + 20.0 * k, 2.5);
     const auto h =
         sampleHeight(fuji(), kWgs84, to.longitudeRadians, to.latitudeRadians, HeightMode::Qotcd);
     ASSERT_TRUE(h);
@@ -82,10 +79,11 @@ TEST(StaticResponse, ThePapersQotcdModelIsMoreConservativeOnSlopes) {
 }
 
 TEST(LinearResponse, HorizontalMotionIntoTheSlopeSlidesUpIt) {
-  for (const double bearing : {0.0, kPi / 2, kPi, 1.5 * kPi}) {
+  for (const double bearing :
+       {0.0, std::numbers::pi / 2, std::numbers::pi, 1.5 * std::numbers::pi}) {
     const geo::Cartographic start = onSlope(bearing, 3000.0, kClearance + 0.5);
     // Towards the summit, level in the start's tangent plane, 200 m in one frame.
-    const glm::dvec3 towards = camera::testing::direction(start, bearing + kPi, 0.0);
+    const glm::dvec3 towards = camera::testing::direction(start, bearing + std::numbers::pi, 0.0);
     for (const bool sweep : {true, false}) {
       ResponseSettings settings;
       settings.sweep = sweep;
@@ -102,7 +100,8 @@ TEST(LinearResponse, HorizontalMotionIntoTheSlopeSlidesUpIt) {
       std::printf(
           "bearing %3.0f deg sweep %d: progress %6.1f m, climb %6.1f m, clearance %.3f m, "
           "%d contacts, %u probes\n",
-          bearing * 180 / kPi, sweep, progress, climb, clearance, r.slideIterations, r.samples);
+          bearing * 180 / std::numbers::pi, sweep, progress, climb, clearance, r.slideIterations,
+          r.samples);
       EXPECT_GT(progress, 20.0);                              // tangential progress
       EXPECT_GT(climb, 0.1 * progress);                       // the height follows the slope up
       EXPECT_GE(clearance, kClearance - kContactSkinMeters);  // never below
@@ -124,7 +123,7 @@ TEST(LinearResponse, HorizontalMotionIntoTheSlopeSlidesUpIt) {
 }
 
 TEST(LinearResponse, MotionStraightDownOnASlopeSlidesDownIt) {
-  for (const double bearing : {kPi / 4, 1.25 * kPi}) {
+  for (const double bearing : {std::numbers::pi / 4, 1.25 * std::numbers::pi}) {
     const geo::Cartographic start = onSlope(bearing, 2000.0, 50.0);
     const glm::dvec3 down = -geo::geodeticSurfaceNormal(kWgs84, start);
     const MotionResult r = respondLinear(fuji(), kWgs84, start, 500.0 * down, kClearance, {});
@@ -144,11 +143,11 @@ TEST(LinearResponse, MotionStraightDownOnASlopeSlidesDownIt) {
 }
 
 TEST(AngularResponse, HeightenedToTheSurfaceWithTheAngleAppliedInFull) {
-  for (const double bearing : {kPi / 2, 1.5 * kPi}) {
+  for (const double bearing : {std::numbers::pi / 2, 1.5 * std::numbers::pi}) {
     const geo::Cartographic from = onSlope(bearing, 3000.0, kClearance);
     const glm::dvec3 p = geo::cartographicToEcef(kWgs84, from);
     // About the polar axis towards the summit: 80 m along the parallel in one frame.
-    const double sign = bearing < kPi ? -1.0 : 1.0;
+    const double sign = bearing < std::numbers::pi ? -1.0 : 1.0;
     const double angle = 80.0 / std::hypot(p.x, p.y);
     const auto to =
         geo::ecefToCartographic(kWgs84, camera::rotateAboutGeocentre(p, {0, 0, sign * angle}));
@@ -180,7 +179,7 @@ TEST(AngularResponse, OnThePapersSphereTheGeocentricDirectionIsKeptExactly) {
   // On the sphere the Oriented Ray points at the centre: heightening is radial, and the camera's
   // direction from the centre is the rotated one.
   const geo::Ellipsoid sphere = geo::Ellipsoid::sphere();
-  geo::Cartographic from = offsetPosition(fujiSummit(), kPi / 2, 3000.0, 0.0);
+  geo::Cartographic from = offsetPosition(fujiSummit(), std::numbers::pi / 2, 3000.0, 0.0);
   from.heightMeters = drawn(from) + kClearance;
   const glm::dvec3 p = geo::cartographicToEcef(sphere, from);
   const glm::dvec3 rotated = camera::rotateAboutGeocentre(p, {0, 0, -80.0 / std::hypot(p.x, p.y)});

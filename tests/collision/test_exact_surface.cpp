@@ -15,16 +15,16 @@
 #include "geo/tiling_scheme.hpp"
 #include "tests/collision/collision_test_support.hpp"
 #include "tests/collision/mesh_ray_cast.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace globe::collision {
 namespace {
 
 using geo::TileId;
+using globe::test::kN;
 using testing::gridLatitude;
 using testing::gridLongitude;
 using testing::makeBlock;
-constexpr double kPi = std::numbers::pi;
-constexpr uint32_t kN = 17;
 
 int16_t hilly(uint32_t i, uint32_t j) {
   return static_cast<int16_t>(static_cast<int>((i * 7919 + j * 104729) % 4001) - 200);
@@ -98,7 +98,7 @@ TEST(ExactSurface, FlatTerrainSagsBetweenVerticesLikeAChord) {
     const ArrayTile tile = makeArrayTile(id, flat);
     // Mid-point of the north-west edge of quad (0, 0) along the row at the equator: a chord of
     // angle c sags r (1 - cos(c/2)) below the arc; on the sphere the ray is radial.
-    const double cell = kPi / (geo::GeographicTilingScheme::tilesY(level) * 16.0);
+    const double cell = std::numbers::pi / (geo::GeographicTilingScheme::tilesY(level) * 16.0);
     const SurfaceSample mid =
         exactTileSurfaceHeight(tile, sphere, gridLongitude(id, kN, 0.5), gridLatitude(id, kN, 0));
     const double chordSag = r * (1.0 - std::cos(cell / 2.0));
@@ -118,8 +118,9 @@ TEST(ExactSurface, PoleQuadsAndPolePoint) {
   const ArrayTile tile = makeArrayTile(id, block);
   for (const geo::Ellipsoid& ellipsoid : {geo::Ellipsoid::wgs84(), geo::Ellipsoid::sphere()}) {
     // The pole itself, at any longitude (even outside the tile): the pole row's height.
-    for (double lon : {0.0, -kPi, 2.0}) {
-      const SurfaceSample pole = exactTileSurfaceHeight(tile, ellipsoid, lon, kPi / 2.0);
+    for (double lon : {0.0, -std::numbers::pi, 2.0}) {
+      const SurfaceSample pole =
+          exactTileSurfaceHeight(tile, ellipsoid, lon, std::numbers::pi / 2.0);
       EXPECT_EQ(pole.triangle, SurfaceTriangle::Pole);
       EXPECT_EQ(pole.heightMeters, 500.0);
     }
@@ -139,10 +140,10 @@ TEST(ExactSurface, PoleQuadsAndPolePoint) {
   const terrain::HeightBlock uneven = makeBlock(
       kN, [](uint32_t i, uint32_t j) { return static_cast<int16_t>(i == 0 ? 100 + j : 50); });
   const ArrayTile unevenTile = makeArrayTile(id, uneven);
-  EXPECT_EQ(
-      exactTileSurfaceHeight(unevenTile, geo::Ellipsoid::wgs84(), 1.0, kPi / 2.0).heightMeters,
-      116.0);
-  const TileHeight h = qotcdTileHeight(unevenTile, 1.0, kPi / 2.0);
+  EXPECT_EQ(exactTileSurfaceHeight(unevenTile, geo::Ellipsoid::wgs84(), 1.0, std::numbers::pi / 2.0)
+                .heightMeters,
+            116.0);
+  const TileHeight h = qotcdTileHeight(unevenTile, 1.0, std::numbers::pi / 2.0);
   EXPECT_EQ(h.heightMeters, 116.0);
   EXPECT_EQ(h.heightCase, HeightCase::Vertex);
 }

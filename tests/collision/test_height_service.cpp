@@ -16,7 +16,6 @@ using geo::TileId;
 using testing::gridLatitude;
 using testing::gridLongitude;
 using testing::makeBlock;
-constexpr double kPi = std::numbers::pi;
 
 TEST(HeightService, BothModesTheTileAndItsLevel) {
   const terrain::HeightBlock coarse = makeBlock(17, [](uint32_t, uint32_t) { return int16_t{10}; });
@@ -39,7 +38,8 @@ TEST(HeightService, BothModesTheTileAndItsLevel) {
   EXPECT_LT(exact->heightMeters, 704.0);
   EXPECT_GT(exact->heightMeters, 602.0);
   // Longitudes are wrapped.
-  const auto wrapped = sampleHeight(array, wgs84, lon + 2.0 * kPi, lat, HeightMode::Qotcd);
+  const auto wrapped =
+      sampleHeight(array, wgs84, lon + 2.0 * std::numbers::pi, lat, HeightMode::Qotcd);
   ASSERT_TRUE(wrapped);
   EXPECT_EQ(wrapped->heightMeters, qotcd->heightMeters);
   // Elsewhere in the coarse tile; nothing outside; invalid input.

@@ -18,11 +18,12 @@
 #include "terrain/block_grid.hpp"
 #include "terrain/tile_mesh.hpp"
 #include "tests/collision/collision_test_support.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace globe::collision {
 namespace {
 
-const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
+using globe::test::kWgs84;
 
 double segmentDistance(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b) {
   const glm::dvec3 ab = b - a;

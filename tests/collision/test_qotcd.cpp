@@ -11,23 +11,23 @@
 #include "geo/ecef.hpp"
 #include "geo/tiling_scheme.hpp"
 #include "tests/collision/collision_test_support.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace globe::collision {
 namespace {
 
 using geo::TileId;
+using globe::test::kN;
 using testing::gridLatitude;
 using testing::gridLongitude;
 using testing::makeBlock;
-constexpr double kPi = std::numbers::pi;
-constexpr uint32_t kN = 17;
 const TileId kTile{3, 5, 2};
 
 using Detector = QotcdResult (*)(const RenderingTileArray&, const geo::Ellipsoid&,
                                  const glm::dvec3&, double);
 const Detector kDetectors[] = {qotcdLinear, qotcdIndexed};
 
-int16_t distinct(uint32_t i, uint32_t j) { return static_cast<int16_t>(100 * i + j); }
+using testing::distinct;
 
 void expectAllFinite(const QotcdResult& r) {
   EXPECT_TRUE(std::isfinite(r.terrainHeightMeters));
@@ -188,7 +188,7 @@ TEST(Qotcd, PolesFromEcef) {
     for (Detector detect : kDetectors) {
       const QotcdResult n = detect(array, ellipsoid, {0.0, 0.0, b + 400.0}, 0.0);
       EXPECT_TRUE(n.valid && n.found);
-      EXPECT_EQ(n.latitudeRadians, kPi / 2.0);
+      EXPECT_EQ(n.latitudeRadians, std::numbers::pi / 2.0);
       EXPECT_EQ(n.tile, (TileId{4, 25, 0}));
       EXPECT_EQ(n.terrainHeightMeters, 500.0);
       EXPECT_EQ(n.heightCase, HeightCase::Vertex);
@@ -206,7 +206,7 @@ TEST(Qotcd, PolesFromEcef) {
           geo::cartographicToEcef(
               ellipsoid,
               {geo::GeographicTilingScheme::tileRectangle({4, 25, 0}).center().longitudeRadians,
-               kPi / 2.0 - 1e-15, 100.0}),
+               std::numbers::pi / 2.0 - 1e-15, 100.0}),
           0.0);
       EXPECT_EQ(near.tile, (TileId{4, 25, 0}));
       EXPECT_EQ(near.terrainHeightMeters, 500.0);
@@ -224,9 +224,9 @@ TEST(Qotcd, AntimeridianFromEcef) {
   const geo::Ellipsoid wgs84 = geo::Ellipsoid::wgs84();
   // ECEF (x < 0, y = +-0, z): longitude +pi or -pi depending on the sign of zero.
   for (double y : {0.0, -0.0}) {
-    const glm::dvec3 camera = geo::cartographicToEcef(wgs84, {kPi, 0.6, 10.0});
+    const glm::dvec3 camera = geo::cartographicToEcef(wgs84, {std::numbers::pi, 0.6, 10.0});
     const glm::dvec3 onMeridian{camera.x, y, camera.z};
-    ASSERT_EQ(std::abs(std::atan2(onMeridian.y, onMeridian.x)), kPi);
+    ASSERT_EQ(std::abs(std::atan2(onMeridian.y, onMeridian.x)), std::numbers::pi);
     RenderingTileArray onlyEast;
     onlyEast.assign({makeArrayTile({3, 15, 2}, east)});
     RenderingTileArray onlyWest;
@@ -238,14 +238,14 @@ TEST(Qotcd, AntimeridianFromEcef) {
       const QotcdResult w = detect(onlyWest, wgs84, onMeridian, 0.0);
       const QotcdResult bw = detect(both, wgs84, onMeridian, 0.0);
       ASSERT_TRUE(e.found && w.found && bw.found);
-      EXPECT_EQ(e.longitudeRadians, -kPi);  // canonical form
+      EXPECT_EQ(e.longitudeRadians, -std::numbers::pi);  // canonical form
       EXPECT_EQ(e.tile, (TileId{3, 15, 2}));
       EXPECT_EQ(w.tile, (TileId{3, 0, 2}));
       EXPECT_EQ(bw.tile, (TileId{3, 0, 2}));  // x = 0 owns the meridian
       // Both read their +-180 deg column: 16 east, 0 west; the same grid row.
       const double row =
-          (geo::GeographicTilingScheme::tileRectangle({3, 0, 2}).northRadians - 0.6) / (kPi / 8.0) *
-          16.0;
+          (geo::GeographicTilingScheme::tileRectangle({3, 0, 2}).northRadians - 0.6) /
+          (std::numbers::pi / 8.0) * 16.0;
       const auto i = static_cast<uint32_t>(std::floor(row));
       EXPECT_EQ(e.heightCase, HeightCase::RowOrColumn);
       EXPECT_EQ(e.terrainHeightMeters, 100.0 * (i + 1) + 16);

@@ -11,18 +11,19 @@
 #include "collision/qotcd_height.hpp"
 #include "geo/tiling_scheme.hpp"
 #include "tests/collision/collision_test_support.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace globe::collision {
 namespace {
 
 using geo::TileId;
+using globe::test::kN;
 using testing::gridLatitude;
 using testing::gridLongitude;
 using testing::makeBlock;
-constexpr uint32_t kN = 17;
-const TileId kTile{3, 5, 2};  // 67.5 W..45 W, 22.5 N..45 N
+const TileId kFigureTile{3, 5, 2};  // 67.5 W..45 W, 22.5 N..45 N
 
-int16_t distinct(uint32_t i, uint32_t j) { return static_cast<int16_t>(100 * i + j); }
+using testing::distinct;
 
 // Random heights with no-data (sea), negatives and one spike (Everest) at (8, 8).
 int16_t spiky(uint32_t i, uint32_t j) {
@@ -41,7 +42,7 @@ double expected(const terrain::HeightBlock& block, uint32_t i, uint32_t j) {
 
 struct Fig3 : ::testing::TestWithParam<int> {
   terrain::HeightBlock block = makeBlock(kN, GetParam() == 0 ? distinct : spiky);
-  RenderingTileArray array = testing::arrayOf({kTile}, block);
+  RenderingTileArray array = testing::arrayOf({kFigureTile}, block);
   std::mt19937_64 rng{static_cast<uint64_t>(GetParam()) + 3};
 
   // Checks H through both QOTCD lookups (camera deep below, so the block is always read).
@@ -51,7 +52,7 @@ struct Fig3 : ::testing::TestWithParam<int> {
       const QotcdResult r =
           linear ? qotcdLinear(array, camera, 0.0) : qotcdIndexed(array, camera, 0.0);
       ASSERT_TRUE(r.valid && r.found) << what;
-      EXPECT_EQ(r.tile, kTile);
+      EXPECT_EQ(r.tile, kFigureTile);
       EXPECT_EQ(r.terrainHeightMeters, h) << what << " lon " << lon << " lat " << lat;
       EXPECT_EQ(r.heightCase, heightCase) << what << " lon " << lon << " lat " << lat;
       EXPECT_TRUE(r.collided);
@@ -65,14 +66,14 @@ TEST_P(Fig3, EveryVertex) {
   for (uint32_t i = 0; i < kN; ++i) {
     for (uint32_t j = 0; j < kN; ++j) {
       const double h = expected(block, i, j);
-      check(gridLongitude(kTile, kN, j), gridLatitude(kTile, kN, i), h, HeightCase::Vertex,
-            "vertex");
+      check(gridLongitude(kFigureTile, kN, j), gridLatitude(kFigureTile, kN, i), h,
+            HeightCase::Vertex, "vertex");
       // The mesh's own vertex position (degrees), and points within the epsilon of the vertex.
-      check(testing::meshVertexLongitude(kTile, kN, j), testing::meshVertexLatitude(kTile, kN, i),
-            h, HeightCase::Vertex, "mesh vertex");
+      check(testing::meshVertexLongitude(kFigureTile, kN, j),
+            testing::meshVertexLatitude(kFigureTile, kN, i), h, HeightCase::Vertex, "mesh vertex");
       const double dj = j == kN - 1 ? -0.5 * eps : 0.5 * eps;
       const double di = i == kN - 1 ? -0.9 * eps : 0.9 * eps;
-      check(gridLongitude(kTile, kN, j + dj), gridLatitude(kTile, kN, i + di), h,
+      check(gridLongitude(kFigureTile, kN, j + dj), gridLatitude(kFigureTile, kN, i + di), h,
             HeightCase::Vertex, "near vertex");
     }
   }
@@ -88,16 +89,16 @@ TEST_P(Fig3, EveryRowAndColumnSegment) {
                          : sample == 2 ? 1 - 3e-9
                                        : fraction(rng);
         // Row `line`, between columns k and k+1.
-        check(gridLongitude(kTile, kN, k + t), gridLatitude(kTile, kN, line),
+        check(gridLongitude(kFigureTile, kN, k + t), gridLatitude(kFigureTile, kN, line),
               std::max(expected(block, line, k), expected(block, line, k + 1)),
               HeightCase::RowOrColumn, "row");
         // Column `line`, between rows k and k+1.
-        check(gridLongitude(kTile, kN, line), gridLatitude(kTile, kN, k + t),
+        check(gridLongitude(kFigureTile, kN, line), gridLatitude(kFigureTile, kN, k + t),
               std::max(expected(block, k, line), expected(block, k + 1, line)),
               HeightCase::RowOrColumn, "column");
         // Within the epsilon of the line counts as on it.
         const double off = line == 0 ? 0.5e-9 : -0.5e-9;
-        check(gridLongitude(kTile, kN, k + t), gridLatitude(kTile, kN, line + off),
+        check(gridLongitude(kFigureTile, kN, k + t), gridLatitude(kFigureTile, kN, line + off),
               std::max(expected(block, line, k), expected(block, line, k + 1)),
               HeightCase::RowOrColumn, "near row");
       }
@@ -114,8 +115,8 @@ TEST_P(Fig3, EveryQuad) {
       for (int sample = 0; sample < 10; ++sample) {
         const double s = sample == 0 ? 0.5 : fraction(rng);
         const double t = sample == 0 ? 0.5 : fraction(rng);
-        check(gridLongitude(kTile, kN, j + t), gridLatitude(kTile, kN, i + s), h, HeightCase::Quad,
-              "quad");
+        check(gridLongitude(kFigureTile, kN, j + t), gridLatitude(kFigureTile, kN, i + s), h,
+              HeightCase::Quad, "quad");
       }
     }
   }
@@ -123,15 +124,15 @@ TEST_P(Fig3, EveryQuad) {
 
 TEST_P(Fig3, JustBeyondTheEpsilonIsOffTheLine) {
   // 3e-9 of a cell from vertex (4, 6): in a quad, or on a line when only one axis is off.
-  const double lon = gridLongitude(kTile, kN, 6 + 3e-9);
-  const double lat = gridLatitude(kTile, kN, 4 + 3e-9);
+  const double lon = gridLongitude(kFigureTile, kN, 6 + 3e-9);
+  const double lat = gridLatitude(kFigureTile, kN, 4 + 3e-9);
   check(lon, lat,
         std::max({expected(block, 4, 6), expected(block, 4, 7), expected(block, 5, 6),
                   expected(block, 5, 7)}),
         HeightCase::Quad, "off vertex");
-  check(lon, gridLatitude(kTile, kN, 4), std::max(expected(block, 4, 6), expected(block, 4, 7)),
-        HeightCase::RowOrColumn, "off");
-  check(gridLongitude(kTile, kN, 6 - 3e-9), gridLatitude(kTile, kN, 4),
+  check(lon, gridLatitude(kFigureTile, kN, 4),
+        std::max(expected(block, 4, 6), expected(block, 4, 7)), HeightCase::RowOrColumn, "off");
+  check(gridLongitude(kFigureTile, kN, 6 - 3e-9), gridLatitude(kFigureTile, kN, 4),
         std::max(expected(block, 4, 5), expected(block, 4, 6)), HeightCase::RowOrColumn, "off");
 }
 
@@ -143,19 +144,19 @@ TEST(Fig3Spike, NoDataCountsAsSeaLevel) {
     if ((i + j) % 2 == 0) return terrain::kNoDataHeight;
     return static_cast<int16_t>(-5 - static_cast<int>(i));
   });
-  const ArrayTile tile = makeArrayTile(kTile, block);
+  const ArrayTile tile = makeArrayTile(kFigureTile, block);
   EXPECT_EQ(tile.maximumHeightMeters, 0);
-  const TileHeight quad =
-      qotcdTileHeight(tile, gridLongitude(kTile, kN, 3.3), gridLatitude(kTile, kN, 7.6));
+  const TileHeight quad = qotcdTileHeight(tile, gridLongitude(kFigureTile, kN, 3.3),
+                                          gridLatitude(kFigureTile, kN, 7.6));
   EXPECT_EQ(quad.heightMeters, 0.0);
   const TileHeight vertex =
-      qotcdTileHeight(tile, gridLongitude(kTile, kN, 3), gridLatitude(kTile, kN, 4));
+      qotcdTileHeight(tile, gridLongitude(kFigureTile, kN, 3), gridLatitude(kFigureTile, kN, 4));
   EXPECT_EQ(vertex.heightMeters, -9.0);  // (4, 3): odd sum, a real negative height
   const TileHeight sea =
-      qotcdTileHeight(tile, gridLongitude(kTile, kN, 3), gridLatitude(kTile, kN, 5));
+      qotcdTileHeight(tile, gridLongitude(kFigureTile, kN, 3), gridLatitude(kFigureTile, kN, 5));
   EXPECT_EQ(sea.heightMeters, 0.0);
   const TileHeight segment =
-      qotcdTileHeight(tile, gridLongitude(kTile, kN, 3), gridLatitude(kTile, kN, 4.5));
+      qotcdTileHeight(tile, gridLongitude(kFigureTile, kN, 3), gridLatitude(kFigureTile, kN, 4.5));
   EXPECT_EQ(segment.heightMeters, 0.0);  // max(-9, sea)
   EXPECT_EQ(segment.heightCase, HeightCase::RowOrColumn);
 }
@@ -190,23 +191,23 @@ TEST(Fig3Edges, NeighbourTilesOnSharedEdgesAndCorners) {
     const Case cases[] = {
         // West, east, north and south edges; the south-west / south-east corners and the
         // south edge belong to the southern row, the east edge to the eastern column.
-        {gridLongitude(kTile, kN, 0),
-         gridLatitude(kTile, kN, k),
+        {gridLongitude(kFigureTile, kN, 0),
+         gridLatitude(kFigureTile, kN, k),
          {3, 5, k == kN - 1 ? 3u : 2u},
          k == kN - 1 ? 0.0 : static_cast<double>(k),
          0},
-        {gridLongitude(kTile, kN, kN - 1),
-         gridLatitude(kTile, kN, k),
+        {gridLongitude(kFigureTile, kN, kN - 1),
+         gridLatitude(kFigureTile, kN, k),
          {3, 6, k == kN - 1 ? 3u : 2u},
          k == kN - 1 ? 0.0 : static_cast<double>(k),
          0},
-        {gridLongitude(kTile, kN, k),
-         gridLatitude(kTile, kN, 0),
+        {gridLongitude(kFigureTile, kN, k),
+         gridLatitude(kFigureTile, kN, 0),
          {3, k == kN - 1 ? 6u : 5u, 2},
          0,
          k == kN - 1 ? 0.0 : static_cast<double>(k)},
-        {gridLongitude(kTile, kN, k),
-         gridLatitude(kTile, kN, kN - 1),
+        {gridLongitude(kFigureTile, kN, k),
+         gridLatitude(kFigureTile, kN, kN - 1),
          {3, k == kN - 1 ? 6u : 5u, 3},
          0,
          k == kN - 1 ? 0.0 : static_cast<double>(k)},
@@ -232,9 +233,9 @@ TEST(Fig3Edges, SharedEdgeWithAFinerNeighbourReadsTheFinerTile) {
       makeBlock(kN, [](uint32_t i, uint32_t j) { return static_cast<int16_t>(200 + 100 * i + j); });
   // East of (3,5,2) lie (4,12,4) and (4,12,5).
   RenderingTileArray array;
-  array.assign({makeArrayTile(kTile, coarse), makeArrayTile({4, 12, 4}, fine),
+  array.assign({makeArrayTile(kFigureTile, coarse), makeArrayTile({4, 12, 4}, fine),
                 makeArrayTile({4, 12, 5}, fine)});
-  const double lon = gridLongitude(kTile, kN, kN - 1);
+  const double lon = gridLongitude(kFigureTile, kN, kN - 1);
   // Coarse vertex row 4 = fine (4,12,4) row 8; coarse row 10 = fine (4,12,5) row 4; coarse
   // row 4.5 = fine row 9, a vertex there.
   const double split = geo::GeographicTilingScheme::tileRectangle({4, 12, 5}).northRadians;
@@ -243,12 +244,13 @@ TEST(Fig3Edges, SharedEdgeWithAFinerNeighbourReadsTheFinerTile) {
     TileId tile;
     double h;
     HeightCase heightCase;
-  } cases[] = {{gridLatitude(kTile, kN, 4), {4, 12, 4}, 200 + 800, HeightCase::Vertex},
-               {gridLatitude(kTile, kN, 10), {4, 12, 5}, 200 + 400, HeightCase::Vertex},
-               {gridLatitude(kTile, kN, 4.5), {4, 12, 4}, 200 + 900, HeightCase::Vertex},
-               {gridLatitude(kTile, kN, 4.25), {4, 12, 4}, 200 + 900, HeightCase::RowOrColumn},
-               {split, {4, 12, 5}, 200, HeightCase::Vertex},
-               {std::nextafter(split, 1.0), {4, 12, 4}, 200 + 1600, HeightCase::Vertex}};
+  } cases[] = {
+      {gridLatitude(kFigureTile, kN, 4), {4, 12, 4}, 200 + 800, HeightCase::Vertex},
+      {gridLatitude(kFigureTile, kN, 10), {4, 12, 5}, 200 + 400, HeightCase::Vertex},
+      {gridLatitude(kFigureTile, kN, 4.5), {4, 12, 4}, 200 + 900, HeightCase::Vertex},
+      {gridLatitude(kFigureTile, kN, 4.25), {4, 12, 4}, 200 + 900, HeightCase::RowOrColumn},
+      {split, {4, 12, 5}, 200, HeightCase::Vertex},
+      {std::nextafter(split, 1.0), {4, 12, 4}, 200 + 1600, HeightCase::Vertex}};
   for (const auto& c : cases) {
     for (int linear = 0; linear < 2; ++linear) {
       const geo::Cartographic camera{lon, c.latitude, -1e5};

@@ -31,7 +31,6 @@ using geo::TileId;
 using testing::rowSliverAllowanceMeters;  // the derivation is in surface_bounds.hpp
 using Scheme = geo::GeographicTilingScheme;
 using testing::RealPyramid;
-constexpr double kPi = std::numbers::pi;
 
 uint64_t tileHash(const TileId& id, uint64_t salt) { return std::hash<TileId>{}(id) ^ salt; }
 
@@ -306,9 +305,9 @@ TEST(RealPyramid, PolesAreOneHeightAndFoundFromAnyLongitude) {
     }
     for (const geo::Ellipsoid& ellipsoid : {geo::Ellipsoid::wgs84(), geo::Ellipsoid::sphere()}) {
       const double z = (north ? 1.0 : -1.0) * (ellipsoid.semiMinorAxisMeters + pole + 30.0);
-      using Detector = QotcdResult (*)(const RenderingTileArray&, const geo::Ellipsoid&,
-                                       const glm::dvec3&, double);
-      for (const Detector detect : {Detector{qotcdLinear}, Detector{qotcdIndexed}}) {
+      using PoleDetector = QotcdResult (*)(const RenderingTileArray&, const geo::Ellipsoid&,
+                                           const glm::dvec3&, double);
+      for (const PoleDetector detect : {PoleDetector{qotcdLinear}, PoleDetector{qotcdIndexed}}) {
         const QotcdResult r = detect(array, ellipsoid, glm::dvec3(0.0, 0.0, z), 0.0);
         ASSERT_TRUE(r.found);
         if (!r.earlyOut) {
@@ -318,9 +317,10 @@ TEST(RealPyramid, PolesAreOneHeightAndFoundFromAnyLongitude) {
         EXPECT_FALSE(r.collided);
         EXPECT_TRUE(detect(array, ellipsoid, glm::dvec3(0.0, 0.0, z), 31.0).collided);
       }
-      for (double lon : {-kPi, -2.0, 0.5, kPi}) {
+      for (double lon : {-std::numbers::pi, -2.0, 0.5, std::numbers::pi}) {
         const auto sample =
-            sampleHeight(array, ellipsoid, lon, north ? kPi / 2 : -kPi / 2, HeightMode::Exact);
+            sampleHeight(array, ellipsoid, lon,
+                         north ? std::numbers::pi / 2 : -std::numbers::pi / 2, HeightMode::Exact);
         ASSERT_TRUE(sample);
         EXPECT_EQ(sample->heightMeters, pole);
       }

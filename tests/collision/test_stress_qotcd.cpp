@@ -36,7 +36,6 @@ namespace {
 using geo::TileId;
 using Scheme = geo::GeographicTilingScheme;
 using testing::RealPyramid;
-constexpr double kPi = std::numbers::pi;
 constexpr double kHalfPi = std::numbers::pi / 2.0;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -55,7 +54,7 @@ std::vector<TileId> stressCut(RealPyramid& pyramid) {
   return testing::quadtreeCut(pyramid, [](const TileId& id) {
     if (id.level < 2) return true;
     const geo::GlobeRectangle r = Scheme::tileRectangle(id);
-    const bool singular = r.westRadians == -kPi || r.eastRadians == kPi ||
+    const bool singular = r.westRadians == -std::numbers::pi || r.eastRadians == std::numbers::pi ||
                           r.northRadians == kHalfPi || r.southRadians == -kHalfPi;
     if (id.level < 6 && (singular || tileHash(id, 3) % 100 < 40)) return true;
     return touchesDegrees(id, 138.70, 35.33, 138.76, 35.39) ||
@@ -110,14 +109,18 @@ bool holds(const TileId& id, double longitudeRadians, double latitudeRadians) {
   const geo::GlobeRectangle r = Scheme::tileRectangle(id);
   if (latitudeRadians < r.southRadians || latitudeRadians > r.northRadians) return false;
   if (std::abs(latitudeRadians) == kHalfPi) return true;
-  const double lon = longitudeRadians == -kPi && r.eastRadians == kPi ? kPi : longitudeRadians;
+  const double lon = longitudeRadians == -std::numbers::pi && r.eastRadians == std::numbers::pi
+                         ? std::numbers::pi
+                         : longitudeRadians;
   return r.westRadians <= lon && lon <= r.eastRadians;
 }
 
 bool onEdge(const TileId& id, double longitudeRadians, double latitudeRadians) {
   const geo::GlobeRectangle r = Scheme::tileRectangle(id);
   const double lon =
-      std::abs(longitudeRadians) == kPi && r.eastRadians == kPi ? kPi : longitudeRadians;
+      std::abs(longitudeRadians) == std::numbers::pi && r.eastRadians == std::numbers::pi
+          ? std::numbers::pi
+          : longitudeRadians;
   return lon == r.westRadians || lon == r.eastRadians || latitudeRadians == r.southRadians ||
          latitudeRadians == r.northRadians;
 }
@@ -213,7 +216,7 @@ void regularQuery(std::mt19937_64& rng, StressArray& a, const geo::Ellipsoid& el
   const testing::LonLat p = stressPoint(rng, a, edgeLevel);
   const double lon = p.longitudeRadians, lat = p.latitudeRadians;
   stats.poles += std::abs(lat) == kHalfPi;
-  stats.antimeridian += std::abs(lon) == kPi;
+  stats.antimeridian += std::abs(lon) == std::numbers::pi;
   const std::optional<ExactSurfaceSample> surface =
       exactSurfaceHeight(a.array, ellipsoid, lon, lat);
   const double clearance = static_cast<double>(rng() % 3) * 25.0;
@@ -224,7 +227,8 @@ void regularQuery(std::mt19937_64& rng, StressArray& a, const geo::Ellipsoid& el
   ASSERT_TRUE(r.valid && allFinite(r)) << lon << " " << lat << " " << d;
   ASSERT_EQ(r.cameraHeightMeters, d);
   ASSERT_EQ(r.latitudeRadians, lat);
-  ASSERT_TRUE(-kPi <= r.longitudeRadians && r.longitudeRadians < kPi) << r.longitudeRadians;
+  ASSERT_TRUE(-std::numbers::pi <= r.longitudeRadians && r.longitudeRadians < std::numbers::pi)
+      << r.longitudeRadians;
   ASSERT_EQ(r.found, surface.has_value()) << lon << " " << lat;
   if (a.coversGlobe) {
     ASSERT_TRUE(r.found) << a.name << " lon " << lon << " lat " << lat;
@@ -341,7 +345,7 @@ void badQuery(std::mt19937_64& rng, const StressArray& a, const geo::Ellipsoid& 
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const double bad[] = {kNaN, -kNaN, kInf, -kInf};
   const double badValue = bad[rng() % 4];
-  const double lon = -kPi + 2.0 * kPi * unit(rng);
+  const double lon = -std::numbers::pi + 2.0 * std::numbers::pi * unit(rng);
   const double lat = std::asin(2.0 * unit(rng) - 1.0);
   const double d = 9000.0 * unit(rng);
   switch (rng() % 4) {

@@ -12,6 +12,7 @@
 #include "collision/swept_test.hpp"
 #include "geo/ecef.hpp"
 #include "tests/camera/controller_test_support.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace globe::collision {
 namespace {
@@ -20,23 +21,19 @@ using camera::testing::drawnHeight;
 using camera::testing::fujiArray;
 using camera::testing::fujiSummit;
 using camera::testing::offsetPosition;
-constexpr double kPi = std::numbers::pi;
-constexpr double kClearance = 2.0;
+using globe::test::kClearance;
 constexpr double kHeight = 3400.0;  // below the summit (~3731 m drawn), above both flanks
-const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
+using globe::test::kWgs84;
 
-const RenderingTileArray& fuji() { return fujiArray(camera::testing::finestLevel()); }
-
-double drawn(const geo::Cartographic& c) {
-  return drawnHeight(fuji(), c.longitudeRadians, c.latitudeRadians);
-}
+using camera::testing::drawn;
+using camera::testing::fuji;
 
 struct Crossing {
   geo::Cartographic west, east;
 };
 Crossing crossing(double lengthMeters) {
-  return {offsetPosition(fujiSummit(), 1.5 * kPi, lengthMeters / 2, kHeight),
-          offsetPosition(fujiSummit(), 0.5 * kPi, lengthMeters / 2, kHeight)};
+  return {offsetPosition(fujiSummit(), 1.5 * std::numbers::pi, lengthMeters / 2, kHeight),
+          offsetPosition(fujiSummit(), 0.5 * std::numbers::pi, lengthMeters / 2, kHeight)};
 }
 
 TEST(SweptTest, TheEndPointTestTunnelsThroughFujiAndTheSweepStopsAtItsFlank) {

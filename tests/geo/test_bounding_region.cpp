@@ -19,7 +19,6 @@ namespace {
 
 using testing::randomHeights;
 using testing::sampleRegionPoint;
-constexpr double kPi = std::numbers::pi;
 
 BoundingRegion tileRegion(const TileId& tile, double minimum, double maximum) {
   return {GeographicTilingScheme::tileRectangle(tile), minimum, maximum};
@@ -147,14 +146,15 @@ TEST(Horizon, ConservativeForRandomCamerasAndRegions) {
   int kept = 0;
   for (int trial = 0; trial < 20000; ++trial) {
     const Ellipsoid e = trial % 2 == 0 ? Ellipsoid::wgs84() : Ellipsoid::sphere();
-    const Cartographic cameraCarto{(2.0 * unit(rng) - 1.0) * kPi, std::asin(2.0 * unit(rng) - 1.0),
+    const Cartographic cameraCarto{(2.0 * unit(rng) - 1.0) * std::numbers::pi,
+                                   std::asin(2.0 * unit(rng) - 1.0),
                                    std::pow(10.0, 1.0 + 7.0 * unit(rng))};
     const glm::dvec3 camera = cartographicToEcef(e, cameraCarto);
     // A point at the horizon's central angle (give or take 15 deg) in a random azimuth.
     const double r = e.semiMinorAxisMeters;
     const double horizonAngle = std::acos(std::min(1.0, r / glm::length(camera)));
     const double angle = std::max(0.0, horizonAngle + (unit(rng) - 0.5) * 0.5);
-    const double azimuth = 2.0 * kPi * unit(rng);
+    const double azimuth = 2.0 * std::numbers::pi * unit(rng);
     const glm::dvec3 up = glm::normalize(camera);
     const glm::dvec3 east = glm::normalize(
         glm::cross(std::abs(up.z) < 0.9 ? glm::dvec3{0, 0, 1} : glm::dvec3{1, 0, 0}, up));

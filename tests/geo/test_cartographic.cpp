@@ -11,47 +11,48 @@
 namespace globe::geo {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 TEST(Cartographic, DegreeConversionsAreExactAtQuarterTurns) {
-  static_assert(degreesToRadians(180.0) == kPi);
-  static_assert(degreesToRadians(-180.0) == -kPi);
-  static_assert(degreesToRadians(90.0) == kPi / 2.0);
-  static_assert(radiansToDegrees(kPi) == 180.0);
-  static_assert(radiansToDegrees(-kPi / 2.0) == -90.0);
+  static_assert(degreesToRadians(180.0) == std::numbers::pi);
+  static_assert(degreesToRadians(-180.0) == -std::numbers::pi);
+  static_assert(degreesToRadians(90.0) == std::numbers::pi / 2.0);
+  static_assert(radiansToDegrees(std::numbers::pi) == 180.0);
+  static_assert(radiansToDegrees(-std::numbers::pi / 2.0) == -90.0);
   EXPECT_NEAR(degreesToRadians(1.0), 0.017453292519943295, 1e-18);
   EXPECT_NEAR(radiansToDegrees(1.0), 57.29577951308232, 1e-13);
 }
 
 TEST(Cartographic, FromDegreesAndBack) {
   const Cartographic c = Cartographic::fromDegrees(-122.5, 37.75, 12.0);
-  EXPECT_DOUBLE_EQ(c.longitudeRadians, -122.5 * kPi / 180.0);
-  EXPECT_DOUBLE_EQ(c.latitudeRadians, 37.75 * kPi / 180.0);
+  EXPECT_DOUBLE_EQ(c.longitudeRadians, -122.5 * std::numbers::pi / 180.0);
+  EXPECT_DOUBLE_EQ(c.latitudeRadians, 37.75 * std::numbers::pi / 180.0);
   EXPECT_EQ(c.heightMeters, 12.0);
   EXPECT_DOUBLE_EQ(c.longitudeDegrees(), -122.5);
   EXPECT_DOUBLE_EQ(c.latitudeDegrees(), 37.75);
   EXPECT_EQ(Cartographic::fromDegrees(180.0, -90.0).heightMeters, 0.0);
-  EXPECT_EQ(Cartographic::fromDegrees(180.0, -90.0).longitudeRadians, kPi);
-  EXPECT_EQ(Cartographic::fromDegrees(180.0, -90.0).latitudeRadians, -kPi / 2.0);
+  EXPECT_EQ(Cartographic::fromDegrees(180.0, -90.0).longitudeRadians, std::numbers::pi);
+  EXPECT_EQ(Cartographic::fromDegrees(180.0, -90.0).latitudeRadians, -std::numbers::pi / 2.0);
 }
 
 TEST(Cartographic, WrapLeavesInRangeValuesUnchanged) {
-  for (const double v : {0.0, -0.0, 1.0, -1.0, kPi, -kPi, std::nextafter(kPi, 0.0),
-                         std::nextafter(-kPi, 0.0), 1e-300}) {
+  for (const double v :
+       {0.0, -0.0, 1.0, -1.0, std::numbers::pi, -std::numbers::pi,
+        std::nextafter(std::numbers::pi, 0.0), std::nextafter(-std::numbers::pi, 0.0), 1e-300}) {
     EXPECT_EQ(wrapLongitudeRadians(v), v);
     EXPECT_EQ(std::signbit(wrapLongitudeRadians(v)), std::signbit(v));
   }
 }
 
 TEST(Cartographic, WrapMapsOutOfRangeValuesIntoRange) {
-  EXPECT_DOUBLE_EQ(wrapLongitudeRadians(1.5 * kPi), -0.5 * kPi);
-  EXPECT_DOUBLE_EQ(wrapLongitudeRadians(-1.5 * kPi), 0.5 * kPi);
-  EXPECT_NEAR(wrapLongitudeRadians(2.0 * kPi + 0.25), 0.25, 1e-15);
-  EXPECT_NEAR(wrapLongitudeRadians(-4.0 * kPi - 0.25), -0.25, 1e-14);
-  EXPECT_EQ(wrapLongitudeRadians(2.0 * kPi), 0.0);
+  EXPECT_DOUBLE_EQ(wrapLongitudeRadians(1.5 * std::numbers::pi), -0.5 * std::numbers::pi);
+  EXPECT_DOUBLE_EQ(wrapLongitudeRadians(-1.5 * std::numbers::pi), 0.5 * std::numbers::pi);
+  EXPECT_NEAR(wrapLongitudeRadians(2.0 * std::numbers::pi + 0.25), 0.25, 1e-15);
+  EXPECT_NEAR(wrapLongitudeRadians(-4.0 * std::numbers::pi - 0.25), -0.25, 1e-14);
+  EXPECT_EQ(wrapLongitudeRadians(2.0 * std::numbers::pi), 0.0);
   // Just past +pi comes back just after -pi, and vice versa.
-  EXPECT_NEAR(wrapLongitudeRadians(std::nextafter(kPi, 4.0)), -kPi, 1e-15);
-  EXPECT_NEAR(wrapLongitudeRadians(std::nextafter(-kPi, -4.0)), kPi, 1e-15);
+  EXPECT_NEAR(wrapLongitudeRadians(std::nextafter(std::numbers::pi, 4.0)), -std::numbers::pi,
+              1e-15);
+  EXPECT_NEAR(wrapLongitudeRadians(std::nextafter(-std::numbers::pi, -4.0)), std::numbers::pi,
+              1e-15);
 
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> exponent(-1.0, 300.0);
@@ -59,11 +60,11 @@ TEST(Cartographic, WrapMapsOutOfRangeValuesIntoRange) {
   for (int i = 0; i < 100000; ++i) {
     const double v = (negative(rng) ? -1.0 : 1.0) * std::pow(10.0, exponent(rng));
     const double wrapped = wrapLongitudeRadians(v);
-    ASSERT_GE(wrapped, -kPi) << v;
-    ASSERT_LE(wrapped, kPi) << v;
+    ASSERT_GE(wrapped, -std::numbers::pi) << v;
+    ASSERT_LE(wrapped, std::numbers::pi) << v;
     if (std::abs(v) < 1e6) {
       // Same angle: differs by a whole number of turns (up to rounding of large v).
-      const double turns = (v - wrapped) / (2.0 * kPi);
+      const double turns = (v - wrapped) / (2.0 * std::numbers::pi);
       ASSERT_NEAR(turns, std::round(turns), 1e-9) << v;
     }
   }

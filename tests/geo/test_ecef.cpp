@@ -16,7 +16,6 @@
 namespace globe::geo {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -62,7 +61,7 @@ TEST(Ecef, KnownPositionsSphere) {
   EXPECT_NEAR(p.z, 3200000.0, 1e-8);
   const std::optional<Cartographic> c = ecefToCartographic(s, {0.0, 0.0, -7000000.0});
   ASSERT_TRUE(c);
-  EXPECT_EQ(c->latitudeRadians, -kPi / 2.0);
+  EXPECT_EQ(c->latitudeRadians, -std::numbers::pi / 2.0);
   EXPECT_EQ(c->heightMeters, 629000.0);
 }
 
@@ -72,12 +71,12 @@ TEST(Ecef, ExactPolesAreHandledExplicitly) {
     for (const double h : {-11000.0, 0.0, 1.5, 4e7}) {
       const std::optional<Cartographic> north = ecefToCartographic(e, {0.0, 0.0, b + h});
       ASSERT_TRUE(north);
-      EXPECT_EQ(north->latitudeRadians, kPi / 2.0);
+      EXPECT_EQ(north->latitudeRadians, std::numbers::pi / 2.0);
       EXPECT_EQ(north->longitudeRadians, 0.0);
       EXPECT_NEAR(north->heightMeters, h, 1e-8);
       const std::optional<Cartographic> south = ecefToCartographic(e, {-0.0, 0.0, -(b + h)});
       ASSERT_TRUE(south);
-      EXPECT_EQ(south->latitudeRadians, -kPi / 2.0);
+      EXPECT_EQ(south->latitudeRadians, -std::numbers::pi / 2.0);
       EXPECT_NEAR(south->heightMeters, h, 1e-8);
     }
   }
@@ -115,8 +114,8 @@ TEST(Ecef, RobustEverywhere) {
       }
       ASSERT_TRUE(std::isfinite(c->longitudeRadians) && std::isfinite(c->latitudeRadians) &&
                   std::isfinite(c->heightMeters));
-      ASSERT_LE(std::abs(c->longitudeRadians), kPi);
-      ASSERT_LE(std::abs(c->latitudeRadians), kPi / 2.0);
+      ASSERT_LE(std::abs(c->longitudeRadians), std::numbers::pi);
+      ASSERT_LE(std::abs(c->latitudeRadians), std::numbers::pi / 2.0);
       // Far away the geodetic latitude tends to the geocentric one and the height to |p| - a.
       const double r = std::hypot(std::hypot(p.x, p.y), p.z);
       if (r > 1e12) {
@@ -137,23 +136,29 @@ TEST(Ecef, RobustEverywhere) {
 
 // Latitudes and longitudes that are exactly on, or one ulp next to, the hard places.
 double specialLatitude(std::mt19937_64& rng) {
-  static const double values[] = {kPi / 2.0,
-                                  -kPi / 2.0,
-                                  std::nextafter(kPi / 2.0, 0.0),
-                                  std::nextafter(-kPi / 2.0, 0.0),
-                                  kPi / 2.0 - 1e-9,
+  static const double values[] = {std::numbers::pi / 2.0,
+                                  -std::numbers::pi / 2.0,
+                                  std::nextafter(std::numbers::pi / 2.0, 0.0),
+                                  std::nextafter(-std::numbers::pi / 2.0, 0.0),
+                                  std::numbers::pi / 2.0 - 1e-9,
                                   0.0,
                                   -0.0,
                                   std::nextafter(0.0, 1.0),
                                   1e-300,
                                   -1e-12,
-                                  std::nextafter(kPi / 4.0, 1.0)};
+                                  std::nextafter(std::numbers::pi / 4.0, 1.0)};
   return values[std::uniform_int_distribution<size_t>(0, std::size(values) - 1)(rng)];
 }
 double specialLongitude(std::mt19937_64& rng) {
-  static const double values[] = {
-      kPi,        -kPi,  std::nextafter(kPi, 0.0), std::nextafter(-kPi, 0.0), 0.0, -0.0, kPi / 2.0,
-      -kPi / 2.0, 1e-300};
+  static const double values[] = {std::numbers::pi,
+                                  -std::numbers::pi,
+                                  std::nextafter(std::numbers::pi, 0.0),
+                                  std::nextafter(-std::numbers::pi, 0.0),
+                                  0.0,
+                                  -0.0,
+                                  std::numbers::pi / 2.0,
+                                  -std::numbers::pi / 2.0,
+                                  1e-300};
   return values[std::uniform_int_distribution<size_t>(0, std::size(values) - 1)(rng)];
 }
 
@@ -166,8 +171,8 @@ struct RoundTripErrors {
 RoundTripErrors roundTrip(const Ellipsoid& e, int count, uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::uniform_real_distribution<double> longitude(-kPi, kPi);
-  std::uniform_real_distribution<double> latitude(-kPi / 2.0, kPi / 2.0);
+  std::uniform_real_distribution<double> longitude(-std::numbers::pi, std::numbers::pi);
+  std::uniform_real_distribution<double> latitude(-std::numbers::pi / 2.0, std::numbers::pi / 2.0);
   std::uniform_real_distribution<double> uniformHeight(-11000.0, 4e7);
   std::uniform_real_distribution<double> logHeight(-9.0, std::log10(4e7));
   RoundTripErrors errors;
@@ -203,8 +208,8 @@ void checkRoundTrip(const Ellipsoid& e, const char* name, uint64_t seed) {
   const RoundTripErrors errors = roundTrip(e, 1000000, seed);
   std::cout << "[ " << name << " round trip ] " << errors.count << " points: max position error "
             << errors.position << " m, max height error " << errors.height << " m\n";
-  testing::Test::RecordProperty("max_position_error_m", std::to_string(errors.position));
-  testing::Test::RecordProperty("max_height_error_m", std::to_string(errors.height));
+  ::testing::Test::RecordProperty("max_position_error_m", std::to_string(errors.position));
+  ::testing::Test::RecordProperty("max_height_error_m", std::to_string(errors.height));
   EXPECT_EQ(errors.count, 1000000);
   EXPECT_LT(errors.position, 1e-6);
   EXPECT_LT(errors.height, 1e-6);
@@ -236,8 +241,8 @@ TEST(Ecef, SurfaceNormalFromCartographic) {
 
 TEST(Ecef, SurfaceNormalFromEcefAtAnyHeight) {
   std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> longitude(-kPi, kPi);
-  std::uniform_real_distribution<double> latitude(-kPi / 2.0, kPi / 2.0);
+  std::uniform_real_distribution<double> longitude(-std::numbers::pi, std::numbers::pi);
+  std::uniform_real_distribution<double> latitude(-std::numbers::pi / 2.0, std::numbers::pi / 2.0);
   std::uniform_real_distribution<double> height(-11000.0, 4e7);
   for (const Ellipsoid& e : {Ellipsoid::wgs84(), Ellipsoid::sphere()}) {
     for (int i = 0; i < 10000; ++i) {
@@ -257,14 +262,15 @@ TEST(Ecef, SurfaceNormalFromEcefAtAnyHeight) {
 // polar axis, the equator, deep inside and far out; undefined where the conversion is.
 TEST(Ecef, GeodeticFrameIsTheConversionAndItsNormal) {
   std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> longitude(-kPi, kPi);
-  std::uniform_real_distribution<double> latitude(-kPi / 2.0, kPi / 2.0);
+  std::uniform_real_distribution<double> longitude(-std::numbers::pi, std::numbers::pi);
+  std::uniform_real_distribution<double> latitude(-std::numbers::pi / 2.0, std::numbers::pi / 2.0);
   std::uniform_real_distribution<double> height(-6000e3, 4e7);
   for (const Ellipsoid& e : {Ellipsoid::wgs84(), Ellipsoid::sphere()}) {
     double worst = 0.0;
     for (int i = 0; i < 200000; ++i) {
       Cartographic c{longitude(rng), latitude(rng), height(rng)};
-      if (i % 10 == 0) c.latitudeRadians = (i % 20 == 0) ? 0.0 : kPi / 2.0;  // equator, pole
+      if (i % 10 == 0)
+        c.latitudeRadians = (i % 20 == 0) ? 0.0 : std::numbers::pi / 2.0;  // equator, pole
       const glm::dvec3 ecef = cartographicToEcef(e, c);
       const auto frame = ecefToGeodeticFrame(e, ecef);
       const auto plain = ecefToCartographic(e, ecef);

@@ -17,8 +17,6 @@
 namespace globe::geo {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 bool insideFrustum(const Frustum& frustum, const glm::dvec3& p) {
   for (const Plane& plane : frustum.planes) {
     if (glm::dot(plane.normal, p) + plane.distance < 0.0) return false;
@@ -105,7 +103,8 @@ TEST(Frustum, ConservativeForRandomFrustumsAndRegions) {
   int counts[3] = {0, 0, 0};
   for (int trial = 0; trial < 20000; ++trial) {
     const Ellipsoid e = trial % 2 == 0 ? Ellipsoid::wgs84() : Ellipsoid::sphere();
-    const Cartographic cameraCarto{(2.0 * unit(rng) - 1.0) * kPi, std::asin(2.0 * unit(rng) - 1.0),
+    const Cartographic cameraCarto{(2.0 * unit(rng) - 1.0) * std::numbers::pi,
+                                   std::asin(2.0 * unit(rng) - 1.0),
                                    std::pow(10.0, 2.0 + 5.5 * unit(rng))};
     const glm::dvec3 eye = cartographicToEcef(e, cameraCarto);
     // Look at a ground point up to a few camera heights away, or anywhere half the time.
@@ -115,9 +114,10 @@ TEST(Frustum, ConservativeForRandomFrustumsAndRegions) {
             ? Cartographic{wrapLongitudeRadians(cameraCarto.longitudeRadians +
                                                 (unit(rng) - 0.5) * spread),
                            std::clamp(cameraCarto.latitudeRadians + (unit(rng) - 0.5) * spread,
-                                      -kPi / 2.0, kPi / 2.0),
+                                      -std::numbers::pi / 2.0, std::numbers::pi / 2.0),
                            0.0}
-            : Cartographic{(2.0 * unit(rng) - 1.0) * kPi, (unit(rng) - 0.5) * kPi, 0.0};
+            : Cartographic{(2.0 * unit(rng) - 1.0) * std::numbers::pi,
+                           (unit(rng) - 0.5) * std::numbers::pi, 0.0};
     const glm::dvec3 target = cartographicToEcef(e, targetCarto);
     if (glm::length(target - eye) < 1.0) continue;
     // Drawn one per statement: the evaluation order of function arguments is unspecified.

@@ -9,18 +9,16 @@
 namespace globe::geo {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 TEST(GlobeRectangle, SizesAndCenter) {
   const GlobeRectangle r = GlobeRectangle::fromDegrees(-180.0, -90.0, 0.0, 90.0);
-  EXPECT_EQ(r.westRadians, -kPi);
-  EXPECT_EQ(r.southRadians, -kPi / 2.0);
+  EXPECT_EQ(r.westRadians, -std::numbers::pi);
+  EXPECT_EQ(r.southRadians, -std::numbers::pi / 2.0);
   EXPECT_EQ(r.eastRadians, 0.0);
-  EXPECT_EQ(r.northRadians, kPi / 2.0);
-  EXPECT_EQ(r.widthRadians(), kPi);
-  EXPECT_EQ(r.heightRadians(), kPi);
+  EXPECT_EQ(r.northRadians, std::numbers::pi / 2.0);
+  EXPECT_EQ(r.widthRadians(), std::numbers::pi);
+  EXPECT_EQ(r.heightRadians(), std::numbers::pi);
   const Cartographic c = r.center();
-  EXPECT_EQ(c.longitudeRadians, -kPi / 2.0);
+  EXPECT_EQ(c.longitudeRadians, -std::numbers::pi / 2.0);
   EXPECT_EQ(c.latitudeRadians, 0.0);
   EXPECT_EQ(c.heightMeters, 0.0);
 }

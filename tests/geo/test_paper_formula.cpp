@@ -16,8 +16,6 @@
 namespace globe::geo {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 TEST(PaperFormula, FrameMapping) {
   EXPECT_EQ(ecefToPaperYUp({1.0, 2.0, 3.0}), glm::dvec3(2.0, 3.0, 1.0));
 }
@@ -42,12 +40,14 @@ TEST(PaperFormula, LongitudeLosesTheQuadrant) {
     const Cartographic c = Cartographic::fromDegrees(lonDegrees, -20.0, 0.0);
     const glm::dvec3 ecef = cartographicToEcef(sphere, c);
     const PaperSphereCoordinates paper = paperFormula1(ecefToPaperYUp(ecef));
-    EXPECT_NEAR(std::abs(paper.longitudeRadians - c.longitudeRadians), kPi, 1e-14) << lonDegrees;
+    EXPECT_NEAR(std::abs(paper.longitudeRadians - c.longitudeRadians), std::numbers::pi, 1e-14)
+        << lonDegrees;
     const std::optional<Cartographic> robust = ecefToCartographic(sphere, ecef);
     ASSERT_TRUE(robust);
     // +-180 deg are the same meridian; compare the wrapped difference.
-    EXPECT_NEAR(std::remainder(robust->longitudeRadians - c.longitudeRadians, 2.0 * kPi), 0.0,
-                1e-15)
+    EXPECT_NEAR(
+        std::remainder(robust->longitudeRadians - c.longitudeRadians, 2.0 * std::numbers::pi), 0.0,
+        1e-15)
         << lonDegrees;
   }
   // On the 90 deg meridians z_gl = x_ecef is ~0 and atan(x/z) divides by (nearly) zero; at the
@@ -63,14 +63,14 @@ TEST(PaperFormula, LatitudeLosesPrecisionNearThePoles) {
   const Ellipsoid sphere = Ellipsoid::sphere();
   const double radius = sphere.semiMajorAxisMeters;
   std::mt19937_64 rng(21);
-  std::uniform_real_distribution<double> longitude(-kPi, kPi);
+  std::uniform_real_distribution<double> longitude(-std::numbers::pi, std::numbers::pi);
   std::uniform_real_distribution<double> logDistance(-12.0, -8.0);
   double paperMaxError = 0.0;
   double robustMaxError = 0.0;
   for (int i = 0; i < 10000; ++i) {
     // Within 1e-12..1e-8 rad of either pole.
     const double fromPole = std::pow(10.0, logDistance(rng));
-    const double latitude = (i % 2 == 0 ? 1.0 : -1.0) * (kPi / 2.0 - fromPole);
+    const double latitude = (i % 2 == 0 ? 1.0 : -1.0) * (std::numbers::pi / 2.0 - fromPole);
     const Cartographic c{longitude(rng), latitude, 0.0};
     const glm::dvec3 ecef = cartographicToEcef(sphere, c);
     const PaperSphereCoordinates paper = paperFormula1(ecefToPaperYUp(ecef));
@@ -82,8 +82,8 @@ TEST(PaperFormula, LatitudeLosesPrecisionNearThePoles) {
   }
   std::cout << "[ near-pole latitude error at the surface ] paper asin: " << paperMaxError
             << " m, atan2: " << robustMaxError << " m\n";
-  testing::Test::RecordProperty("paper_latitude_error_m", std::to_string(paperMaxError));
-  testing::Test::RecordProperty("robust_latitude_error_m", std::to_string(robustMaxError));
+  ::testing::Test::RecordProperty("paper_latitude_error_m", std::to_string(paperMaxError));
+  ::testing::Test::RecordProperty("robust_latitude_error_m", std::to_string(robustMaxError));
   EXPECT_GT(paperMaxError, 1e-2);
   EXPECT_LT(robustMaxError, 1e-9);
 }

@@ -23,7 +23,6 @@ namespace globe::geo {
 namespace {
 
 using Scheme = GeographicTilingScheme;
-constexpr double kPi = std::numbers::pi;
 constexpr double kHalfPi = std::numbers::pi / 2.0;
 // Round trips must hold to a micrometre everywhere (the documented accuracy of ecefToCartographic).
 constexpr double kRoundTripToleranceMeters = 1e-6;
@@ -54,9 +53,10 @@ double aroundUlp(std::mt19937_64& rng, double value) {
 double randomLongitude(std::mt19937_64& rng) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const uint64_t kind = rng() % 20;
-  if (kind < 12) return -kPi + 2.0 * kPi * unit(rng);
+  if (kind < 12) return -std::numbers::pi + 2.0 * std::numbers::pi * unit(rng);
   if (kind < 15) {  // +-180 deg and the other special meridians, one ulp either side
-    static const double special[] = {kPi, -kPi, 0.0, -0.0, kHalfPi, -kHalfPi, 1e-300};
+    static const double special[] = {std::numbers::pi, -std::numbers::pi, 0.0,   -0.0,
+                                     kHalfPi,          -kHalfPi,          1e-300};
     return aroundUlp(rng, pick(rng, special));
   }
   if (kind < 19) {  // a tile's west or east edge at any level, one ulp either side
@@ -69,7 +69,7 @@ double randomLongitude(std::mt19937_64& rng) {
 double randomLatitude(std::mt19937_64& rng) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const uint64_t kind = rng() % 20;
-  if (kind < 6) return -kHalfPi + kPi * unit(rng);
+  if (kind < 6) return -kHalfPi + std::numbers::pi * unit(rng);
   if (kind < 12) return std::asin(2.0 * unit(rng) - 1.0);  // uniform over the surface
   if (kind < 16) {  // the poles exactly and one ulp inside, the equator
     static const double special[] = {kHalfPi,
@@ -122,7 +122,7 @@ void geodeticRoundTrip(const Ellipsoid& ellipsoid, const char* name, uint64_t se
     ASSERT_TRUE(out.has_value()) << in.longitudeRadians << " " << in.latitudeRadians << " "
                                  << in.heightMeters;
     ASSERT_TRUE(isFinite(*out));
-    ASSERT_LE(std::abs(out->longitudeRadians), kPi);
+    ASSERT_LE(std::abs(out->longitudeRadians), std::numbers::pi);
     ASSERT_LE(std::abs(out->latitudeRadians), kHalfPi);
     const double positionError = glm::distance(cartographicToEcef(ellipsoid, *out), p);
     const double heightError = std::abs(out->heightMeters - in.heightMeters);
@@ -160,7 +160,7 @@ glm::dvec3 nearEvolute(std::mt19937_64& rng, const Ellipsoid& ellipsoid) {
   const double scale = 1.0 + (unit(rng) - 0.5) * std::pow(10.0, -12.0 * unit(rng));
   const double p = ellipsoid.eccentricitySquared() * a * std::pow(std::cos(t), 3) * scale;
   const double z = (a * a - b * b) / b * std::pow(std::sin(t), 3) * scale;
-  const double longitude = 2.0 * kPi * unit(rng);
+  const double longitude = 2.0 * std::numbers::pi * unit(rng);
   return {p * std::cos(longitude), p * std::sin(longitude), (rng() & 1) ? z : -z};
 }
 
@@ -257,7 +257,7 @@ void ecefRoundTrip(const Ellipsoid& ellipsoid, const char* name, uint64_t seed) 
     }
     ++errors.defined;
     ASSERT_TRUE(isFinite(*c)) << p.x << " " << p.y << " " << p.z;
-    ASSERT_LE(std::abs(c->longitudeRadians), kPi);
+    ASSERT_LE(std::abs(c->longitudeRadians), std::numbers::pi);
     ASSERT_LE(std::abs(c->latitudeRadians), kHalfPi);
     const double error = glm::distance(cartographicToEcef(ellipsoid, *c), p);
     ASSERT_LE(error, kRoundTripToleranceMeters)

@@ -22,7 +22,6 @@ namespace globe::geo {
 namespace {
 
 using Scheme = GeographicTilingScheme;
-constexpr double kPi = std::numbers::pi;
 constexpr double kHalfPi = std::numbers::pi / 2.0;
 
 TileId randomTile(std::mt19937_64& rng) {
@@ -53,7 +52,7 @@ struct Point {
 
 Point randomPoint(std::mt19937_64& rng) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const double uniformLongitude = -kPi + 2.0 * kPi * unit(rng);
+  const double uniformLongitude = -std::numbers::pi + 2.0 * std::numbers::pi * unit(rng);
   const double uniformLatitude = std::asin(2.0 * unit(rng) - 1.0);
   const uint32_t randomLevel = static_cast<uint32_t>(rng() % (kMaxLevel + 1));
   switch (rng() % 10) {
@@ -62,13 +61,15 @@ Point randomPoint(std::mt19937_64& rng) {
     case 2:
       return {uniformLongitude, uniformLatitude, std::nullopt, randomLevel};
     case 3: {  // +-180 deg exactly or one ulp either side (beyond wraps), any latitude
-      const double lon = aroundUlp(rng, (rng() & 1) ? kPi : -kPi);
+      const double lon = aroundUlp(rng, (rng() & 1) ? std::numbers::pi : -std::numbers::pi);
       return {lon, (rng() & 1) ? uniformLatitude : aroundUlp(rng, 0.0), std::nullopt, randomLevel};
     }
     case 4: {  // a pole exactly or one ulp inside it, any longitude (+-180 deg included)
       const double pole = (rng() & 1) ? kHalfPi : -kHalfPi;
       const double lat = (rng() & 1) ? pole : std::nextafter(pole, 0.0);
-      const double lon = (rng() & 1) ? uniformLongitude : aroundUlp(rng, (rng() & 1) ? kPi : -kPi);
+      const double lon = (rng() & 1)
+                             ? uniformLongitude
+                             : aroundUlp(rng, (rng() & 1) ? std::numbers::pi : -std::numbers::pi);
       return {lon, lat, std::nullopt, randomLevel};
     }
     case 5:
@@ -88,7 +89,8 @@ Point randomPoint(std::mt19937_64& rng) {
       return {lon, std::clamp(lat, -kHalfPi, kHalfPi), std::nullopt, tile.level};
     }
     default:  // longitudes outside [-pi, pi], a few turns away
-      return {uniformLongitude + 2.0 * kPi * static_cast<double>(static_cast<int>(rng() % 7) - 3),
+      return {uniformLongitude +
+                  2.0 * std::numbers::pi * static_cast<double>(static_cast<int>(rng() % 7) - 3),
               uniformLatitude, std::nullopt, randomLevel};
   }
 }
@@ -104,7 +106,7 @@ TEST(StressTilingScheme, PositionToTileOverTenMillionPoints) {
     // The scheme wraps longitudes first; containment is checked on the wrapped value.
     const double lon = wrapLongitudeRadians(p.longitudeRadians);
     const double lat = p.latitudeRadians;
-    antimeridian += std::abs(lon) == kPi;
+    antimeridian += std::abs(lon) == std::numbers::pi;
     poles += std::abs(lat) == kHalfPi;
     // 9 consecutive levels from up to 4 coarser than the point's (an edge of a level is an edge
     // of every finer one), or all of them.
@@ -178,14 +180,14 @@ TEST(StressTilingScheme, InvalidPositionsGiveNoTileAtAnyLevel) {
                                  -inf,
                                  std::nextafter(kHalfPi, 4.0),
                                  std::nextafter(-kHalfPi, -4.0),
-                                 kPi,
+                                 std::numbers::pi,
                                  -1e300,
                                  std::numeric_limits<double>::max()};
   const double badLongitudes[] = {nan, -nan, inf, -inf};
   for (uint64_t i = 0; i < count; ++i) {
     const uint32_t level = static_cast<uint32_t>(rng() % (kMaxLevel + 1));
-    const double lon = -kPi + 2.0 * kPi * unit(rng);
-    const double lat = -kHalfPi + kPi * unit(rng);
+    const double lon = -std::numbers::pi + 2.0 * std::numbers::pi * unit(rng);
+    const double lat = -kHalfPi + std::numbers::pi * unit(rng);
     const double badLat = badLatitudes[rng() % std::size(badLatitudes)];
     const double badLon = badLongitudes[rng() % std::size(badLongitudes)];
     ASSERT_FALSE(Scheme::positionToTile(lon, badLat, level)) << lon << " " << badLat;

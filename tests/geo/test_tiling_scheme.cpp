@@ -12,7 +12,6 @@ namespace globe::geo {
 namespace {
 
 using Scheme = GeographicTilingScheme;
-constexpr double kPi = std::numbers::pi;
 
 std::optional<TileId> lookup(double longitude, double latitude, uint32_t level) {
   return Scheme::positionToTile(longitude, latitude, level);
@@ -48,19 +47,19 @@ TEST(TilingScheme, Validity) {
 
 TEST(TilingScheme, LevelZeroRectangles) {
   const GlobeRectangle west = Scheme::tileRectangle({0, 0, 0});
-  EXPECT_EQ(west.westRadians, -kPi);
+  EXPECT_EQ(west.westRadians, -std::numbers::pi);
   EXPECT_EQ(west.eastRadians, 0.0);
-  EXPECT_EQ(west.southRadians, -kPi / 2.0);
-  EXPECT_EQ(west.northRadians, kPi / 2.0);
+  EXPECT_EQ(west.southRadians, -std::numbers::pi / 2.0);
+  EXPECT_EQ(west.northRadians, std::numbers::pi / 2.0);
   const GlobeRectangle east = Scheme::tileRectangle({0, 1, 0});
   EXPECT_EQ(east.westRadians, 0.0);
-  EXPECT_EQ(east.eastRadians, kPi);
+  EXPECT_EQ(east.eastRadians, std::numbers::pi);
   // y grows southwards: row 0 of level 1 is the northern hemisphere.
   const GlobeRectangle north = Scheme::tileRectangle({1, 2, 0});
   EXPECT_EQ(north.southRadians, 0.0);
-  EXPECT_EQ(north.northRadians, kPi / 2.0);
+  EXPECT_EQ(north.northRadians, std::numbers::pi / 2.0);
   EXPECT_EQ(north.westRadians, 0.0);
-  EXPECT_EQ(north.eastRadians, kPi / 2.0);
+  EXPECT_EQ(north.eastRadians, std::numbers::pi / 2.0);
 }
 
 // Every level's rectangles share edges bit for bit and cover exactly [-pi, pi] x [-pi/2, pi/2].
@@ -72,18 +71,18 @@ TEST(TilingScheme, RectanglesTileTheGlobeExactly) {
         ASSERT_LT(r.westRadians, r.eastRadians);
         ASSERT_LT(r.southRadians, r.northRadians);
         if (x == 0) {
-          ASSERT_EQ(r.westRadians, -kPi);
+          ASSERT_EQ(r.westRadians, -std::numbers::pi);
         }
         if (x + 1 == Scheme::tilesX(level)) {
-          ASSERT_EQ(r.eastRadians, kPi);
+          ASSERT_EQ(r.eastRadians, std::numbers::pi);
         } else {
           ASSERT_EQ(r.eastRadians, Scheme::tileRectangle({level, x + 1, y}).westRadians);
         }
         if (y == 0) {
-          ASSERT_EQ(r.northRadians, kPi / 2.0);
+          ASSERT_EQ(r.northRadians, std::numbers::pi / 2.0);
         }
         if (y + 1 == Scheme::tilesY(level)) {
-          ASSERT_EQ(r.southRadians, -kPi / 2.0);
+          ASSERT_EQ(r.southRadians, -std::numbers::pi / 2.0);
         } else {
           ASSERT_EQ(r.southRadians, Scheme::tileRectangle({level, x, y + 1}).northRadians);
         }
@@ -196,12 +195,13 @@ TEST(TilingScheme, AntimeridianAndPoles) {
   for (uint32_t level = 0; level <= kMaxLevel; ++level) {
     const uint32_t lastX = Scheme::tilesX(level) - 1;
     const uint32_t lastY = Scheme::tilesY(level) - 1;
-    EXPECT_EQ(lookup(kPi, 0.3, level)->x, lastX);
-    EXPECT_EQ(lookup(-kPi, 0.3, level)->x, 0u);
-    EXPECT_EQ(lookup(0.3, kPi / 2.0, level)->y, 0u);
-    EXPECT_EQ(lookup(0.3, -kPi / 2.0, level)->y, lastY);
-    EXPECT_EQ(lookup(kPi, -kPi / 2.0, level), (TileId{level, lastX, lastY}));
-    EXPECT_EQ(lookup(-kPi, kPi / 2.0, level), (TileId{level, 0, 0}));
+    EXPECT_EQ(lookup(std::numbers::pi, 0.3, level)->x, lastX);
+    EXPECT_EQ(lookup(-std::numbers::pi, 0.3, level)->x, 0u);
+    EXPECT_EQ(lookup(0.3, std::numbers::pi / 2.0, level)->y, 0u);
+    EXPECT_EQ(lookup(0.3, -std::numbers::pi / 2.0, level)->y, lastY);
+    EXPECT_EQ(lookup(std::numbers::pi, -std::numbers::pi / 2.0, level),
+              (TileId{level, lastX, lastY}));
+    EXPECT_EQ(lookup(-std::numbers::pi, std::numbers::pi / 2.0, level), (TileId{level, 0, 0}));
     // 0 longitude and 0 latitude are edges from level 0/1 on: east and south tiles win.
     EXPECT_EQ(lookup(0.0, 0.0, level)->x, Scheme::tilesX(level) / 2);
     EXPECT_EQ(lookup(-0.0, -0.0, level)->x, Scheme::tilesX(level) / 2);
@@ -209,9 +209,10 @@ TEST(TilingScheme, AntimeridianAndPoles) {
       EXPECT_EQ(lookup(0.0, 0.0, level)->y, Scheme::tilesY(level) / 2);
     }
     // Out-of-range longitudes wrap.
-    EXPECT_EQ(lookup(-kPi - 0.1, 0.3, level), lookup(kPi - 0.1, 0.3, level));
-    EXPECT_EQ(lookup(3.0 * kPi, 0.3, level), lookup(-kPi, 0.3, level));
-    EXPECT_EQ(lookup(0.5 + 4.0 * kPi, 0.3, level), lookup(0.5, 0.3, level));
+    EXPECT_EQ(lookup(-std::numbers::pi - 0.1, 0.3, level),
+              lookup(std::numbers::pi - 0.1, 0.3, level));
+    EXPECT_EQ(lookup(3.0 * std::numbers::pi, 0.3, level), lookup(-std::numbers::pi, 0.3, level));
+    EXPECT_EQ(lookup(0.5 + 4.0 * std::numbers::pi, 0.3, level), lookup(0.5, 0.3, level));
   }
 }
 
@@ -223,8 +224,8 @@ TEST(TilingScheme, RejectsBadInput) {
   EXPECT_EQ(lookup(inf, 0.0, 3), std::nullopt);
   EXPECT_EQ(lookup(-inf, 0.0, 3), std::nullopt);
   EXPECT_EQ(lookup(0.0, inf, 3), std::nullopt);
-  EXPECT_EQ(lookup(0.0, std::nextafter(kPi / 2.0, 4.0), 3), std::nullopt);
-  EXPECT_EQ(lookup(0.0, std::nextafter(-kPi / 2.0, -4.0), 3), std::nullopt);
+  EXPECT_EQ(lookup(0.0, std::nextafter(std::numbers::pi / 2.0, 4.0), 3), std::nullopt);
+  EXPECT_EQ(lookup(0.0, std::nextafter(-std::numbers::pi / 2.0, -4.0), 3), std::nullopt);
   EXPECT_EQ(lookup(0.0, 0.0, kMaxLevel + 1), std::nullopt);
   EXPECT_EQ(lookup(0.0, 0.0, 1000), std::nullopt);
 }
@@ -232,8 +233,8 @@ TEST(TilingScheme, RejectsBadInput) {
 // Random points: the tile found contains the point (closed) and follows the half-open rule.
 TEST(TilingScheme, LookupAgreesWithTileRectangle) {
   std::mt19937_64 rng(14);
-  std::uniform_real_distribution<double> longitude(-kPi, kPi);
-  std::uniform_real_distribution<double> latitude(-kPi / 2.0, kPi / 2.0);
+  std::uniform_real_distribution<double> longitude(-std::numbers::pi, std::numbers::pi);
+  std::uniform_real_distribution<double> latitude(-std::numbers::pi / 2.0, std::numbers::pi / 2.0);
   std::uniform_int_distribution<uint32_t> level(0, kMaxLevel);
   for (int i = 0; i < 300000; ++i) {
     const double lon = longitude(rng);

@@ -17,14 +17,15 @@
 #include "terrain/block_grid.hpp"
 #include "terrain/tile_mesh.hpp"
 #include "tests/render/render_test_support.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace globe::render::test {
 namespace {
 
-constexpr int kViewWidth = 160, kViewHeight = 120;
+constexpr int kDepthViewWidth = 160, kDepthViewHeight = 120;
 constexpr double kFovYDegrees = 20.0;  // the view is ±0.235 × ±0.176 of the distance
 constexpr double kSeparation = 1e-3;   // the back plane is this fraction of D behind the front
-constexpr uint32_t kN = 17;
+using globe::test::kN;
 
 // A rectangle facing the camera at distance D (along the view axis), in units of D on the camera's
 // right and up axes.
@@ -117,7 +118,7 @@ class PlanetScaleDepth : public RenderTest {
     }
     const terrain::RenderView view =
         terrain::makeLookAtView(c.eye, c.eye + c.forward, c.up, geo::degreesToRadians(kFovYDegrees),
-                                kViewWidth, kViewHeight, -c.forward);
+                                kDepthViewWidth, kDepthViewHeight, -c.forward);
     const std::vector<geo::TileId> ids{frontId_, backId_};
     FrameStats stats;
     const Image image = drawAndRead(view, ids, &stats);
@@ -139,8 +140,8 @@ class PlanetScaleDepth : public RenderTest {
       return x > r[0] + margin && x < r[2] - margin && y > r[1] + margin && y < r[3] - margin;
     };
     Overlap overlap;
-    for (int y = 0; y < kViewHeight; ++y) {
-      for (int x = 0; x < kViewWidth; ++x) {
+    for (int y = 0; y < kDepthViewHeight; ++y) {
+      for (int x = 0; x < kDepthViewWidth; ++x) {
         const double cx = x + 0.5, cy = y + 0.5;
         const auto p = image.at(x, y);
         const bool green = p[1] > p[2], blue = p[2] > p[1];
@@ -163,8 +164,8 @@ class PlanetScaleDepth : public RenderTest {
     EXPECT_EQ(o.frontWrong, 0) << "of " << o.front << " pixels of the nearer plane";
     EXPECT_EQ(o.backOnlyWrong, 0) << "of " << o.backOnly << " pixels of the farther plane";
     // Both planes are in the picture: the check above is about something.
-    EXPECT_GT(o.front, kViewWidth * kViewHeight / 20);
-    EXPECT_GT(o.backOnly, kViewWidth * kViewHeight / 20);
+    EXPECT_GT(o.front, kDepthViewWidth * kDepthViewHeight / 20);
+    EXPECT_GT(o.backOnly, kDepthViewWidth * kDepthViewHeight / 20);
   }
 };
 
@@ -210,11 +211,12 @@ TEST_F(PlanetScaleDepth, HalfAMetreAboveTheGroundNothingIsClipped) {
       geo::cartographicToEcef(kWgs84, geo::Cartographic::fromDegrees(lon, lat, 100.5));
   const double pitch = geo::degreesToRadians(-50.0);
   const glm::dvec3 forward = std::cos(pitch) * f.north + std::sin(pitch) * f.up;
-  const terrain::RenderView view = terrain::makeLookAtView(
-      eye, eye + forward, f.up, geo::degreesToRadians(90.0), kViewWidth, kViewHeight, f.up);
+  const terrain::RenderView view =
+      terrain::makeLookAtView(eye, eye + forward, f.up, geo::degreesToRadians(90.0),
+                              kDepthViewWidth, kDepthViewHeight, f.up);
   const Image image = drawAndRead(view, idsOf(tiles));
   savePng(image, "depth_half_metre_above_ground");
-  EXPECT_EQ(image.countNonBackground(), kViewWidth * kViewHeight);
+  EXPECT_EQ(image.countNonBackground(), kDepthViewWidth * kDepthViewHeight);
 }
 
 }  // namespace

@@ -19,12 +19,13 @@
 #include "geo/tiling_scheme.hpp"
 #include "terrain/block_grid.hpp"
 #include "tests/render/render_test_support.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace globe::render::test {
 namespace {
 
-constexpr uint32_t kLevel = 20;
-constexpr uint32_t kN = 17;
+constexpr uint32_t kFineLevel = 20;
+using globe::test::kN;
 
 struct Place {
   const char* name;
@@ -40,7 +41,7 @@ uint64_t mix(uint64_t value) {  // splitmix64's finaliser
 }
 
 double vertexSpacingRadians() {
-  return geo::degreesToRadians(terrain::vertexSpacingDegrees(kLevel, kN));
+  return geo::degreesToRadians(terrain::vertexSpacingDegrees(kFineLevel, kN));
 }
 
 // The same scene in metres at any place. Level-20 tiles at 89.99° are 3.3 mm × 19 m slivers with
@@ -51,12 +52,12 @@ double vertexSpacingRadians() {
 class RidgeScene {
  public:
   explicit RidgeScene(const Place& place) {
-    const double spacing = terrain::vertexSpacingDegrees(kLevel, kN);
+    const double spacing = terrain::vertexSpacingDegrees(kFineLevel, kN);
     referenceRow_ = static_cast<uint64_t>(std::floor((90.0 - place.latitudeDegrees) / spacing));
     referenceColumn_ =
         static_cast<uint64_t>(std::floor((place.longitudeDegrees + 180.0) / spacing));
-    const double lon = terrain::vertexLongitudeDegrees(kLevel, kN, referenceColumn_);
-    const double lat = terrain::vertexLatitudeDegrees(kLevel, kN, referenceRow_);
+    const double lon = terrain::vertexLongitudeDegrees(kFineLevel, kN, referenceColumn_);
+    const double lat = terrain::vertexLatitudeDegrees(kFineLevel, kN, referenceRow_);
     referenceEcef_ = geo::cartographicToEcef(kWgs84, geo::Cartographic::fromDegrees(lon, lat, 0.0));
     frame_ = localFrame(lon, lat);
     columnMeters_ = vertexSpacingRadians() * std::hypot(referenceEcef_.x, referenceEcef_.y);
@@ -81,14 +82,14 @@ class RidgeScene {
     const auto tileMeters = columnMeters_ * (kN - 1);
     const auto firstDx = static_cast<int64_t>(std::floor(westMeters / tileMeters)) - 2;
     const auto lastDx = static_cast<int64_t>(std::ceil(eastMeters / tileMeters)) + 2;
-    const auto tilesX = static_cast<int64_t>(geo::GeographicTilingScheme::tilesX(kLevel));
+    const auto tilesX = static_cast<int64_t>(geo::GeographicTilingScheme::tilesX(kFineLevel));
     const auto centreX = static_cast<int64_t>(referenceColumn_ / (kN - 1));
     std::vector<LoadedTile> result;
     for (uint64_t y = (referenceRow_ - rowsNorth) / (kN - 1);
          y <= (referenceRow_ + rowsSouth) / (kN - 1); ++y) {
       for (int64_t dx = firstDx; dx <= lastDx; ++dx) {
         const auto x = static_cast<uint32_t>(((centreX + dx) % tilesX + tilesX) % tilesX);
-        const geo::TileId id{kLevel, x, static_cast<uint32_t>(y)};
+        const geo::TileId id{kFineLevel, x, static_cast<uint32_t>(y)};
         const terrain::BlockGrid grid{id, kN};
         terrain::HeightBlock block{kN, std::vector<int16_t>(kN * kN)};
         for (uint32_t i = 0; i < kN; ++i) {

@@ -12,12 +12,13 @@
 #include "terrain/block_grid.hpp"
 #include "terrain/tile_mesh.hpp"
 #include "tests/render/render_test_support.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace globe::render::test {
 namespace {
 
 constexpr uint32_t kLevel = 20;
-constexpr uint32_t kN = 17;
+using globe::test::kN;
 
 // 100 m plus 0, 1 or 2 m, a hash of the global vertex: neighbouring tiles agree on edges.
 int16_t bumpHeight(uint64_t globalRow, uint64_t globalColumn) {

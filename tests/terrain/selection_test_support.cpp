@@ -24,8 +24,6 @@ namespace globe::terrain::testing {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 uint64_t mix(uint64_t key) {
   key = (key ^ (key >> 30)) * 0xbf58476d1ce4e5b9ULL;
   key = (key ^ (key >> 27)) * 0x94d049bb133111ebULL;
@@ -74,8 +72,8 @@ std::vector<glm::dvec3> regionSamples(const glm::dvec3& camera, const geo::TileI
     if (lon < r.westRadians || lon > r.eastRadians) {
       // The nearer edge in angle, going round the globe either way.
       const auto gap = [](double a, double b) {
-        const double d = std::fmod(std::abs(a - b), 2 * kPi);
-        return std::min(d, 2 * kPi - d);
+        const double d = std::fmod(std::abs(a - b), 2 * std::numbers::pi);
+        return std::min(d, 2 * std::numbers::pi - d);
       };
       lon = gap(lon, r.westRadians) < gap(lon, r.eastRadians) ? r.westRadians : r.eastRadians;
     }
@@ -193,7 +191,7 @@ TestView cameraView(double longitudeDegrees, double latitudeDegrees, double heig
   v.name = name;
   v.view.cameraEcefMeters = eye;
   v.view.viewportHeightPixels = 1080.0;
-  v.view.fovYRadians = kPi / 3.0;
+  v.view.fovYRadians = std::numbers::pi / 3.0;
   v.view.ellipsoid = ellipsoid;
   const double nearMeters = std::clamp(0.05 * heightMeters, 0.1, 1000.0);
   const double farMeters = 1e8;
@@ -355,7 +353,8 @@ double sampledDistanceMeters(const glm::dvec3& cameraEcefMeters, const geo::Tile
 
 double independentScreenSpaceErrorPixels(const TestView& view, const geo::TileId& tile,
                                          const HeightRange& range, uint32_t verticesPerSide) {
-  const double spacingRadians = kPi / (std::pow(2.0, tile.level) * (verticesPerSide - 1.0));
+  const double spacingRadians =
+      std::numbers::pi / (std::pow(2.0, tile.level) * (verticesPerSide - 1.0));
   const double error = 0.25 * view.view.ellipsoid.semiMajorAxisMeters * spacingRadians;
   const double distance = std::max(
       1.0, sampledDistanceMeters(view.view.cameraEcefMeters, tile, range, view.view.ellipsoid));

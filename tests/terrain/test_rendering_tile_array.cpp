@@ -24,7 +24,6 @@ using geo::TileId;
 using Scheme = geo::GeographicTilingScheme;
 using testing::arrayOf;
 using testing::makeBlock;
-constexpr double kPi = std::numbers::pi;
 
 const terrain::HeightBlock& flatBlock() {
   static const terrain::HeightBlock block =
@@ -117,7 +116,7 @@ TEST(RenderingTileArray, EdgeBetweenDifferentLevelsTakesTheFinerTile) {
   EXPECT_EQ(lookup(array, coarse.eastRadians, fine.southRadians), (TileId{4, 12, 5}));
   EXPECT_EQ(lookup(array, coarse.eastRadians, coarse.northRadians), (TileId{4, 12, 4}));
   EXPECT_EQ(lookup(array, coarse.eastRadians, coarse.southRadians), (TileId{4, 12, 5}));
-  EXPECT_EQ(lookup(array, std::nextafter(coarse.eastRadians, -kPi), fine.southRadians),
+  EXPECT_EQ(lookup(array, std::nextafter(coarse.eastRadians, -std::numbers::pi), fine.southRadians),
             (TileId{3, 5, 2}));
 }
 
@@ -144,7 +143,8 @@ TEST(RenderingTileArray, CornerOfFourTilesFollowsTheHalfOpenRule) {
 TEST(RenderingTileArray, AntimeridianIsOneMeridian) {
   const uint32_t last = Scheme::tilesX(3) - 1;
   const double lat = 0.6;  // row 2 at level 3, row 4 at level 4
-  for (double lon : {kPi, -kPi, 3.0 * kPi, -3.0 * kPi}) {
+  for (double lon :
+       {std::numbers::pi, -std::numbers::pi, 3.0 * std::numbers::pi, -3.0 * std::numbers::pi}) {
     EXPECT_EQ(lookup(arrayOf({{3, last, 2}}, flatBlock()), lon, lat), (TileId{3, last, 2}));
     EXPECT_EQ(lookup(arrayOf({{3, 0, 2}}, flatBlock()), lon, lat), (TileId{3, 0, 2}));
     // Both present: the x = 0 tile owns the meridian ([west, east)); a finer tile wins.
@@ -154,25 +154,26 @@ TEST(RenderingTileArray, AntimeridianIsOneMeridian) {
   }
   // Level 0: the two root tiles meet at 0 and at +-180 deg.
   const RenderingTileArray roots = arrayOf({{0, 0, 0}, {0, 1, 0}}, flatBlock());
-  EXPECT_EQ(lookup(roots, kPi, 0.0), (TileId{0, 0, 0}));
+  EXPECT_EQ(lookup(roots, std::numbers::pi, 0.0), (TileId{0, 0, 0}));
   EXPECT_EQ(lookup(roots, 0.0, 0.0), (TileId{0, 1, 0}));
-  EXPECT_EQ(lookup(arrayOf({{0, 1, 0}}, flatBlock()), -kPi, -kPi / 2.0), (TileId{0, 1, 0}));
+  EXPECT_EQ(lookup(arrayOf({{0, 1, 0}}, flatBlock()), -std::numbers::pi, -std::numbers::pi / 2.0),
+            (TileId{0, 1, 0}));
   // Antimeridian corners.
   const RenderingTileArray corner = arrayOf({{2, 7, 1}, {2, 0, 2}}, flatBlock());
-  EXPECT_EQ(lookup(corner, kPi, 0.0), (TileId{2, 0, 2}));
-  EXPECT_EQ(lookup(arrayOf({{2, 7, 1}}, flatBlock()), -kPi, 0.0), (TileId{2, 7, 1}));
+  EXPECT_EQ(lookup(corner, std::numbers::pi, 0.0), (TileId{2, 0, 2}));
+  EXPECT_EQ(lookup(arrayOf({{2, 7, 1}}, flatBlock()), -std::numbers::pi, 0.0), (TileId{2, 7, 1}));
 }
 
 TEST(RenderingTileArray, PoleIsInEveryTileOfThePolarRow) {
-  const double north = kPi / 2.0, south = -kPi / 2.0;
+  const double north = std::numbers::pi / 2.0, south = -std::numbers::pi / 2.0;
   // The tile owning the longitude, else the westernmost of the finest level.
   const RenderingTileArray row =
       arrayOf({{3, 2, 0}, {3, 9, 0}, {3, 12, 0}, {2, 0, 0}}, flatBlock());
   const double lonIn9 = Scheme::tileRectangle({3, 9, 0}).center().longitudeRadians;
   EXPECT_EQ(lookup(row, lonIn9, north), (TileId{3, 9, 0}));
   EXPECT_EQ(lookup(row, 0.1, north), (TileId{3, 2, 0}));
-  EXPECT_EQ(lookup(row, -kPi, north), (TileId{3, 2, 0}));
-  EXPECT_EQ(lookup(row, kPi, north), (TileId{3, 2, 0}));
+  EXPECT_EQ(lookup(row, -std::numbers::pi, north), (TileId{3, 2, 0}));
+  EXPECT_EQ(lookup(row, std::numbers::pi, north), (TileId{3, 2, 0}));
   EXPECT_EQ(lookup(row, 0.1, north - 1e-9), (TileId{99, 0, 0}));  // just off the pole
   EXPECT_EQ(lookup(row, 0.1, south), (TileId{99, 0, 0}));
   // South pole: last row of each level.
@@ -206,7 +207,8 @@ TEST(RenderingTileArray, IndexedCostDoesNotGrowWithTheTileCount) {
   EXPECT_EQ(corner.tile->id, (TileId{6, 40, 20}));
   // Timing over many points (printed, not asserted): linear grows with the tiles, indexed not.
   std::mt19937_64 rng(3);
-  std::uniform_real_distribution<double> lon(-kPi, kPi), lat(-kPi / 2, kPi / 2);
+  std::uniform_real_distribution<double> lon(-std::numbers::pi, std::numbers::pi),
+      lat(-std::numbers::pi / 2, std::numbers::pi / 2);
   double linearSeconds = 0, indexedSeconds = 0;
   for (int k = 0; k < 2000; ++k) {
     const double x = lon(rng), y = lat(rng);
@@ -222,9 +224,9 @@ TEST(RenderingTileArray, IndexedCostDoesNotGrowWithTheTileCount) {
   std::printf("%zu tiles: linear %.0f ns, indexed %.0f ns per lookup\n", tiles.size(),
               linearSeconds / 2000 * 1e9, indexedSeconds / 2000 * 1e9);
   // Invalid points.
-  for (auto [badLon, badLat] :
-       {std::pair{std::nan(""), 0.0}, std::pair{0.0, 2.0},
-        std::pair{std::numeric_limits<double>::infinity(), 0.0}, std::pair{0.0, -kPi}}) {
+  for (auto [badLon, badLat] : {std::pair{std::nan(""), 0.0}, std::pair{0.0, 2.0},
+                                std::pair{std::numeric_limits<double>::infinity(), 0.0},
+                                std::pair{0.0, -std::numbers::pi}}) {
     EXPECT_EQ(array.findLinear(badLon, badLat), nullptr);
     EXPECT_EQ(array.findIndexed(badLon, badLat), nullptr);
   }
@@ -236,8 +238,8 @@ TEST(RenderingTileArray, CopiesAreIndependentOfTheOriginal) {
   const RenderingTileArray copy = *original;
   original.reset();
   EXPECT_EQ(copy.tiles().size(), 3u);
-  EXPECT_EQ(lookup(copy, 0.3, kPi / 2.0), (TileId{3, 4, 0}));
-  EXPECT_EQ(lookup(copy, 0.3, -kPi / 2.0), (TileId{3, 9, 7}));
+  EXPECT_EQ(lookup(copy, 0.3, std::numbers::pi / 2.0), (TileId{3, 4, 0}));
+  EXPECT_EQ(lookup(copy, 0.3, -std::numbers::pi / 2.0), (TileId{3, 9, 7}));
   const geo::GlobeRectangle r = Scheme::tileRectangle({2, 1, 1});
   EXPECT_EQ(lookup(copy, r.westRadians, r.northRadians), (TileId{2, 1, 1}));
 }

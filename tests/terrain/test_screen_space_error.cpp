@@ -18,8 +18,6 @@
 namespace globe::terrain {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 TEST(GeometricError, IsAQuarterOfTheEquatorialVertexSpacing) {
   const geo::Ellipsoid wgs84 = geo::Ellipsoid::wgs84();
   // 0.25 x 6378137 m x (pi / 16) at level 0 with 17 vertices per side.
@@ -31,7 +29,7 @@ TEST(GeometricError, IsAQuarterOfTheEquatorialVertexSpacing) {
   }
   EXPECT_DOUBLE_EQ(geometricErrorMeters(3, 65, wgs84), geometricErrorMeters(3, 17, wgs84) / 4.0);
   EXPECT_DOUBLE_EQ(geometricErrorMeters(0, 17, geo::Ellipsoid::sphere()),
-                   0.25 * 6371000.0 * kPi / 16.0);
+                   0.25 * 6371000.0 * std::numbers::pi / 16.0);
   // Degenerate block sizes do not divide by zero.
   EXPECT_TRUE(std::isfinite(geometricErrorMeters(0, 1, wgs84)));
   EXPECT_TRUE(std::isfinite(geometricErrorMeters(0, 0, wgs84)));
@@ -82,7 +80,7 @@ TEST(GeometricError, FaceOnIsTheLargestCosineToTheCamera) {
 TEST(ScreenSpaceError, ProjectsTheErrorOntoTheViewport) {
   SelectionView view;
   view.viewportHeightPixels = 1080.0;
-  view.fovYRadians = kPi / 3.0;
+  view.fovYRadians = std::numbers::pi / 3.0;
   // 100 m at 1 km with a 60 degree fov over 1080 px: 100 x 1080 / (2 x 1000 x tan 30).
   EXPECT_NEAR(screenSpaceErrorPixels(100.0, 1000.0, view), 93.5307, 1e-4);
   EXPECT_DOUBLE_EQ(screenSpaceErrorPixels(100.0, 2000.0, view),
@@ -142,11 +140,12 @@ TEST(DistanceLowerBound, NeverExceedsTheSampledDistanceAndIsTightFarAway) {
         {rect, static_cast<double>(low), static_cast<double>(high)}, wgs84);
     // Cameras near the tile (within a few tile sizes) or anywhere, low or high.
     const double spread = unit(rng) < 0.5 ? 4.0 : 1e3;
-    const double lon = std::clamp(
-        rect.westRadians + (unit(rng) * 2 - 0.5) * spread * rect.widthRadians(), -kPi, kPi);
+    const double lon =
+        std::clamp(rect.westRadians + (unit(rng) * 2 - 0.5) * spread * rect.widthRadians(),
+                   -std::numbers::pi, std::numbers::pi);
     const double lat =
         std::clamp(rect.southRadians + (unit(rng) * 2 - 0.5) * spread * rect.heightRadians(),
-                   -kPi / 2, kPi / 2);
+                   -std::numbers::pi / 2, std::numbers::pi / 2);
     const double height = std::pow(10.0, unit(rng) * 7.5) - 100.0;
     const glm::dvec3 camera = geo::cartographicToEcef(wgs84, {lon, lat, height});
     const double bound = distanceLowerBoundMeters(camera, height, volume);

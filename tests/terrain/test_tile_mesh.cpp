@@ -15,12 +15,13 @@
 #include "geo/ecef.hpp"
 #include "geo/tiling_scheme.hpp"
 #include "terrain/block_grid.hpp"
+#include "tests/support/test_constants.hpp"
 
 namespace globe::terrain {
 namespace {
 
-constexpr uint32_t kN = 17;
-const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
+using globe::test::kN;
+using globe::test::kWgs84;
 
 // A smooth synthetic world as a function of the exact vertex position, so that neighbouring tiles
 // agree on their shared vertices like tiler output does: hills up to ~4.5 km, sea (no data) and

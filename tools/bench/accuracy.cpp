@@ -29,7 +29,6 @@
 namespace globe::bench {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kRadius = kAccuracyRadiusMeters;
 // Camera heights: the drawn surface plus a uniform offset in this range.
 constexpr double kLowestOffsetMeters = -100.0;
@@ -153,7 +152,7 @@ int runAccuracy(Pyramid& pyramid, const AccuracyOptions& options) {
     while (queries.size() < options.queriesPerRegion) {
       AccuracyQuery q;
       if (region.wholeGlobe) {
-        q.longitude = -kPi + 2.0 * kPi * unit(rng);
+        q.longitude = -std::numbers::pi + 2.0 * std::numbers::pi * unit(rng);
         q.latitude = std::asin(2.0 * unit(rng) - 1.0);
       } else {
         q.longitude = geo::degreesToRadians(qb.west + (qb.east - qb.west) * unit(rng));

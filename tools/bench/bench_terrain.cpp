@@ -17,7 +17,6 @@ namespace globe::bench {
 namespace {
 
 using Scheme = geo::GeographicTilingScheme;
-constexpr double kPi = std::numbers::pi;
 
 // The most nearly square width x height = tiles with width >= height.
 std::pair<uint32_t, uint32_t> rectangleOf(uint32_t tiles) {
@@ -205,10 +204,10 @@ std::vector<CameraQuery> flightPath(const terrain::RenderingTileArray& array,
       lon = std::clamp(lon, area.westRadians + marginLon, area.eastRadians - marginLon);
     }
     if (lat < area.southRadians + marginLat || lat > area.northRadians - marginLat) {
-      heading = kPi - heading;
+      heading = std::numbers::pi - heading;
       lat = std::clamp(lat, area.southRadians + marginLat, area.northRadians - marginLat);
     }
-    phase += 2.0 * kPi * kFrameSeconds / kAglPeriodSeconds + drift(rng);
+    phase += 2.0 * std::numbers::pi * kFrameSeconds / kAglPeriodSeconds + drift(rng);
     const double above = 160.0 + 140.0 * std::sin(phase);
     path.push_back(queryAt(ellipsoid, lon, lat, surfaceHeight(array, ellipsoid, lon, lat), above));
   }

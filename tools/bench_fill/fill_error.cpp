@@ -1,13 +1,15 @@
 // Error statistics over hole samples and the border-range check.
 #include "tools/bench_fill/fill_error.hpp"
 
+#include "io/gtopo30_header.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 namespace globe::bench_fill {
 namespace {
 
-constexpr int16_t kNoData = -9999;
+using io::kNoDataHeight;  // GTOPO30's no-data value
 
 }  // namespace
 
@@ -40,7 +42,7 @@ BorderCheck checkBorderRange(const dem::DemGrid& filled, const dem::DemGrid& tru
                              const std::vector<Hole>& holes, const std::vector<uint8_t>& isVoid) {
   BorderCheck check;
   for (size_t i = 0; i < isVoid.size(); ++i) {
-    if (isVoid[i] || truth.samples[i] == kNoData) continue;  // GDAL fills all no-data
+    if (isVoid[i] || truth.samples[i] == kNoDataHeight) continue;  // GDAL fills all no-data
     if (filled.samples[i] != truth.samples[i]) ++check.changedOutsideHoles;
   }
   for (const Hole& hole : holes) {

@@ -1,6 +1,8 @@
 // GDALFillNodata through the C API on a MEM dataset.
 #include "tools/bench_fill/gdal_fill.hpp"
 
+#include "io/gtopo30_header.hpp"
+
 #include <gdal.h>
 #include <gdal_alg.h>
 
@@ -12,7 +14,7 @@
 namespace globe::bench_fill {
 namespace {
 
-constexpr int16_t kNoData = -9999;
+using io::kNoDataHeight;  // GTOPO30's no-data value
 
 struct DatasetCloser {
   void operator()(void* dataset) const { GDALClose(dataset); }
@@ -37,12 +39,12 @@ Result<GdalFillResult> gdalFillNodata(const dem::DemGrid& grid, const std::vecto
   DatasetPtr dataset(GDALCreate(mem, "", cols, rows, 1, GDT_Int16, nullptr));
   if (!dataset) return Error{lastGdalError("GDALCreate(MEM)")};
   GDALRasterBandH band = GDALGetRasterBand(dataset.get(), 1);
-  GDALSetRasterNoDataValue(band, kNoData);
+  GDALSetRasterNoDataValue(band, kNoDataHeight);
 
   GdalFillResult result;
   result.samples = grid.samples;
   for (size_t i = 0; i < isVoid.size(); ++i) {
-    if (isVoid[i]) result.samples[i] = kNoData;
+    if (isVoid[i]) result.samples[i] = kNoDataHeight;
   }
   if (GDALRasterIO(band, GF_Write, 0, 0, cols, rows, result.samples.data(), cols, rows, GDT_Int16,
                    0, 0) != CE_None) {

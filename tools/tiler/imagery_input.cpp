@@ -1,4 +1,5 @@
 #include "tools/tiler/imagery_input.hpp"
+#include "tools/tiler/gdal_dataset.hpp"
 
 #include <cpl_conv.h>
 #include <gdal.h>
@@ -20,10 +21,7 @@ namespace fs = std::filesystem;
 
 constexpr const char* kTmsFileName = "tilemapresource.xml";
 
-struct DatasetCloser {
-  void operator()(void* dataset) const { GDALClose(dataset); }
-};
-using Dataset = std::unique_ptr<void, DatasetCloser>;
+using Dataset = GdalDataset;
 
 std::string lastGdalError() {
   const char* message = CPLGetLastErrorMsg();

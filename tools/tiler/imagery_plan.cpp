@@ -8,7 +8,7 @@
 
 namespace globe::tiler {
 
-TileRange tileRangeOf(const io::BoundsDegrees& extent, uint32_t level) {
+ImageryTileRange tileRangeOf(const io::BoundsDegrees& extent, uint32_t level) {
   const double size = std::ldexp(180.0, -static_cast<int>(level));
   const auto columns = static_cast<int64_t>(geo::GeographicTilingScheme::tilesX(level));
   const auto rows = static_cast<int64_t>(geo::GeographicTilingScheme::tilesY(level));
@@ -31,7 +31,7 @@ ImageryPlan::ImageryPlan(const std::vector<io::BoundsDegrees>& extents,
     std::set<io::PackId> packs;
     for (size_t i = 0; i < extents.size(); ++i) {
       if (finestLevels[i] < level) continue;
-      const TileRange range = tileRangeOf(extents[i], level);
+      const ImageryTileRange range = tileRangeOf(extents[i], level);
       ranges_[level].push_back(range);
       for (uint32_t py = range.y0 / packTilesPerSide; py <= range.y1 / packTilesPerSide; ++py) {
         for (uint32_t px = range.x0 / packTilesPerSide; px <= range.x1 / packTilesPerSide; ++px) {
@@ -47,7 +47,7 @@ ImageryPlan::ImageryPlan(const std::vector<io::BoundsDegrees>& extents,
 bool ImageryPlan::planned(const geo::TileId& tile) const {
   if (tile.level >= ranges_.size()) return false;
   return std::any_of(ranges_[tile.level].begin(), ranges_[tile.level].end(),
-                     [&](const TileRange& r) { return r.contains(tile.x, tile.y); });
+                     [&](const ImageryTileRange& r) { return r.contains(tile.x, tile.y); });
 }
 
 std::vector<geo::TileId> ImageryPlan::tilesInPack(const io::PackId& pack) const {

@@ -11,13 +11,13 @@
 
 namespace globe::tiler {
 
-struct TileRange {
+struct ImageryTileRange {
   uint32_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // inclusive
   bool contains(uint32_t x, uint32_t y) const { return x >= x0 && x <= x1 && y >= y0 && y <= y1; }
 };
 
 // The tiles of `level` that overlap the extent (a tile merely touching it is left out).
-TileRange tileRangeOf(const io::BoundsDegrees& extent, uint32_t level);
+ImageryTileRange tileRangeOf(const io::BoundsDegrees& extent, uint32_t level);
 
 class ImageryPlan {
  public:
@@ -34,8 +34,8 @@ class ImageryPlan {
 
  private:
   uint32_t packTilesPerSide_;
-  std::vector<std::vector<TileRange>> ranges_;  // per level
-  std::vector<std::vector<io::PackId>> packs_;  // per level, sorted
+  std::vector<std::vector<ImageryTileRange>> ranges_;  // per level
+  std::vector<std::vector<io::PackId>> packs_;         // per level, sorted
   uint64_t tileCount_ = 0;
 };
 

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "io/atomic_file.hpp"
+#include "tools/tiler/gdal_dataset.hpp"
 #include "tools/tiler/imagery_pixels.hpp"
 
 namespace globe::tiler {
@@ -66,10 +67,6 @@ inline void sampleInto(const Window& w, double x, double y, uint8_t* out) {
   for (int c = 0; c < 3; ++c) out[c] = static_cast<uint8_t>((colour[c] + alpha / 2) / alpha);
   out[3] = static_cast<uint8_t>((alpha + 32768) >> 16);
 }
-
-struct DatasetCloser {
-  void operator()(void* dataset) const { GDALClose(dataset); }
-};
 
 std::string gdalError() {
   const char* message = CPLGetLastErrorMsg();
@@ -346,7 +343,7 @@ class RasterReader final : public ImageryReader {
   }
 
   const ImageryInput& input_;
-  std::unique_ptr<void, DatasetCloser> dataset_;
+  GdalDataset dataset_;
   void* transformer_ = nullptr;
   std::array<double, 6> inverse_{};
   int columns_ = 0, rows_ = 0;

@@ -23,13 +23,14 @@
 #include "tools/tiler/imagery_plan.hpp"
 #include "tools/tiler/imagery_reader.hpp"
 #include "tools/tiler/progress.hpp"
+#include "tools/tiler/write_failed.hpp"
 
 namespace globe::tiler {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr const char* kPlanFileName = "imagery-plan.json";
-constexpr uint64_t kMaxPackBytes = uint64_t{1} << 34;
+constexpr const char* kImageryPlanFileName = "imagery-plan.json";
+constexpr uint64_t kMaxImagePackBytes = uint64_t{1} << 34;
 // Names the sampling and compositing rules: a layer resumed under other rules would mix them.
 constexpr const char* kRulesVersion = "bilinear-premultiplied-finest-over 1";
 
@@ -66,11 +67,6 @@ std::string planFingerprint(const ImageryTilerOptions& options,
   return plan.dump(1) + "\n";
 }
 
-Error writeFailed(const std::string& error) {
-  return makeError(error +
-                   " (nothing half-written was left; once fixed, the same command resumes)");
-}
-
 Result<void> prepareOutput(const fs::path& dir, const std::string& fingerprint) {
   std::error_code error;
   fs::create_directories(dir, error);
@@ -87,7 +83,7 @@ Result<void> prepareOutput(const fs::path& dir, const std::string& fingerprint) 
   if (fs::exists(dir / io::kManifestFileName, error)) {
     return makeError(dir.string() + ": holds a terrain pyramid; choose another output directory");
   }
-  const fs::path planPath = dir / kPlanFileName;
+  const fs::path planPath = dir / kImageryPlanFileName;
   if (fs::exists(planPath, error)) {
     auto existing = io::readWholeFile(planPath, 1 << 24);
     if (!existing) return Error{existing.error()};
@@ -100,7 +96,7 @@ Result<void> prepareOutput(const fs::path& dir, const std::string& fingerprint) 
     return {};
   }
   if (fs::exists(dir / io::kLayerManifestFileName, error)) {
-    return makeError(dir.string() + ": holds a layer without " + kPlanFileName +
+    return makeError(dir.string() + ": holds a layer without " + kImageryPlanFileName +
                      "; remove it or choose another output directory");
   }
   if (auto written = io::writeFileAtomically(planPath, fingerprint); !written) {
@@ -109,14 +105,14 @@ Result<void> prepareOutput(const fs::path& dir, const std::string& fingerprint) 
   return {};
 }
 
-Result<io::ImagePack> readPack(const fs::path& path) {
-  auto bytes = io::readWholeFile(path, kMaxPackBytes);
+Result<io::ImagePack> readImagePack(const fs::path& path) {
+  auto bytes = io::readWholeFile(path, kMaxImagePackBytes);
   if (!bytes) return Error{bytes.error()};
   return io::decodeImagePack(*bytes, path);
 }
 
 // What the manifest needs from one finished pack.
-struct PackSummary {
+struct ImagePackSummary {
   uint64_t tiles = 0;
   io::BoundsDegrees bounds{180, 90, -180, -90};
 };
@@ -126,8 +122,8 @@ void include(io::BoundsDegrees& bounds, const io::BoundsDegrees& more) {
             std::max(bounds.east, more.east), std::max(bounds.north, more.north)};
 }
 
-PackSummary summarise(const io::ImagePackIndex& index) {
-  PackSummary summary;  // of a reused pack
+ImagePackSummary summarise(const io::ImagePackIndex& index) {
+  ImagePackSummary summary;  // of a reused pack
   for (size_t slot = 0; slot < index.entries.size(); ++slot) {
     if (!index.entries[slot].present()) continue;
     ++summary.tiles;
@@ -152,7 +148,7 @@ class ChildTiles {
       if (auto it = packs_.find(id); it != packs_.end()) {
         pack = it->second;
       } else {
-        auto read = readPack(io::packPath(dir_, id));
+        auto read = readImagePack(io::packPath(dir_, id));
         if (!read) return Error{read.error()};
         if (packs_.size() >= capacity_) packs_.clear();
         pack = std::make_shared<const io::ImagePack>(std::move(*read));
@@ -331,13 +327,13 @@ Result<ImageryTilerReport> runImageryTiler(const ImageryTilerOptions& options) {
   std::atomic<uint64_t> tilesDone{0};
   for (uint32_t level = plan.maxLevel() + 1; level-- > 0;) {
     const std::vector<io::PackId>& packs = plan.packs(level);
-    std::vector<PackSummary> summaries(packs.size());
+    std::vector<ImagePackSummary> summaries(packs.size());
     std::vector<std::unique_ptr<PackWork>> work;
     for (size_t i = 0; i < packs.size(); ++i) {
       const fs::path path = io::packPath(options.outputDir, packs[i]);
       std::error_code error;
       if (fs::exists(path, error)) {  // a damaged or foreign file is rebuilt
-        auto existing = readPack(path);
+        auto existing = readImagePack(path);
         if (existing && existing->index.id == packs[i] &&
             existing->index.tilesPerSide == options.packTilesPerSide) {
           summaries[i] = summarise(existing->index);
@@ -383,7 +379,7 @@ Result<ImageryTilerReport> runImageryTiler(const ImageryTilerOptions& options) {
       if (auto written = io::writeFileAtomically(path, bytes); !written) {
         return writeFailed(written.error());
       }
-      PackSummary& summary = summaries[pack.summaryIndex];
+      ImagePackSummary& summary = summaries[pack.summaryIndex];
       for (const geo::TileId& tile : pack.tiles) {
         if (pack.payloads[io::slotOf(tile, options.packTilesPerSide)].empty()) continue;
         ++summary.tiles;
@@ -447,7 +443,7 @@ Result<ImageryTilerReport> runImageryTiler(const ImageryTilerOptions& options) {
     info.level = level;
     info.packs = packs;
     info.bounds = {180, 90, -180, -90};
-    for (const PackSummary& s : summaries) {
+    for (const ImagePackSummary& s : summaries) {
       info.tileCount += s.tiles;
       include(info.bounds, s.bounds);
     }

@@ -20,6 +20,7 @@
 #include "tools/tiler/source_conditioning.hpp"
 #include "tools/tiler/source_set.hpp"
 #include "tools/tiler/tiling_plan.hpp"
+#include "tools/tiler/write_failed.hpp"
 
 namespace globe::tiler {
 namespace {
@@ -80,10 +81,6 @@ std::string planFingerprint(const TilerOptions& options, const std::vector<Tiler
 }
 
 // A failed write leaves no half-written file (io::writeFileAtomically), so the run can resume.
-Error writeFailed(const std::string& error) {
-  return makeError(error +
-                   " (nothing half-written was left; once fixed, the same command resumes)");
-}
 
 Result<void> prepareOutput(const TilerOptions& options, const std::string& fingerprint) {
   std::error_code error;
