@@ -54,6 +54,12 @@ function(globe_test name)
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} GTest::gtest_main GTest::gmock globe_warnings)
   target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR})  # tests/support/...
+  # Line tables only (-g1) for the tests' own sources: enough for backtraces and sanitizer
+  # reports, and the test batches compile much faster than with full debug info
+  # (docs/build-time.md). The libraries and programs they link keep the build type's -g.
+  if(CMAKE_BUILD_TYPE STREQUAL "RelWithDebInfo" OR CMAKE_BUILD_TYPE STREQUAL "Debug")
+    target_compile_options(${name} PRIVATE -g1)
+  endif()
   target_compile_definitions(${name} PRIVATE
     GLOBE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   globe_precompile(${name} <gtest/gtest.h>)

@@ -3,7 +3,8 @@
 # nothing is rebuilt that setup built) and runs the whole suite with CTest. Without a display
 # the suite runs under xvfb-run, so the GLFW window tests run too. Any skipped test is listed at
 # the end, loudly. BUILD_DIR (default build) and GLOBE_WERROR=ON (CI) change the directory and
-# add warnings as errors.
+# add warnings as errors. --save-costs afterwards copies the measured test times to
+# tests/ctest-costs.txt, which a build directory without its own gets before CTest runs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${BUILD_DIR:-build}
@@ -11,6 +12,13 @@ EXTRA=()
 if [ -n "${GLOBE_WERROR:-}" ]; then EXTRA+=(-DGLOBE_WERROR="$GLOBE_WERROR"); fi
 bash tools/configure.sh "$BUILD" "${EXTRA[@]}"
 cmake --build "$BUILD" -j"$(nproc)"
+# CTest starts the longest tests first when it knows their times; a new build directory does not,
+# so it gets the committed ones (without them the long tests may start last and the suite waits).
+COSTS=$BUILD/Testing/Temporary/CTestCostData.txt
+if [ ! -s "$COSTS" ]; then
+  mkdir -p "$(dirname "$COSTS")"
+  { grep -v '^#' tests/ctest-costs.txt | awk 'NF == 2 {print $1, 1, $2}'; echo "---"; } >"$COSTS"
+fi
 CTEST=(ctest --test-dir "$BUILD" -j"$(nproc)" --output-on-failure --timeout 900)
 if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null 2>&1; then
   CTEST=(xvfb-run -a -s "-screen 0 1280x1024x24" "${CTEST[@]}")
@@ -23,5 +31,11 @@ if [ -n "$skipped" ]; then
   echo "!!! $(echo "$skipped" | wc -l) test(s) SKIPPED: they did not run here. Their reasons are in"
   echo "!!! $BUILD/Testing/Temporary/LastTest.log; README.md, 'Tests that need more', says what each needs."
   echo "$skipped" | sed 's/^/!!!   /'
+fi
+if [ "${1:-}" = "--save-costs" ] && [ $status -eq 0 ]; then
+  { grep '^#' tests/ctest-costs.txt
+    grep -v '^---' "$COSTS" | awk 'NF == 3 && $3 >= 0.3 {printf "%s %.2f\n", $1, $3}' | sort -k2 -rn
+  } >tests/ctest-costs.txt.tmp
+  mv tests/ctest-costs.txt.tmp tests/ctest-costs.txt
 fi
 exit $status
