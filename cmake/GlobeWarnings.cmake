@@ -48,6 +48,7 @@ function(globe_module name)
   globe_precompile(${name})
 endfunction()
 
+option(GLOBE_TESTS_FULL_DEBUG_INFO "Compile the tests with the build type's full -g, not -g1" OFF)
 # globe_test(NAME SOURCES... DEPENDS targets...): a GoogleTest executable registered with CTest.
 function(globe_test name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
@@ -57,7 +58,8 @@ function(globe_test name)
   # Line tables only (-g1) for the tests' own sources: enough for backtraces and sanitizer
   # reports, and the test batches compile much faster than with full debug info
   # (docs/build-time.md). The libraries and programs they link keep the build type's -g.
-  if(CMAKE_BUILD_TYPE STREQUAL "RelWithDebInfo" OR CMAKE_BUILD_TYPE STREQUAL "Debug")
+  if((CMAKE_BUILD_TYPE STREQUAL "RelWithDebInfo" OR CMAKE_BUILD_TYPE STREQUAL "Debug") AND
+     NOT GLOBE_TESTS_FULL_DEBUG_INFO)
     target_compile_options(${name} PRIVATE -g1)
   endif()
   target_compile_definitions(${name} PRIVATE

@@ -5,16 +5,17 @@
 # (what tools/run-tests.sh adds). Variants run in turn, ROUNDS times each, interleaved; the table
 # gives the median wall times and their ratios to the plain build. Writes docs/build-time.md.
 #
-#   tools/bench/build_time.sh [ROUNDS] [VARIANT...]     variants: plain unity pch (default: plain unity)
+#   tools/bench/build_time.sh [ROUNDS] [VARIANT...]
 #
-# plain: file by file; unity: GLOBE_UNITY_BUILD (the default configuration); pch: file by file
-# with precompiled headers.
+# Variants (default: plain unity unity-g): plain: file by file; unity: GLOBE_UNITY_BUILD (the
+# default configuration); unity-g: unity with the tests' full debug info instead of -g1; pch: file
+# by file with precompiled headers.
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 ROUNDS=${1:-1}
 shift || true
 VARIANTS=("$@")
-[ ${#VARIANTS[@]} -gt 0 ] || VARIANTS=(plain unity)
+[ ${#VARIANTS[@]} -gt 0 ] || VARIANTS=(plain unity unity-g)
 OUT_MD=${OUT_MD:-$ROOT/docs/build-time.md}
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
@@ -24,6 +25,7 @@ flagsOf() {
   case $1 in
     plain) echo "-DGLOBE_UNITY_BUILD=OFF" ;;
     unity) echo "-DGLOBE_UNITY_BUILD=ON" ;;
+    unity-g) echo "-DGLOBE_UNITY_BUILD=ON -DGLOBE_TESTS_FULL_DEBUG_INFO=ON" ;;
     pch) echo "-DGLOBE_UNITY_BUILD=OFF -DGLOBE_PRECOMPILED_HEADERS=ON" ;;
     *) echo "unknown variant $1" >&2; exit 2 ;;
   esac
@@ -63,7 +65,7 @@ baserest=$(awk '$1 == "plain" {print $3}' "$WORK/times" | median)
   echo "$ROUNDS interleaved round(s) per variant, and the ratio to the plain build of the same run."
   echo "Made by \`tools/bench/build_time.sh\` on $(date -u +%Y-%m-%d)."
   echo
-  echo "| variant | cmake flag | globe + globe-tiler, s | vs plain | the rest, s | vs plain | total, s |"
+  echo "| variant | cmake flags | globe + globe-tiler, s | vs plain | the rest, s | vs plain | total, s |"
   echo "|---|---|---|---|---|---|---|"
   for variant in "${VARIANTS[@]}"; do
     f=$(awk -v v="$variant" '$1 == v {print $2}' "$WORK/times" | median)
