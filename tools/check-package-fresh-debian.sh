@@ -3,7 +3,7 @@
 # in a temporary directory, nothing else in it) with apt, which must find every runtime
 # dependency the package declares; then tiles the bundled Fuji data and renders a headless
 # snapshot there with the installed programs, and compares it byte for byte with the build tree's
-# own. Needs root and Debian's package mirror (not run by CI: it downloads ~150 MB). Writes the
+# own. Needs root and Debian's package mirror (not run by CI: it downloads the packages). Writes the
 # times to docs/package-fresh-debian.md.
 #
 #   sudo tools/check-package-fresh-debian.sh BUILD_DIR

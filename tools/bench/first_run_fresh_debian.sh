@@ -4,7 +4,7 @@
 # base), a fresh clone of HEAD in it, then `bash tools/setup.sh` as root inside it under
 # /usr/bin/time: apt-get update, the download and install of every package, the build, tiling,
 # rendering and the demo flight. Needs root and Debian's package mirror (not run by CI: it
-# downloads ~450 MB). Writes docs/first-run-fresh-debian.md.
+# downloads ~420 MB of packages). Writes docs/first-run-fresh-debian.md.
 #
 #   sudo tools/bench/first_run_fresh_debian.sh
 set -euo pipefail
