@@ -12,21 +12,11 @@ cd "$(dirname "$0")/.."
 BUILD=${1:?build directory (built, with globe and globe-tiler)}
 OUT_MD=${OUT_MD:-$PWD/docs/package-fresh-debian.md}
 START_ALL=$(date +%s)
-MIRROR=${MIRROR:-http://deb.debian.org/debian}
-command -v debootstrap >/dev/null || apt-get install -y -q debootstrap >/dev/null
+# shellcheck source=SCRIPTDIR/fresh-debian-root.sh
+source tools/fresh-debian-root.sh
 bash tools/check-package.sh "$BUILD" >/dev/null
 DEB=$(ls "$BUILD"/package/globe_*.deb)
-ROOT=$(mktemp -d /tmp/globe-fresh-debian.XXXXXX)
-cleanup() {
-  umount "$ROOT/proc" "$ROOT/dev" 2>/dev/null || true
-  rm -rf --one-file-system "$ROOT"
-}
-trap cleanup EXIT
-echo "== debootstrap --variant=minbase bookworm $ROOT"
-debootstrap --variant=minbase bookworm "$ROOT" "$MIRROR" >/dev/null
-cp /etc/resolv.conf "$ROOT/etc/resolv.conf"
-mount --bind /proc "$ROOT/proc"
-mount --bind /dev "$ROOT/dev"
+makeFreshDebian globe-fresh-debian
 mkdir -p "$ROOT/tmp/data"
 cp "$DEB" "$ROOT/tmp/"
 cp data/dem/ETOPO20.DEM data/dem/ETOPO20.HDR data/dem/E138N35_FUJI.DEM data/dem/E138N35_FUJI.HDR \
@@ -41,6 +31,7 @@ fi
 INSTALL_SECONDS=$(($(date +%s) - START))
 echo "installed in $INSTALL_SECONDS s"
 chroot "$ROOT" globe --version
+# shellcheck disable=SC2054  # the commas are inside one argument
 VIEW=(--camera 138.60,35.20,6000,30,-15,0 --size 640x360)
 chroot "$ROOT" bash -c "cd /tmp && globe-tiler -q -o pyramid data/ETOPO20.DEM data/E138N35_FUJI.DEM \
   >/dev/null && globe snapshot pyramid ${VIEW[*]} -o fresh.png >/dev/null"

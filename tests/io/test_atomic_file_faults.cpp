@@ -10,6 +10,7 @@
 #include <climits>
 #include <cstdio>
 #include <cstring>
+#include <ostream>
 #include <string>
 
 #include "io/atomic_file.hpp"
@@ -153,6 +154,9 @@ struct FaultCase {
   const char* step;       // the failed step the message names
   const char* errnoText;  // and the reason
 };
+
+// Shown by its name, not its raw bytes (pointers that differ from run to run, in CTest's names).
+void PrintTo(const FaultCase& c, std::ostream* out) { *out << c.name; }
 
 class AtomicFileFault : public ::testing::TestWithParam<FaultCase> {};
 

@@ -10,20 +10,10 @@
 set -euo pipefail
 REPO=$(cd "$(dirname "$0")/../.." && pwd)
 OUT_MD=${OUT_MD:-$REPO/docs/first-run-fresh-debian.md}
-MIRROR=${MIRROR:-http://deb.debian.org/debian}
-command -v debootstrap >/dev/null || apt-get install -y -q debootstrap >/dev/null
 COMMIT=$(git -C "$REPO" rev-parse --short HEAD)
-ROOT=$(mktemp -d /tmp/globe-first-run.XXXXXX)
-cleanup() {
-  umount "$ROOT/proc" "$ROOT/dev" 2>/dev/null || true
-  rm -rf --one-file-system "$ROOT"
-}
-trap cleanup EXIT
-echo "== debootstrap --variant=minbase bookworm $ROOT (not timed)"
-debootstrap --variant=minbase bookworm "$ROOT" "$MIRROR" >/dev/null
-cp /etc/resolv.conf "$ROOT/etc/resolv.conf"
-mount --bind /proc "$ROOT/proc"
-mount --bind /dev "$ROOT/dev"
+# shellcheck source=SCRIPTDIR/../fresh-debian-root.sh
+source "$REPO/tools/fresh-debian-root.sh"
+makeFreshDebian globe-first-run
 # A clone as a user makes it (git is not in the minimal system; the clone is not timed).
 git clone -q "$REPO" "$ROOT/root/globe"
 echo "== bash tools/setup.sh inside it (timed)"
