@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <system_error>
 
+#include "app/elapsed.hpp"
 #include "app/path_conversion.hpp"
 #include "app/playback_step.hpp"
 #include "app/renderer_gpu.hpp"
@@ -26,10 +27,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 constexpr long kMaximumFrames = 10'000'000;
-
-double millisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 // A directory removed on scope exit unless kept: frames of a run that fails never remain.
 class PartialDirectory {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "app/elapsed.hpp"
 #include "app/path_conversion.hpp"
 #include "collision/exact_surface.hpp"
 #include "io/camera_path_file.hpp"
@@ -15,10 +16,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 constexpr int kMaximumSettleRounds = 8;
-
-double msSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 }  // namespace
 
@@ -68,7 +65,7 @@ Result<void> PlaybackStep::completeView(const camera::CameraPose& pose, FrameTim
   for (;;) {
     const auto start = Clock::now();
     const scene::FrameInfo info = scene_.update(pose, widthPixels_, heightPixels_, gpu_);
-    timings.selectMs += msSince(start);
+    timings.selectMs += millisecondsSince(start);
     if (info.complete) return {};
     if (Clock::now() > until) {
       return makeError("the view was not complete after " + std::to_string(viewTimeout_.count()) +
@@ -76,7 +73,7 @@ Result<void> PlaybackStep::completeView(const camera::CameraPose& pose, FrameTim
     }
     const auto wait = Clock::now();
     scene_.waitForLoads(std::chrono::milliseconds(50));
-    timings.loadMs += msSince(wait);
+    timings.loadMs += millisecondsSince(wait);
   }
 }
 
@@ -84,7 +81,7 @@ void PlaybackStep::collide(double dtSeconds, FrameRecord& record) {
   const auto start = Clock::now();
   const camera::CollisionState& state =
       controller_.update(dtSeconds, scene_.renderingTileArray(), scene_.ellipsoid());
-  record.timings.collisionMs += msSince(start);
+  record.timings.collisionMs += millisecondsSince(start);
   record.collided = record.collided || state.collided;
   if (record.response == collision::Response::None) record.response = state.response;
 }

@@ -16,6 +16,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "app/elapsed.hpp"
 #include "app/go_to.hpp"
 #include "app/hud_text.hpp"
 #include "app/imagery.hpp"
@@ -323,8 +324,7 @@ Result<ViewReport> runView(const ViewOptions& options) {
           writeScreenshot(options.recordDirectory, width, height);
         }
         (*window)->swapBuffers();
-        frameMilliseconds =
-            std::chrono::duration<double, std::milli>(Clock::now() - drawStart).count();
+        frameMilliseconds = millisecondsSince(drawStart);
         ++report.framesDrawn;
         drawnTiles = (*scene)->tiles();
         if (std::string next =
@@ -336,9 +336,7 @@ Result<ViewReport> runView(const ViewOptions& options) {
       }
       if (options.log && info.complete && !wasComplete) {
         std::printf("view complete: %zu tiles, %.0f ms after the last change, frame %d\n",
-                    drawnTiles.size(),
-                    std::chrono::duration<double, std::milli>(Clock::now() - lastChange).count(),
-                    report.framesDrawn);
+                    drawnTiles.size(), millisecondsSince(lastChange), report.framesDrawn);
         std::fflush(stdout);
       }
       wasComplete = info.complete;

@@ -1,16 +1,11 @@
 // Trapezoid-rule block means over a fine grid.
 #include "tools/bench_fill/block_average.hpp"
 
-#include "io/gtopo30_header.hpp"
-
 #include <cmath>
 
+#include "io/gtopo30_header.hpp"
+
 namespace globe::bench_fill {
-namespace {
-
-using io::kNoDataHeight;  // GTOPO30's no-data value
-
-}  // namespace
 
 dem::DemGrid blockAverage(const dem::DemGrid& fine, int64_t factor) {
   dem::DemGrid coarse;
@@ -21,7 +16,7 @@ dem::DemGrid blockAverage(const dem::DemGrid& fine, int64_t factor) {
   coarse.firstColumnLongitudeDegrees =
       fine.firstColumnLongitudeDegrees + 0.5 * coarse.columnStepDegrees;
   coarse.firstRowLatitudeDegrees = fine.firstRowLatitudeDegrees - 0.5 * coarse.rowStepDegrees;
-  coarse.samples.assign(static_cast<size_t>(coarse.rows * coarse.cols), kNoDataHeight);
+  coarse.samples.assign(static_cast<size_t>(coarse.rows * coarse.cols), io::kNoDataHeight);
   auto edgeWeight = [factor](int64_t k) { return k == 0 || k == factor ? 0.5 : 1.0; };
   for (int64_t row = 0; row < coarse.rows; ++row) {
     for (int64_t column = 0; column < coarse.cols; ++column) {
@@ -29,7 +24,7 @@ dem::DemGrid blockAverage(const dem::DemGrid& fine, int64_t factor) {
       for (int64_t i = 0; i <= factor; ++i) {
         for (int64_t j = 0; j <= factor; ++j) {
           const int16_t sample = fine.at(row * factor + i, column * factor + j);
-          if (sample == kNoDataHeight) continue;
+          if (sample == io::kNoDataHeight) continue;
           const double w = edgeWeight(i) * edgeWeight(j);
           sum += w * sample;
           weight += w;

@@ -1,17 +1,12 @@
 // Error statistics over hole samples and the border-range check.
 #include "tools/bench_fill/fill_error.hpp"
 
-#include "io/gtopo30_header.hpp"
-
 #include <algorithm>
 #include <cmath>
 
+#include "io/gtopo30_header.hpp"
+
 namespace globe::bench_fill {
-namespace {
-
-using io::kNoDataHeight;  // GTOPO30's no-data value
-
-}  // namespace
 
 ErrorSummary summariseErrors(const std::vector<int16_t>& filled, const std::vector<int16_t>& truth,
                              const std::vector<Hole>& holes) {
@@ -42,7 +37,7 @@ BorderCheck checkBorderRange(const dem::DemGrid& filled, const dem::DemGrid& tru
                              const std::vector<Hole>& holes, const std::vector<uint8_t>& isVoid) {
   BorderCheck check;
   for (size_t i = 0; i < isVoid.size(); ++i) {
-    if (isVoid[i] || truth.samples[i] == kNoDataHeight) continue;  // GDAL fills all no-data
+    if (isVoid[i] || truth.samples[i] == io::kNoDataHeight) continue;  // GDAL fills all no-data
     if (filled.samples[i] != truth.samples[i]) ++check.changedOutsideHoles;
   }
   for (const Hole& hole : holes) {

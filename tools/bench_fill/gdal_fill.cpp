@@ -1,8 +1,6 @@
 // GDALFillNodata through the C API on a MEM dataset.
 #include "tools/bench_fill/gdal_fill.hpp"
 
-#include "io/gtopo30_header.hpp"
-
 #include <gdal.h>
 #include <gdal_alg.h>
 
@@ -11,10 +9,10 @@
 #include <memory>
 #include <mutex>
 
+#include "io/gtopo30_header.hpp"
+
 namespace globe::bench_fill {
 namespace {
-
-using io::kNoDataHeight;  // GTOPO30's no-data value
 
 struct DatasetCloser {
   void operator()(void* dataset) const { GDALClose(dataset); }
@@ -39,12 +37,12 @@ Result<GdalFillResult> gdalFillNodata(const dem::DemGrid& grid, const std::vecto
   DatasetPtr dataset(GDALCreate(mem, "", cols, rows, 1, GDT_Int16, nullptr));
   if (!dataset) return Error{lastGdalError("GDALCreate(MEM)")};
   GDALRasterBandH band = GDALGetRasterBand(dataset.get(), 1);
-  GDALSetRasterNoDataValue(band, kNoDataHeight);
+  GDALSetRasterNoDataValue(band, io::kNoDataHeight);
 
   GdalFillResult result;
   result.samples = grid.samples;
   for (size_t i = 0; i < isVoid.size(); ++i) {
-    if (isVoid[i]) result.samples[i] = kNoDataHeight;
+    if (isVoid[i]) result.samples[i] = io::kNoDataHeight;
   }
   if (GDALRasterIO(band, GF_Write, 0, 0, cols, rows, result.samples.data(), cols, rows, GDT_Int16,
                    0, 0) != CE_None) {

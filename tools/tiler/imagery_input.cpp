@@ -1,5 +1,4 @@
 #include "tools/tiler/imagery_input.hpp"
-#include "tools/tiler/gdal_dataset.hpp"
 
 #include <cpl_conv.h>
 #include <gdal.h>
@@ -13,6 +12,7 @@
 #include <memory>
 
 #include "geo/tile_id.hpp"
+#include "tools/tiler/gdal_dataset.hpp"
 
 namespace globe::tiler {
 namespace {
@@ -20,8 +20,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kTmsFileName = "tilemapresource.xml";
-
-using Dataset = GdalDataset;
 
 std::string lastGdalError() {
   const char* message = CPLGetLastErrorMsg();
@@ -202,7 +200,7 @@ Result<ImageryInput> describeRaster(const std::string& argument,
                                     const ImageryInputOptions& options) {
   ImageryInput input;
   input.argument = argument;
-  Dataset dataset(
+  GdalDataset dataset(
       GDALOpenEx(argument.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
   if (!dataset) {
     std::error_code error;
