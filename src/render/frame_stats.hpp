@@ -18,6 +18,8 @@ struct FrameStats {
   uint64_t imageryBytesResident = 0;  // of those, mip chains included (part of gpuBytesResident)
   uint32_t drapesDrawn = 0;           // drape layers drawn, summed over the drawn tiles
   uint32_t drapesMissing = 0;         // drape layers skipped: their texture was not uploaded
+  // Of drapesDrawn, those magnified over the whole tile, drawn with the bilinear sampler.
+  uint32_t drapesMagnified = 0;
 };
 
 }  // namespace globe::render

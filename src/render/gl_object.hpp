@@ -58,6 +58,11 @@ inline GlObject makeGlTexture() {
 inline GlObject makeGlShader(GLenum type) {
   return {glCreateShader(type), [](GLuint n) { glDeleteShader(n); }};
 }
+inline GlObject makeGlSampler() {
+  GLuint name = 0;
+  glGenSamplers(1, &name);
+  return {name, [](GLuint n) { glDeleteSamplers(1, &n); }};
+}
 inline GlObject makeGlProgram() {
   return {glCreateProgram(), [](GLuint n) { glDeleteProgram(n); }};
 }

@@ -39,6 +39,20 @@ ImageryTextures::ImageryTextures(float maxAnisotropy) {
     glGetFloatv(kMaxTextureMaxAnisotropy, &maximum);
     maxAnisotropy_ = std::clamp(maximum, 1.0f, maxAnisotropy);
   }
+  // Clamped: a tile's edge texels are exactly at its edge (pixel-is-area), so neighbouring tiles
+  // meet without sampling each other or wrapping to the far side.
+  auto makeSampler = [](GLenum minFilter) {
+    GlObject sampler = makeGlSampler();
+    glSamplerParameteri(sampler.get(), GL_TEXTURE_MIN_FILTER, static_cast<GLint>(minFilter));
+    glSamplerParameteri(sampler.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(sampler.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(sampler.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return sampler;
+  };
+  trilinearSampler_ = makeSampler(GL_LINEAR_MIPMAP_LINEAR);
+  if (maxAnisotropy_ > 1.0f)
+    glSamplerParameterf(trilinearSampler_.get(), kTextureMaxAnisotropy, maxAnisotropy_);
+  bilinearSampler_ = makeSampler(GL_LINEAR);
 }
 
 Result<void> ImageryTextures::upload(uint32_t layer, const geo::TileId& tile,
@@ -105,14 +119,7 @@ Result<void> ImageryTextures::upload(uint32_t layer, const geo::TileId& tile,
   } else {
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, widthPixels, heightPixels, 0, GL_RGBA,
                  GL_UNSIGNED_BYTE, pixels);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    // Clamped: a tile's edge texels are exactly at its edge (pixel-is-area), so neighbouring
-    // tiles meet without sampling each other or wrapping to the far side.
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    if (maxAnisotropy_ > 1.0f)
-      glTexParameterf(GL_TEXTURE_2D, kTextureMaxAnisotropy, maxAnisotropy_);
+    // Filtering and wrapping: the samplers bound with it (sampler()).
   }
   glGenerateMipmap(GL_TEXTURE_2D);
   glBindTexture(GL_TEXTURE_2D, 0);
@@ -157,9 +164,10 @@ bool ImageryTextures::isOpaqueOver(uint32_t layer, const geo::TileId& tile,
   return true;
 }
 
-GLuint ImageryTextures::find(uint32_t layer, const geo::TileId& tile) const {
+ResidentTexture ImageryTextures::find(uint32_t layer, const geo::TileId& tile) const {
   const auto found = textures_.find({layer, tile});
-  return found == textures_.end() ? 0u : found->second.name.get();
+  if (found == textures_.end()) return {};
+  return {found->second.name.get(), found->second.widthPixels, found->second.heightPixels};
 }
 
 bool ImageryTextures::evict(uint32_t layer, const geo::TileId& tile) {

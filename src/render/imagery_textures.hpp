@@ -27,6 +27,13 @@ struct ImageryTextureKeyHash {
   }
 };
 
+// A resident tile texture (name 0: none) and its size.
+struct ResidentTexture {
+  GLuint name = 0;
+  int widthPixels = 0;
+  int heightPixels = 0;
+};
+
 // Needs the GL context current on the calling thread for its whole life (like TerrainRenderer).
 class ImageryTextures {
  public:
@@ -40,8 +47,14 @@ class ImageryTextures {
   Result<void> upload(uint32_t layer, const geo::TileId& tile, std::span<const uint8_t> rgba,
                       int widthPixels, int heightPixels);
   bool contains(uint32_t layer, const geo::TileId& tile) const;
-  // The texture name, 0 when not resident.
-  GLuint find(uint32_t layer, const geo::TileId& tile) const;
+  // The texture, name 0 when not resident.
+  ResidentTexture find(uint32_t layer, const geo::TileId& tile) const;
+  // The sampler to bind with a tile's texture: trilinear (+ anisotropic), or, where the texture
+  // is magnified over the whole tile (terrain/texel_footprint.hpp), bilinear on the base level
+  // only, which draws the same pixels there and spares llvmpipe the per-fragment level of detail.
+  GLuint sampler(bool magnified) const {
+    return magnified ? bilinearSampler_.get() : trilinearSampler_.get();
+  }
   // Whether the part of a resident tile that uv rectangle (x, y, width, height in texture
   // coordinates) draws is opaque: no texel with alpha < 255 in it or within a margin of one
   // sixteenth of the tile around it (what bilinear filtering and the first four mip levels reach).
@@ -66,6 +79,8 @@ class ImageryTextures {
   std::unordered_map<ImageryTextureKey, Texture, ImageryTextureKeyHash> textures_;
   uint64_t bytes_ = 0;
   float maxAnisotropy_ = 1.0f;
+  GlObject trilinearSampler_;
+  GlObject bilinearSampler_;
 };
 
 // RGBA8 texture bytes with the full mip chain: 4/3 of the base level.

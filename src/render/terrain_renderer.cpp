@@ -26,6 +26,7 @@
 #include "render/sky_model.hpp"
 #include "render/sky_pass.hpp"
 #include "terrain/skirt_edges.hpp"
+#include "terrain/texel_footprint.hpp"
 
 namespace globe::render {
 
@@ -37,6 +38,11 @@ namespace {
 // log2(1 + w) between vertices is off by < 1e-3 · w and only ever farther (log is concave).
 constexpr double kVertexDepthMinMeters = 1000.0;
 constexpr double kVertexDepthRadii = 2.0;
+
+// A drape is drawn with the bilinear sampler where the bound on base-level texels per pixel
+// (terrain/texel_footprint.hpp, on WGS84) is at most this: 1 is where GL magnifies; the 1 %
+// covers the spherical globe model's radius (0.1 % off WGS84's) and ground down to -11 km.
+constexpr double kMagnifiedTexelsPerPixel = 0.99;
 
 }  // namespace
 
@@ -63,8 +69,10 @@ struct TerrainRenderer::Impl {
     std::array<GLuint, terrain::kMaxDrapeLayers> textures{};
     std::array<glm::vec4, terrain::kMaxDrapeLayers> transforms{};
     std::array<float, terrain::kMaxDrapeLayers> opacities{};
+    std::array<GLuint, terrain::kMaxDrapeLayers> samplers{};
     uint32_t count = 0;
     bool opaqueBase = false;  // layer 0 is opaque everywhere (texels and opacity)
+    uint32_t magnified = 0;   // of the resolved layers, drawn with the bilinear sampler
   };
   struct DrawItem {
     double nearestMeters;
@@ -109,7 +117,14 @@ struct TerrainRenderer::Impl {
   // The program for this variant, compiled on first use and kept.
   Result<const Program*> program(bool globalImage, uint32_t layers, bool vertexDepth,
                                  bool lightImagery, bool opaqueBase = false);
-  BoundDrapes resolveDrapes(const terrain::TileDrapes* drapes, FrameStats& stats) const;
+  // Where the camera is and one pixel's angle (terrain::pixelAngleRadians): which sampler a
+  // drape needs.
+  struct Footprint {
+    glm::dvec3 cameraEcefMeters{0.0};
+    double pixelAngleRadians = 0.0;
+  };
+  BoundDrapes resolveDrapes(const terrain::TileDrapes* drapes, const GpuTile& gpu,
+                            const Footprint& footprint, FrameStats& stats) const;
   void bindDrapes(const BoundDrapes& drapes, const Uniforms& u) const;
   uint64_t gpuBytes() const {
     return tileBytes + indexBytes + imageryBytes + imageryTiles.bytesResident();
@@ -121,12 +136,17 @@ struct TerrainRenderer::Impl {
 // fragment, and the terrain's own colour is not needed (opaqueBase). Layers
 // whose texture is not resident are skipped (the ones above still draw) and counted.
 TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(
-    const terrain::TileDrapes* drapes, FrameStats& stats) const {
+    const terrain::TileDrapes* drapes, const GpuTile& gpu, const Footprint& footprint,
+    FrameStats& stats) const {
   BoundDrapes bound;
   const uint32_t count = drapes == nullptr ? 0 : std::min(drapes->count, terrain::kMaxDrapeLayers);
+  const geo::Ellipsoid wgs84 = geo::Ellipsoid::wgs84();
+  const terrain::TileBounds bounds{gpu.centerEcefMeters, gpu.radiusMeters, gpu.upEcef,
+                                   gpu.topMeters};
   for (uint32_t k = 0; k < count; ++k) {
     const terrain::TileDrape& drape = drapes->layers[k];
-    const GLuint texture = imageryTiles.find(drape.layer, drape.imageryTile);
+    const ResidentTexture resident = imageryTiles.find(drape.layer, drape.imageryTile);
+    const GLuint texture = resident.name;
     if (texture == 0) {
       ++stats.drapesMissing;
       continue;
@@ -140,9 +160,20 @@ TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(
     bound.textures[bound.count] = texture;
     bound.transforms[bound.count] = drape.uvTransform;
     bound.opacities[bound.count] = opacity;
+    const double texelMeters = terrain::shortestTexelMeters(drape.imageryTile, resident.widthPixels,
+                                                            resident.heightPixels, wgs84);
+    const bool magnified =
+        style.bilinearWhereMagnified &&
+        terrain::maxTexelsPerPixel(footprint.cameraEcefMeters, bounds, texelMeters,
+                                   footprint.pixelAngleRadians, wgs84) <= kMagnifiedTexelsPerPixel;
+    bound.samplers[bound.count] = imageryTiles.sampler(magnified);
     ++bound.count;
   }
+  // Counted once the layers under an opaque one are dropped.
+  for (uint32_t k = 0; k < bound.count; ++k)
+    bound.magnified += bound.samplers[k] == imageryTiles.sampler(true) ? 1 : 0;
   stats.drapesDrawn += bound.count;
+  stats.drapesMagnified += bound.magnified;
   return bound;
 }
 
@@ -203,6 +234,7 @@ void TerrainRenderer::Impl::bindDrapes(const BoundDrapes& drapes, const Uniforms
   for (uint32_t k = 0; k < drapes.count; ++k) {
     glActiveTexture(GL_TEXTURE1 + k);
     glBindTexture(GL_TEXTURE_2D, drapes.textures[k]);
+    glBindSampler(1 + k, drapes.samplers[k]);
   }
   glActiveTexture(GL_TEXTURE0);
   if (drapes.count > 0) {
@@ -394,6 +426,7 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
   // depth test rejects hidden fragments early. Near tiles go first: they occlude the far ones.
   for (auto& items : impl.drawItems) items.clear();
   impl.drawnIds.clear();
+  const Impl::Footprint footprint{view.cameraEcefMeters, terrain::pixelAngleRadians(view)};
   for (size_t i = 0; i < tiles.size(); ++i) {
     const geo::TileId& tile = tiles[i];
     const auto found = impl.tiles.find(tile);
@@ -409,7 +442,7 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
         nearest >= kVertexDepthMinMeters && nearest >= kVertexDepthRadii * gpu.radiusMeters;
     const terrain::TileDrapes* tileDrapes = i < drapes.size() ? &drapes[i] : nullptr;
     impl.drawItems[far ? 1 : 0].push_back(
-        {nearest, &gpu, tile, 0, impl.resolveDrapes(tileDrapes, stats)});
+        {nearest, &gpu, tile, 0, impl.resolveDrapes(tileDrapes, gpu, footprint, stats)});
   }
   // Skirts face the tiles that are really drawn (resident ones), known once all are listed.
   if (impl.options.skirts) {
@@ -548,6 +581,7 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
     for (uint32_t k = 0; k < terrain::kMaxDrapeLayers; ++k) {
       glActiveTexture(GL_TEXTURE1 + k);
       glBindTexture(GL_TEXTURE_2D, 0);
+      glBindSampler(1 + k, 0);
     }
     glActiveTexture(GL_TEXTURE0);
   }

@@ -41,6 +41,11 @@ struct TerrainStyle {
   // The sky behind the terrain and distance fog over it (render/sky_model.hpp, shaders/sky.*),
   // from the camera's height; off: backgroundRgb (the tests that look for gaps keep it off).
   bool sky = false;
+  // Imagery magnified over a whole tile is sampled bilinearly from the base level, which is what
+  // trilinear filtering does there too, but without a level of detail per fragment: on llvmpipe
+  // the imagery's own cost falls by about half (docs/imagery-frame-time.md). Off: always
+  // trilinear (for comparing the two).
+  bool bilinearWhereMagnified = true;
 };
 
 // Needs a current GL 3.3 core context (OsMesaContext or GlfwWindowContext) on the calling thread

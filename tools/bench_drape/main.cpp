@@ -1,10 +1,11 @@
 // globe-bench-drape: the frame time of steady views with imagery layers against the same views
 // without, in one process and one GL context (OSMesa), rounds interleaved so that every side sees
-// the same machine load. Three sides: without imagery as the viewer draws it, the imagery side's
+// the same machine load. Four sides: without imagery as the viewer draws it, the imagery side's
 // scene drawn without its imagery (under a layer the terrain may refine further: the layer's
-// imagery follows the terrain's level, scene/imagery_layers.hpp), and with imagery. The first ratio
-// is what a user sees when turning imagery on; the second the imagery's own cost on the same
-// geometry. A table printer, not a timed test.
+// imagery follows the terrain's level, scene/imagery_layers.hpp), with imagery, and with imagery
+// sampled trilinearly everywhere (TerrainStyle::bilinearWhereMagnified off: the renderer before
+// it, the baseline of that change). The first ratio is what a user sees when turning imagery on;
+// the second the imagery's own cost on the same geometry. A table printer, not a timed test.
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
@@ -32,7 +33,8 @@ struct Side {
   std::vector<double> frameMs;
   uint64_t triangles = 0, imageryBytes = 0;
   size_t drapes = 0;
-  bool drawDrapes = true;  // false: the scene's tiles without their imagery
+  uint32_t drapesMagnified = 0;  // drawn with the bilinear sampler
+  bool drawDrapes = true;        // false: the scene's tiles without their imagery
 };
 
 double median(std::vector<double> values) {
@@ -71,6 +73,7 @@ double timeFrame(Side& side, const camera::CameraPose& pose, int width, int heig
                       : side.renderer->draw(side.scene->view(), side.scene->tiles());
   render::finishGl();
   side.triangles = stats.triangles;
+  side.drapesMagnified = stats.drapesMagnified;
   side.imageryBytes = stats.imageryBytesResident;
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
@@ -117,8 +120,10 @@ int main(int argc, char** argv) {
   std::string table =
       "| view | frames per side | without: median ms | without, the imagery side's tiles: "
       "median ms | with imagery: median ms | ratio as the viewer runs | ratio, same tiles | "
-      "triangles without | triangles with | drapes | imagery textures MiB |\n"
-      "|---|---|---|---|---|---|---|---|---|---|---|\n";
+      "triangles without | triangles with | drapes | of them magnified (bilinear) | imagery "
+      "textures MiB | with imagery, trilinear everywhere: median ms | its ratio as the viewer "
+      "runs |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const std::string& view : views) {
     const size_t equals = view.find('=');
     if (equals == std::string::npos) {
@@ -138,28 +143,35 @@ int main(int argc, char** argv) {
         without ? openSide(pyramid, layers, *pose, width, height) : Result<Side>(Error{});
     if (sameTiles) sameTiles->drawDrapes = false;
     auto with = sameTiles ? openSide(pyramid, layers, *pose, width, height) : Result<Side>(Error{});
-    if (!without || !sameTiles || !with) {
+    auto trilinear = with ? openSide(pyramid, layers, *pose, width, height) : Result<Side>(Error{});
+    if (!without || !sameTiles || !with || !trilinear) {
       const std::string& error =
-          !without ? without.error() : (!sameTiles ? sameTiles.error() : with.error());
+          !without ? without.error()
+                   : (!sameTiles ? sameTiles.error() : (!with ? with.error() : trilinear.error()));
       std::fprintf(stderr, "globe-bench-drape: %s: %s\n", name.c_str(), error.c_str());
       return 1;
     }
+    render::TerrainStyle style = trilinear->renderer->style();
+    style.bilinearWhereMagnified = false;
+    trilinear->renderer->setStyle(style);
     for (int round = 0; round < rounds; ++round) {
-      for (Side* side : {&*without, &*sameTiles, &*with}) {
+      for (Side* side : {&*without, &*sameTiles, &*with, &*trilinear}) {
         for (int f = 0; f < framesPerRound; ++f) {
           side->frameMs.push_back(timeFrame(*side, *pose, width, height));
         }
       }
     }
     const double a = median(without->frameMs), n = median(sameTiles->frameMs),
-                 b = median(with->frameMs);
+                 b = median(with->frameMs), t = median(trilinear->frameMs);
     char row[512];
-    std::snprintf(row, sizeof row,
-                  "| %s | %zu | %.1f | %.1f | %.1f | %.2f | %.2f | %llu | %llu | %zu | %.1f |\n",
-                  name.c_str(), with->frameMs.size(), a, n, b, b / a, b / n,
-                  static_cast<unsigned long long>(without->triangles),
-                  static_cast<unsigned long long>(with->triangles), with->drapes,
-                  static_cast<double>(with->imageryBytes) / (1 << 20));
+    std::snprintf(
+        row, sizeof row,
+        "| %s | %zu | %.1f | %.1f | %.1f | %.2f | %.2f | %llu | %llu | %zu | %u | %.1f | %.1f | "
+        "%.2f |\n",
+        name.c_str(), with->frameMs.size(), a, n, b, b / a, b / n,
+        static_cast<unsigned long long>(without->triangles),
+        static_cast<unsigned long long>(with->triangles), with->drapes, with->drapesMagnified,
+        static_cast<double>(with->imageryBytes) / (1 << 20), t, t / a);
     table += row;
     std::fputs(row, stdout);
     std::fflush(stdout);

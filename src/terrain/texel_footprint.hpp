@@ -1,0 +1,51 @@
+// Whether a draped imagery texture is magnified over a whole tile. Where it is, GL's trilinear
+// filtering samples the base level only (level of detail <= 0), so a sampler without mipmaps draws
+// the same pixels; on llvmpipe it costs about a fifth less per frame, because no level of detail is
+// computed per fragment (docs/imagery-frame-time.md).
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include "geo/ellipsoid.hpp"
+#include "geo/tile_id.hpp"
+#include "terrain/render_view.hpp"
+
+namespace globe::terrain {
+
+// The shortest side, in metres, of one texel of a widthPixels x heightPixels texture covering
+// `tile` (geographic tiling scheme): north-south with the smallest meridian radius of curvature
+// b²/a, east-west on the smallest parallel radius a·cos(latitude) the tile reaches (0 for a tile
+// that touches a pole). 0 for an invalid tile or size.
+double shortestTexelMeters(const geo::TileId& tile, int widthPixels, int heightPixels,
+                           const geo::Ellipsoid& ellipsoid);
+
+// The angle one pixel subtends at the centre of the view, the larger of its width and its height:
+// the largest anywhere on the screen (off-centre pixels subtend less). NaN for a degenerate view.
+double pixelAngleRadians(const RenderView& view);
+
+// Where a tile's vertices are: within radiusMeters of the centre, and at most topMeters above
+// it along `up` (unit, the ellipsoid's up at the centre, geocentric or geodetic).
+struct TileBounds {
+  glm::dvec3 centerEcefMeters{0.0};
+  double radiusMeters = 0.0;
+  glm::dvec3 upEcef{0.0};
+  double topMeters = 0.0;
+};
+
+// How far a level surface's up turns, at most, between the centre and a point `radiusMeters`
+// away: the distance over the smallest radius of curvature b²/a, plus the most the geocentric
+// and the geodetic up differ (e²/2, 0.0034 on WGS84), whichever `up` is.
+double surfaceTiltRadians(double radiusMeters, const geo::Ellipsoid& ellipsoid);
+
+// An upper bound on GL's scale factor rho (base-level texels per screen pixel) anywhere on a tile
+// were its surface level (the ellipsoid's tangent planes, turned by at most surfaceTiltRadians
+// from `up`): a pixel of angle α at distance d spans at most d·α / cos(θ + α) metres along such
+// a surface, where cos(θ + α) >= (h/d)·cos(tilt + α) − sin(tilt + α), h = the camera's height
+// above the tile's top along `up` and d <= |camera − centre| + radius. Slopes steeper than the
+// level surface can exceed it locally (cliffs seen edge-on). +infinity where it cannot be bounded:
+// the camera not above the tile's top, or an input not finite or not positive where it must be.
+double maxTexelsPerPixel(const glm::dvec3& cameraEcefMeters, const TileBounds& tile,
+                         double texelMeters, double pixelAngleRadians,
+                         const geo::Ellipsoid& ellipsoid);
+
+}  // namespace globe::terrain
