@@ -21,14 +21,14 @@ D=$ROOT/data
 "$TILER" imagery -q -o "$WORK/zion" "$D/imagery/zion-landsat8-rgb.tif"
 ARGS=(--pyramid "$WORK/pyramid" --layer "$WORK/blue-marble" --layer "$WORK/zion"
       --view fuji_oblique=138.60,35.20,6000,30,-15,0 --view zion_oblique=-112.93,37.16,4500,330,-20,0
-      --view zion_nadir=-112.98,37.27,9000 --view globe=138,30,20000000 --rounds 11 --frames 3)
+      --view zion_nadir=-112.98,37.27,9000 --view globe=138,30,20000000 --rounds 25 --frames 3)
 "$BENCH" "${ARGS[@]}" --out "$WORK/table.md"
 {
   echo "# Frame time with imagery layers"
   echo
   echo "Steady frames (update + draw + glFinish, 1280x720, OSMesa llvmpipe) of four views with the"
   echo "bundled Blue Marble and Zion layers against the same views without imagery, in one process"
-  echo "and one GL context, 11 interleaved rounds of 3 frames per side: medians and their ratios."
+  echo "and one GL context, 25 interleaved rounds of 3 frames per side: medians and their ratios."
   echo "Two sides without imagery: as the viewer draws it, and the imagery side's own scene (its"
   echo "tiles: under a layer the terrain refines as far as that sharpens the imagery, README, \"The"
   echo "viewer\") drawn without the imagery. The first ratio is what turning imagery on costs in"
