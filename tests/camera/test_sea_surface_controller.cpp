@@ -7,6 +7,7 @@
 
 #include <deque>
 #include <filesystem>
+#include <ostream>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -19,6 +20,14 @@
 #include "terrain/tile_mesh.hpp"
 #include "tests/io/sea_test_pyramid.hpp"
 #include "tests/support/test_constants.hpp"
+
+namespace globe::terrain {
+// How GoogleTest prints the parameter (CTest's test names include it), instead of its raw byte.
+void PrintTo(SeaSurface surface, std::ostream* os);
+void PrintTo(SeaSurface surface, std::ostream* os) {
+  *os << (surface == SeaSurface::Water ? "Water" : "SeaFloor");
+}
+}  // namespace globe::terrain
 
 namespace globe::camera {
 namespace {
