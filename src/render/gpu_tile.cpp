@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <limits>
 #include <numbers>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -34,17 +34,18 @@ GpuTile uploadGpuTile(const geo::TileId& tile, const terrain::TileMesh& mesh, GL
                               static_cast<float>(rect.heightRadians() / pi));
   gpu.vertexBytes = mesh.vertices.size() * sizeof(float);
   double radiusSquared = 0.0;
-  gpu.upEcef = glm::normalize(mesh.centerEcefMeters);
-  gpu.topMeters = -std::numeric_limits<double>::infinity();
+  std::vector<glm::dvec3> offsets;
+  offsets.reserve(mesh.vertices.size() / terrain::kTileVertexFloats);
   for (size_t k = 0; k + terrain::kTileVertexFloats <= mesh.vertices.size();
        k += terrain::kTileVertexFloats) {
     const glm::dvec3 offset(mesh.vertices[k + terrain::kTileVertexPositionOffset],
                             mesh.vertices[k + terrain::kTileVertexPositionOffset + 1],
                             mesh.vertices[k + terrain::kTileVertexPositionOffset + 2]);
     radiusSquared = std::max(radiusSquared, glm::dot(offset, offset));
-    gpu.topMeters = std::max(gpu.topMeters, glm::dot(offset, gpu.upEcef));
+    offsets.push_back(offset);
   }
   gpu.radiusMeters = std::sqrt(radiusSquared);
+  gpu.box = terrain::makeTileBox(mesh.centerEcefMeters, offsets);
 
   gpu.vertexArray = makeGlVertexArray();
   gpu.vertexBuffer = makeGlBuffer();

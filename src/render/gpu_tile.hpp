@@ -9,6 +9,7 @@
 
 #include "geo/tile_id.hpp"
 #include "render/gl_object.hpp"
+#include "terrain/texel_footprint.hpp"
 #include "terrain/tile_mesh.hpp"
 
 namespace globe::render {
@@ -27,8 +28,7 @@ struct GpuTile {
   glm::dvec3 centerEcefMeters{0.0};
   glm::vec4 imageryRect{0.0f};  // global equirectangular uv = xy + tile uv · zw
   double radiusMeters = 0.0;    // the farthest vertex (skirts included) from the centre
-  glm::dvec3 upEcef{0.0};       // unit, geocentric at the centre
-  double topMeters = 0.0;       // the highest vertex above the centre along upEcef
+  terrain::TileBox box;         // around the vertices (skirts included), for texel footprints
   uint64_t vertexBytes = 0;
 };
 

@@ -141,8 +141,6 @@ TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(
   BoundDrapes bound;
   const uint32_t count = drapes == nullptr ? 0 : std::min(drapes->count, terrain::kMaxDrapeLayers);
   const geo::Ellipsoid wgs84 = geo::Ellipsoid::wgs84();
-  const terrain::TileBounds bounds{gpu.centerEcefMeters, gpu.radiusMeters, gpu.upEcef,
-                                   gpu.topMeters};
   for (uint32_t k = 0; k < count; ++k) {
     const terrain::TileDrape& drape = drapes->layers[k];
     const ResidentTexture resident = imageryTiles.find(drape.layer, drape.imageryTile);
@@ -164,7 +162,7 @@ TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(
                                                             resident.heightPixels, wgs84);
     const bool magnified =
         style.bilinearWhereMagnified &&
-        terrain::maxTexelsPerPixel(footprint.cameraEcefMeters, bounds, texelMeters,
+        terrain::maxTexelsPerPixel(footprint.cameraEcefMeters, gpu.box, texelMeters,
                                    footprint.pixelAngleRadians, wgs84) <= kMagnifiedTexelsPerPixel;
     bound.samplers[bound.count] = imageryTiles.sampler(magnified);
     ++bound.count;

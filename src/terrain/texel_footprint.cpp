@@ -42,22 +42,58 @@ double surfaceTiltRadians(double radiusMeters, const geo::Ellipsoid& ellipsoid) 
   return radiusMeters / (b * b / a) + ellipsoid.eccentricitySquared() / 2.0 * 1.01;
 }
 
-double maxTexelsPerPixel(const glm::dvec3& cameraEcefMeters, const TileBounds& tile,
+TileBox makeTileBox(const glm::dvec3& centerEcefMeters, std::span<const glm::dvec3> offsetsMeters) {
+  TileBox box;
+  box.centerEcefMeters = centerEcefMeters;
+  const glm::dvec3 up = glm::normalize(centerEcefMeters);
+  // East, except at a pole where any direction across will do.
+  const glm::dvec3 pole(0.0, 0.0, 1.0);
+  const glm::dvec3 across = glm::cross(pole, up);
+  const glm::dvec3 east = glm::length(across) > 1e-9 ? glm::normalize(across) : glm::dvec3(1, 0, 0);
+  box.axes = {east, glm::cross(up, east), up};
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  box.minMeters = glm::dvec3(kInfinity);
+  box.maxMeters = glm::dvec3(-kInfinity);
+  for (const glm::dvec3& offset : offsetsMeters) {
+    for (int i = 0; i < 3; ++i) {
+      const double along = glm::dot(offset, box.axes[static_cast<size_t>(i)]);
+      box.minMeters[i] = std::min(box.minMeters[i], along);
+      box.maxMeters[i] = std::max(box.maxMeters[i], along);
+    }
+  }
+  return box;
+}
+
+double maxTexelsPerPixel(const glm::dvec3& cameraEcefMeters, const TileBox& tile,
                          double texelMeters, double pixelAngleRadians,
                          const geo::Ellipsoid& ellipsoid) {
   constexpr double kUnbounded = std::numeric_limits<double>::infinity();
   const glm::dvec3 toCamera = cameraEcefMeters - tile.centerEcefMeters;
-  const double heightMeters = glm::dot(toCamera, tile.upEcef) - tile.topMeters;
-  const double farthestMeters = glm::length(toCamera) + tile.radiusMeters;
-  const double tilt = surfaceTiltRadians(tile.radiusMeters, ellipsoid);
+  const double heightMeters = glm::dot(toCamera, tile.axes[2]) - tile.maxMeters.z;
+  // The farthest corner (distance is convex: no point of the box is farther).
+  double farthestSquared = 0.0;
+  for (int corner = 0; corner < 8; ++corner) {
+    glm::dvec3 at = tile.centerEcefMeters;
+    for (int i = 0; i < 3; ++i) {
+      at += tile.axes[static_cast<size_t>(i)] *
+            ((corner >> i) & 1 ? tile.maxMeters[i] : tile.minMeters[i]);
+    }
+    farthestSquared =
+        std::max(farthestSquared, glm::dot(cameraEcefMeters - at, cameraEcefMeters - at));
+  }
+  const double farthestMeters = std::sqrt(farthestSquared);
+  const double acrossMeters =
+      std::hypot(std::max(std::abs(tile.minMeters.x), std::abs(tile.maxMeters.x)),
+                 std::max(std::abs(tile.minMeters.y), std::abs(tile.maxMeters.y)));
+  const double tilt = surfaceTiltRadians(acrossMeters, ellipsoid);
   // A ray at θ from the normal and the next one α further meet the plane d·sin α / cos(θ + α)
   // apart; cos(θ + tilt + α) >= cos θ·cos(tilt + α) − sin(tilt + α), and cos θ >= h / d.
   const double turn = tilt + pixelAngleRadians;
   const double cosine = heightMeters / farthestMeters * std::cos(turn) - std::sin(turn);
   // (cosine > 0) also rejects NaN; the rest must be finite and positive where divided by.
   if (!(cosine > 0.0) || !(texelMeters > 0.0) || !(pixelAngleRadians > 0.0) ||
-      !(tile.radiusMeters >= 0.0) || !std::isfinite(farthestMeters) ||
-      !std::isfinite(tile.topMeters) || !(std::abs(glm::length(tile.upEcef) - 1.0) < 1e-6)) {
+      !std::isfinite(farthestMeters) || !std::isfinite(acrossMeters) ||
+      !(std::abs(glm::length(tile.axes[2]) - 1.0) < 1e-6)) {
     return kUnbounded;
   }
   const double rho = farthestMeters * pixelAngleRadians / (cosine * texelMeters);

@@ -4,6 +4,9 @@
 // view's frame 13 % cheaper, docs/imagery-frame-time.md).
 #pragma once
 
+#include <array>
+#include <span>
+
 #include <glm/vec3.hpp>
 
 #include "geo/ellipsoid.hpp"
@@ -23,14 +26,19 @@ double shortestTexelMeters(const geo::TileId& tile, int widthPixels, int heightP
 // the largest anywhere on the screen (off-centre pixels subtend less). NaN for a degenerate view.
 double pixelAngleRadians(const RenderView& view);
 
-// Where a tile's vertices are: within radiusMeters of the centre, and at most topMeters above
-// it along `up` (unit, the ellipsoid's up at the centre, geocentric or geodetic).
-struct TileBounds {
+// A box around a tile's vertices in the local frame at its centre: axes[2] is up (the ellipsoid's
+// there, geocentric), axes[0] and [1] lie across it (east and north, unit); every vertex lies
+// within [minMeters[i], maxMeters[i]] from the centre along axes[i].
+struct TileBox {
   glm::dvec3 centerEcefMeters{0.0};
-  double radiusMeters = 0.0;
-  glm::dvec3 upEcef{0.0};
-  double topMeters = 0.0;
+  std::array<glm::dvec3, 3> axes{};
+  glm::dvec3 minMeters{0.0};
+  glm::dvec3 maxMeters{0.0};
 };
+
+// The box of those offsets from the centre (ECEF metres). An empty span or a centre at the
+// Earth's centre gives a box maxTexelsPerPixel cannot bound.
+TileBox makeTileBox(const glm::dvec3& centerEcefMeters, std::span<const glm::dvec3> offsetsMeters);
 
 // How far a level surface's up turns, at most, between the centre and a point `radiusMeters`
 // away: the distance over the smallest radius of curvature b²/a, plus the most the geocentric
@@ -38,13 +46,14 @@ struct TileBounds {
 double surfaceTiltRadians(double radiusMeters, const geo::Ellipsoid& ellipsoid);
 
 // An upper bound on GL's scale factor rho (base-level texels per screen pixel) anywhere on a tile
-// were its surface level (the ellipsoid's tangent planes, turned by at most surfaceTiltRadians
-// from `up`): a pixel of angle α at distance d spans at most d·α / cos(θ + α) metres along such
-// a surface, where cos(θ + α) >= (h/d)·cos(tilt + α) − sin(tilt + α), h = the camera's height
-// above the tile's top along `up` and d <= |camera − centre| + radius. Slopes steeper than the
-// level surface can exceed it locally (cliffs seen edge-on). +infinity where it cannot be bounded:
-// the camera not above the tile's top, or an input not finite or not positive where it must be.
-double maxTexelsPerPixel(const glm::dvec3& cameraEcefMeters, const TileBounds& tile,
+// in the box were its surface level (the ellipsoid's tangent planes, turned by at most
+// surfaceTiltRadians from up): a pixel of angle α at distance d spans at most d·α / cos(θ + α)
+// metres along such a surface, where cos(θ + α) >= (h/d)·cos(tilt + α) − sin(tilt + α), h = the
+// camera's height above the box's top and d <= the distance to the box's farthest corner.
+// Slopes steeper than the level surface can exceed it locally (cliffs seen edge-on). +infinity
+// where it cannot be bounded: the camera not above the box's top, or an input not finite or not
+// positive where it must be.
+double maxTexelsPerPixel(const glm::dvec3& cameraEcefMeters, const TileBox& tile,
                          double texelMeters, double pixelAngleRadians,
                          const geo::Ellipsoid& ellipsoid);
 

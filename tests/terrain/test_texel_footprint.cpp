@@ -7,6 +7,7 @@
 #include <limits>
 #include <numbers>
 #include <random>
+#include <span>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -46,7 +47,7 @@ double groundPerPixelMeters(const glm::dvec3& camera, const glm::dvec3& point,
 
 struct Ground {
   std::vector<glm::dvec3> points, normals;
-  TileBounds bounds;
+  TileBox box;
 };
 
 // Level ground between two heights over a square of `sizeDegrees` at (lon, lat) and its sphere.
@@ -60,18 +61,15 @@ Ground levelGround(double lonDegrees, double latDegrees, double sizeDegrees, dou
                                                           latDegrees + sizeDegrees * j / 8, height);
         ground.points.push_back(geo::cartographicToEcef(kEllipsoid, where));
         ground.normals.push_back(geo::geodeticSurfaceNormal(kEllipsoid, where));
-        ground.bounds.centerEcefMeters += ground.points.back();
       }
     }
   }
-  TileBounds& b = ground.bounds;
-  b.centerEcefMeters /= static_cast<double>(ground.points.size());
-  b.upEcef = glm::normalize(b.centerEcefMeters);  // geocentric, as the renderer's
-  b.topMeters = -kInfinity;
-  for (const glm::dvec3& p : ground.points) {
-    b.radiusMeters = std::max(b.radiusMeters, glm::distance(p, b.centerEcefMeters));
-    b.topMeters = std::max(b.topMeters, glm::dot(p - b.centerEcefMeters, b.upEcef));
-  }
+  glm::dvec3 center(0.0);
+  for (const glm::dvec3& p : ground.points) center += p;
+  center /= static_cast<double>(ground.points.size());
+  std::vector<glm::dvec3> offsets;
+  for (const glm::dvec3& p : ground.points) offsets.push_back(p - center);
+  ground.box = makeTileBox(center, offsets);
   return ground;
 }
 
@@ -84,18 +82,19 @@ TEST(TexelFootprint, NoPixelOnLevelGroundSpansMoreTexelsThanTheBound) {
     const double lat = -80.0 + 160.0 * unit(random);
     const Ground ground = levelGround(-180.0 + 350.0 * unit(random), lat, size,
                                       -500.0 + 3000.0 * unit(random), 3000.0 + 2000 * unit(random));
-    const TileBounds& b = ground.bounds;
+    const TileBox& b = ground.box;
+    const double radius = glm::length(glm::max(-b.minMeters, b.maxMeters));
+    const glm::dvec3 up = b.axes[2];
     const double texelMeters = 0.5 + 50.0 * unit(random);
     for (int c = 0; c < 60; ++c) {
       // Above the tile's top by 0.001 to 30 tile radii, up to 50 radii to the side: straight
       // down to grazing.
-      const double height = b.radiusMeters * std::pow(10.0, -3.0 + 4.5 * unit(random));
-      const double side = b.radiusMeters * std::pow(10.0, -1.0 + 2.7 * unit(random));
+      const double height = radius * std::pow(10.0, -3.0 + 4.5 * unit(random));
+      const double side = radius * std::pow(10.0, -1.0 + 2.7 * unit(random));
       const double heading = 2.0 * std::numbers::pi * unit(random);
-      const glm::dvec3 east = glm::normalize(glm::cross(glm::dvec3(0, 0, 1), b.upEcef));
-      const glm::dvec3 north = glm::cross(b.upEcef, east);
-      const glm::dvec3 camera = b.centerEcefMeters + b.upEcef * (b.topMeters + height) +
-                                side * (std::cos(heading) * east + std::sin(heading) * north);
+      const glm::dvec3 camera =
+          b.centerEcefMeters + up * (b.maxMeters.z + height) +
+          side * (std::cos(heading) * b.axes[0] + std::sin(heading) * b.axes[1]);
       const double bound = maxTexelsPerPixel(camera, b, texelMeters, kPixelAngle, kEllipsoid);
       if (!std::isfinite(bound)) continue;
       ++bounded;
@@ -115,8 +114,8 @@ TEST(TexelFootprint, NoPixelOnLevelGroundSpansMoreTexelsThanTheBound) {
 
 TEST(TexelFootprint, SeenFromStraightAboveTheBoundIsNearTheTruth) {
   const Ground ground = levelGround(-113.0, 37.2, 0.01, 1500.0, 1500.0);  // ~1 km, flat
-  const TileBounds& b = ground.bounds;
-  const glm::dvec3 camera = b.centerEcefMeters + b.upEcef * 7000.0;
+  const TileBox& b = ground.box;
+  const glm::dvec3 camera = b.centerEcefMeters + b.axes[2] * 7000.0;
   const double texelMeters = 30.0;
   const double bound = maxTexelsPerPixel(camera, b, texelMeters, kPixelAngle, kEllipsoid);
   double most = 0.0;
@@ -131,31 +130,51 @@ TEST(TexelFootprint, SeenFromStraightAboveTheBoundIsNearTheTruth) {
 }
 
 TEST(TexelFootprint, UnboundedWhenTheCameraIsNotAboveOrAnInputIsBad) {
-  const glm::dvec3 up(0, 0, 1), center(0, 0, 6.4e6);
-  auto rho = [&](glm::dvec3 camera, double texel = 10.0, double pixel = kPixelAngle,
-                 double radius = 1000.0, double top = 100.0,
-                 glm::dvec3 tileUp = glm::dvec3(0, 0, 1)) {
-    return maxTexelsPerPixel(camera, {center, radius, tileUp, top}, texel, pixel, kEllipsoid);
+  // A 2 km square 200 m thick (its top 100 m above the centre) at the north pole's latitude 60.
+  const glm::dvec3 center =
+      geo::cartographicToEcef(kEllipsoid, geo::Cartographic::fromDegrees(10.0, 60.0, 0.0));
+  const std::vector<glm::dvec3> corners = [&] {
+    const TileBox frame = makeTileBox(center, {});
+    std::vector<glm::dvec3> points;
+    for (double x : {-1000.0, 1000.0})
+      for (double y : {-1000.0, 1000.0})
+        for (double z : {-100.0, 100.0})
+          points.push_back(x * frame.axes[0] + y * frame.axes[1] + z * frame.axes[2]);
+    return points;
+  }();
+  const TileBox box = makeTileBox(center, corners);
+  const glm::dvec3 up = box.axes[2];
+  EXPECT_NEAR(box.maxMeters.z, 100.0, 1e-9);
+  EXPECT_NEAR(box.minMeters.x, -1000.0, 1e-9);
+  auto rho = [&](glm::dvec3 camera, double texel = 10.0, double pixel = kPixelAngle) {
+    return maxTexelsPerPixel(camera, box, texel, pixel, kEllipsoid);
   };
   EXPECT_TRUE(std::isfinite(rho(center + up * 5000.0)));
-  EXPECT_TRUE(std::isfinite(rho(center + up * 150.0)));        // just over the top
-  EXPECT_EQ(rho(center + up * 90.0), kInfinity);               // below the top
-  EXPECT_EQ(rho(center + glm::dvec3(1e5, 0, 50)), kInfinity);  // beside it, below its top
-  EXPECT_EQ(rho(center - up * 5000.0), kInfinity);             // underneath
+  EXPECT_TRUE(std::isfinite(rho(center + up * 150.0)));               // just over the top
+  EXPECT_EQ(rho(center + up * 90.0), kInfinity);                      // below the top
+  EXPECT_EQ(rho(center + box.axes[0] * 1e5 + up * 50.0), kInfinity);  // beside it, below its top
+  EXPECT_EQ(rho(center - up * 5000.0), kInfinity);                    // underneath
   EXPECT_EQ(rho(glm::dvec3(std::nan(""), 0, 0)), kInfinity);
   EXPECT_EQ(rho(center + up * 5000.0, 0.0), kInfinity);
   EXPECT_EQ(rho(center + up * 5000.0, std::nan("")), kInfinity);
   EXPECT_EQ(rho(center + up * 5000.0, 10.0, std::nan("")), kInfinity);
-  EXPECT_EQ(rho(center + up * 5000.0, 10.0, kPixelAngle, std::nan("")), kInfinity);
-  EXPECT_EQ(rho(center + up * 5000.0, 10.0, kPixelAngle, kInfinity), kInfinity);
-  EXPECT_EQ(rho(center + up * 5000.0, 10.0, kPixelAngle, 1000.0, -kInfinity),
-            kInfinity);  // no vertex
-  EXPECT_EQ(rho(center + up * 5000.0, 10.0, kPixelAngle, 1000.0, 100.0, glm::dvec3(0)), kInfinity);
-  EXPECT_EQ(rho(center + up * 5000.0, 10.0, kPixelAngle, 1000.0, 100.0, up * 2.0), kInfinity);
   EXPECT_EQ(rho(center + up * kInfinity), kInfinity);
+  EXPECT_EQ(maxTexelsPerPixel(center + up * 5000.0, makeTileBox(center, {}), 10.0, kPixelAngle,
+                              kEllipsoid),
+            kInfinity);  // no vertex
+  EXPECT_EQ(maxTexelsPerPixel(center, makeTileBox(glm::dvec3(0.0), corners), 10.0, kPixelAngle,
+                              kEllipsoid),
+            kInfinity);  // no up at the Earth's centre
   // Farther is more texels per pixel; a coarser texel fewer.
   EXPECT_LT(rho(center + up * 5000.0), rho(center + up * 50000.0));
   EXPECT_GT(rho(center + up * 5000.0), rho(center + up * 5000.0, 20.0));
+  // 5 km over the top, the farthest corner is sqrt(5200² + 2·1000²) away: the bound is that
+  // squared · α / (5000 · texel), the tilt adding under 1 % (the sphere around the box would
+  // give 1.46x that).
+  const double cornerSquared = 5200.0 * 5200.0 + 2e6;
+  const double expected = cornerSquared * kPixelAngle / (5000.0 * 10.0);
+  EXPECT_GE(rho(center + up * 5100.0), expected);
+  EXPECT_LT(rho(center + up * 5100.0), 1.01 * expected);
 }
 
 TEST(TexelFootprint, ShortestTexelSide) {
