@@ -72,7 +72,6 @@ struct TerrainRenderer::Impl {
     std::array<GLuint, terrain::kMaxDrapeLayers> samplers{};
     uint32_t count = 0;
     bool opaqueBase = false;  // layer 0 is opaque everywhere (texels and opacity)
-    uint32_t magnified = 0;   // of the resolved layers, drawn with the bilinear sampler
   };
   struct DrawItem {
     double nearestMeters;
@@ -169,9 +168,8 @@ TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(
   }
   // Counted once the layers under an opaque one are dropped.
   for (uint32_t k = 0; k < bound.count; ++k)
-    bound.magnified += bound.samplers[k] == imageryTiles.sampler(true) ? 1 : 0;
+    stats.drapesMagnified += bound.samplers[k] == imageryTiles.sampler(true) ? 1 : 0;
   stats.drapesDrawn += bound.count;
-  stats.drapesMagnified += bound.magnified;
   return bound;
 }
 

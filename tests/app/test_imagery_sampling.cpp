@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 #include <ogr_spatialref.h>
 
-#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdint>
@@ -21,6 +20,7 @@
 #include "io/image_io.hpp"
 #include "render/osmesa_context.hpp"
 #include "render/read_pixels.hpp"
+#include "tests/render/golden_compare.hpp"
 #include "tests/tools/tiler/imagery_test_layers.hpp"
 #include "tests/tools/tiler/tiler_test_fixture.hpp"
 
@@ -29,9 +29,8 @@ namespace {
 
 struct Difference {
   uint32_t drapes = 0, magnified = 0;
-  size_t pixels = 0, differing = 0;  // differing: some channel off by more than 2 levels
-  int largest = 0;                   // the largest channel difference
-  double meanAbsolute = 0.0;         // over all channels and pixels
+  // Of the bilinear picture against the trilinear one; differing: some channel off by > 2 levels.
+  testing::ImageDifference image;
 };
 
 // The view drawn with the bilinear sampler where magnified, and trilinear everywhere.
@@ -67,29 +66,19 @@ Difference compareSamplers(const char* name, const std::filesystem::path& pyrami
     }
     return render::readPixelsRgba(width, height);
   };
-  const std::vector<uint8_t> fast = drawn(true), exact = drawn(false);
+  const io::ImageRgba fast{width, height, drawn(true)}, exact{width, height, drawn(false)};
+  out.image = testing::compareImages(exact, fast, 2);
   if (const char* dir = std::getenv("GLOBE_TEST_IMAGE_DIR")) {  // to look at them
     const std::string base = std::string(dir) + "/" + name;
-    (void)io::writePngAtomically(base + "-bilinear.png", fast, width, height);
-    (void)io::writePngAtomically(base + "-trilinear.png", exact, width, height);
+    (void)io::writePngAtomically(base + "-bilinear.png", fast.pixels, width, height);
+    (void)io::writePngAtomically(base + "-trilinear.png", exact.pixels, width, height);
+    (void)io::writePngAtomically(base + "-diff.png", out.image.diffRgba, width, height);
   }
-  out.pixels = static_cast<size_t>(width) * height;
-  double sum = 0.0;
-  for (size_t p = 0; p < out.pixels; ++p) {
-    int most = 0;
-    for (size_t c = 0; c < 3; ++c) {
-      const int d = std::abs(int{fast[p * 4 + c]} - int{exact[p * 4 + c]});
-      most = std::max(most, d);
-      sum += d;
-    }
-    out.largest = std::max(out.largest, most);
-    out.differing += most > 2 ? 1 : 0;
-  }
-  out.meanAbsolute = sum / (3.0 * static_cast<double>(out.pixels));
   std::printf(
-      "%s: %u of %u drapes magnified; %zu of %zu pixels differ by > 2 levels, largest %d, "
+      "%s: %u of %u drapes magnified; %.4f %% of the pixels differ by > 2 levels, largest %d, "
       "mean %.4f\n",
-      name, out.magnified, out.drapes, out.differing, out.pixels, out.largest, out.meanAbsolute);
+      name, out.magnified, out.drapes, 100.0 * out.image.differingFraction,
+      out.image.largestChannelDifference, out.image.meanChannelDifference);
   return out;
 }
 
@@ -105,8 +94,8 @@ TEST(ImagerySampling, OnSteepTerrainOnlyCliffPixelsChange) {
                                               -112.93, 37.16, 4500, 330, -20, 1280, 720)}) {
     EXPECT_GT(d.magnified, 0u) << "no drape took the bilinear sampler: the test shows nothing";
     EXPECT_LT(d.magnified, d.drapes) << "every drape magnified: trilinear was never needed";
-    EXPECT_LE(d.differing, 3 * d.pixels / 1000);
-    EXPECT_LT(d.meanAbsolute, 0.05);
+    EXPECT_LE(d.image.differingFraction, 0.003);
+    EXPECT_LT(d.image.meanChannelDifference, 0.05);
   }
 }
 
@@ -147,7 +136,7 @@ TEST(ImagerySampling, OnLevelGroundThePictureIsTheSame) {
        {compareSamplers("level-nadir", level, zion, -112.98, 37.27, 5000, 0, -90, 1280, 720),
         compareSamplers("level-oblique", level, zion, -113.0, 37.2, 6000, 0, -25, 1280, 720)}) {
     EXPECT_GT(d.magnified, 0u);
-    EXPECT_EQ(d.largest, 0);
+    EXPECT_EQ(d.image.largestChannelDifference, 0);
   }
 }
 

@@ -15,11 +15,13 @@ ImageDifference compareImages(const io::ImageRgba& expected, const io::ImageRgba
   result.diffRgba.resize(pixels * 4);
   size_t differing = 0;
   int largest = 0;
+  double sum = 0.0;
   for (size_t p = 0; p < pixels; ++p) {
     int worst = 0;
     for (size_t c = 0; c < 3; ++c) {
-      worst = std::max(worst,
-                       std::abs(int{expected.pixels[4 * p + c]} - int{actual.pixels[4 * p + c]}));
+      const int d = std::abs(int{expected.pixels[4 * p + c]} - int{actual.pixels[4 * p + c]});
+      worst = std::max(worst, d);
+      sum += d;
     }
     largest = std::max(largest, worst);
     const bool differs = worst > channelTolerance;
@@ -32,6 +34,7 @@ ImageDifference compareImages(const io::ImageRgba& expected, const io::ImageRgba
   }
   result.differingFraction = static_cast<double>(differing) / static_cast<double>(pixels);
   result.largestChannelDifference = largest;
+  result.meanChannelDifference = sum / (3.0 * static_cast<double>(pixels));
   return result;
 }
 

@@ -12,6 +12,7 @@ namespace globe::testing {
 struct ImageDifference {
   double differingFraction = 1;  // pixels whose largest channel difference exceeds the tolerance
   int largestChannelDifference = 255;
+  double meanChannelDifference = 255;  // over the red, green and blue of every pixel
   std::vector<uint8_t> diffRgba;  // differing pixels red over a dimmed copy of the expected image
 };
 
