@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/source_conditioning_json.hpp"
+#include "io/vertical_units_json.hpp"
 
 namespace globe::app {
 namespace {
@@ -65,14 +66,17 @@ std::string formatPyramidInfoText(const io::PyramidManifest& m, const std::strin
     const io::SourceConditioning& c = s.conditioning;
     std::snprintf(line, sizeof line,
                   "    sea %llu samples; voids %llu (%llu interpolated, %llu from a coarser "
-                  "source, %llu left); %llu blended within %.4g deg of its edges\n",
+                  "source, %llu left); %llu outside its footprint; coarser sources bend to "
+                  "its edges within %.4g deg%s\n",
                   static_cast<unsigned long long>(c.seaSamples),
                   static_cast<unsigned long long>(c.voidSamples),
                   static_cast<unsigned long long>(c.interpolatedSamples),
                   static_cast<unsigned long long>(c.fromCoarserSamples),
                   static_cast<unsigned long long>(c.unfilledSamples),
-                  static_cast<unsigned long long>(c.blendedSamples), c.blendMarginDegrees);
+                  static_cast<unsigned long long>(c.outsideSamples), c.bendMarginDegrees,
+                  c.noDataIsWater ? "; its no data is its sea" : "");
     out += line;
+    if (s.verticalUnits) out += "    heights " + io::describe(*s.verticalUnits) + "\n";
   }
   return out;
 }
@@ -102,6 +106,9 @@ std::string formatPyramidInfoJson(const io::PyramidManifest& m, const std::strin
                        {"finestLevel", s.finestLevel},
                        {"boundsDegrees", boundsJson(s.bounds)},
                        {"conditioning", io::conditioningToJson(s.conditioning)}});
+    if (s.verticalUnits) {
+      sources.back()["verticalUnits"] = io::verticalUnitsToJson(*s.verticalUnits);
+    }
   }
   const json j = {{"pyramid", path},
                   {"blockSize", m.verticesPerSide},

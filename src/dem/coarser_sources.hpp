@@ -2,6 +2,7 @@
 // from the already conditioned coarser inputs; tests and benchmarks from a grid of their own.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 
 namespace globe::dem {
@@ -15,6 +16,11 @@ class CoarserSources {
   // The next coarser source's surface there (bilinear, water at 0 m); nullopt where none covers.
   virtual std::optional<double> heightMeters(double longitudeDegrees,
                                              double latitudeDegrees) const = 0;
+  // The same point as a block sample (dem/vertex_sample.hpp's rule) saying whether it is water
+  // and, where measured, its sea floor; but water only where the surface there (floors where
+  // measured, 0 m where not) is at or below 0 m: sea only where the coarser surface says so.
+  // nullopt where none covers.
+  virtual std::optional<int16_t> sample(double longitudeDegrees, double latitudeDegrees) const = 0;
 };
 
 }  // namespace globe::dem

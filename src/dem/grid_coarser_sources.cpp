@@ -99,4 +99,25 @@ std::optional<double> GridCoarserSources::heightMeters(double longitudeDegrees,
   return std::nullopt;
 }
 
+std::optional<int16_t> GridCoarserSources::sample(double longitudeDegrees,
+                                                  double latitudeDegrees) const {
+  for (const DemGrid* grid : grids_) {
+    if (gridCovers(*grid, longitudeDegrees, latitudeDegrees)) {
+      const Support s = supportAt(*grid, longitudeDegrees, latitudeDegrees);
+      const int16_t sample = interpolateSample(s.samples, s.tu, s.tv);
+      if (!terrain::isWater(sample)) return sample;
+      // Water only where the surface (floors where measured, 0 m where not) is at or below 0 m:
+      // where the nearest sample made a coast vertex water above it, the land's height there.
+      auto floorOrLand = [&](size_t k) {
+        return terrain::surfaceHeightMeters(s.samples[k], terrain::SeaSurface::SeaFloor);
+      };
+      const double heightMeters =
+          (1 - s.tv) * ((1 - s.tu) * floorOrLand(0) + s.tu * floorOrLand(1)) +
+          s.tv * ((1 - s.tu) * floorOrLand(2) + s.tu * floorOrLand(3));
+      return heightMeters > 0.0 ? landSample(heightMeters) : sample;
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace globe::dem

@@ -25,6 +25,7 @@ class GridCoarserSources final : public CoarserSources {
   bool allowSea(double longitudeDegrees, double latitudeDegrees) const override;
   std::optional<double> heightMeters(double longitudeDegrees,
                                      double latitudeDegrees) const override;
+  std::optional<int16_t> sample(double longitudeDegrees, double latitudeDegrees) const override;
 
  private:
   std::vector<const DemGrid*> grids_;

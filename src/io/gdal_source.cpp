@@ -1,4 +1,5 @@
-// The GDAL RasterSource: band 1 of any raster GDAL opens, warped to WGS84 degrees when projected.
+// The GDAL RasterSource: band 1 of any raster GDAL opens, warped to WGS84 degrees when projected,
+// in metres by the band's unit type, scale and offset.
 #include <cpl_conv.h>
 #include <cpl_string.h>
 #include <gdal.h>
@@ -145,8 +146,8 @@ Result<DatasetPtr> warpToWgs84(GDALDatasetH source, const std::string& path) {
 class GdalSource final : public detail::ColumnMappedSource {
  public:
   GdalSource(std::string path, const SampleGrid& grid, DatasetPtr source, DatasetPtr warped,
-             bool flipRows, std::string driver)
-      : ColumnMappedSource(std::move(path), grid),
+             bool flipRows, std::string driver, VerticalUnits vertical)
+      : ColumnMappedSource(std::move(path), grid, std::move(vertical)),
         source_(std::move(source)),
         warped_(std::move(warped)),
         driver_(std::move(driver)),
@@ -182,13 +183,16 @@ class GdalSource final : public detail::ColumnMappedSource {
                          " failed: " + QuietGdal::message());
       }
     }
+    const VerticalUnits& units = verticalUnits();
     for (int64_t i = 0; i < count; ++i) {
       const double v = values[static_cast<size_t>(i)];
-      if (!std::isfinite(v) || (hasNoData_ && v == noData_)) {
+      // No-data is the stored value, before scale and offset.
+      const double meters = units.toMeters(v);
+      if (!std::isfinite(v) || (hasNoData_ && v == noData_) || !std::isfinite(meters)) {
         out[i] = kNoDataHeight;
       } else {
         // Ties to even, as numpy's round: ETOPO20.DEM was made from etopo20.cdf that way.
-        out[i] = static_cast<int16_t>(std::clamp(std::nearbyint(v), -32768.0, 32767.0));
+        out[i] = static_cast<int16_t>(std::clamp(std::nearbyint(meters), -32768.0, 32767.0));
       }
     }
     return {};
@@ -204,9 +208,22 @@ class GdalSource final : public detail::ColumnMappedSource {
   mutable std::mutex mutex_;
 };
 
+// The band's unit type, scale and offset (the warped VRT does not carry them: read the source's).
+Result<VerticalUnits> bandVerticalUnits(GDALDatasetH source, const std::string& path,
+                                        const VerticalOverride& zOverride) {
+  GDALRasterBandH band = GDALGetRasterBand(source, 1);
+  const char* unit = GDALGetRasterUnitType(band);
+  int hasScale = 0, hasOffset = 0;
+  const double scale = GDALGetRasterScale(band, &hasScale);
+  const double offset = GDALGetRasterOffset(band, &hasOffset);
+  return resolveVerticalUnits(path, unit ? unit : "", hasScale ? scale : 1.0,
+                              hasOffset ? offset : 0.0, zOverride);
+}
+
 }  // namespace
 
-Result<std::unique_ptr<RasterSource>> openGdalSource(const std::filesystem::path& path) {
+Result<std::unique_ptr<RasterSource>> openGdalSource(const std::filesystem::path& path,
+                                                     const RasterOpenOptions& options) {
   registerGdalOnce();
   QuietGdal quiet;
   const std::string name = path.string();
@@ -216,6 +233,8 @@ Result<std::unique_ptr<RasterSource>> openGdalSource(const std::filesystem::path
   if (!source) return makeError(name + ": GDAL cannot open it as a raster: " + quiet.message());
   if (GDALGetRasterCount(source.get()) < 1) return makeError(name + ": has no raster band");
   const std::string driver = GDALGetDriverShortName(GDALGetDatasetDriver(source.get()));
+  auto vertical = bandVerticalUnits(source.get(), name, options.vertical);
+  if (!vertical) return Error{vertical.error()};
 
   double gt[6];
   if (GDALGetGeoTransform(source.get(), gt) != CE_None) {
@@ -257,7 +276,7 @@ Result<std::unique_ptr<RasterSource>> openGdalSource(const std::filesystem::path
   grid.firstColumnLongitudeDegrees = gt[0] + gt[1] / 2;
   grid.firstRowLatitudeDegrees = flipRows ? gt[3] + (rows - 0.5) * gt[5] : gt[3] + gt[5] / 2;
   return std::unique_ptr<RasterSource>(std::make_unique<GdalSource>(
-      name, grid, std::move(source), std::move(warped), flipRows, driver));
+      name, grid, std::move(source), std::move(warped), flipRows, driver, std::move(*vertical)));
 }
 
 }  // namespace globe::io

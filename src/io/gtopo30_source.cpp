@@ -1,4 +1,6 @@
 // The native GTOPO30 RasterSource: rows come straight from the .DEM with pread, nothing is cached.
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 
@@ -21,8 +23,9 @@ SampleGrid nativeGrid(const Gtopo30Header& h) {
 
 class Gtopo30Source final : public detail::ColumnMappedSource {
  public:
-  explicit Gtopo30Source(Gtopo30File file)
-      : ColumnMappedSource(file.paths().data.string(), nativeGrid(file.header())),
+  Gtopo30Source(Gtopo30File file, VerticalUnits vertical)
+      : ColumnMappedSource(file.paths().data.string(), nativeGrid(file.header()),
+                           std::move(vertical)),
         file_(std::move(file)) {}
 
   std::string_view formatName() const override { return "GTOPO30"; }
@@ -38,6 +41,14 @@ class Gtopo30Source final : public detail::ColumnMappedSource {
         if (out[i] == noData) out[i] = kNoDataHeight;
       }
     }
+    // Only --z-units / --z-scale change GTOPO30's metres.
+    if (const VerticalUnits& u = verticalUnits(); !u.isIdentity()) {
+      for (int64_t i = 0; i < count; ++i) {
+        if (out[i] == kNoDataHeight) continue;
+        out[i] =
+            static_cast<int16_t>(std::clamp(std::nearbyint(u.toMeters(out[i])), -32768.0, 32767.0));
+      }
+    }
     return {};
   }
 
@@ -46,10 +57,15 @@ class Gtopo30Source final : public detail::ColumnMappedSource {
 
 }  // namespace
 
-Result<std::unique_ptr<RasterSource>> openGtopo30Source(const std::filesystem::path& path) {
+Result<std::unique_ptr<RasterSource>> openGtopo30Source(const std::filesystem::path& path,
+                                                        const RasterOpenOptions& options) {
   auto file = Gtopo30File::open(path);
   if (!file) return Error{file.error()};
-  return std::unique_ptr<RasterSource>(std::make_unique<Gtopo30Source>(std::move(*file)));
+  auto vertical = resolveVerticalUnits(file->paths().data.string(), "m", 1, 0, options.vertical,
+                                       /*formatIsMeters=*/true);
+  if (!vertical) return Error{vertical.error()};
+  return std::unique_ptr<RasterSource>(
+      std::make_unique<Gtopo30Source>(std::move(*file), std::move(*vertical)));
 }
 
 }  // namespace globe::io

@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "io/source_conditioning_json.hpp"
+#include "io/vertical_units_json.hpp"
 
 namespace globe::io {
 namespace {
@@ -55,6 +56,21 @@ json rangeToJson(const terrain::HeightRange& r) {
   return json::array({r.minimumMeters, r.maximumMeters});
 }
 
+VerticalUnits verticalUnitsFromJson(const json& j) {
+  VerticalUnits u;
+  u.fileUnit = j.at("fileUnit").get<std::string>();
+  const auto origin = parseVerticalUnitOrigin(j.at("appliedBy").get<std::string>());
+  if (!origin) throw json::other_error::create(501, "unknown verticalUnits.appliedBy", &j);
+  u.origin = *origin;
+  if (u.origin == VerticalUnitOrigin::ZUnits) {
+    u.overrideUnit = j.at("overrideUnit").get<std::string>();
+  }
+  u.metersPerUnit = j.at("metersPerUnit").get<double>();
+  u.bandScale = j.at("bandScale").get<double>();
+  u.bandOffset = j.at("bandOffset").get<double>();
+  return u;
+}
+
 terrain::HeightRange rangeFromJson(const json& j) {
   return {integerOf<int16_t>(j.at(0)), integerOf<int16_t>(j.at(1))};
 }
@@ -67,8 +83,14 @@ SourceConditioning conditioningFromJson(const json& j) {
   c.interpolatedSamples = integerOf<uint64_t>(j.at("voidsFilledByInterpolation"));
   c.fromCoarserSamples = integerOf<uint64_t>(j.at("voidsFilledFromCoarserSource"));
   c.unfilledSamples = integerOf<uint64_t>(j.at("voidsLeftNoData"));
-  c.blendedSamples = integerOf<uint64_t>(j.at("blendedSamples"));
-  c.blendMarginDegrees = j.at("blendMarginDegrees").get<double>();
+  // Pyramids tiled before the footprint rules name the margin "blendMarginDegrees" and count
+  // samples eased inside the source instead (not kept).
+  if (j.contains("outsideFootprintSamples")) {
+    c.outsideSamples = integerOf<uint64_t>(j.at("outsideFootprintSamples"));
+  }
+  c.bendMarginDegrees = j.contains("bendMarginDegrees") ? j.at("bendMarginDegrees").get<double>()
+                                                        : j.at("blendMarginDegrees").get<double>();
+  c.noDataIsWater = j.value("noDataIsWater", false);
   return c;
 }
 
@@ -81,8 +103,9 @@ nlohmann::json conditioningToJson(const SourceConditioning& c) {
           {"voidsFilledByInterpolation", c.interpolatedSamples},
           {"voidsFilledFromCoarserSource", c.fromCoarserSamples},
           {"voidsLeftNoData", c.unfilledSamples},
-          {"blendedSamples", c.blendedSamples},
-          {"blendMarginDegrees", c.blendMarginDegrees}};
+          {"outsideFootprintSamples", c.outsideSamples},
+          {"bendMarginDegrees", c.bendMarginDegrees},
+          {"noDataIsWater", c.noDataIsWater}};
 }
 
 uint64_t PyramidManifest::tileCount() const {
@@ -112,6 +135,9 @@ std::string manifestToJson(const PyramidManifest& manifest) {
                        {"boundsDegrees", boundsToJson(source.bounds)},
                        {"finestLevel", source.finestLevel},
                        {"conditioning", conditioningToJson(source.conditioning)}});
+    if (source.verticalUnits) {
+      sources.back()["verticalUnits"] = verticalUnitsToJson(*source.verticalUnits);
+    }
   }
   const json j = {
       {"format", "globe-pyramid"},
@@ -181,6 +207,9 @@ Result<PyramidManifest> manifestFromJson(std::string_view text, const std::files
            integerOf<uint32_t>(source.at("finestLevel")), SourceConditioning{}});
       if (source.contains("conditioning")) {
         m.sources.back().conditioning = conditioningFromJson(source.at("conditioning"));
+      }
+      if (source.contains("verticalUnits")) {
+        m.sources.back().verticalUnits = verticalUnitsFromJson(source.at("verticalUnits"));
       }
     }
     return m;

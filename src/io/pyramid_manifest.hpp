@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "geo/result.hpp"
 #include "io/byte_source.hpp"
 #include "io/pack_format.hpp"
+#include "io/vertical_units.hpp"
 
 namespace globe::io {
 
@@ -28,7 +30,7 @@ struct LevelInfo {
   std::vector<PackId> packs;         // the pack files of this level, sorted
 };
 
-// What the tiler did to a source's samples before tiling (README: sea, voids, blend).
+// What the tiler did to a source's samples before tiling (README: how real inputs are drawn).
 struct SourceConditioning {
   uint64_t noDataSamples = 0;        // in the source as given
   uint64_t seaSamples = 0;           // written as water
@@ -36,8 +38,9 @@ struct SourceConditioning {
   uint64_t interpolatedSamples = 0;  // voids filled from their border
   uint64_t fromCoarserSamples = 0;   // voids filled from a coarser source (delta surface)
   uint64_t unfilledSamples = 0;      // voids left as no data (nothing to fill them from)
-  uint64_t blendedSamples = 0;       // eased into a coarser source at the edges
-  double blendMarginDegrees = 0;
+  uint64_t outsideSamples = 0;       // no data outside its footprint: the coarser surface, bent
+  double bendMarginDegrees = 0;      // over which coarser sources bend to meet its edges
+  bool noDataIsWater = false;        // its no data is its water code (GTOPO30's ocean mask)
   bool operator==(const SourceConditioning&) const = default;
 };
 
@@ -49,6 +52,8 @@ struct SourceInfo {
   BoundsDegrees bounds;    // the cells' extent
   uint32_t finestLevel = 0;
   SourceConditioning conditioning;
+  // How its stored values became metres; unset in manifests written before it was recorded.
+  std::optional<VerticalUnits> verticalUnits{};
 };
 
 struct PyramidManifest {

@@ -47,6 +47,11 @@ double SampleGrid::southDegrees() const {
   return firstRowLatitudeDegrees - (static_cast<double>(rows) - 0.5) * rowStepDegrees;
 }
 
+const VerticalUnits& RasterSource::verticalUnits() const {
+  static const VerticalUnits kMeters;
+  return kMeters;
+}
+
 SampleGrid snapSampleGrid(SampleGrid grid) {
   snapAxis(grid.columnStepDegrees, grid.firstColumnLongitudeDegrees, grid.cols);
   snapAxis(grid.rowStepDegrees, grid.firstRowLatitudeDegrees, grid.rows);
@@ -118,13 +123,15 @@ Result<void> ColumnMappedSource::readRow(int64_t row, int64_t firstColumn, int64
 
 }  // namespace detail
 
-Result<std::unique_ptr<RasterSource>> openRasterSource(const std::filesystem::path& path) {
+Result<std::unique_ptr<RasterSource>> openRasterSource(const std::filesystem::path& path,
+                                                       const RasterOpenOptions& options) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) return openGdalSource(path);  // e.g. Arc/Info grids
+  // A directory: e.g. an Arc/Info grid.
+  if (std::filesystem::is_directory(path, ec)) return openGdalSource(path, options);
   const std::string ext = asciiLower(path.extension().string());
   const bool exists = std::filesystem::exists(path, ec);
   const bool gtopoName = ext == ".dem" || ext == ".bil" || ext == ".hdr";
-  if (exists && !gtopoName) return openGdalSource(path);
+  if (exists && !gtopoName) return openGdalSource(path, options);
 
   auto files = findGtopo30Files(path);
   if (files) {
@@ -132,13 +139,13 @@ Result<std::unique_ptr<RasterSource>> openRasterSource(const std::filesystem::pa
     auto text = readWholeFile(files->header, 1 << 20);
     if (text && text->size() >= 4 &&
         asciiLower(std::string_view(reinterpret_cast<const char*>(text->data()), 4)) == "envi") {
-      return openGdalSource(files->data);
+      return openGdalSource(files->data, options);
     }
-    return openGtopo30Source(path);
+    return openGtopo30Source(path, options);
   }
   if (exists && ext != ".hdr") {
     // A .dem without .HDR is probably another format (USGS DEM); say why GTOPO30 was not used.
-    auto gdal = openGdalSource(path);
+    auto gdal = openGdalSource(path, options);
     if (gdal) return gdal;
     return makeError(gdal.error() + "; and as GTOPO30: " + files.error());
   }

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "geo/result.hpp"
+#include "io/vertical_units.hpp"
 
 namespace globe::io {
 
@@ -41,14 +42,25 @@ class RasterSource {
   // [0, cols) only when the grid wraps (they wrap, any number of times). Thread-safe.
   virtual Result<void> readRow(int64_t row, int64_t firstColumn, int64_t count,
                                int16_t* out) const = 0;
+  // How readRow turned the stored values into metres (metres as stored unless a reader says).
+  virtual const VerticalUnits& verticalUnits() const;
+};
+
+struct RasterOpenOptions {
+  VerticalOverride vertical;  // unset: each file's own unit type, scale and offset
 };
 
 // Native GTOPO30 reader: pread per row, never loads the file.
-Result<std::unique_ptr<RasterSource>> openGtopo30Source(const std::filesystem::path& path);
-// Any raster GDAL opens, band 1; projected rasters are warped (bilinear) to WGS84 degrees.
-Result<std::unique_ptr<RasterSource>> openGdalSource(const std::filesystem::path& path);
+// Heights are metres by the format; an override still applies.
+Result<std::unique_ptr<RasterSource>> openGtopo30Source(const std::filesystem::path& path,
+                                                        const RasterOpenOptions& options = {});
+// Any raster GDAL opens, band 1; projected rasters are warped (bilinear) to WGS84 degrees. The
+// band's unit type, scale and offset make metres (an unknown unit is an error).
+Result<std::unique_ptr<RasterSource>> openGdalSource(const std::filesystem::path& path,
+                                                     const RasterOpenOptions& options = {});
 // The native reader for GTOPO30 (.DEM/.BIL/.HDR with a GTOPO30 .HDR), otherwise GDAL.
-Result<std::unique_ptr<RasterSource>> openRasterSource(const std::filesystem::path& path);
+Result<std::unique_ptr<RasterSource>> openRasterSource(const std::filesystem::path& path,
+                                                       const RasterOpenOptions& options = {});
 
 // If 1/step is within 1e-4 (relative) of an integer n, step := 1/n (unless that moves the last
 // sample by more than 5% of a step); then a first centre within 1e-3 of a step of a multiple of
@@ -81,10 +93,13 @@ class ColumnMappedSource : public RasterSource {
   const std::string& path() const override { return path_; }
   const SampleGrid& grid() const override { return published_.grid; }
   Result<void> readRow(int64_t row, int64_t firstColumn, int64_t count, int16_t* out) const final;
+  const VerticalUnits& verticalUnits() const override { return vertical_; }
 
  protected:
-  ColumnMappedSource(std::string path, const SampleGrid& nativeGrid)
-      : path_(std::move(path)), published_(publishGrid(nativeGrid)) {}
+  ColumnMappedSource(std::string path, const SampleGrid& nativeGrid, VerticalUnits vertical = {})
+      : path_(std::move(path)),
+        published_(publishGrid(nativeGrid)),
+        vertical_(std::move(vertical)) {}
   // Reads source columns [sourceColumn, sourceColumn + count) of grid row `row`, all in range.
   virtual Result<void> readSourceColumns(int64_t row, int64_t sourceColumn, int64_t count,
                                          int16_t* out) const = 0;
@@ -92,6 +107,7 @@ class ColumnMappedSource : public RasterSource {
  private:
   std::string path_;
   PublishedGrid published_;
+  VerticalUnits vertical_;
 };
 
 }  // namespace detail

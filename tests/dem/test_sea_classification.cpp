@@ -18,33 +18,68 @@ DemGrid flatCoarse(int16_t height) {
       20, 20, [=](int64_t, int64_t) { return height; }, 0.05, 9.8, 45.2);
 }
 
-TEST(SeaClassification, NoDataTouchingTheBorderIsSeaAndEnclosedNoDataIsAVoid) {
-  // West third no data (sea), land elsewhere with a no-data hole inside.
+TEST(SeaClassification, WithoutACoarserSourceNoDataIsAVoidNeverSea) {
+  // West third no data, land elsewhere with a no-data hole inside: nothing says sea.
   const DemGrid grid = makeGrid(30, 30, [](int64_t r, int64_t c) -> int16_t {
     if (c < 10) return kNoData;
     if (r >= 14 && r <= 16 && c >= 19 && c <= 21) return kNoData;
     return 500;
   });
   const SeaClassification result = classifySea(grid, nullptr);
-  EXPECT_EQ(result.classes[grid.index(5, 3)], SampleClass::Sea);
+  EXPECT_EQ(result.classes[grid.index(5, 3)], SampleClass::Void);
   EXPECT_EQ(result.classes[grid.index(15, 20)], SampleClass::Void);
   EXPECT_EQ(result.classes[grid.index(15, 25)], SampleClass::Land);
-  EXPECT_EQ(result.seaSamples, 300U);
-  EXPECT_EQ(result.voidSamples, 9U);
+  EXPECT_EQ(result.seaSamples, 0U);
+  EXPECT_EQ(result.outsideSamples, 0U);
+  EXPECT_EQ(result.voidSamples, 309U);
   EXPECT_EQ(result.noDataSamples, 309U);
 }
 
-TEST(SeaClassification, NoDataConnectedToTheBorderIsAVoidWhereTheCoarserSourceSaysLand) {
-  // A no-data gash from the border into a mountain; the coarser grid says 800 m everywhere.
-  const DemGrid grid = makeGrid(
-      30, 30, [](int64_t r, int64_t c) -> int16_t { return r == 15 && c < 20 ? kNoData : 900; });
+TEST(SeaClassification, NoDataReachingTheBorderIsOutsideTheFootprintWhereACoarserSourceCovers) {
+  // A no-data gash from the border into a mountain, and an enclosed hole; the coarser grid says
+  // 800 m everywhere: the gash shows the coarser source, the hole is a void, nothing is sea.
+  const DemGrid grid = makeGrid(30, 30, [](int64_t r, int64_t c) -> int16_t {
+    if (r == 15 && c < 20) return kNoData;
+    if (r == 5 && c == 5) return kNoData;
+    return 900;
+  });
   const DemGrid coarse = flatCoarse(800);
   const GridCoarserSources coarser({&coarse});
   const SeaClassification result = classifySea(grid, &coarser);
   EXPECT_EQ(result.seaSamples, 0U);
-  EXPECT_EQ(result.voidSamples, 20U);
-  // Without a coarser source the same gash reaches open sea: sea.
-  EXPECT_EQ(classifySea(grid, nullptr).seaSamples, 20U);
+  EXPECT_EQ(result.outsideSamples, 20U);
+  EXPECT_EQ(result.voidSamples, 1U);
+  EXPECT_EQ(result.classes[grid.index(15, 19)], SampleClass::Outside);
+  EXPECT_EQ(result.classes[grid.index(5, 5)], SampleClass::Void);
+  // Without a coarser source the same gash is a void too: never sea by connectivity.
+  const SeaClassification alone = classifySea(grid, nullptr);
+  EXPECT_EQ(alone.seaSamples, 0U);
+  EXPECT_EQ(alone.voidSamples, 21U);
+}
+
+TEST(SeaClassification, NoDataReachingTheBorderIsOutsideOverCoarserLandAndWaterAlike) {
+  // No data over the whole west half and an enclosed hole east; the coarser grid is water west
+  // of 10.125°E (columns < 12.5) and land east of it.
+  const DemGrid grid = makeGrid(30, 30, [](int64_t r, int64_t c) -> int16_t {
+    if (c < 15) return kNoData;
+    if (r == 20 && c == 22) return kNoData;
+    return 40;
+  });
+  const DemGrid coarse = makeGrid(
+      20, 20, [](int64_t, int64_t c) -> int16_t { return c < 4 ? terrain::encodeWater(-30) : 60; },
+      0.05, 9.8, 45.2);
+  const GridCoarserSources coarser({&coarse});
+  const SeaClassification result = classifySea(grid, &coarser);
+  for (int64_t r = 0; r < 30; ++r) {
+    for (int64_t c = 0; c < 15; ++c) {
+      const auto said = coarser.sample(grid.longitudeDegrees(c), grid.latitudeDegrees(r));
+      ASSERT_TRUE(said.has_value());
+      // Outside the footprint either way; water decided later by the bend from the coarser.
+      EXPECT_EQ(result.classes[grid.index(r, c)], SampleClass::Outside) << r << "," << c;
+    }
+  }
+  EXPECT_EQ(result.classes[grid.index(20, 22)], SampleClass::Void);
+  EXPECT_EQ(result.seaSamples, 0U);
 }
 
 TEST(SeaClassification, SrtmZeroMetreSeaIsSeaOnlyWhereTheCoarserSourceAllowsIt) {
@@ -86,22 +121,36 @@ TEST(SeaClassification, AnEnclosedDeepLargeBasinIsASeaAndASmallOneIsNot) {
 }
 
 TEST(SeaClassification, DiagonalChannelsConnectTheSea) {
-  // A sea reaching the border only through a one-sample diagonal channel.
+  // A 0 m sea reaching the border only through a one-sample diagonal channel.
   const DemGrid grid = makeGrid(20, 20, [](int64_t r, int64_t c) -> int16_t {
-    if (r >= 10 && r <= 15 && c >= 10 && c <= 15) return kNoData;
-    if (r == c && r < 10) return kNoData;
+    if (r >= 10 && r <= 15 && c >= 10 && c <= 15) return 0;
+    if (r == c && r < 10) return 0;
     return 200;
   });
-  EXPECT_EQ(classifySea(grid, nullptr).voidSamples, 0U);
+  EXPECT_EQ(classifySea(grid, nullptr).seaSamples, 46U);
+}
+
+TEST(SeaClassification, MeasuredZeroMetresReachingCoarserWaterIsSea) {
+  // An enclosed 0 m lagoon touching an enclosed no-data patch under coarser water: sea.
+  const DemGrid grid = makeGrid(30, 30, [](int64_t r, int64_t c) -> int16_t {
+    if (r >= 10 && r < 20 && c >= 10 && c < 20) return c < 15 ? kNoData : 0;
+    return 300;
+  });
+  const DemGrid sea = flatCoarse(terrain::encodeWater(-30));
+  const GridCoarserSources coarser({&sea});
+  const SeaClassification result = classifySea(grid, &coarser);
+  EXPECT_EQ(result.seaSamples, 100U);
+  EXPECT_EQ(result.classes[grid.index(15, 17)], SampleClass::Sea);
 }
 
 TEST(Condition, SeaIsWrittenAsWaterKeepingMeasuredDepthAndLandKeepsItsHeights) {
-  // Border-connected sea: no data, 0 m and -250 m; land at 10 m; a land depression at -5 m.
+  // Border-connected sea: 0 m and -250 m; land at 10 m; a land depression at -5 m; an enclosed
+  // no-data hole, a void: filled as land, not sea.
   DemGrid grid = makeGrid(10, 10, [](int64_t r, int64_t c) -> int16_t {
-    if (c == 0) return kNoData;
-    if (c == 1) return 0;
+    if (c == 1 || c == 0) return 0;
     if (c == 2) return -250;
     if (r == 5 && c == 7) return -5;
+    if (r == 2 && c == 6) return kNoData;
     return 10;
   });
   const ConditionStats stats = conditionGrid(grid, nullptr, {});
@@ -111,8 +160,24 @@ TEST(Condition, SeaIsWrittenAsWaterKeepingMeasuredDepthAndLandKeepsItsHeights) {
   EXPECT_EQ(terrain::seaFloorMeters(grid.at(3, 2)), -250.0);
   EXPECT_EQ(grid.at(5, 7), -5);
   EXPECT_EQ(grid.at(5, 8), 10);
+  EXPECT_EQ(grid.at(2, 6), 10);
   EXPECT_EQ(stats.seaSamples, 30U);
+  EXPECT_EQ(stats.voidSamples, 1U);
   EXPECT_FALSE(stats.allNoData());
+}
+
+TEST(Condition, NoDataUnderCoarserWaterIsThatWaterWithItsFloor) {
+  // An enclosed no-data patch in a 0 m bay; the coarser source is sea 30 m deep.
+  DemGrid grid = makeGrid(30, 30, [](int64_t r, int64_t c) -> int16_t {
+    if (r >= 10 && r < 20 && c >= 10 && c < 20) return kNoData;
+    return c > 20 ? 100 : 0;
+  });
+  const DemGrid sea = flatCoarse(terrain::encodeWater(-30));
+  const GridCoarserSources coarser({&sea});
+  conditionGrid(grid, &coarser, {});
+  EXPECT_TRUE(terrain::isWater(grid.at(15, 15)));
+  EXPECT_EQ(terrain::seaFloorMeters(grid.at(15, 15)), -30.0);
+  EXPECT_EQ(grid.at(15, 25), 100);
 }
 
 TEST(Condition, AllNoDataIsReported) {

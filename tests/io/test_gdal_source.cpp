@@ -388,7 +388,7 @@ TEST(GdalSource, NotARasterIsAnError) {
   TempDir tmp;
   test::writeText(tmp / "notes.txt", "These are not the heights you are looking for.\n");
   for (auto* opener : {&openGdalSource, &openRasterSource}) {
-    auto s = opener(tmp / "notes.txt");
+    auto s = opener(tmp / "notes.txt", {});
     ASSERT_FALSE(s.ok());
     EXPECT_NE(s.error().find((tmp / "notes.txt").string() + ": GDAL cannot open it as a raster"),
               std::string::npos)

@@ -1,6 +1,7 @@
 #include "tools/tiler/imagery_command.hpp"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -41,15 +42,21 @@ int runImageryCommand(int argc, char** argv) {
       "pack files, with layer.json.\n"
       "Inputs: any raster GDAL opens with colour (GeoTIFF in any CRS, JPEG/PNG with a world "
       "file, VRT mosaics) and TMS tile trees (a directory with tilemapresource.xml, geodetic, "
-      "256 px). Bands: red/green/blue(/alpha) by colour interpretation, else bands 1-3 as RGB; "
-      "one band is grey, a palette is expanded; only a band GDAL calls alpha is alpha. No data "
-      "and masks become transparent. The finest input wins where inputs overlap; its "
-      "transparent pixels let coarser ones show.\n"
+      "256 px). No data and masks become transparent. The finest input wins where inputs "
+      "overlap; its transparent pixels let coarser ones show.\n"
+      "Bands: --bands R,G,B[,A] when given; else GDAL's colour interpretation: red, green and "
+      "blue in any band order (BGR files draw right), a palette expanded. Otherwise one band is "
+      "grey, and three or more draw their first three (alpha aside) as red, green, blue, with a "
+      "warning naming them when the image has more. Alpha: the band GDAL calls alpha, or the A "
+      "of --bands.\n"
+      "Depth: 8-bit bands are drawn as they are; deeper ones (16-bit, float) are stretched per "
+      "band from its 2nd to its 98th percentile (whole band, no data excluded) to 0..255, or by "
+      "--scale MIN,MAX.\n"
       "Levels: each input down to the first level whose texel (tile width / 256) is no larger "
       "than its pixel after warping to longitude/latitude.",
       "globe-tiler imagery"};
   ImageryTilerOptions options;
-  std::string output, bounds, scale;
+  std::string output, bounds, bands, scale;
   uint32_t maxLevel = 0;
   app.add_option("-o,--output", output, "layer directory to create (or resume)")->required();
   app.add_option("INPUT", options.inputs, "rasters or TMS directories; the finest wins")
@@ -57,11 +64,14 @@ int runImageryCommand(int argc, char** argv) {
   auto* maxLevelOption =
       app.add_option("--max-level", maxLevel, "deepest level (default: from the finest input)");
   app.add_option("--bounds", bounds,
-                 "W,S,E,N in degrees for inputs without georeference (a plate carree image: "
-                 "pixel-is-area, EPSG:4326)");
+                 "W,S,E,N in degrees for the inputs without georeference (a plate carree image: "
+                 "pixel-is-area, EPSG:4326); an error when every input is georeferenced");
+  app.add_option("--bands", bands,
+                 "R,G,B or R,G,B,A: 1-based band numbers drawn as red, green, blue (and alpha) "
+                 "for every raster input, instead of their colour interpretation");
   app.add_option("--scale", scale,
-                 "stretch for 16-bit/float inputs: MIN,MAX maps linearly to 0..255 (every band), "
-                 "'auto' maps each band's 2-98 % percentiles");
+                 "stretch for 16-bit/float inputs: MIN,MAX maps linearly to 0..255 (every band); "
+                 "'auto' (the default) maps each band's 2-98 % percentiles");
   app.add_option("--quality", options.jpegQuality, "JPEG quality of opaque tiles (1..100)")
       ->capture_default_str();
   app.add_option("--pack-tiles", options.packTilesPerSide, "tiles per pack file side")
@@ -86,6 +96,22 @@ int runImageryCommand(int argc, char** argv) {
     }
     options.input.bounds = io::BoundsDegrees{(*b)[0], (*b)[1], (*b)[2], (*b)[3]};
   }
+  if (!bands.empty()) {
+    const auto numbers =
+        parseNumbers(bands, static_cast<size_t>(std::count(bands.begin(), bands.end(), ',')) + 1);
+    const bool valid = numbers && (numbers->size() == 3 || numbers->size() == 4) &&
+                       std::all_of(numbers->begin(), numbers->end(), [](double n) {
+                         return n >= 1 && n <= 65535 && n == std::floor(n);
+                       });
+    if (!valid) {
+      std::fprintf(stderr,
+                   "globe-tiler imagery: --bands must be R,G,B or R,G,B,A (1-based band numbers), "
+                   "not '%s'\n",
+                   bands.c_str());
+      return 2;
+    }
+    for (double n : *numbers) options.input.bands.push_back(static_cast<int>(n));
+  }
   if (scale == "auto") {
     options.input.scaleAuto = true;
   } else if (!scale.empty()) {
@@ -103,6 +129,9 @@ int runImageryCommand(int argc, char** argv) {
   if (!report) {
     std::fprintf(stderr, "globe-tiler imagery: %s\n", report.error().c_str());
     return 1;
+  }
+  for (const std::string& warning : report->warnings) {
+    std::fprintf(stderr, "globe-tiler imagery: warning: %s\n", warning.c_str());
   }
   std::printf(
       "%s: %llu tiles, levels 0-%u (%llu tiles built, %llu re-packed from TMS; %llu packs "

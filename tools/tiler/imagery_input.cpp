@@ -13,6 +13,7 @@
 
 #include "geo/tile_id.hpp"
 #include "tools/tiler/gdal_dataset.hpp"
+#include "tools/tiler/imagery_bands.hpp"
 
 namespace globe::tiler {
 namespace {
@@ -67,135 +68,6 @@ std::string wgs84Wkt() {
   return text;
 }
 
-std::string formatDouble(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.10g", value);
-  return text;
-}
-
-// Each band's 2 % and 98 % percentiles from GDAL's exact histogram (nodata excluded).
-Result<ImageryStretch> percentileStretch(GDALRasterBandH band, const std::string& name) {
-  double range[2] = {0, 0};
-  if (GDALComputeRasterMinMax(band, FALSE, range) != CE_None) {
-    return makeError(name +
-                     ": cannot compute the band's range for --scale auto: " + lastGdalError());
-  }
-  if (range[1] <= range[0]) return ImageryStretch{range[0], range[0] + 1};
-  constexpr int kBuckets = 4096;
-  std::vector<GUIntBig> histogram(kBuckets);
-  const double step = (range[1] - range[0]) / (kBuckets - 1);
-  if (GDALGetRasterHistogramEx(band, range[0] - step / 2, range[1] + step / 2, kBuckets,
-                               histogram.data(), FALSE, FALSE, nullptr, nullptr) != CE_None) {
-    return makeError(name +
-                     ": cannot compute the band's histogram for --scale auto: " + lastGdalError());
-  }
-  GUIntBig total = 0;
-  for (GUIntBig count : histogram) total += count;
-  auto percentile = [&](double fraction) {
-    GUIntBig seen = 0;
-    for (int i = 0; i < kBuckets; ++i) {
-      seen += histogram[static_cast<size_t>(i)];
-      if (static_cast<double>(seen) >= fraction * static_cast<double>(total)) {
-        return range[0] + i * step;
-      }
-    }
-    return range[1];
-  };
-  ImageryStretch stretch{percentile(0.02), percentile(0.98)};
-  if (stretch.maximum <= stretch.minimum) stretch.maximum = stretch.minimum + 1;
-  return stretch;
-}
-
-// Chooses the colour and alpha bands from GDAL's colour interpretation.
-Result<void> chooseBands(GDALDatasetH dataset, const std::string& name,
-                         const ImageryInputOptions& options, ImageryInput& input) {
-  const int count = GDALGetRasterCount(dataset);
-  if (count < 1) return makeError(name + ": has no raster bands");
-  int red = 0, green = 0, blue = 0;
-  for (int b = 1; b <= count; ++b) {
-    switch (GDALGetRasterColorInterpretation(GDALGetRasterBand(dataset, b))) {
-      case GCI_RedBand:
-        red = red != 0 ? red : b;
-        break;
-      case GCI_GreenBand:
-        green = green != 0 ? green : b;
-        break;
-      case GCI_BlueBand:
-        blue = blue != 0 ? blue : b;
-        break;
-      case GCI_AlphaBand:
-        input.alphaBand = input.alphaBand != 0 ? input.alphaBand : b;
-        break;
-      default:
-        break;
-    }
-  }
-  GDALRasterBandH first = GDALGetRasterBand(dataset, 1);
-  std::string bands;
-  if (red != 0 && green != 0 && blue != 0) {
-    input.colourBands = {red, green, blue};
-    bands = "RGB";
-  } else if (GDALGetRasterColorInterpretation(first) == GCI_PaletteIndex &&
-             GDALGetRasterColorTable(first) != nullptr) {
-    input.colourBands = {1};
-    input.palette = true;
-    bands = "palette";
-  } else if (count - (input.alphaBand != 0 ? 1 : 0) >= 3) {
-    // GDAL's convention when bands carry no colour interpretation (NAIP: gray, undefined...).
-    input.colourBands = {1, 2, 3};
-    if (input.alphaBand != 0 && input.alphaBand <= 3) {
-      return makeError(name + ": band " + std::to_string(input.alphaBand) +
-                       " is alpha but there is no red/green/blue colour interpretation");
-    }
-    bands = "bands 1,2,3 as RGB";
-  } else {
-    input.colourBands = {1};
-    bands = "grey";
-  }
-  if (input.alphaBand != 0) {
-    bands += " + alpha (band " + std::to_string(input.alphaBand) + ")";
-  } else {
-    const int flags = GDALGetMaskFlags(GDALGetRasterBand(dataset, input.colourBands[0]));
-    if ((flags & GMF_ALL_VALID) == 0) {
-      bands += (flags & GMF_NODATA) != 0 ? ", nodata transparent" : ", mask transparent";
-    }
-  }
-  if (count > static_cast<int>(input.colourBands.size()) + (input.alphaBand != 0 ? 1 : 0)) {
-    bands += " (other bands unused, none is alpha)";
-  }
-  input.info.bands = bands;
-
-  bool deep = false;
-  for (int b : input.colourBands) {
-    deep = deep || GDALGetRasterDataType(GDALGetRasterBand(dataset, b)) != GDT_Byte;
-  }
-  if (input.palette || !deep) {
-    if (options.scale || options.scaleAuto) input.info.stretch = "none (8-bit input)";
-    return {};
-  }
-  const char* type =
-      GDALGetDataTypeName(GDALGetRasterDataType(GDALGetRasterBand(dataset, input.colourBands[0])));
-  if (options.scale) {
-    input.stretches.assign(input.colourBands.size(), *options.scale);
-    input.info.stretch = "linear " + formatDouble(options.scale->minimum) + ".." +
-                         formatDouble(options.scale->maximum) + " to 0..255";
-  } else if (options.scaleAuto) {
-    input.info.stretch = "2-98% per band:";
-    for (int b : input.colourBands) {
-      auto stretch = percentileStretch(GDALGetRasterBand(dataset, b), name);
-      if (!stretch) return Error{stretch.error()};
-      input.stretches.push_back(*stretch);
-      input.info.stretch +=
-          " " + formatDouble(stretch->minimum) + ".." + formatDouble(stretch->maximum);
-    }
-  } else {
-    return makeError(name + ": " + type +
-                     " bands need a stretch to 8 bits: give --scale MIN,MAX (linear, every band) "
-                     "or --scale auto (each band's 2-98 % percentiles)");
-  }
-  return {};
-}
-
 Result<ImageryInput> describeRaster(const std::string& argument,
                                     const ImageryInputOptions& options) {
   ImageryInput input;
@@ -213,7 +85,9 @@ Result<ImageryInput> describeRaster(const std::string& argument,
   input.info.driver = GDALGetDriverShortName(GDALGetDatasetDriver(ds));
   input.info.columns = columns;
   input.info.rows = rows;
-  if (auto bands = chooseBands(ds, argument, options, input); !bands) return Error{bands.error()};
+  if (auto bands = chooseImageryBands(ds, argument, options, input); !bands) {
+    return Error{bands.error()};
+  }
 
   double geo[6];
   const bool hasGeoTransform = GDALGetGeoTransform(ds, geo) == CE_None;
@@ -374,6 +248,16 @@ Result<std::vector<ImageryInput>> describeImageryInputs(const std::vector<std::s
     input->naturalLevel = tms ? input->tmsMaxLevel : imageryFinestLevel(input->pixelDegrees);
     deepest = std::max(deepest, input->naturalLevel);
     inputs.push_back(std::move(*input));
+  }
+  // --bounds serves the inputs without georeference; given where none lacks it, it would be
+  // silently ignored.
+  if (options.bounds && std::none_of(inputs.begin(), inputs.end(), [](const ImageryInput& input) {
+        return input.assignedGeoTransform.has_value();
+      })) {
+    std::string names;
+    for (const ImageryInput& input : inputs) names += (names.empty() ? "" : ", ") + input.argument;
+    return makeError(names + (inputs.size() == 1 ? " is" : " are") +
+                     " georeferenced; --bounds is only for images without georeferencing");
   }
   for (ImageryInput& input : inputs) {
     input.finestLevel = input.naturalLevel;

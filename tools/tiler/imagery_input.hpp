@@ -23,10 +23,12 @@ struct ImageryStretch {
 };
 
 struct ImageryInputOptions {
-  // Georeference (EPSG:4326, pixel-is-area) for inputs that have none, e.g. a plate carrée JPEG.
+  // Georeference (EPSG:4326, pixel-is-area) for inputs that have none, e.g. a plate carrée JPEG;
+  // an error when every input has its own.
   std::optional<io::BoundsDegrees> bounds;
+  std::vector<int> bands;  // --bands R,G,B[,A]: 1-based, for every raster input; empty: chosen
   std::optional<ImageryStretch> scale;  // --scale MIN,MAX for every band of 16-bit/float inputs
-  bool scaleAuto = false;               // --scale auto: each band's 2–98 % percentiles
+  bool scaleAuto = false;  // --scale auto: each band's 2–98 % percentiles (also the default)
   std::optional<uint32_t> maxLevel;
 };
 
@@ -58,6 +60,7 @@ struct ImageryInput {
   uint32_t naturalLevel = 0;  // imageryFinestLevel(pixelDegrees)
   uint32_t finestLevel = 0;   // after --max-level
   io::ImagerySourceInfo info;
+  std::vector<std::string> warnings;  // one line each, naming the input
 };
 
 // Whether the input's footprint (either part) overlaps the rectangle.

@@ -312,6 +312,9 @@ Result<ImageryTilerReport> runImageryTiler(const ImageryTilerOptions& options) {
 
   ImageryTilerReport report;
   report.maxLevel = plan.maxLevel();
+  for (const ImageryInput& input : inputs) {
+    report.warnings.insert(report.warnings.end(), input.warnings.begin(), input.warnings.end());
+  }
   ProgressBar progress(plan.tileCount(), options.progress && ::isatty(STDERR_FILENO) != 0);
   const TileMaker maker{inputs, finestFirst, plan, options.jpegQuality};
   io::LayerManifest manifest;

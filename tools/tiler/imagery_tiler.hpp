@@ -16,7 +16,7 @@ namespace globe::tiler {
 struct ImageryTilerOptions {
   std::vector<std::string> inputs;
   std::filesystem::path outputDir;
-  ImageryInputOptions input;  // --bounds, --scale, --max-level
+  ImageryInputOptions input;  // --bounds, --bands, --scale, --max-level
   uint32_t packTilesPerSide = 16;
   int jpegQuality = 85;
   unsigned threads = 0;  // 0 = every core
@@ -31,6 +31,7 @@ struct ImageryTilerReport {
   uint64_t packsReused = 0;  // complete packs found from an earlier, interrupted run
   uint32_t maxLevel = 0;
   double seconds = 0;
+  std::vector<std::string> warnings;  // one line each, naming the input (a guessed band choice)
 };
 
 Result<ImageryTilerReport> runImageryTiler(const ImageryTilerOptions& options);

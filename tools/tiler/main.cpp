@@ -64,9 +64,41 @@ int main(int argc, char** argv) {
   app.add_option("-j,--threads", options.threads, "worker threads (default: every core)");
   app.add_option("--globe", globeName, "globe model recorded in the manifest: wgs84 | sphere")
       ->capture_default_str();
+  std::string zUnits;
+  double zScale = 1;
+  auto* zUnitsOption = app.add_option(
+      "--z-units", zUnits,
+      "m | ft | us-ft: the unit of every input's heights, instead of the unit each file states "
+      "(GDAL unit type; none = m; an unknown one is an error). Band scale/offset still apply");
+  auto* zScaleOption = app.add_option("--z-scale", zScale,
+                                      "metres per stored unit (after the band's scale/offset) for "
+                                      "every input; replaces any unit")
+                           ->excludes(zUnitsOption);
+  app.add_flag("--no-data-is-sea", options.noDataIsSea,
+               "every input's no data is water (an explicit water code), not missing data");
   bool quiet = false;
   app.add_flag("-q,--quiet", quiet, "no progress bar");
+  app.footer(
+      "How inputs are drawn:\n"
+      "  - The finest input covering a point wins and is drawn as it is inside its footprint "
+      "(where "
+      "it has data).\n"
+      "  - Sea only where something says sea: a measured height <= 0 m connected to open water; an "
+      "explicit water code (GTOPO30's own 30\" grids, whose -9999 is the ocean mask, or any "
+      "input's no data with --no-data-is-sea); or a coarser input's surface there at or below "
+      "0 m. No data is never sea by connectivity alone.\n"
+      "  - No data reaching a raster's border (reprojection wedges, a blanked part, clipped "
+      "corners) is outside its footprint: coarser inputs show through. No data enclosed by data "
+      "is a void, filled (from a coarser input's shape where one covers it); with no coarser "
+      "input every void is filled.\n"
+      "  - Outside a finer input, coarser ones bend to meet its edge over 1.5 of their own cells: "
+      "no wall, no moat; finer land meeting coarser water becomes a shore sloping into it.\n"
+      "  - Heights: the GDAL unit type (m, ft, US survey foot) and band scale/offset are applied; "
+      "--z-units/--z-scale override; an unknown unit is an error.\n"
+      "  - A raster with fewer than 2x2 valid samples is refused.");
   CLI11_PARSE(app, argc, argv);
+  if (zUnitsOption->count() > 0) options.vertical.units = zUnits;
+  if (zScaleOption->count() > 0) options.vertical.metersPerUnit = zScale;
 
   options.outputDir = output;
   options.progress = !quiet;

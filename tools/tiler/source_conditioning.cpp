@@ -80,21 +80,11 @@ Result<std::vector<io::SourceConditioning>> conditionSources(std::vector<TilerSo
     for (size_t j : coarser[i]) coarserGrids.push_back(grids[j].get());
     const dem::GridCoarserSources coarserSources(coarserGrids);
     dem::ConditionOptions conditionOptions;
+    conditionOptions.noDataIsWater = source.noDataIsWater;
     if (!coarser[i].empty()) {
-      const double side = std::min(source.extent.east - source.extent.west,
-                                   source.extent.north - source.extent.south);
-      conditionOptions.blendMarginDegrees =
-          std::min(kBlendMarginCoarserCells * sources[coarser[i].front()].stepDegrees,
-                   kBlendMarginMaximumFraction * side);
+      conditionOptions.bendMarginDegrees =
+          kBendMarginCoarserCells * sources[coarser[i].front()].stepDegrees;
     }
-    conditionOptions.sameOrFinerCovers = [&sources, i](double longitude, double latitude) {
-      for (size_t j = 0; j < sources.size(); ++j) {
-        if (j == i) continue;
-        if (sources[j].stepDegrees > sources[i].stepDegrees * (1 + kSameStepTolerance)) break;
-        if (sources[j].covers(longitude, latitude)) return true;
-      }
-      return false;
-    };
     const dem::ConditionStats stats = dem::conditionGrid(
         *grid, coarserGrids.empty() ? nullptr : &coarserSources, conditionOptions);
     report[i] = {stats.noDataSamples,
@@ -103,8 +93,9 @@ Result<std::vector<io::SourceConditioning>> conditionSources(std::vector<TilerSo
                  stats.fill.interpolatedSamples,
                  stats.fill.fromCoarserSamples,
                  stats.fill.unfilledSamples,
-                 stats.blendedSamples,
-                 conditionOptions.blendMarginDegrees};
+                 stats.outsideSamples,
+                 conditionOptions.bendMarginDegrees,
+                 source.noDataIsWater};
     grids[i] = std::move(grid);
     return keepOrSpill(i);
   };
@@ -147,7 +138,15 @@ Result<std::vector<io::SourceConditioning>> conditionSources(std::vector<TilerSo
     end = begin;
   }
 
-  for (size_t i = 0; i < count; ++i) sources[i].featherMarginDegrees = report[i].blendMarginDegrees;
+  for (size_t i = 0; i < count; ++i) {
+    TilerSource& source = sources[i];
+    source.bendMarginDegrees = report[i].bendMarginDegrees;
+    if (source.bendMarginDegrees > 0 && !source.grid.wrapsLongitude) {
+      auto edges = readEdgeProfiles(*source.raster);
+      if (!edges) return Error{edges.error()};
+      source.edges = std::make_shared<const EdgeProfiles>(std::move(*edges));
+    }
+  }
   for (TilerSource& source : sources) {
     // The poles' one value, from the conditioned polar rows.
     if (source.northPoleHeight) {

@@ -1,6 +1,6 @@
 // Conditions the tiler's sources before tiling (dem/condition.hpp): each is read into memory
-// and, from the coarsest to the finest, its sea told from its voids, its voids filled and its
-// edges eased into the coarser sources, using the coarser sources as already conditioned. Each
+// and, from the coarsest to the finest, its sea told from its voids, its voids filled and, outside
+// its footprint, the coarser sources (as already conditioned) bent to meet its edge. Each
 // source's raster is then replaced by its conditioned copy, so the sampler sees only these.
 #pragma once
 
@@ -14,11 +14,9 @@
 
 namespace globe::tiler {
 
-// Blend margin: this many of the next coarser source's cells...
-inline constexpr double kBlendMarginCoarserCells = 3.0;
-// ...but at most this fraction of the finer source's smaller side, so a small fine source (one
-// SRTM degree under a 20′ grid) keeps most of its own detail.
-inline constexpr double kBlendMarginMaximumFraction = 0.1;
+// Outside a finer source's footprint the coarser surface bends to meet its edge over this many of
+// the next coarser source's cells: the coarser source places its features within about a cell.
+inline constexpr double kBendMarginCoarserCells = 1.5;
 
 struct ConditioningOptions {
   unsigned threads = 1;  // equally fine sources are conditioned in parallel

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "dem/source_blend.hpp"
+#include "dem/footprint_bend.hpp"
 #include "dem/vertex_sample.hpp"
 #include "terrain/height_block.hpp"
 
@@ -32,24 +32,59 @@ double rowOf(const io::SampleGrid& grid, double latitudeDegrees) {
   return std::clamp(offset / grid.rowStepDegrees, 0.0, static_cast<double>(grid.rows - 1));
 }
 
+// Whether the point lies between the grid's first and last sample centres (not in the half-cell
+// rim its cells reach beyond them, where its samples can only be clamped).
+bool betweenSampleCentres(const io::SampleGrid& grid, double longitudeDegrees,
+                          double latitudeDegrees) {
+  const double row = (grid.firstRowLatitudeDegrees - latitudeDegrees) / grid.rowStepDegrees;
+  if (row < 0 || row > static_cast<double>(grid.rows - 1)) return false;
+  if (grid.wrapsLongitude) return true;
+  const double column =
+      (longitudeDegrees - grid.firstColumnLongitudeDegrees) / grid.columnStepDegrees;
+  return column >= 0 && column <= static_cast<double>(grid.cols - 1);
+}
+
+// The finer source's edge as the ground outside it bends to (tools/tiler/edge_profile.hpp): at
+// distance d beyond a side, that side's heights averaged over d each way along it; beyond a
+// corner, both sides' averages mixed by how far the point lies beyond each.
+double edgeHeightMeters(const TilerSource& finer, double longitudeDegrees, double latitudeDegrees) {
+  const io::SampleGrid& grid = finer.grid;
+  const io::BoundsDegrees& e = finer.extent;
+  const double dx = std::max({e.west - longitudeDegrees, 0.0, longitudeDegrees - e.east});
+  const double dy = std::max({e.south - latitudeDegrees, 0.0, latitudeDegrees - e.north});
+  const double distance = std::hypot(dx, dy);
+  const double column =
+      (longitudeDegrees - grid.firstColumnLongitudeDegrees) / grid.columnStepDegrees;
+  const double row = (grid.firstRowLatitudeDegrees - latitudeDegrees) / grid.rowStepDegrees;
+  const EdgeProfiles& edges = *finer.edges;
+  const double beside = (longitudeDegrees < e.west ? edges.west : edges.east)
+                            .meanMeters(row, distance / grid.rowStepDegrees);
+  const double beyond = (latitudeDegrees > e.north ? edges.north : edges.south)
+                            .meanMeters(column, distance / grid.columnStepDegrees);
+  if (dx <= 0) return beyond;
+  if (dy <= 0) return beside;
+  return (dx * beside + dy * beyond) / (dx + dy);
+}
+
 }  // namespace
 
-double featherWeight(const TilerSource& finer, double longitudeDegrees, double latitudeDegrees) {
+double bendWeightOutside(const TilerSource& finer, double longitudeDegrees,
+                         double latitudeDegrees) {
   const io::BoundsDegrees& e = finer.extent;
   const double dx = std::max({e.west - longitudeDegrees, 0.0, longitudeDegrees - e.east});
   const double dy = std::max({e.south - latitudeDegrees, 0.0, latitudeDegrees - e.north});
   const double outside = std::hypot(dx, dy);
-  if (outside <= 0 || outside >= finer.featherMarginDegrees) return 0.0;
-  return 1.0 - dem::smoothstep(outside / finer.featherMarginDegrees);
+  if (outside <= 0) return 0.0;
+  return dem::bendWeight(outside, finer.bendMarginDegrees);
 }
 
 SourceSampler::SourceSampler(const std::vector<TilerSource>& sources, uint32_t maxFinestLevel,
                              double stripWestDegrees, double stripEastDegrees) {
   for (const TilerSource& source : sources) {
-    // A source finer than this level still shapes the ground around its edges (the feather).
-    const bool featherOnly = source.finestLevel > maxFinestLevel;
-    if (featherOnly && !(source.featherMarginDegrees > 0)) continue;
-    const double reach = source.featherMarginDegrees;
+    // A source finer than this level still shapes the ground around its edges (the bend).
+    const bool bendOnly = source.finestLevel > maxFinestLevel;
+    if (bendOnly && !(source.bendMarginDegrees > 0)) continue;
+    const double reach = source.bendMarginDegrees;
     const io::SampleGrid& grid = source.grid;
     if (!grid.wrapsLongitude && (source.extent.east + reach < stripWestDegrees ||
                                  source.extent.west - reach > stripEastDegrees)) {
@@ -59,18 +94,17 @@ SourceSampler::SourceSampler(const std::vector<TilerSource>& sources, uint32_t m
     const int64_t first = floorToInt(columnOf(grid, stripWestDegrees)) - 1;
     const double spanColumns = (stripEastDegrees - stripWestDegrees) / grid.columnStepDegrees;
     int64_t count = static_cast<int64_t>(std::ceil(spanColumns)) + 3;
-    Candidate candidate{&source, 0, grid.cols, featherOnly};
+    Candidate candidate{&source, 0, grid.cols, bendOnly};
     if (grid.wrapsLongitude) {
-      if (count < grid.cols)
-        candidate = {&source, wrapColumn(first, grid.cols), count, featherOnly};
+      if (count < grid.cols) candidate = {&source, wrapColumn(first, grid.cols), count, bendOnly};
     } else {
       const int64_t begin = std::clamp<int64_t>(first, 0, grid.cols - 1);
       const int64_t end = std::clamp<int64_t>(first + count, begin + 1, grid.cols);
-      candidate = {&source, begin, end - begin, featherOnly};
+      candidate = {&source, begin, end - begin, bendOnly};
     }
-    // Sources whose edges shape the ground around them (the feather), listed once per strip.
-    if (source.featherMarginDegrees > 0 && !grid.wrapsLongitude) {
-      featherCandidates_.push_back(candidates_.size());
+    // Sources whose edges shape the ground around them (the bend), listed once per strip.
+    if (source.bendMarginDegrees > 0 && !grid.wrapsLongitude) {
+      bendCandidates_.push_back(candidates_.size());
     }
     candidates_.push_back(candidate);
   }
@@ -129,32 +163,38 @@ Result<int16_t> SourceSampler::sampleSource(const Candidate& c, double longitude
 }
 
 Result<int16_t> SourceSampler::sample(double longitudeDegrees, double latitudeDegrees) {
+  // The finest covering source wins; among equally fine ones, one whose samples surround the
+  // point beats one that reaches it only with its rim (two adjacent SRTM tiles: each is drawn
+  // from its own samples up to the shared line).
   const Candidate* chosen = nullptr;
   for (const Candidate& c : candidates_) {
-    if (!c.featherOnly && c.source->covers(longitudeDegrees, latitudeDegrees)) {
+    if (c.bendOnly || !c.source->covers(longitudeDegrees, latitudeDegrees)) continue;
+    if (chosen != nullptr && c.source->stepDegrees > chosen->source->stepDegrees * (1 + 1e-6)) {
+      break;
+    }
+    if (chosen == nullptr) chosen = &c;
+    if (betweenSampleCentres(c.source->grid, longitudeDegrees, latitudeDegrees)) {
       chosen = &c;
       break;
     }
   }
   if (chosen == nullptr) return terrain::kNoDataHeight;
   auto value = sampleSource(*chosen, longitudeDegrees, latitudeDegrees);
-  if (!value || terrain::isWater(*value)) return value;
+  if (!value) return value;
 
-  // Land just outside a finer source eases towards that source's edge (water there at 0 m), so
-  // the two meet where they disagree about the coast instead of leaving a cliff at the edge.
+  // Just outside a finer source the coarser surface bends to meet that source's edge (a shore
+  // where one side is water), so the two meet without a wall or a moat at the edge.
   const Candidate* nearest = nullptr;
   double weight = 0;
-  for (size_t index : featherCandidates_) {
+  for (size_t index : bendCandidates_) {
     const Candidate& c = candidates_[index];
     if (!(c.source->stepDegrees < chosen->source->stepDegrees)) continue;
-    const double w = featherWeight(*c.source, longitudeDegrees, latitudeDegrees);
+    const double w = bendWeightOutside(*c.source, longitudeDegrees, latitudeDegrees);
     if (w > weight) weight = w, nearest = &c;
   }
-  if (nearest == nullptr) return value;
-  auto edge = sampleSource(*nearest, longitudeDegrees, latitudeDegrees);
-  if (!edge) return edge;
-  const double here = terrain::surfaceHeightMeters(*value);
-  return dem::landSample(here + weight * (terrain::surfaceHeightMeters(*edge) - here));
+  if (nearest == nullptr || !nearest->source->edges) return value;
+  const double edgeMeters = edgeHeightMeters(*nearest->source, longitudeDegrees, latitudeDegrees);
+  return dem::bentSample(*value, weight * (edgeMeters - terrain::seaFloorMeters(*value)));
 }
 
 }  // namespace globe::tiler

@@ -1,6 +1,7 @@
 // Samples the tiler's sources at vertex positions: the finest covering source wins, its 2×2
-// samples turned into a vertex by dem/vertex_sample.hpp's rule; land within a finer source's
-// feather margin outside it eases towards that source's edge. Caches source rows for one
+// samples turned into a vertex by dem/vertex_sample.hpp's rule; within a finer source's bend
+// margin outside its rectangle, the surface bends to meet that source's edge
+// (dem/footprint_bend.hpp). Caches source rows for one
 // strip of tiles so a strip costs a few row reads per source, not one read per vertex.
 #pragma once
 
@@ -14,8 +15,8 @@
 namespace globe::tiler {
 
 // How much a vertex outside a finer source takes that source's edge: 1 at its edge, easing
-// (smoothstep) to 0 at its feather margin; 0 inside it.
-double featherWeight(const TilerSource& finer, double longitudeDegrees, double latitudeDegrees);
+// (smoothstep) to 0 at its bend margin; 0 inside it.
+double bendWeightOutside(const TilerSource& finer, double longitudeDegrees, double latitudeDegrees);
 
 class SourceSampler {
  public:
@@ -35,7 +36,7 @@ class SourceSampler {
     const TilerSource* source;
     int64_t firstColumn;  // of the cached row segments, in [0, cols)
     int64_t columnCount;
-    bool featherOnly = false;  // finer than this level: read only for the feather at its edge
+    bool bendOnly = false;  // finer than this level: read only for the bend at its edge
   };
   struct CachedRow {
     std::vector<int16_t> samples;
@@ -48,7 +49,7 @@ class SourceSampler {
              int64_t column) const;
 
   std::vector<Candidate> candidates_;
-  std::vector<size_t> featherCandidates_;  // indices into candidates_
+  std::vector<size_t> bendCandidates_;  // indices into candidates_
   std::map<std::pair<size_t, int64_t>, CachedRow> rows_;
   uint64_t rowReads_ = 0;
 };

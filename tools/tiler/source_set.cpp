@@ -35,8 +35,57 @@ bool TilerSource::covers(double longitudeDegrees, double latitudeDegrees) const 
 }
 
 io::SourceInfo TilerSource::info() const {
-  return {argument,    std::string(raster->formatName()), grid.cols, grid.rows, stepDegrees, extent,
-          finestLevel, io::SourceConditioning{}};
+  io::SourceInfo info;
+  info.path = argument;
+  info.format = std::string(raster->formatName());
+  info.columns = grid.cols;
+  info.rows = grid.rows;
+  info.stepDegrees = stepDegrees;
+  info.bounds = extent;
+  info.finestLevel = finestLevel;
+  info.verticalUnits = verticalUnits;
+  return info;
+}
+
+Result<void> checkValidSamples(const io::RasterSource& raster) {
+  const io::SampleGrid& g = raster.grid();
+  const auto refuse = [&](const std::string& why) {
+    return makeError(raster.path() + ": fewer than 2x2 valid samples (" + why +
+                     "); nothing to tile");
+  };
+  if (g.cols < 2 || g.rows < 2) {
+    return refuse("the raster is " + std::to_string(g.cols) + "x" + std::to_string(g.rows));
+  }
+  std::vector<int16_t> samples(static_cast<size_t>(g.cols));
+  int64_t valid = 0, rowsWithValid = 0;
+  int64_t westmost = g.cols, eastmost = -1;  // columns of the valid samples seen
+  for (int64_t row = 0; row < g.rows; ++row) {
+    if (auto read = raster.readRow(row, 0, g.cols, samples.data()); !read) return read;
+    bool rowHasValid = false;
+    for (int64_t column = 0; column < g.cols; ++column) {
+      if (samples[static_cast<size_t>(column)] == terrain::kNoDataHeight) continue;
+      ++valid;
+      rowHasValid = true;
+      westmost = std::min(westmost, column);
+      eastmost = std::max(eastmost, column);
+    }
+    rowsWithValid += rowHasValid ? 1 : 0;
+    if (valid >= 4 && rowsWithValid >= 2 && eastmost > westmost) return {};
+  }
+  if (valid == 0) return {};  // all no data: tiled, with the tiler's warning
+  return refuse(std::to_string(valid) + " valid, in " + std::to_string(rowsWithValid) +
+                (rowsWithValid == 1 ? " row" : " rows") + " and " +
+                (eastmost > westmost ? "several columns" : "one column"));
+}
+
+bool noDataIsOceanMask(const io::RasterSource& raster) {
+  constexpr double kThirtySecondsDegrees = 1.0 / 120.0;
+  const io::SampleGrid& g = raster.grid();
+  auto isThirtySeconds = [&](double step) {
+    return std::abs(step - kThirtySecondsDegrees) < 1e-9 * kThirtySecondsDegrees;
+  };
+  return raster.formatName() == "GTOPO30" && isThirtySeconds(g.columnStepDegrees) &&
+         isThirtySeconds(g.rowStepDegrees);
 }
 
 uint32_t finestLevelForStep(double stepDegrees, uint32_t verticesPerSide) {
@@ -52,11 +101,17 @@ uint32_t finestLevelForStep(double stepDegrees, uint32_t verticesPerSide) {
 Result<std::vector<TilerSource>> openSources(const std::vector<std::string>& inputs,
                                              const SourceSetOptions& options) {
   if (inputs.empty()) return makeError("no input rasters given");
+  if (auto checked = io::checkVerticalOverride(options.vertical); !checked) {
+    return Error{checked.error()};
+  }
   std::vector<TilerSource> sources;
   for (const std::string& input : inputs) {
-    auto raster = io::openRasterSource(input);
+    auto raster = io::openRasterSource(input, io::RasterOpenOptions{options.vertical});
     if (!raster) return Error{raster.error()};
+    if (auto enough = checkValidSamples(**raster); !enough) return Error{enough.error()};
     TilerSource source;
+    source.noDataIsWater = options.noDataIsSea || noDataIsOceanMask(**raster);
+    source.verticalUnits = (*raster)->verticalUnits();
     source.grid = (*raster)->grid();
     source.raster = std::move(*raster);
     source.argument = input;

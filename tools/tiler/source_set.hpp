@@ -11,6 +11,7 @@
 #include "geo/result.hpp"
 #include "io/pyramid_manifest.hpp"
 #include "io/raster_source.hpp"
+#include "tools/tiler/edge_profile.hpp"
 
 namespace globe::tiler {
 
@@ -23,9 +24,15 @@ struct TilerSource {
   io::BoundsDegrees extent;  // closed: the cells' extent, longitude ignored when wrapping
   // Height shared by every vertex at an exact pole this source covers, so a pole is one point.
   std::optional<int16_t> northPoleHeight, southPoleHeight;
-  // Set by the conditioning: the margin over which this source is eased into coarser ones, inside
-  // its edges, and coarser land outside it towards its edge (0: no coarser source around).
-  double featherMarginDegrees = 0;
+  // Set by the conditioning: the margin over which coarser sources outside this one bend to meet
+  // its edge (0: no coarser source around).
+  double bendMarginDegrees = 0;
+  // Its no data is an explicit water code, not voids (GTOPO30's ocean mask; tiler.hpp).
+  bool noDataIsWater = false;
+  // Set by the conditioning where bendMarginDegrees is: the edges the ground outside bends to.
+  std::shared_ptr<const EdgeProfiles> edges;
+  io::VerticalUnits verticalUnits;  // how the raster's values became metres (kept: conditioning
+                                    // replaces `raster` with its own copy)
 
   bool covers(double longitudeDegrees, double latitudeDegrees) const;
   io::SourceInfo info() const;
@@ -42,7 +49,18 @@ uint32_t finestLevelForStep(double stepDegrees, uint32_t verticesPerSide);
 struct SourceSetOptions {
   uint32_t verticesPerSide = 17;
   std::optional<uint32_t> maxLevel;  // caps every source's finest level
+  io::VerticalOverride vertical{};   // --z-units / --z-scale, for every input
+  bool noDataIsSea = false;          // --no-data-is-sea: every input's no data is water
 };
+
+// GTOPO30 itself (a 30″ grid in GTOPO30's format) has no voids: its -9999 is the ocean mask, an
+// explicit water code. Other rasters' no data is missing data.
+bool noDataIsOceanMask(const io::RasterSource& raster);
+
+// Refuses a raster whose valid (not no-data) samples cannot make one 2x2 cell: fewer than 4, or
+// all in one row or one column. Reads rows only until it has seen enough. A raster with no valid
+// sample at all passes (the tiler warns about it: all sea, or filled from a coarser source).
+Result<void> checkValidSamples(const io::RasterSource& raster);
 
 // Opens every input; sorted finest first (ties keep command-line order) so the finest source
 // covering a point wins.

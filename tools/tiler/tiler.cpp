@@ -15,6 +15,7 @@
 #include "io/atomic_file.hpp"
 #include "io/pack_format.hpp"
 #include "io/pyramid_manifest.hpp"
+#include "io/vertical_units.hpp"
 #include "tools/tiler/pack_builder.hpp"
 #include "tools/tiler/progress.hpp"
 #include "tools/tiler/source_conditioning.hpp"
@@ -28,8 +29,8 @@ namespace {
 namespace fs = std::filesystem;
 constexpr const char* kPlanFileName = "tiling-plan.json";
 constexpr uint64_t kMaxPackBytes = uint64_t{1} << 33;
-// Names the sea/void/fill/blend rules: a pyramid resumed under other rules would mix them.
-constexpr const char* kConditioningVersion = "sea-void-fill-blend 1";
+// Names the sea/void/fill/footprint rules: a pyramid resumed under other rules would mix them.
+constexpr const char* kConditioningVersion = "sea-void-fill-footprint 2";
 
 // What the manifest needs from one finished pack.
 struct PackSummary {
@@ -67,7 +68,9 @@ std::string planFingerprint(const TilerOptions& options, const std::vector<Tiler
                       {"columns", s.grid.cols},
                       {"rows", s.grid.rows},
                       {"stepDegrees", s.stepDegrees},
-                      {"finestLevel", s.finestLevel}});
+                      {"finestLevel", s.finestLevel},
+                      {"noDataIsWater", s.noDataIsWater},
+                      {"verticalUnits", io::describe(s.verticalUnits)}});
   }
   const nlohmann::json plan = {
       {"inputs", inputs},
@@ -184,7 +187,8 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
     return makeError("--max-level must be at most " + std::to_string(geo::kMaxLevel));
   }
   TilerReport report;
-  auto opened = openSources(options.inputs, {options.verticesPerSide, options.maxLevel});
+  auto opened = openSources(options.inputs, {options.verticesPerSide, options.maxLevel,
+                                             options.vertical, options.noDataIsSea});
   if (!opened) return Error{opened.error()};
   std::vector<TilerSource>& sources = *opened;
   std::vector<io::BoundsDegrees> extents;

@@ -10,6 +10,7 @@
 
 #include "geo/ellipsoid.hpp"
 #include "geo/result.hpp"
+#include "io/vertical_units.hpp"
 
 namespace globe::tiler {
 
@@ -20,8 +21,10 @@ struct TilerOptions {
   uint32_t packTilesPerSide = 64;
   std::optional<uint32_t> maxLevel;
   geo::GlobeModel globeModel = geo::GlobeModel::Wgs84;
-  unsigned threads = 0;  // 0 = every core
-  bool progress = true;  // drawn only when stderr is a terminal
+  unsigned threads = 0;             // 0 = every core
+  bool progress = true;             // drawn only when stderr is a terminal
+  io::VerticalOverride vertical{};  // --z-units / --z-scale: replace every input's own unit
+  bool noDataIsSea = false;         // --no-data-is-sea: every input's no data is water
 };
 
 struct TilerReport {

@@ -18,6 +18,7 @@
 #include "io/crc32.hpp"
 #include "io/image_io.hpp"
 #include "io/imagery_store.hpp"
+#include "tests/tools/tiler/imagery_test_support.hpp"
 #include "tests/tools/tiler/tiler_test_fixture.hpp"
 #include "tools/tiler/imagery_encoding.hpp"
 #include "tools/tiler/imagery_reader.hpp"
@@ -32,46 +33,10 @@ std::string fixture(const std::string& name) {
   return std::string(GLOBE_SOURCE_DIR) + "/tests/data/imagery/" + name;
 }
 
-Result<ImageryTilerReport> tileLayer(const std::vector<std::string>& inputs, const fs::path& out,
-                                     ImageryTilerOptions options = {}) {
-  options.inputs = inputs;
-  options.outputDir = out;
-  options.progress = false;
-  if (options.threads == 0) options.threads = 2;
-  return runImageryTiler(options);
-}
-
-fs::path layerOf(const std::vector<std::string>& inputs, const std::string& name,
-                 ImageryTilerOptions options = {}) {
-  const fs::path out = testing::freshTempDir("imagery-" + name) / "layer";
-  auto report = tileLayer(inputs, out, options);
-  EXPECT_TRUE(report) << report.error();
-  return out;
-}
-
-// Every present tile of a level, decoded.
-std::map<geo::TileId, io::ImageRgba> tilesOf(io::ImageryStore& store, uint32_t level) {
-  std::map<geo::TileId, io::ImageRgba> tiles;
-  const uint32_t p = store.manifest().packTilesPerSide;
-  for (const io::PackId& pack : store.manifest().levels.at(level).packs) {
-    for (size_t slot = 0; slot < size_t{p} * p; ++slot) {
-      const geo::TileId tile = io::tileOfSlot(pack, slot, p);
-      auto bytes = store.loadEncoded(tile);
-      EXPECT_TRUE(bytes) << bytes.error();
-      if (!bytes || !*bytes) continue;
-      auto image = io::decodeImageRgba(**bytes, "tile");
-      EXPECT_TRUE(image) << image.error();
-      if (image) tiles.emplace(tile, std::move(*image));
-    }
-  }
-  return tiles;
-}
-
-std::unique_ptr<io::ImageryStore> openStore(const fs::path& dir) {
-  auto store = io::ImageryStore::open(dir);
-  EXPECT_TRUE(store) << store.error();
-  return store ? std::move(*store) : nullptr;
-}
+using testing::layerOf;
+using testing::openStore;
+using testing::tileLayer;
+using testing::tilesOf;
 
 // An independent reading of a source raster: OGR takes a lon/lat to the source CRS, the inverse
 // geotransform to a pixel, GDAL reads the 2×2 neighbours and they are blended bilinearly.
@@ -261,14 +226,13 @@ TEST(ImageryTiler, ImageWithoutGeoreferenceNeedsBounds) {
   EXPECT_EQ(store->manifest().sources[0].bounds, (io::BoundsDegrees{10, 20, 16, 24.5}));
 }
 
-TEST(ImageryTiler, SixteenBitNeedsAStretch) {
+TEST(ImageryTiler, SixteenBitIsStretchedByAStatedRule) {
+  // By default each band's 2-98 % percentiles (was: refused without --scale).
   const std::string input = fixture("zion_landsat_b4_uint16_crop.tif");
-  const fs::path out = testing::freshTempDir("imagery-uint16") / "layer";
-  auto refused = tileLayer({input}, out);
-  ASSERT_FALSE(refused);
-  EXPECT_NE(refused.error().find(input), std::string::npos) << refused.error();
-  EXPECT_NE(refused.error().find("UInt16"), std::string::npos) << refused.error();
-  EXPECT_NE(refused.error().find("--scale"), std::string::npos) << refused.error();
+  auto defaultStore = openStore(layerOf({input}, "uint16-default"));
+  ASSERT_TRUE(defaultStore);
+  EXPECT_EQ(defaultStore->manifest().sources[0].stretch.rfind("2-98% per band: ", 0), 0u)
+      << defaultStore->manifest().sources[0].stretch;
 
   ImageryTilerOptions linear;
   linear.input.scale = ImageryStretch{5678, 21574};  // the crop's range

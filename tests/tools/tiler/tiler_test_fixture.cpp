@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "io/atomic_file.hpp"
 #include "io/crc32.hpp"
@@ -94,7 +95,7 @@ Oracle::Oracle(const std::vector<std::string>& inputs) {
     return;
   }
   for (const TilerSource& source : *sources) {
-    Raster r{source.raster->grid(), {}, 0, source.extent, source.featherMarginDegrees};
+    Raster r{source.raster->grid(), {}, 0, source.extent, source.bendMarginDegrees};
     r.step = std::min(r.grid.columnStepDegrees, r.grid.rowStepDegrees);
     r.samples.resize(static_cast<size_t>(r.grid.cols * r.grid.rows));
     for (int64_t row = 0; row < r.grid.rows; ++row) {
@@ -114,8 +115,8 @@ int16_t Oracle::height(double lon, double lat) const {
     if (lat < south || lat > north) continue;
     if (!g.wrapsLongitude && (lon < g.westDegrees() || lon > g.eastDegrees())) continue;
     const int16_t value = rasterHeight(r, lon, lat);
-    if (terrain::isWater(value)) return value;
-    // Land near a finer raster's edge, outside it, leans towards that edge (smoothstep).
+    // Near a finer raster's edge, outside it, the surface bends towards that edge (smoothstep):
+    // land and sea floors alike; water where this raster is and the bent height is at most 0 m.
     const Raster* finer = nullptr;
     double weight = 0;
     for (const Raster& f : rasters_) {
@@ -129,13 +130,58 @@ int16_t Oracle::height(double lon, double lat) const {
       if (w > weight) weight = w, finer = &f;
     }
     if (finer == nullptr) return value;
-    const int16_t edge = rasterHeight(*finer, lon, lat);
-    const double there = terrain::isWater(edge) ? 0.0 : double(edge);
-    const double mixed = double(value) + weight * (there - double(value));
-    const auto rounded = static_cast<int16_t>(std::clamp(std::lround(mixed), -12000L, 32767L));
+    const double here = terrain::seaFloorMeters(value);
+    const double mixed = here + weight * (edgeMeters(*finer, lon, lat) - here);
+    if (terrain::isWater(value) && mixed <= 0.0) {
+      return mixed < -0.5 ? terrain::encodeWater(mixed) : int16_t{-9999};
+    }
+    const double land = terrain::isWater(value) ? mixed : std::max(mixed, std::min(0.0, here));
+    const auto rounded = static_cast<int16_t>(std::clamp(std::lround(land), -12000L, 32767L));
     return rounded == -9999 ? int16_t{-10000} : rounded;
   }
   return -9999;
+}
+
+// The finer raster's edge as the ground outside bends to it: at distance d beyond a side, the
+// mean of that side's linear height profile over d each way along it (clipped to the side);
+// beyond a corner, both sides' means weighted by how far the point lies beyond each.
+double Oracle::edgeMeters(const Raster& r, double lon, double lat) const {
+  const io::SampleGrid& g = r.grid;
+  const double dx = std::max({r.extent.west - lon, 0.0, lon - r.extent.east});
+  const double dy = std::max({r.extent.south - lat, 0.0, lat - r.extent.north});
+  const double d = std::hypot(dx, dy);
+  // Mean of the profile f(0..n-1) (linear between samples) over [centre - half, centre + half].
+  auto mean = [](const std::function<double(int64_t)>& f, int64_t n, double centre, double half) {
+    const double last = static_cast<double>(n - 1);
+    const double a = std::clamp(centre - half, 0.0, last), b = std::clamp(centre + half, 0.0, last);
+    auto at = [&](double x) {
+      const auto i = std::min(static_cast<int64_t>(std::floor(x)), n - 1);
+      const double t = x - static_cast<double>(i);
+      return i + 1 < n ? f(i) * (1 - t) + f(i + 1) * t : f(i);
+    };
+    if (b - a < 1e-3) return at(std::clamp(centre, 0.0, last));
+    // Exact integral of the piecewise-linear profile: trapezoids between the breakpoints.
+    double sum = 0, x = a;
+    while (x < b) {
+      const double next = std::min(b, std::floor(x) + 1);
+      sum += (next - x) * (at(x) + at(next)) / 2;
+      x = next;
+    }
+    return sum / (b - a);
+  };
+  const double column = (lon - g.firstColumnLongitudeDegrees) / g.columnStepDegrees;
+  const double row = (g.firstRowLatitudeDegrees - lat) / g.rowStepDegrees;
+  const int64_t sideColumn = lon < r.extent.west ? 0 : g.cols - 1;
+  const int64_t sideRow = lat > r.extent.north ? 0 : g.rows - 1;
+  const double beside =
+      mean([&](int64_t i) { return terrain::seaFloorMeters(r.sample(i, sideColumn)); }, g.rows, row,
+           d / g.rowStepDegrees);
+  const double beyond =
+      mean([&](int64_t i) { return terrain::seaFloorMeters(r.sample(sideRow, i)); }, g.cols, column,
+           d / g.columnStepDegrees);
+  if (dx <= 0) return beyond;
+  if (dy <= 0) return beside;
+  return (dx * beside + dy * beyond) / (dx + dy);
 }
 
 int16_t Oracle::rasterHeight(const Raster& r, double lon, double lat) const {

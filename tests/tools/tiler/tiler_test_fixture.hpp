@@ -35,11 +35,13 @@ class Oracle {
     std::vector<int16_t> samples;
     double step;
     io::BoundsDegrees extent;  // as the tiler snapped it
-    double margin = 0;         // the feather margin the conditioning chose
+    double margin = 0;         // the bend margin the conditioning chose
     int16_t sample(int64_t row, int64_t column) const;
   };
   // The vertex one raster gives at a point (clamped to its edge outside it).
   int16_t rasterHeight(const Raster& r, double lon, double lat) const;
+  // The finer raster's edge height the ground outside it bends to.
+  double edgeMeters(const Raster& r, double lon, double lat) const;
   std::vector<Raster> rasters_;  // finest first
 };
 
