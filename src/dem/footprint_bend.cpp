@@ -11,6 +11,9 @@
 namespace globe::dem {
 namespace {
 
+// Δ to a centimetre: the heights are whole metres.
+constexpr double kBendToleranceMeters = 0.01;
+
 // Distance in degrees from every sample to the nearest footprint sample (0 on it), by vector
 // propagation over the 8 neighbours in four sweeps (Danielsson's 8SSEDT).
 std::vector<double> distanceToFootprint(const DemGrid& grid, const std::vector<uint8_t>& outside) {
@@ -111,7 +114,7 @@ uint64_t bendCoarserToFootprint(DemGrid& grid, const std::vector<uint8_t>& outsi
                        });
     }
     std::sort(region.begin(), region.end());
-    const auto values = solveHarmonic(grid, solved, region, borderDelta);
+    const auto values = solveHarmonic(grid, solved, region, borderDelta, kBendToleranceMeters);
     if (!values) continue;  // nothing to meet: the coarser surface as it is
     // Shaped so Δ leaves the edge level and eases into the margin (in one dimension the harmonic
     // Δ is Δ₀(1 − t), t = d / margin; times (1 − t)(1 + 2t) it is Δ₀(1 − smoothstep(t))).

@@ -11,7 +11,6 @@
 namespace globe::dem {
 namespace {
 
-constexpr double kToleranceMeters = 1e-3;
 constexpr size_t kDenseMinimumSamples = 1024;
 
 struct Unknown {
@@ -25,7 +24,7 @@ std::vector<double> solveDense(const DemGrid& grid, const std::vector<uint8_t>& 
                                const std::vector<size_t>& region,
                                const std::function<double(int64_t, int64_t)>& borderValue,
                                int64_t minRow, int64_t maxRow, int64_t minColumn,
-                               int64_t maxColumn) {
+                               int64_t maxColumn, double toleranceMeters) {
   const int64_t row0 = std::max<int64_t>(minRow - 1, 0);
   const int64_t column0 = std::max<int64_t>(minColumn - 1, 0);
   LocalGrid local;
@@ -54,7 +53,7 @@ std::vector<double> solveDense(const DemGrid& grid, const std::vector<uint8_t>& 
       }
     }
   }
-  solveMultigrid(local, kToleranceMeters / 10);
+  solveMultigrid(local, toleranceMeters / 10);
   std::vector<double> values(region.size());
   for (size_t k = 0; k < region.size(); ++k) {
     values[k] = local.value[localIndex(static_cast<int64_t>(region[k] / cols),
@@ -67,7 +66,7 @@ std::vector<double> solveDense(const DemGrid& grid, const std::vector<uint8_t>& 
 
 std::optional<std::vector<double>> solveHarmonic(
     const DemGrid& grid, const std::vector<uint8_t>& isVoid, const std::vector<size_t>& region,
-    const std::function<double(int64_t, int64_t)>& borderValue) {
+    const std::function<double(int64_t, int64_t)>& borderValue, double toleranceMeters) {
   const auto cols = static_cast<size_t>(grid.cols);
   bool anyBorder = false;
   int64_t minRow = grid.rows, maxRow = -1, minColumn = grid.cols, maxColumn = -1;
@@ -85,7 +84,8 @@ std::optional<std::vector<double>> solveHarmonic(
   // antimeridian of a wrapping grid keeps the sparse path below).
   const bool crossesSeam = grid.wrapsLongitude && (minColumn == 0 || maxColumn == grid.cols - 1);
   if (region.size() > kDenseMinimumSamples && !crossesSeam) {
-    return solveDense(grid, isVoid, region, borderValue, minRow, maxRow, minColumn, maxColumn);
+    return solveDense(grid, isVoid, region, borderValue, minRow, maxRow, minColumn, maxColumn,
+                      toleranceMeters);
   }
 
   // Small voids: the unknowns' neighbour graph, relaxed in place.
@@ -162,7 +162,7 @@ std::optional<std::vector<double>> solveHarmonic(
       values[k] += change;
       largestChange = std::max(largestChange, std::abs(change));
     }
-    if (largestChange < kToleranceMeters) break;
+    if (largestChange < toleranceMeters) break;
   }
   return values;
 }

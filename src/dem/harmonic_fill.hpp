@@ -33,8 +33,10 @@ void forEachNeighbour(const DemGrid& grid, int64_t row, int64_t column, F&& f) {
 // no 4-neighbour outside it). borderValue(row, column) gives the fixed value of a non-void
 // neighbour. Returns the value at each region sample (region order); nullopt when the region
 // has no non-void neighbour. Neighbours beyond the grid's edge are left out (zero slope there).
+// toleranceMeters: the largest change one more relaxation would make (a fill wants a
+// millimetre; a bend of whole metres, less).
 std::optional<std::vector<double>> solveHarmonic(
     const DemGrid& grid, const std::vector<uint8_t>& isVoid, const std::vector<size_t>& region,
-    const std::function<double(int64_t, int64_t)>& borderValue);
+    const std::function<double(int64_t, int64_t)>& borderValue, double toleranceMeters = 1e-3);
 
 }  // namespace globe::dem

@@ -41,7 +41,20 @@ CASES=(
   "Fuji warped to UTM 54N (no-data wedges)|$WORK/fuji-utm54.tif"
 )
 
-measure() {  # tiler, label -> table rows
+# Wall milliseconds of one tiling (two threads, as on a 2-core machine).
+RUNS=${RUNS:-3}
+tile_ms() {  # tiler, output dir, inputs...
+  local tiler=$1 out=$2 start end
+  shift 2
+  rm -rf "$out"
+  start=$(date +%s%N)
+  "$tiler" -q -j2 -o "$out" "$WORLD" "$@" >/dev/null
+  end=$(date +%s%N)
+  echo $(((end - start) / 1000000))
+}
+median_seconds() { sort -n | awk '{a[NR] = $1} END {printf "%.2f", a[int((NR + 1) / 2)] / 1000}'; }
+
+measure() {  # tiler -> table rows
   local tiler=$1 n=0
   for case in "${CASES[@]}"; do
     local name=${case%%|*} inputs
@@ -53,7 +66,7 @@ measure() {  # tiler, label -> table rows
   done
 }
 
-HEADER=$(echo "| case: source | level | inside: p95 / max \|drawn − source\| (m) | 0.1° edge band: p95 / max (m) | steps across its edge: worst (m) / source p99.9 (m) | over 1.5× the local step | vertices over no data drawn as sea over land |")
+HEADER='| case: source | level | inside: p95 / max \|drawn − source\| (m) | 0.1° edge band: p95 / max (m) | steps across its edge: worst (m) / source p99.9 (m) | over 1.5× the local step | vertices over no data drawn as sea over land |'
 {
   echo "# Source fidelity: how the tiler draws the sources it is given"
   echo
@@ -88,6 +101,38 @@ HEADER=$(echo "| case: source | level | inside: p95 / max \|drawn − source\| (
     echo "|---|---|---|---|---|---|---|"
     measure "$BASELINE"
   fi
+  echo
+  echo "## Tiling time"
+  echo
+  echo -n "Wall seconds of the whole tiling over the 20′ grid (\`-j2\`), median of $RUNS runs"
+  if [ -n "$BASELINE" ]; then
+    echo ", this tree and the baseline in turn on the same machine."
+    echo
+    echo "| case | this tree (s) | baseline (s) | ratio |"
+    echo "|---|---|---|---|"
+  else
+    echo "."
+    echo
+    echo "| case | this tree (s) |"
+    echo "|---|---|"
+  fi
+  for case in "${CASES[@]}"; do
+    read -r -a inputs <<<"${case#*|}"
+    : >"$WORK/new.ms"
+    : >"$WORK/old.ms"
+    for _ in $(seq "$RUNS"); do
+      tile_ms "$TILER" "$WORK/timed" "${inputs[@]}" >>"$WORK/new.ms"
+      if [ -n "$BASELINE" ]; then tile_ms "$BASELINE" "$WORK/timed" "${inputs[@]}" >>"$WORK/old.ms"; fi
+    done
+    new=$(median_seconds <"$WORK/new.ms")
+    if [ -n "$BASELINE" ]; then
+      old=$(median_seconds <"$WORK/old.ms")
+      echo "| ${case%%|*} | $new | $old | $(awk -v a="$new" -v b="$old" 'BEGIN {printf "%.2f", a / b}') |"
+    else
+      echo "| ${case%%|*} | $new |"
+    fi
+  done
+  rm -rf "$WORK/timed"
 } >"$OUT_MD.tmp"
 mv "$OUT_MD.tmp" "$OUT_MD"
 echo "wrote $OUT_MD"

@@ -47,7 +47,7 @@ io::SourceInfo TilerSource::info() const {
   return info;
 }
 
-Result<void> checkValidSamples(const io::RasterSource& raster) {
+Result<void> checkValidSamples(const io::RasterSource& raster, bool noDataIsWater) {
   const io::SampleGrid& g = raster.grid();
   const auto refuse = [&](const std::string& why) {
     return makeError(raster.path() + ": fewer than 2x2 valid samples (" + why +
@@ -56,6 +56,7 @@ Result<void> checkValidSamples(const io::RasterSource& raster) {
   if (g.cols < 2 || g.rows < 2) {
     return refuse("the raster is " + std::to_string(g.cols) + "x" + std::to_string(g.rows));
   }
+  if (noDataIsWater) return {};  // its no data is sea: every sample says something
   std::vector<int16_t> samples(static_cast<size_t>(g.cols));
   int64_t valid = 0, rowsWithValid = 0;
   int64_t westmost = g.cols, eastmost = -1;  // columns of the valid samples seen
@@ -72,7 +73,7 @@ Result<void> checkValidSamples(const io::RasterSource& raster) {
     rowsWithValid += rowHasValid ? 1 : 0;
     if (valid >= 4 && rowsWithValid >= 2 && eastmost > westmost) return {};
   }
-  if (valid == 0) return {};  // all no data: tiled, with the tiler's warning
+  if (valid == 0) return refuse("every sample is no data");
   return refuse(std::to_string(valid) + " valid, in " + std::to_string(rowsWithValid) +
                 (rowsWithValid == 1 ? " row" : " rows") + " and " +
                 (eastmost > westmost ? "several columns" : "one column"));
@@ -108,9 +109,11 @@ Result<std::vector<TilerSource>> openSources(const std::vector<std::string>& inp
   for (const std::string& input : inputs) {
     auto raster = io::openRasterSource(input, io::RasterOpenOptions{options.vertical});
     if (!raster) return Error{raster.error()};
-    if (auto enough = checkValidSamples(**raster); !enough) return Error{enough.error()};
     TilerSource source;
     source.noDataIsWater = options.noDataIsSea || noDataIsOceanMask(**raster);
+    if (auto enough = checkValidSamples(**raster, source.noDataIsWater); !enough) {
+      return Error{enough.error()};
+    }
     source.verticalUnits = (*raster)->verticalUnits();
     source.grid = (*raster)->grid();
     source.raster = std::move(*raster);

@@ -57,10 +57,10 @@ struct SourceSetOptions {
 // explicit water code. Other rasters' no data is missing data.
 bool noDataIsOceanMask(const io::RasterSource& raster);
 
-// Refuses a raster whose valid (not no-data) samples cannot make one 2x2 cell: fewer than 4, or
-// all in one row or one column. Reads rows only until it has seen enough. A raster with no valid
-// sample at all passes (the tiler warns about it: all sea, or filled from a coarser source).
-Result<void> checkValidSamples(const io::RasterSource& raster);
+// Refuses a raster whose valid (not no-data) samples cannot make one 2x2 cell: fewer than 4 (none
+// at all included), or all in one row or one column. Reads rows only until it has seen enough.
+// A raster whose no data is its water code passes whatever it holds (an all-ocean tile).
+Result<void> checkValidSamples(const io::RasterSource& raster, bool noDataIsWater);
 
 // Opens every input; sorted finest first (ties keep command-line order) so the finest source
 // covering a point wins.

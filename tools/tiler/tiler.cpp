@@ -212,9 +212,9 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
   for (size_t i = 0; i < sources.size(); ++i) {
     const io::SourceConditioning& c = (*conditioning)[i];
     if (c.noDataSamples == static_cast<uint64_t>(sources[i].grid.cols * sources[i].grid.rows)) {
+      // Only a source whose no data is its water code gets here (others are refused).
       report.warnings.push_back(sources[i].argument +
-                                ": every sample is no data: tiled as sea, or filled from a "
-                                "coarser source where one says land");
+                                ": every sample is no data, its water code: tiled as sea");
     }
   }
 

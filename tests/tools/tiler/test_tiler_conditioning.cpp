@@ -304,13 +304,14 @@ TEST(TilerConditioning, SpilledAndParallelConditioningReadsTheSameAsInMemory) {
 }
 
 TEST(TilerConditioning, AnInputTooLargeToConditionIsAClearError) {
-  // A VRT declaring 40000×30000 samples (no data behind it): refused before anything is read.
+  // A VRT declaring 40000×30000 samples (0 m behind it, nothing stored): refused before the
+  // conditioning reads it (the valid-sample check reads two rows).
   const auto dir = testing::freshTempDir("huge");
   const auto vrt = dir / "huge.vrt";
   std::ofstream(vrt) << R"(<VRTDataset rasterXSize="40000" rasterYSize="30000">
   <SRS>EPSG:4326</SRS>
   <GeoTransform>0, 0.00025, 0, 10, 0, -0.00025</GeoTransform>
-  <VRTRasterBand dataType="Int16" band="1"><NoDataValue>-32768</NoDataValue></VRTRasterBand>
+  <VRTRasterBand dataType="Int16" band="1"></VRTRasterBand>
 </VRTDataset>)";
   TilerOptions options;
   options.inputs = {vrt.string()};
@@ -322,26 +323,41 @@ TEST(TilerConditioning, AnInputTooLargeToConditionIsAClearError) {
   EXPECT_NE(report.error().find("split it into tiles"), std::string::npos) << report.error();
 }
 
-TEST(TilerConditioning, ASourceThatIsAllNoDataIsReported) {
-  const auto dir = testing::freshTempDir("all-no-data");
+// A GTOPO30-format raster of 40×40 no-data samples at the given step, written to dir/STEM.
+std::string allNoData(const std::filesystem::path& dir, const std::string& stem,
+                      double stepDegrees) {
   io::Gtopo30Raster raster;
   raster.header.rows = raster.header.cols = 40;
-  raster.header.ulxMapDegrees = 10.0125;
-  raster.header.ulyMapDegrees = 45.9875;
-  raster.header.xDimDegrees = raster.header.yDimDegrees = 0.025;
+  raster.header.ulxMapDegrees = 10.0 + stepDegrees / 2;
+  raster.header.ulyMapDegrees = 46.0 - stepDegrees / 2;
+  raster.header.xDimDegrees = raster.header.yDimDegrees = stepDegrees;
   raster.header.bandRowBytes = raster.header.totalRowBytes = 80;
   raster.heights.assign(1600, terrain::kNoDataHeight);
-  const auto stem = dir / "EMPTY";
-  ASSERT_TRUE(io::writeGtopo30(stem, raster));
+  EXPECT_TRUE(io::writeGtopo30(dir / stem, raster));
+  return (dir / (stem + ".DEM")).string();
+}
+
+TEST(TilerConditioning, ASourceThatIsAllNoDataIsRefusedUnlessItsNoDataIsSea) {
+  const auto dir = testing::freshTempDir("all-no-data");
   TilerOptions options;
-  options.inputs = {kWorld, (dir / "EMPTY.DEM").string()};
   options.outputDir = dir / "pyramid";
   options.progress = false;
+  // Missing data everywhere: nothing to tile, and the error names the file.
+  options.inputs = {kWorld, allNoData(dir, "EMPTY", 0.025)};
+  auto refused = runTiler(options);
+  ASSERT_FALSE(refused);
+  EXPECT_NE(refused.error().find("EMPTY.DEM: fewer than 2x2 valid samples (every sample is no "
+                                 "data)"),
+            std::string::npos)
+      << refused.error();
+  // GTOPO30's own 30″ grid: its -9999 is the ocean mask, an all-sea tile.
+  options.inputs = {kWorld, allNoData(dir, "OCEAN", 1.0 / 120.0)};
+  options.outputDir = dir / "ocean";
   auto report = runTiler(options);
   ASSERT_TRUE(report) << report.error();
   ASSERT_EQ(report->warnings.size(), 1U);
-  EXPECT_NE(report->warnings[0].find("EMPTY.DEM"), std::string::npos);
-  EXPECT_NE(report->warnings[0].find("every sample is no data"), std::string::npos);
+  EXPECT_NE(report->warnings[0].find("OCEAN.DEM"), std::string::npos);
+  EXPECT_NE(report->warnings[0].find("tiled as sea"), std::string::npos);
 }
 
 }  // namespace
