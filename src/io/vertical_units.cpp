@@ -79,18 +79,23 @@ Result<VerticalUnits> resolveVerticalUnits(const std::string& path, std::string_
   u.fileUnit = std::string(trimmedUnit(fileUnit));
   u.bandScale = bandScale;
   u.bandOffset = bandOffset;
-  if (zOverride.metersPerUnit) {
+  // A unit the format or the file states wins: the overrides are for inputs that state none (or
+  // one this reader does not know), so a base grid tiled beside them keeps its metres.
+  const auto known = metersPerUnitNamed(u.fileUnit);
+  if (formatIsMeters) {
+    u.origin = VerticalUnitOrigin::Format;
+  } else if (known && !u.fileUnit.empty()) {
+    u.origin = VerticalUnitOrigin::File;
+    u.metersPerUnit = *known;
+  } else if (zOverride.metersPerUnit) {
     u.origin = VerticalUnitOrigin::ZScale;
     u.metersPerUnit = *zOverride.metersPerUnit;
   } else if (zOverride.units) {
     u.origin = VerticalUnitOrigin::ZUnits;
     u.overrideUnit = *zOverride.units;
     u.metersPerUnit = *metersPerUnitNamed(*zOverride.units);
-  } else if (formatIsMeters) {
-    u.origin = VerticalUnitOrigin::Format;
-  } else if (auto known = metersPerUnitNamed(u.fileUnit)) {
-    u.origin = u.fileUnit.empty() ? VerticalUnitOrigin::Default : VerticalUnitOrigin::File;
-    u.metersPerUnit = *known;
+  } else if (known) {
+    u.origin = VerticalUnitOrigin::Default;
   } else {
     return makeError(path + ": unknown vertical unit '" + u.fileUnit +
                      "'; give --z-units m|ft|us-ft or --z-scale FACTOR");

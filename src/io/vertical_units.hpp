@@ -39,10 +39,11 @@ struct VerticalUnits {
 // 1200/3937. nullopt when unknown.
 std::optional<double> metersPerUnitNamed(std::string_view unit);
 
-// The override the tiler applies to every input (unset: each file's own unit).
+// The unit the tiler gives the inputs that state none, or one it does not know (unset: metres,
+// or an error). A unit the format (GTOPO30: metres) or the file states is kept.
 struct VerticalOverride {
-  std::optional<std::string> units;     // --z-units: replaces the file's unit
-  std::optional<double> metersPerUnit;  // --z-scale: replaces any unit (after scale and offset)
+  std::optional<std::string> units;     // --z-units: a unit name
+  std::optional<double> metersPerUnit;  // --z-scale: metres per stored unit (wins over units)
   bool operator==(const VerticalOverride&) const = default;
 };
 
@@ -50,7 +51,8 @@ struct VerticalOverride {
 Result<void> checkVerticalOverride(const VerticalOverride& zOverride);
 
 // What to apply to a band whose file states `fileUnit` (origin Format: the format's metres,
-// whatever fileUnit says). An unknown unit without an override is an error naming the file.
+// whatever fileUnit says; a known stated unit is kept, the override applies to the others). An
+// unknown unit without an override is an error naming the file.
 Result<VerticalUnits> resolveVerticalUnits(const std::string& path, std::string_view fileUnit,
                                            double bandScale, double bandOffset,
                                            const VerticalOverride& zOverride,

@@ -37,7 +37,7 @@ TEST(VerticalUnits, KnownNamesInAnyCase) {
   }
 }
 
-TEST(VerticalUnits, OverridesWinAndUnknownUnitsAreErrors) {
+TEST(VerticalUnits, OverridesApplyWhereNoKnownUnitIsStatedAndUnknownUnitsAreErrors) {
   auto file = resolveVerticalUnits("x.tif", "ft", 1, 0, {});
   ASSERT_TRUE(file) << file.error();
   EXPECT_EQ(file->origin, VerticalUnitOrigin::File);
@@ -69,13 +69,18 @@ TEST(VerticalUnits, OverridesWinAndUnknownUnitsAreErrors) {
 
   VerticalOverride zScale;
   zScale.metersPerUnit = 2;
-  zScale.units = "ft";  // --z-scale replaces any unit
-  auto scaled = resolveVerticalUnits("x.tif", "m", 1, 0, zScale);
+  zScale.units = "ft";  // --z-scale wins over --z-units
+  auto scaled = resolveVerticalUnits("x.tif", "", 1, 0, zScale);
   ASSERT_TRUE(scaled) << scaled.error();
   EXPECT_EQ(scaled->origin, VerticalUnitOrigin::ZScale);
   EXPECT_EQ(scaled->metersPerUnit, 2.0);
 
-  auto format = resolveVerticalUnits("x.DEM", "m", 1, 0, {}, /*formatIsMeters=*/true);
+  // A unit the file or the format states is kept: the overrides are for the inputs without one.
+  auto stated = resolveVerticalUnits("x.tif", "m", 1, 0, zScale);
+  ASSERT_TRUE(stated) << stated.error();
+  EXPECT_EQ(stated->origin, VerticalUnitOrigin::File);
+  EXPECT_EQ(stated->metersPerUnit, 1.0);
+  auto format = resolveVerticalUnits("x.DEM", "m", 1, 0, zScale, /*formatIsMeters=*/true);
   ASSERT_TRUE(format);
   EXPECT_EQ(format->origin, VerticalUnitOrigin::Format);
   EXPECT_TRUE(format->isIdentity());
@@ -151,10 +156,17 @@ TEST(VerticalUnits, GdalScaleOffsetAndUnitBeforeRoundingNoDataOnTheStoredValue) 
   // 3000 ft = 914.4; 3500 ft = 1066.8; 9488 ft = 2891.94; 0 ft = 0; 3000.5 ft = 914.55.
   EXPECT_EQ(readEverySample(**source), (std::vector<int16_t>{914, 1067, -9999, 2892, 0, 915}));
 
-  // The same file with --z-units m: the file's unit replaced, its scale and offset kept.
+  // The same file with --z-units m: its stated unit is kept (the override is for inputs that
+  // state none).
   RasterOpenOptions metres;
   metres.vertical.units = "m";
-  auto overridden = openRasterSource(tmp / "ft.tif", metres);
+  auto kept = openRasterSource(tmp / "ft.tif", metres);
+  ASSERT_TRUE(kept) << kept.error();
+  EXPECT_EQ(readEverySample(**kept), (std::vector<int16_t>{914, 1067, -9999, 2892, 0, 915}));
+
+  // Without a stated unit, --z-units m gives it: the scale and offset kept.
+  writeUnitTiff(tmp / "bare.tif", 3, 2, values, gt, 4326, {nullptr, 0.5, 3000});
+  auto overridden = openRasterSource(tmp / "bare.tif", metres);
   ASSERT_TRUE(overridden) << overridden.error();
   EXPECT_EQ(readEverySample(**overridden),
             (std::vector<int16_t>{3000, 3500, -9999, 9488, 0, 3000}));
@@ -185,7 +197,8 @@ TEST(VerticalUnits, WarpedRastersKeepTheSourceBandsUnit) {
   EXPECT_GT(land, 1000u);
 }
 
-TEST(VerticalUnits, Gtopo30IsMetresUnlessOverridden) {
+TEST(VerticalUnits, Gtopo30StaysMetresWhateverTheOverride) {
+  // GTOPO30 is metres by definition: a --z-units meant for another input leaves it alone.
   const auto dem = std::filesystem::path(GLOBE_SOURCE_DIR) / "data/dem/E138N35_FUJI.DEM";
   auto metres = openGtopo30Source(dem);
   ASSERT_TRUE(metres) << metres.error();
@@ -193,21 +206,15 @@ TEST(VerticalUnits, Gtopo30IsMetresUnlessOverridden) {
   EXPECT_EQ(describe((*metres)->verticalUnits()), "metres by format -> x1 m");
   RasterOpenOptions feet;
   feet.vertical.units = "ft";
-  auto scaled = openRasterSource(dem, feet);
-  ASSERT_TRUE(scaled) << scaled.error();
-  EXPECT_EQ((*scaled)->verticalUnits().origin, VerticalUnitOrigin::ZUnits);
+  auto kept = openRasterSource(dem, feet);
+  ASSERT_TRUE(kept) << kept.error();
+  EXPECT_EQ((*kept)->verticalUnits().origin, VerticalUnitOrigin::Format);
   const int64_t cols = (*metres)->grid().cols;
   std::vector<int16_t> a(static_cast<size_t>(cols)), b(a.size());
   const int64_t row = (*metres)->grid().rows / 2;
   ASSERT_TRUE((*metres)->readRow(row, 0, cols, a.data()));
-  ASSERT_TRUE((*scaled)->readRow(row, 0, cols, b.data()));
-  for (size_t i = 0; i < a.size(); ++i) {
-    if (a[i] == -9999) {
-      EXPECT_EQ(b[i], -9999);
-    } else {
-      EXPECT_EQ(b[i], static_cast<int16_t>(std::nearbyint(a[i] * 0.3048))) << i;
-    }
-  }
+  ASSERT_TRUE((*kept)->readRow(row, 0, cols, b.data()));
+  EXPECT_EQ(a, b);
 }
 
 PyramidManifest manifestWithOneSource() {
@@ -227,12 +234,11 @@ TEST(VerticalUnits, ManifestRecordsThemAndReadsManifestsWithout) {
   PyramidManifest m = manifestWithOneSource();
   VerticalOverride zUnits;
   zUnits.units = "us-ft";
-  auto units = resolveVerticalUnits("x.tif", "ft", 0.5, 3000, zUnits);
+  auto units = resolveVerticalUnits("x.tif", "", 0.5, 3000, zUnits);
   ASSERT_TRUE(units);
   m.sources[0].verticalUnits = *units;
   const std::string text = manifestToJson(m);
-  EXPECT_NE(text.find("\"description\": \"--z-units us-ft (file unit \\\"ft\\\")"),
-            std::string::npos)
+  EXPECT_NE(text.find("\"description\": \"--z-units us-ft (file unit none)"), std::string::npos)
       << text;
   auto back = manifestFromJson(text, "manifest.json");
   ASSERT_TRUE(back) << back.error();

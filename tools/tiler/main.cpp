@@ -68,11 +68,12 @@ int main(int argc, char** argv) {
   double zScale = 1;
   auto* zUnitsOption = app.add_option(
       "--z-units", zUnits,
-      "m | ft | us-ft: the unit of every input's heights, instead of the unit each file states "
-      "(GDAL unit type; none = m; an unknown one is an error). Band scale/offset still apply");
+      "m | ft | us-ft: the heights' unit of the inputs that state none (GDAL unit type; none "
+      "= m; an unknown one is an error); a stated unit, and GTOPO30's metres, are kept. Band "
+      "scale/offset still apply");
   auto* zScaleOption = app.add_option("--z-scale", zScale,
-                                      "metres per stored unit (after the band's scale/offset) for "
-                                      "every input; replaces any unit")
+                                      "metres per stored unit (after the band's scale/offset) of "
+                                      "the inputs that state no unit")
                            ->excludes(zUnitsOption);
   app.add_flag("--no-data-is-sea", options.noDataIsSea,
                "every input's no data is water (an explicit water code), not missing data");
@@ -94,7 +95,8 @@ int main(int argc, char** argv) {
       "  - Outside a finer input, coarser ones bend to meet its edge over 1.5 of their own cells: "
       "no wall, no moat; finer land meeting coarser water becomes a shore sloping into it.\n"
       "  - Heights: the GDAL unit type (m, ft, US survey foot) and band scale/offset are applied; "
-      "--z-units/--z-scale override; an unknown unit is an error.\n"
+      "--z-units/--z-scale give the unit of inputs that state none; an unknown unit is an "
+      "error.\n"
       "  - A raster with fewer than 2x2 valid samples is refused.");
   CLI11_PARSE(app, argc, argv);
   if (zUnitsOption->count() > 0) options.vertical.units = zUnits;

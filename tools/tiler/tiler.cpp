@@ -191,6 +191,17 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
                                              options.vertical, options.noDataIsSea});
   if (!opened) return Error{opened.error()};
   std::vector<TilerSource>& sources = *opened;
+  if (options.vertical.units || options.vertical.metersPerUnit) {
+    for (const TilerSource& s : sources) {
+      const io::VerticalUnitOrigin origin = s.verticalUnits.origin;
+      if (origin != io::VerticalUnitOrigin::File && origin != io::VerticalUnitOrigin::Format) {
+        continue;
+      }
+      report.warnings.push_back(s.argument + ": keeps its own unit (" +
+                                io::describe(s.verticalUnits) +
+                                "): --z-units / --z-scale apply to inputs that state none");
+    }
+  }
   std::vector<io::BoundsDegrees> extents;
   std::vector<uint32_t> finestLevels;
   for (const TilerSource& s : sources) {

@@ -1,7 +1,8 @@
 // Vertical units of elevation inputs, through the real globe-tiler: Zion (SRTM 3", metres) stored
 // in feet, US survey feet, or int16 with a band scale and offset is drawn as the metre original;
-// --z-units / --z-scale replace the file's unit; an unknown unit and a raster without one 2x2 cell
-// of valid samples are refused naming the file; the manifest and `globe info` say what was read.
+// --z-units / --z-scale give the unit of inputs that state none; an unknown unit and a raster
+// without one 2x2 cell of valid samples are refused naming the file; the manifest and `globe info`
+// say what was read.
 #include <gdal.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -243,21 +244,52 @@ TEST(TilerUnits, BandScaleAndOffsetApplyBeforeTheUnit) {
   EXPECT_LE(drawnAsMetreOriginal("scaled-int16", scaled), 1.0);
 }
 
-TEST(TilerUnits, ZUnitsAndZScaleOverrideTheFile) {
+TEST(TilerUnits, ZUnitsAndZScaleApplyToInputsThatStateNoUnit) {
   Encoding unitless;  // feet, but the file states no unit (metres by default)
   unitless.metersPerUnit = kFootMeters;
   EXPECT_LE(drawnAsMetreOriginal("z-units-ft", unitless, {"--z-units", "ft"}), 1.0);
   EXPECT_LE(drawnAsMetreOriginal("z-scale", unitless, {"--z-scale", "0.3048"}), 1.0);
 
-  Encoding wrong;  // US survey feet stated as metres
-  wrong.unit = "metre";
-  wrong.metersPerUnit = kUsSurveyFootMeters;
-  EXPECT_LE(drawnAsMetreOriginal("z-units-us-ft", wrong, {"--z-units", "us-ft"}), 1.0);
+  Encoding usFeet;  // US survey feet, no unit stated
+  usFeet.metersPerUnit = kUsSurveyFootMeters;
+  EXPECT_LE(drawnAsMetreOriginal("z-units-us-ft", usFeet, {"--z-units", "us-ft"}), 1.0);
+
+  // A unit the file states is kept: the overrides are for inputs that state none. (With a
+  // 20′ base grid beside it, --z-units ft must not shrink the base.)
+  Encoding stated;
+  stated.unit = "ft";
+  stated.metersPerUnit = kFootMeters;
+  EXPECT_LE(drawnAsMetreOriginal("z-units-stated", stated, {"--z-units", "us-ft"}), 1.0);
 
   Encoding unknown;  // an unknown unit is fine once overridden
   unknown.unit = "furlong";
   unknown.metersPerUnit = kFootMeters;
   EXPECT_LE(drawnAsMetreOriginal("z-scale-unknown", unknown, {"--z-scale", "0.3048"}), 1.0);
+}
+
+TEST(TilerUnits, ABaseGridTiledBesideKeepsItsMetres) {
+  // The usual command: a feet DEM without a unit over the 20′ world grid, --z-units ft. The grid
+  // (GTOPO30: metres by definition) keeps its heights, and the tiler says so.
+  Encoding feet;
+  feet.metersPerUnit = kFootMeters;
+  const fs::path tif = workDir() / "base-feet.tif";
+  writeRaster(tif, zion(), feet);
+  const std::string world = std::string(GLOBE_SOURCE_DIR) + "/data/dem/ETOPO20.DEM";
+  const ProgramRun run =
+      runGlobeTiler(workDir() / "base-beside", {world, tif.string()}, {"--z-units", "ft"});
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("ETOPO20.DEM: keeps its own unit (metres by format -> x1 m)"),
+            std::string::npos)
+      << run.output;
+  auto manifest = io::readManifest(workDir() / "base-beside");
+  ASSERT_TRUE(manifest) << manifest.error();
+  for (const io::SourceInfo& source : manifest->sources) {
+    ASSERT_TRUE(source.verticalUnits);
+    const bool isWorld = source.path == world;
+    EXPECT_EQ(source.verticalUnits->origin,
+              isWorld ? io::VerticalUnitOrigin::Format : io::VerticalUnitOrigin::ZUnits);
+    EXPECT_EQ(source.verticalUnits->metersPerUnit, isWorld ? 1.0 : kFootMeters);
+  }
 }
 
 TEST(TilerUnits, UnknownUnitIsAnErrorNamingTheFile) {
@@ -325,13 +357,16 @@ TEST(TilerUnits, ManifestAndInfoSayWhatWasRead) {
   EXPECT_EQ(j["sources"][0]["verticalUnits"]["fileUnit"], "ft");
   EXPECT_EQ(j["sources"][0]["verticalUnits"]["metersPerUnit"], kFootMeters);
 
-  // An override says what it replaced.
+  // An override says what it stood in for.
+  Encoding unitless;
+  unitless.metersPerUnit = kUsSurveyFootMeters;
+  const fs::path bare = workDir() / "info-unitless.tif";
+  writeRaster(bare, zion(), unitless);
   const fs::path overridden =
-      tileOk(workDir(), "info-override", {tif.string()}, {"--z-units", "us-ft"});
+      tileOk(workDir(), "info-override", {bare.string()}, {"--z-units", "us-ft"});
   const ProgramRun overrideText = runUnitsProgram(GLOBE_EXE, {"info", overridden.string()});
-  EXPECT_NE(
-      overrideText.output.find("heights --z-units us-ft (file unit \"ft\") -> x0.3048006096 m"),
-      std::string::npos)
+  EXPECT_NE(overrideText.output.find("heights --z-units us-ft (file unit none) -> x0.3048006096 m"),
+            std::string::npos)
       << overrideText.output;
 }
 
