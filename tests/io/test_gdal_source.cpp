@@ -13,6 +13,7 @@
 #include "io/gtopo30.hpp"
 #include "io/raster_source.hpp"
 #include "test_io_util.hpp"
+#include "tests/support/epsg_wkt.hpp"
 
 namespace globe::io {
 namespace {
@@ -233,17 +234,6 @@ TEST(GdalSource, OutOfRangeReadsAreErrors) {
 
 // ---- Synthetic rasters written with GDAL ----
 
-std::string wktOf(int epsg) {
-  OGRSpatialReferenceH srs = OSRNewSpatialReference(nullptr);
-  OSRImportFromEPSG(srs, epsg);
-  char* wkt = nullptr;
-  OSRExportToWkt(srs, &wkt);
-  std::string out = wkt;
-  CPLFree(wkt);
-  OSRDestroySpatialReference(srs);
-  return out;
-}
-
 // A one-band GTiff; gt/wkt optional (nullptr / "" leave them out).
 template <class T>
 void writeTiff(const std::filesystem::path& path, GDALDataType type, int cols, int rows,
@@ -271,7 +261,7 @@ TEST(GdalSource, FloatValuesRoundClampAndMapNoData) {
                                      inf,  -inf, 1e6f,  -1e6f, -500.f, 8848.4f};
   const double gt[6] = {10, 0.5, 0, 50, 0, -0.5};
   const double noData = -500;
-  writeTiff(tmp / "f.tif", GDT_Float32, 6, 2, values, gt, wktOf(4326), &noData);
+  writeTiff(tmp / "f.tif", GDT_Float32, 6, 2, values, gt, testing::wktOfEpsg(4326), &noData);
   auto s = open(tmp / "f.tif");
   ASSERT_TRUE(s);
   EXPECT_EQ(s->grid().firstColumnLongitudeDegrees, 10.25);
@@ -285,7 +275,7 @@ TEST(GdalSource, BottomUpRowsAreFlippedToNorthFirst) {
   TempDir tmp;
   const std::vector<int16_t> values = {1, 2, 3, 4, 5, 6};  // dataset row 0 is the south
   const double gt[6] = {10, 1, 0, 40, 0, 1};
-  writeTiff(tmp / "up.tif", GDT_Int16, 2, 3, values, gt, wktOf(4326));
+  writeTiff(tmp / "up.tif", GDT_Int16, 2, 3, values, gt, testing::wktOfEpsg(4326));
   auto s = open(tmp / "up.tif");
   ASSERT_TRUE(s);
   EXPECT_EQ(s->grid().firstRowLatitudeDegrees, 42.5);
@@ -306,7 +296,7 @@ TEST(GdalSource, ProjectedRasterIsWarpedToDegrees) {
   }
   const double e0 = 200000, n0 = 5545000, pixel = 100;  // 4.2° west of the zone's meridian
   const double gt[6] = {e0, pixel, 0, n0, 0, -pixel};
-  writeTiff(tmp / "utm.tif", GDT_Int16, n, n, values, gt, wktOf(32632));
+  writeTiff(tmp / "utm.tif", GDT_Int16, n, n, values, gt, testing::wktOfEpsg(32632));
   auto s = open(tmp / "utm.tif");
   ASSERT_TRUE(s);
   const SampleGrid& g = s->grid();
@@ -363,7 +353,7 @@ TEST(GdalSource, GeoreferenceProblemsAreErrors) {
   TempDir tmp;
   const std::vector<int16_t> values(4, 1);
   const double rotated[6] = {10, 1, 0.1, 40, 0, -1};
-  writeTiff(tmp / "rot.tif", GDT_Int16, 2, 2, values, rotated, wktOf(4326));
+  writeTiff(tmp / "rot.tif", GDT_Int16, 2, 2, values, rotated, testing::wktOfEpsg(4326));
   writeTiff(tmp / "plain.tif", GDT_Int16, 2, 2, values, nullptr, "");
   const double metres[6] = {500000, 30, 0, 5500000, 0, -30};
   writeTiff(tmp / "nocrs.tif", GDT_Int16, 2, 2, values, metres, "");

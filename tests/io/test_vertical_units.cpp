@@ -14,6 +14,7 @@
 #include "io/raster_source.hpp"
 #include "io/vertical_units.hpp"
 #include "test_io_util.hpp"
+#include "tests/support/epsg_wkt.hpp"
 
 namespace globe::io {
 namespace {
@@ -96,17 +97,6 @@ TEST(VerticalUnits, OverridesApplyWhereNoKnownUnitIsStatedAndUnknownUnitsAreErro
   EXPECT_FALSE(resolveVerticalUnits("x.tif", "m", 0, 0, {}));  // a zero band scale
 }
 
-std::string wktOfEpsg(int epsg) {
-  OGRSpatialReferenceH srs = OSRNewSpatialReference(nullptr);
-  OSRImportFromEPSG(srs, epsg);
-  char* wkt = nullptr;
-  OSRExportToWkt(srs, &wkt);
-  std::string out = wkt;
-  CPLFree(wkt);
-  OSRDestroySpatialReference(srs);
-  return out;
-}
-
 struct BandUnits {
   const char* unit = nullptr;
   double scale = 1, offset = 0;
@@ -121,7 +111,7 @@ void writeUnitTiff(const std::filesystem::path& path, int cols, int rows,
       GDALCreate(GDALGetDriverByName("GTiff"), path.c_str(), cols, rows, 1, GDT_Int16, nullptr);
   ASSERT_NE(ds, nullptr);
   GDALSetGeoTransform(ds, const_cast<double*>(gt));
-  GDALSetProjection(ds, wktOfEpsg(epsg).c_str());
+  GDALSetProjection(ds, testing::wktOfEpsg(epsg).c_str());
   GDALRasterBandH band = GDALGetRasterBand(ds, 1);
   GDALSetRasterNoDataValue(band, -32768);
   if (units.unit) GDALSetRasterUnitType(band, units.unit);
