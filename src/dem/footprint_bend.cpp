@@ -51,9 +51,8 @@ std::vector<double> distanceToFootprint(const DemGrid& grid, const std::vector<u
     }
     for (int64_t c = 0; c < grid.cols; ++c) offer(r, c, r, c - 1);
   }
-  std::vector<double> distance(count);
-  for (size_t i = 0; i < count; ++i) distance[i] = std::sqrt(distance2[i]);
-  return distance;
+  for (double& d : distance2) d = std::sqrt(d);
+  return distance2;
 }
 
 }  // namespace
