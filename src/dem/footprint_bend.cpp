@@ -113,7 +113,13 @@ uint64_t bendCoarserToFootprint(DemGrid& grid, const std::vector<uint8_t>& outsi
                        });
     }
     std::sort(region.begin(), region.end());
-    const auto values = solveHarmonic(grid, solved, region, borderDelta, kBendToleranceMeters);
+    // Across, the region is at most twice its farthest sample's distance from the footprint.
+    double farthestDegrees = 0;
+    for (size_t i : region) farthestDegrees = std::max(farthestDegrees, distance[i]);
+    const double acrossSamples =
+        2 * farthestDegrees / std::min(grid.columnStepDegrees, grid.rowStepDegrees) + 1;
+    const auto values =
+        solveHarmonic(grid, solved, region, borderDelta, kBendToleranceMeters, acrossSamples);
     if (!values) continue;  // nothing to meet: the coarser surface as it is
     // Shaped so Δ leaves the edge level and eases into the margin (in one dimension the harmonic
     // Δ is Δ₀(1 − t), t = d / margin; times (1 − t)(1 + 2t) it is Δ₀(1 − smoothstep(t))).

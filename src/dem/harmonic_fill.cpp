@@ -23,8 +23,8 @@ struct Unknown {
 std::vector<double> solveDense(const DemGrid& grid, const std::vector<uint8_t>& isVoid,
                                const std::vector<size_t>& region,
                                const std::function<double(int64_t, int64_t)>& borderValue,
-                               int64_t minRow, int64_t maxRow, int64_t minColumn,
-                               int64_t maxColumn, double toleranceMeters) {
+                               int64_t minRow, int64_t maxRow, int64_t minColumn, int64_t maxColumn,
+                               double toleranceMeters) {
   const int64_t row0 = std::max<int64_t>(minRow - 1, 0);
   const int64_t column0 = std::max<int64_t>(minColumn - 1, 0);
   LocalGrid local;
@@ -66,7 +66,8 @@ std::vector<double> solveDense(const DemGrid& grid, const std::vector<uint8_t>& 
 
 std::optional<std::vector<double>> solveHarmonic(
     const DemGrid& grid, const std::vector<uint8_t>& isVoid, const std::vector<size_t>& region,
-    const std::function<double(int64_t, int64_t)>& borderValue, double toleranceMeters) {
+    const std::function<double(int64_t, int64_t)>& borderValue, double toleranceMeters,
+    double thinExtentSamples) {
   const auto cols = static_cast<size_t>(grid.cols);
   bool anyBorder = false;
   int64_t minRow = grid.rows, maxRow = -1, minColumn = grid.cols, maxColumn = -1;
@@ -83,7 +84,10 @@ std::optional<std::vector<double>> solveHarmonic(
   // Large voids: solved densely over their bounding box by multigrid (a void across the
   // antimeridian of a wrapping grid keeps the sparse path below).
   const bool crossesSeam = grid.wrapsLongitude && (minColumn == 0 || maxColumn == grid.cols - 1);
-  if (region.size() > kDenseMinimumSamples && !crossesSeam) {
+  const double boxSamples =
+      static_cast<double>(maxRow - minRow + 1) * static_cast<double>(maxColumn - minColumn + 1);
+  const bool thin = thinExtentSamples > 0 && static_cast<double>(region.size()) * 4 < boxSamples;
+  if (region.size() > kDenseMinimumSamples && !crossesSeam && !thin) {
     return solveDense(grid, isVoid, region, borderValue, minRow, maxRow, minColumn, maxColumn,
                       toleranceMeters);
   }
@@ -146,8 +150,11 @@ std::optional<std::vector<double>> solveHarmonic(
     front = std::move(next);
   }
 
-  // Successive over-relaxation with the optimal factor for a square of the void's extent.
-  const double extent = static_cast<double>(std::max(maxRow - minRow, maxColumn - minColumn) + 2);
+  // Successive over-relaxation with the optimal factor for a square of the void's extent (or of
+  // a thin region's width).
+  const double extent =
+      thin ? thinExtentSamples + 2
+           : static_cast<double>(std::max(maxRow - minRow, maxColumn - minColumn) + 2);
   const double omega = 2.0 / (1.0 + std::sin(std::numbers::pi / extent));
   const int maxSweeps = static_cast<int>(std::min(100000.0, 20.0 * extent + 200.0));
   for (int sweep = 0; sweep < maxSweeps; ++sweep) {

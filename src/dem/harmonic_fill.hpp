@@ -34,9 +34,13 @@ void forEachNeighbour(const DemGrid& grid, int64_t row, int64_t column, F&& f) {
 // neighbour. Returns the value at each region sample (region order); nullopt when the region
 // has no non-void neighbour. Neighbours beyond the grid's edge are left out (zero slope there).
 // toleranceMeters: the largest change one more relaxation would make (a fill wants a
-// millimetre; a bend of whole metres, less).
+// millimetre; a bend of whole metres, less). thinExtentSamples > 0: a region that fills less than
+// a quarter of its bounding box (a collar of no data round a large raster) is relaxed on its own
+// samples, its over-relaxation tuned for that many samples across, instead of densely over the
+// whole box (whose memory and time grow with the raster, not the region).
 std::optional<std::vector<double>> solveHarmonic(
     const DemGrid& grid, const std::vector<uint8_t>& isVoid, const std::vector<size_t>& region,
-    const std::function<double(int64_t, int64_t)>& borderValue, double toleranceMeters = 1e-3);
+    const std::function<double(int64_t, int64_t)>& borderValue, double toleranceMeters = 1e-3,
+    double thinExtentSamples = 0);
 
 }  // namespace globe::dem

@@ -6,6 +6,7 @@
 #include "dem/condition.hpp"
 #include "dem/footprint_bend.hpp"
 #include "dem/grid_coarser_sources.hpp"
+#include "dem/harmonic_fill.hpp"
 #include "dem_test_grids.hpp"
 #include "terrain/height_block.hpp"
 
@@ -136,6 +137,31 @@ TEST(FootprintBend, TheEdgesFineDetailFadesInsteadOfStreaking) {
   EXPECT_LT(ripple(kBlanked - 12), 20);  // a streak: ~130 m (200 m × the weight there)
   // The broad difference (300 m) still reaches well out.
   EXPECT_GT(grid.at(50, kBlanked - 12), 1100);
+}
+
+TEST(FootprintBend, AThinRingIsRelaxedOnItsOwnSamplesToTheSameSurface) {
+  // A ring three samples wide round a 200×200 grid (a no-data collar): fixed at a slope on its
+  // inner side, free at the grid's edge. Relaxed on its own samples (thin) it is the surface the
+  // dense solve over the whole box finds.
+  const DemGrid grid = makeGrid(200, 200, [](int64_t, int64_t) { return int16_t{0}; });
+  std::vector<uint8_t> ring(grid.samples.size(), 0);
+  std::vector<size_t> region;
+  for (int64_t r = 0; r < 200; ++r) {
+    for (int64_t c = 0; c < 200; ++c) {
+      if (r < 3 || c < 3 || r >= 197 || c >= 197) {
+        ring[grid.index(r, c)] = 1;
+        region.push_back(grid.index(r, c));
+      }
+    }
+  }
+  const auto slope = [](int64_t r, int64_t c) { return 100.0 + 2.0 * double(r) - 0.5 * double(c); };
+  const auto dense = solveHarmonic(grid, ring, region, slope, 1e-4);
+  const auto thin = solveHarmonic(grid, ring, region, slope, 1e-4, 7.0);
+  ASSERT_TRUE(dense && thin);
+  double worst = 0;
+  for (size_t k = 0; k < region.size(); ++k)
+    worst = std::max(worst, std::abs((*dense)[k] - (*thin)[k]));
+  EXPECT_LT(worst, 0.01);
 }
 
 }  // namespace

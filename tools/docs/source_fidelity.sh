@@ -2,9 +2,9 @@
 # docs/source-fidelity.md: how the tiler draws each source it is given (README, "How real
 # inputs are drawn"), on real cases made from the repository's DEMs with GDAL's own tools: a
 # summit at a crop's edge, a coastal tile half blanked, two adjacent SRTM tiles, a DEM warped to
-# UTM, and the bundled tiles over the 20′ world grid. Each case is tiled by this tree's
-# globe-tiler and, when BASELINE_TILER names another (e.g. the previous commit's), by that one
-# too; globe-source-fidelity measures each pyramid (tools/fidelity/source_fidelity.hpp).
+# UTM, a no-data collar, and the bundled tiles over the 20′ world grid. Each case is tiled by
+# this tree's globe-tiler and, when BASELINE_TILER names another (e.g. the previous commit's), by
+# that one too; globe-source-fidelity measures each pyramid (tools/fidelity/source_fidelity.hpp).
 #
 #   tools/docs/source_fidelity.sh [BUILD_DIR] [BASELINE_TILER]
 set -euo pipefail
@@ -29,6 +29,13 @@ cat >"$WORK/south.geojson" <<'JSON'
  {"type": "Polygon", "coordinates": [[[137.9, 34.9], [139.1, 34.9], [139.1, 35.5], [137.9, 35.5], [137.9, 34.9]]]}}]}
 JSON
 gdal_rasterize -q -burn -32768 "$WORK/south.geojson" "$WORK/fuji-south-blanked.tif"
+gdal_translate -q "$FUJI_TIFF" "$WORK/fuji-collar.tif"
+cat >"$WORK/collar.geojson" <<'JSON'
+{"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {}, "geometry":
+ {"type": "Polygon", "coordinates": [[[137.9, 34.9], [139.1, 34.9], [139.1, 36.1], [137.9, 36.1], [137.9, 34.9]],
+  [[138.0025, 35.0025], [138.9975, 35.0025], [138.9975, 35.9975], [138.0025, 35.9975], [138.0025, 35.0025]]]}}]}
+JSON
+gdal_rasterize -q -burn -32768 "$WORK/collar.geojson" "$WORK/fuji-collar.tif"
 gdalwarp -q -t_srs EPSG:32654 -tr 90 90 -r bilinear -dstnodata -32768 "$FUJI_TIFF" "$WORK/fuji-utm54.tif"
 CASES=(
   "Fuji SRTM3 tile|$ROOT/data/dem/E138N35_FUJI.DEM"
@@ -39,6 +46,7 @@ CASES=(
   "Fuji tile, south half blanked to no data|$WORK/fuji-south-blanked.tif"
   "two adjacent SRTM3 tiles|$DEM/gtopo30/N50E008.DEM $DEM/gtopo30/N50E009.DEM"
   "Fuji warped to UTM 54N (no-data wedges)|$WORK/fuji-utm54.tif"
+  "Fuji with a no-data collar 3 samples wide|$WORK/fuji-collar.tif"
 )
 
 # Wall milliseconds of one tiling (two threads, as on a 2-core machine).

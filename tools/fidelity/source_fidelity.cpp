@@ -182,7 +182,8 @@ Result<SourceFidelity> measureSourceFidelity(io::TileStore& store, uint32_t leve
   const Lattice& lattice = *read;
   const std::vector<uint8_t> offData = noDataReachingBorder(source);
 
-  // Per lattice vertex: 1 on the footprint (2×2 data samples), 2 off it, 0 neither (beside an
+  // Per lattice vertex: 1 on the footprint (2×2 data samples), 2 off it (beyond the outer
+  // sample centres, or a sample of the 2×2 is no data reaching the border), 0 neither (beside an
   // enclosed void); and the source's bilinear value where on it.
   const size_t count = lattice.samples.size();
   std::vector<uint8_t> where(count, 0);
@@ -231,8 +232,9 @@ Result<SourceFidelity> measureSourceFidelity(io::TileStore& store, uint32_t leve
         sourceMeters[k] =
             (1 - tv) * ((1 - tu) * s[0] + tu * s[1]) + tv * ((1 - tu) * s[2] + tu * s[3]);
         land[k] = std::all_of(std::begin(s), std::end(s), [](int16_t x) { return x > 0; }) ? 1 : 0;
-      } else if (offData[source.index(std::lround(v), std::lround(u))] != 0) {
-        where[k] = 2;
+      } else if (offData[source.index(r0, c0)] != 0 || offData[source.index(r0, c1)] != 0 ||
+                 offData[source.index(r1, c0)] != 0 || offData[source.index(r1, c1)] != 0) {
+        where[k] = 2;  // touches no data reaching the border: the footprint's edge is here
       }
       // A measured sample at or below 0 m among the four puts the coast there (coast rule).
       overNoData[k] =

@@ -134,6 +134,20 @@ TEST(RealInputs, ADemWarpedToUtmHasNoMoatsAndNoWalls) {
   EXPECT_GT(measured[0].noDataVertices, 10000U);  // the wedges
 }
 
+TEST(RealInputs, ANoDataCollarShowsTheCoarserGridBentToTheData) {
+  // A collar of no data three samples wide round the tile (as GeoTIFF exports often have): one
+  // thin ring of outside samples, bent on its own samples rather than over the whole tile.
+  const fs::path dir = tiler::testing::freshTempDir("collar");
+  testing::blankRaster(kFujiTiff, dir / "fuji-collar.tif", [](double lon, double lat) {
+    return lon < 138.0025 || lon > 138.9975 || lat < 35.0025 || lat > 35.9975;
+  });
+  const auto measured = tileAndMeasure("collar", {kWorld, (dir / "fuji-collar.tif").string()});
+  ASSERT_EQ(measured.size(), 1U);
+  expectUnaltered(measured[0]);
+  expectNoWallAndNoFalseSea(measured[0]);
+  EXPECT_GT(measured[0].noDataVertices, 10000U);
+}
+
 TEST(RealInputs, WithoutACoarserSourceNoDataIsFilledNeverSea) {
   // The Fuji tile alone: its voids, some reaching the tile's edge, are filled, not sea shafts.
   const auto measured = tileAndMeasure("alone", {kFujiTiff});
