@@ -104,9 +104,9 @@ Result<std::vector<io::SourceConditioning>> conditionSources(std::vector<TilerSo
       return conditionUnguarded(i);
     } catch (const std::bad_alloc&) {
       return makeError(sources[i].argument +
-                       ": not enough memory to condition it (about 8 "
-                       "bytes a sample); split it into tiles (e.g. gdal_retile.py) and give them "
-                       "all");
+                       ": not enough memory to condition it (about 8 bytes a sample, up to "
+                       "about 30 where much of it lies outside its footprint); split it into "
+                       "tiles (e.g. gdal_retile.py) and give them all");
     }
   };
 
