@@ -27,11 +27,18 @@ complete_line() {  # words of a command line being typed -> what TAB offers
     "$COMPLETIONS/globe" "$@"
 }
 for check in "globe sn=snapshot" "globe snapshot --cam=--camera" "globe snapshot --off=--offline" "globe view --lay=--layer" \
-  "globe-tiler imagery --sc=--scale" "globe --=--help --version"; do
+  "globe-tiler imagery --sc=--scale" "globe --=--help --version" \
+  "globe-tiler --z=--z-scale --z-units" "globe-tiler imagery --ba=--bands"; do
   words=${check%%=*} wanted=${check#*=}
   # shellcheck disable=SC2086
   got=$(complete_line $words)
   [ "$got" = "$wanted" ] || { echo "completing '$words': '$got', wanted '$wanted'" >&2; exit 1; }
+done
+# The help's footers list rules as "  - ..." lines: no bare "-" is offered.
+for program in globe-tiler "globe-tiler imagery"; do
+  # shellcheck disable=SC2086
+  got=$(complete_line $program -)
+  case " $got " in *" - "*) echo "completing '$program -' offers a bare '-': '$got'" >&2; exit 1 ;; esac
 done
 
 # A small real pyramid: the whole globe at 20' and Mount Fuji's SRTM tile.

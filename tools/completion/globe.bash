@@ -14,9 +14,10 @@ _globe_complete() {
   done
   if [[ $current == -* ]]; then
     local options
-    # CLI11's option lines: "  -o,--output TEXT ...": the first field, split at commas.
+    # CLI11's option lines: "  -o,--output TEXT ...": the first field, split at commas (a
+    # letter after the dashes, so a "  - rule" line of the help's footer is no option).
     options=$("$program" ${subcommand:+"$subcommand"} --help 2>/dev/null |
-      sed -nE 's/^ +(-[^ ]*).*/\1/p' | tr ',' '\n' | sort -u)
+      sed -nE 's/^ +(--?[A-Za-z][^ ]*).*/\1/p' | tr ',' '\n' | sort -u)
     mapfile -t COMPREPLY < <(compgen -W "$options" -- "$current")
   elif [[ -z $subcommand && -n $subcommands && $COMP_CWORD -eq 1 ]]; then
     mapfile -t COMPREPLY < <(compgen -W "$subcommands" -- "$current")
