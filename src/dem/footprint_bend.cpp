@@ -55,12 +55,13 @@ std::vector<double> distanceToFootprint(const DemGrid& grid, const std::vector<u
   return distance2;
 }
 
-}  // namespace
-
+// 3t² − 2t³ of t clamped to [0, 1].
 double smoothstep(double t) {
   t = std::clamp(t, 0.0, 1.0);
   return t * t * (3.0 - 2.0 * t);
 }
+
+}  // namespace
 
 double bendWeight(double distanceDegrees, double marginDegrees) {
   if (!(marginDegrees > 0) || !(distanceDegrees < marginDegrees)) return 0.0;

@@ -18,9 +18,6 @@
 
 namespace globe::dem {
 
-// 3t² − 2t³ of t clamped to [0, 1].
-double smoothstep(double t);
-
 // The weight of the finer edge at distanceDegrees from it: 1 at it, 0 from marginDegrees on.
 double bendWeight(double distanceDegrees, double marginDegrees);
 

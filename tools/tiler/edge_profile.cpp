@@ -55,11 +55,14 @@ Result<EdgeProfiles> readEdgeProfiles(const io::RasterSource& raster) {
     }
     (north ? edges.north : edges.south) = EdgeProfile(heights(row));
   }
+  // The side columns: one sample of each row each (a spilled raster reads no whole rows).
   std::vector<int16_t> west(static_cast<size_t>(grid.rows)), east(static_cast<size_t>(grid.rows));
   for (int64_t r = 0; r < grid.rows; ++r) {
-    if (auto read = raster.readRow(r, 0, grid.cols, row.data()); !read) return Error{read.error()};
-    west[static_cast<size_t>(r)] = row.front();
-    east[static_cast<size_t>(r)] = row.back();
+    const auto i = static_cast<size_t>(r);
+    if (auto read = raster.readRow(r, 0, 1, &west[i]); !read) return Error{read.error()};
+    if (auto read = raster.readRow(r, grid.cols - 1, 1, &east[i]); !read) {
+      return Error{read.error()};
+    }
   }
   edges.west = EdgeProfile(heights(west));
   edges.east = EdgeProfile(heights(east));

@@ -12,9 +12,7 @@
 #include "io/tile_store.hpp"
 #include "tests/tools/fidelity/real_input_cases.hpp"
 #include "tests/tools/tiler/tiler_test_fixture.hpp"
-#include "tools/fidelity/source_fidelity.hpp"
-#include "tools/tiler/dem_reader.hpp"
-#include "tools/tiler/source_set.hpp"
+#include "tools/fidelity/input_fidelity.hpp"
 
 namespace globe::fidelity {
 namespace {
@@ -32,45 +30,24 @@ std::vector<SourceFidelity> tileAndMeasure(const std::string& name,
   const fs::path pyramid = tiler::testing::tilePyramid(name + "-pyramid", inputs);
   auto store = io::TileStore::open(pyramid.string());
   EXPECT_TRUE(store) << store.error();
-  auto sources = tiler::openSources(inputs, {17, {}});
-  EXPECT_TRUE(sources) << sources.error();
-  if (!store || !sources) return {};
-  std::vector<dem::DemGrid> grids;
-  for (const tiler::TilerSource& s : *sources) {
-    auto grid = tiler::readDemGrid(*s.raster, s.argument);
-    EXPECT_TRUE(grid) << grid.error();
-    grids.push_back(grid ? std::move(*grid) : dem::DemGrid{});
-  }
+  if (!store) return {};
+  auto inputsMeasured = measureInputs(**store, inputs);
+  EXPECT_TRUE(inputsMeasured) << inputsMeasured.error();
+  if (!inputsMeasured) return {};
   std::vector<SourceFidelity> measured;
-  for (size_t i = 0; i < sources->size(); ++i) {
-    if ((*sources)[i].grid.wrapsLongitude) continue;
-    std::vector<const dem::DemGrid*> coarser, peers;
-    for (size_t j = 0; j < sources->size(); ++j) {
-      const double step = (*sources)[j].stepDegrees, own = (*sources)[i].stepDegrees;
-      if (j == i) continue;
-      if (step > own * (1 + 1e-6)) {
-        coarser.push_back(&grids[j]);
-      } else if (step >= own * (1 - 1e-6)) {
-        peers.push_back(&grids[j]);
-      }
-    }
-    auto f = measureSourceFidelity(**store, (*sources)[i].finestLevel, grids[i], coarser, peers,
-                                   (*sources)[i].noDataIsWater);
-    EXPECT_TRUE(f) << f.error();
-    if (!f) continue;
+  for (const auto& [argument, f] : *inputsMeasured) {
     std::printf(
         "%s %s: |drawn - source| inside p95 %.1f max %.1f m (%llu), edge band p95 %.1f max "
         "%.1f m (%llu); steps across the edge worst %.1f m (source p99.9 %.1f m), %llu of %llu "
         "over 1.5x the local step; %llu of %llu vertices over no data drawn as sea over land\n",
-        name.c_str(), fs::path((*sources)[i].argument).filename().c_str(), f->inside.p95Meters,
-        f->inside.maxMeters, static_cast<unsigned long long>(f->inside.count),
-        f->edgeBand.p95Meters, f->edgeBand.maxMeters,
-        static_cast<unsigned long long>(f->edgeBand.count), f->worstStepAcrossMeters,
-        f->sourceP999StepMeters, static_cast<unsigned long long>(f->stepsOverLocalBound),
-        static_cast<unsigned long long>(f->edgePairs),
-        static_cast<unsigned long long>(f->noDataDrawnAsSeaOverLand),
-        static_cast<unsigned long long>(f->noDataVertices));
-    measured.push_back(*f);
+        name.c_str(), fs::path(argument).filename().c_str(), f.inside.p95Meters, f.inside.maxMeters,
+        static_cast<unsigned long long>(f.inside.count), f.edgeBand.p95Meters, f.edgeBand.maxMeters,
+        static_cast<unsigned long long>(f.edgeBand.count), f.worstStepAcrossMeters,
+        f.sourceP999StepMeters, static_cast<unsigned long long>(f.stepsOverLocalBound),
+        static_cast<unsigned long long>(f.edgePairs),
+        static_cast<unsigned long long>(f.noDataDrawnAsSeaOverLand),
+        static_cast<unsigned long long>(f.noDataVertices));
+    measured.push_back(f);
   }
   return measured;
 }
