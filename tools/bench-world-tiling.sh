@@ -2,7 +2,7 @@
 # Scale benchmark for globe-tiler: writes a synthetic world-sized GTOPO30 set (33 tiles, 43200×21600
 # samples, 1.87 GB) with globe-synth-gtopo30 and tiles it ROUNDS times, reporting per round the
 # wall time, CPU use and peak RSS, and the pyramid's tiles, files and size; writes
-# docs/world-tiling.md (naming the commit, the machine and the date).
+# docs/performance/world-tiling.md (naming the commit, the machine and the date).
 #
 #   tools/bench-world-tiling.sh [ROUNDS] [WORK_DIR]   (needs ~9 GB free; BUILD_DIR, default build)
 set -euo pipefail
@@ -11,8 +11,8 @@ cd "$ROOT"
 ROUNDS=${1:-2}
 WORK=${2:-/tmp/globe-world-bench}
 BUILD=${BUILD_DIR:-build}
-OUT_MD=${OUT_MD:-$ROOT/docs/world-tiling.md}
-for exe in "$BUILD/tools/synth/globe-synth-gtopo30" "$BUILD/tools/tiler/globe-tiler"; do
+OUT_MD=${OUT_MD:-$ROOT/docs/performance/world-tiling.md}
+for exe in "$BUILD/tools/synth/globe-synth-gtopo30" "$BUILD/apps/globe-tiler/globe-tiler"; do
   [ -x "$exe" ] || { echo "build it first: $exe" >&2; exit 1; }
 done
 mkdir -p "$WORK"
@@ -23,7 +23,7 @@ SOURCE_MB=$(du -cm "$WORK"/world/*.DEM | tail -1 | cut -f1)
 : >"$WORK/rounds.md"
 for ((round = 1; round <= ROUNDS; ++round)); do
   rm -rf "$WORK/pyramid"
-  /usr/bin/time -v "$BUILD/tools/tiler/globe-tiler" -q -o "$WORK/pyramid" "$WORK"/world/*.DEM \
+  /usr/bin/time -v "$BUILD/apps/globe-tiler/globe-tiler" -q -o "$WORK/pyramid" "$WORK"/world/*.DEM \
     >"$WORK/tiler.out" 2>"$WORK/tiler.time"
   cat "$WORK/tiler.out"
   wall=$(awk -F': ' '/Elapsed \(wall clock\)/ {print $2}' "$WORK/tiler.time")

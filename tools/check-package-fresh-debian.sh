@@ -4,13 +4,13 @@
 # dependency the package declares; then tiles the bundled Fuji data and renders a headless
 # snapshot there with the installed programs, and compares it byte for byte with the build tree's
 # own. Needs root and Debian's package mirror (not run by CI: it downloads the packages). Writes the
-# times to docs/package-fresh-debian.md.
+# times to docs/performance/package-fresh-debian.md.
 #
 #   sudo tools/check-package-fresh-debian.sh BUILD_DIR
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${1:?build directory (built, with globe and globe-tiler)}
-OUT_MD=${OUT_MD:-$PWD/docs/package-fresh-debian.md}
+OUT_MD=${OUT_MD:-$PWD/docs/performance/package-fresh-debian.md}
 START_ALL=$(date +%s)
 # shellcheck source=SCRIPTDIR/fresh-debian-root.sh
 source tools/fresh-debian-root.sh
@@ -36,9 +36,9 @@ VIEW=(--camera 138.60,35.20,6000,30,-15,0 --size 640x360)
 chroot "$ROOT" bash -c "cd /tmp && globe-tiler -q -o pyramid data/ETOPO20.DEM data/E138N35_FUJI.DEM \
   >/dev/null && globe snapshot pyramid ${VIEW[*]} -o fresh.png >/dev/null"
 HOST=$(mktemp -d)
-"$BUILD/tools/tiler/globe-tiler" -q -o "$HOST/pyramid" "$ROOT/tmp/data/ETOPO20.DEM" \
+"$BUILD/apps/globe-tiler/globe-tiler" -q -o "$HOST/pyramid" "$ROOT/tmp/data/ETOPO20.DEM" \
   "$ROOT/tmp/data/E138N35_FUJI.DEM" >/dev/null
-"$BUILD/src/app/globe" snapshot "$HOST/pyramid" "${VIEW[@]}" -o "$HOST/build.png" >/dev/null
+"$BUILD/apps/globe/globe" snapshot "$HOST/pyramid" "${VIEW[@]}" -o "$HOST/build.png" >/dev/null
 if cmp -s "$HOST/build.png" "$ROOT/tmp/fresh.png"; then
   echo "the installed package renders the same image as the build tree (byte for byte)"
   rm -rf "$HOST"

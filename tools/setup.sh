@@ -13,20 +13,20 @@ bash tools/install-deps.sh
 # directory with the same flags.
 bash tools/configure.sh build
 cmake --build build -j"$(nproc)" --target globe globe-tiler
-./build/tools/tiler/globe-tiler -o pyramid data/dem/ETOPO20.DEM data/dem/W002N52.DEM \
+./build/apps/globe-tiler/globe-tiler -o pyramid data/dem/ETOPO20.DEM data/dem/W002N52.DEM \
   data/dem/E138N35_FUJI.DEM data/dem/zion-srtm3.tif
-./build/tools/tiler/globe-tiler imagery -o layers/blue-marble --bounds -180,-90,180,90 \
+./build/apps/globe-tiler/globe-tiler imagery -o layers/blue-marble --bounds -180,-90,180,90 \
   data/imagery/world.topo.bathy.200412.3x5400x2700.jpg
-./build/tools/tiler/globe-tiler imagery -o layers/zion data/imagery/zion-landsat8-rgb.tif
-./build/src/app/globe info pyramid
+./build/apps/globe-tiler/globe-tiler imagery -o layers/zion data/imagery/zion-landsat8-rgb.tif
+./build/apps/globe/globe info pyramid
 LAYERS=(--layer layers/blue-marble --layer layers/zion)
 mkdir -p out
-./build/src/app/globe snapshot pyramid --camera 138,30,20000000 "${LAYERS[@]}" -o out/globe.png
-./build/src/app/globe snapshot pyramid --camera -112.93,37.16,4500,330,-20,0 "${LAYERS[@]}" -o out/zion.png
-./build/src/app/globe snapshot pyramid --camera 138.60,35.20,6000,30,-15,0 -o out/fuji_oblique.png
-echo "138.7275,35.3606" | ./build/src/app/globe query pyramid
-echo "Images in out/. Interactive: ./build/src/app/globe view pyramid ${LAYERS[*]} (needs a display)"
-PLAY=(./build/src/app/globe play pyramid data/paths/zion-demo.json "${LAYERS[@]}" --out out/play --size 640x360)
+./build/apps/globe/globe snapshot pyramid --camera 138,30,20000000 "${LAYERS[@]}" -o out/globe.png
+./build/apps/globe/globe snapshot pyramid --camera -112.93,37.16,4500,330,-20,0 "${LAYERS[@]}" -o out/zion.png
+./build/apps/globe/globe snapshot pyramid --camera 138.60,35.20,6000,30,-15,0 -o out/fuji_oblique.png
+echo "138.7275,35.3606" | ./build/apps/globe/globe query pyramid
+echo "Images in out/. Interactive: ./build/apps/globe/globe view pyramid ${LAYERS[*]} (needs a display)"
+PLAY=(./build/apps/globe/globe play pyramid data/paths/zion-demo.json "${LAYERS[@]}" --out out/play --size 640x360)
 if command -v ffmpeg >/dev/null 2>&1; then PLAY+=(--video out/play/zion.mp4); fi
 # In a window when a display works; headless (OSMesa) otherwise. Same frames either way.
 if [ -n "${DISPLAY:-}" ] && "${PLAY[@]}" --window; then :; else "${PLAY[@]}"; fi

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "geo/result.hpp"
+#include "core/result.hpp"
 
 namespace globe::render {
 

@@ -2,7 +2,7 @@
 // ~9 ms/frame slower for the whole run, so contexts spend that on a program nobody keeps.
 #pragma once
 
-#include "geo/result.hpp"
+#include "core/result.hpp"
 
 namespace globe::render {
 

@@ -4,7 +4,7 @@
 #include <memory>
 #include <string>
 
-#include "geo/result.hpp"
+#include "core/result.hpp"
 
 struct GLFWwindow;
 

@@ -13,7 +13,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
-#include "geo/result.hpp"
+#include "core/result.hpp"
 
 namespace globe::render {
 

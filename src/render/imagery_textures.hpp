@@ -9,7 +9,7 @@
 #include <span>
 #include <unordered_map>
 
-#include "geo/result.hpp"
+#include "core/result.hpp"
 #include "geo/tile_id.hpp"
 #include "render/gl_object.hpp"
 

@@ -5,7 +5,7 @@
 #include <memory>
 #include <vector>
 
-#include "geo/result.hpp"
+#include "core/result.hpp"
 
 struct osmesa_context;  // OSMesa's opaque context (GL/osmesa.h stays out of this header)
 

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <string_view>
 
-#include "geo/result.hpp"
+#include "core/result.hpp"
 #include "render/shader_program.hpp"
 
 namespace globe::render {

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string_view>
 
-#include "geo/result.hpp"
+#include "core/result.hpp"
 #include "render/gl_object.hpp"
 
 namespace globe::render {

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <memory>
 
-#include "geo/result.hpp"
+#include "core/result.hpp"
 #include "render/gl_object.hpp"
 #include "render/shader_program.hpp"
 #include "render/sky_model.hpp"

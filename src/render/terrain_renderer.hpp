@@ -9,7 +9,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "geo/result.hpp"
+#include "core/result.hpp"
 #include "geo/tile_id.hpp"
 #include "render/frame_stats.hpp"
 #include "terrain/render_view.hpp"

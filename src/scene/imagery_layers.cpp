@@ -11,34 +11,34 @@
 
 #include "geo/ecef.hpp"
 #include "geo/tiling_scheme.hpp"
-#include "io/background_pack_opens.hpp"
-#include "io/network_settings.hpp"
+#include "streaming/background_pack_opens.hpp"
 #include "terrain/imagery_level.hpp"
+#include "transport/network_settings.hpp"
 
 namespace globe::scene {
 
 struct ImageryLayers::Layer {
   LayerOptions options;
-  std::shared_ptr<io::ImageryStore> store;
-  std::unique_ptr<io::ImagerySource> source;
-  io::ImageryCache cache;
-  std::unique_ptr<io::ImageryLoader> loader;
-  io::TaskRunner& runner;
+  std::shared_ptr<streaming::ImageryStore> store;
+  std::unique_ptr<streaming::ImagerySource> source;
+  streaming::ImageryCache cache;
+  std::unique_ptr<streaming::ImageryLoader> loader;
+  core::TaskRunner& runner;
   // A remote layer's pack indexes, read on the loader's threads; the tasks hold the store, so a
   // layer may go while one still runs.
-  io::BackgroundPackOpens opening;
+  streaming::BackgroundPackOpens opening;
   std::unordered_map<geo::TileId, uint64_t> textureLastUsedFrame;  // textures on the GPU
   std::unordered_map<geo::TileId, bool> present;  // the layer's index, asked once per tile
 
-  Layer(LayerOptions layerOptions, std::unique_ptr<io::ImageryStore> layerStore,
-        io::TaskRunner& taskRunner, size_t decodedBytes)
+  Layer(LayerOptions layerOptions, std::unique_ptr<streaming::ImageryStore> layerStore,
+        core::TaskRunner& taskRunner, size_t decodedBytes)
       : options(std::move(layerOptions)),
         store(std::move(layerStore)),
-        source(std::make_unique<io::ImagerySource>(*store)),
+        source(std::make_unique<streaming::ImagerySource>(*store)),
         cache(decodedBytes),
-        loader(std::make_unique<io::ImageryLoader>(*source, taskRunner, cache)),
+        loader(std::make_unique<streaming::ImageryLoader>(*source, taskRunner, cache)),
         runner(taskRunner) {
-    if (store->remote()) loader->setMaxInFlight(io::kRemoteLoadsInFlight);
+    if (store->remote()) loader->setMaxInFlight(transport::kRemoteLoadsInFlight);
   }
   ~Layer() { loader.reset(); }  // waits for its running loads before the store goes
 
@@ -49,12 +49,12 @@ struct ImageryLayers::Layer {
     if (auto it = present.find(tile); it != present.end()) return it->second;
     bool has = false;
     if (store->remote()) {
-      const io::ImageryStore::Peek peek = store->peekTile(tile);
-      if (peek == io::ImageryStore::Peek::NotOpen) {
+      const streaming::ImageryStore::Peek peek = store->peekTile(tile);
+      if (peek == streaming::ImageryStore::Peek::NotOpen) {
         openInBackground(tile);
         return std::nullopt;
       }
-      has = peek == io::ImageryStore::Peek::Present;
+      has = peek == streaming::ImageryStore::Peek::Present;
     } else {
       auto answer = store->hasTile(tile);
       has = answer && *answer;
@@ -66,7 +66,7 @@ struct ImageryLayers::Layer {
   }
 
   void openInBackground(const geo::TileId& tile) {
-    opening.post(runner, io::packOf(tile, store->manifest().packTilesPerSide),
+    opening.post(runner, formats::packOf(tile, store->manifest().packTilesPerSide),
                  [store = store, tile] {
                    (void)store->hasTile(tile);  // opens the pack: an error is the store's to report
                  });
@@ -102,7 +102,7 @@ ImageryLayers::ImageryLayers(std::vector<std::unique_ptr<Layer>> layers,
 ImageryLayers::~ImageryLayers() = default;
 
 Result<std::unique_ptr<ImageryLayers>> ImageryLayers::open(std::span<const LayerOptions> layers,
-                                                           io::TaskRunner& runner,
+                                                           core::TaskRunner& runner,
                                                            const ImageryBudget& budget) {
   if (layers.size() > terrain::kMaxDrapeLayers) {
     return makeError("at most " + std::to_string(terrain::kMaxDrapeLayers) + " layers, not " +
@@ -110,7 +110,7 @@ Result<std::unique_ptr<ImageryLayers>> ImageryLayers::open(std::span<const Layer
   }
   std::vector<std::unique_ptr<Layer>> opened;
   for (const LayerOptions& options : layers) {
-    auto store = io::ImageryStore::open(options.directory);
+    auto store = streaming::ImageryStore::open(options.directory);
     if (!store) return Error{store.error()};
     opened.push_back(
         std::make_unique<Layer>(options, std::move(*store), runner, budget.decodedBytes));
@@ -165,9 +165,9 @@ Result<ImageryFrame> ImageryLayers::update(std::span<const geo::TileId> tiles,
   for (uint32_t index = 0; index < layers_.size(); ++index) {
     Layer& layer = *layers_[index];
     layer.cache.beginFrame();
-    const io::PollResult polled = layer.loader->poll();
+    const streaming::PollResult polled = layer.loader->poll();
     frame.arrived += polled.arrived.size();
-    for (const io::LoadError& error : polled.errors) {
+    for (const streaming::LoadError& error : polled.errors) {
       std::fprintf(stderr, "globe: imagery %s; drawing a coarser tile there\n",
                    error.message.c_str());
     }
@@ -176,7 +176,7 @@ Result<ImageryFrame> ImageryLayers::update(std::span<const geo::TileId> tiles,
     }
     const uint32_t tileSize = layer.store->manifest().tileSizePixels;
     const uint32_t maxLevel = layer.store->manifest().maxLevel();
-    std::vector<io::LoadRequest> wanted;
+    std::vector<streaming::LoadRequest> wanted;
     std::vector<geo::TileId> wantedTiles;
     for (size_t i = 0; i < tiles.size(); ++i) {
       const geo::TileId& tile = tiles[i];
@@ -214,9 +214,9 @@ Result<ImageryFrame> ImageryLayers::update(std::span<const geo::TileId> tiles,
         drawn = drawn.parent();
       }
       // A tile whose load failed (reported once) stays drawn through its ancestor.
-      const io::TileState state = layer.loader->state(target);
-      if (drawn.level < target.level && state != io::TileState::Failed &&
-          state != io::TileState::Absent) {
+      const streaming::TileState state = layer.loader->state(target);
+      if (drawn.level < target.level && state != streaming::TileState::Failed &&
+          state != streaming::TileState::Absent) {
         frame.complete = false;
         wanted.push_back({target, priority(i)});
       }
@@ -261,7 +261,7 @@ std::vector<terrain::NominalErrorRegion> ImageryLayers::nominalErrorRegions(
   std::vector<terrain::NominalErrorRegion> regions;
   for (const auto& layer : layers_) {
     if (!(layer->options.opacity > 0.0f)) continue;  // draws nothing
-    const io::LayerManifest& manifest = layer->store->manifest();
+    const formats::LayerManifest& manifest = layer->store->manifest();
     auto imageryLevel = [&](uint32_t terrainLevel) {
       return terrain::imageryLevelFor(terrainLevel, verticesPerSide, manifest.tileSizePixels,
                                       maximumScreenSpaceErrorPixels, manifest.maxLevel());
@@ -272,8 +272,8 @@ std::vector<terrain::NominalErrorRegion> ImageryLayers::nominalErrorRegions(
     }
     if (!deepest) continue;  // one level only: refining never sharpens it
     // The sources' extent, not the tiles' (a coarse tile spans far beyond its data).
-    std::optional<io::BoundsDegrees> extent;
-    for (const io::ImagerySourceInfo& source : manifest.sources) {
+    std::optional<formats::BoundsDegrees> extent;
+    for (const formats::ImagerySourceInfo& source : manifest.sources) {
       if (!extent) {
         extent = source.bounds;
         continue;
@@ -283,7 +283,7 @@ std::vector<terrain::NominalErrorRegion> ImageryLayers::nominalErrorRegions(
       extent->east = std::max(extent->east, source.bounds.east);
       extent->north = std::max(extent->north, source.bounds.north);
     }
-    io::BoundsDegrees bounds = extent.value_or(manifest.bounds);
+    formats::BoundsDegrees bounds = extent.value_or(manifest.bounds);
     if (bounds.west > bounds.east || bounds.west < -180.0 || bounds.east > 180.0) {
       // Across the antimeridian (either way of writing it): every longitude.
       bounds.west = -180.0;
@@ -296,10 +296,10 @@ std::vector<terrain::NominalErrorRegion> ImageryLayers::nominalErrorRegions(
   return regions;
 }
 
-io::LoaderCounters ImageryLayers::counters() const {
-  io::LoaderCounters sum;
+streaming::LoaderCounters ImageryLayers::counters() const {
+  streaming::LoaderCounters sum;
   for (const auto& layer : layers_) {
-    const io::LoaderCounters c = layer->loader->counters();
+    const streaming::LoaderCounters c = layer->loader->counters();
     sum.requested += c.requested;
     sum.started += c.started;
     sum.completed += c.completed;

@@ -14,12 +14,12 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/result.hpp"
+#include "core/task_runner.hpp"
 #include "geo/ellipsoid.hpp"
-#include "geo/result.hpp"
 #include "geo/tile_id.hpp"
-#include "io/imagery_source.hpp"
-#include "io/task_runner.hpp"
 #include "scene/tile_gpu.hpp"
+#include "streaming/imagery_source.hpp"
 #include "terrain/tile_drape.hpp"
 #include "terrain/tile_selection.hpp"
 
@@ -51,7 +51,7 @@ class ImageryLayers {
  public:
   // Opens every layer (errors name the directory); bottom layer first.
   static Result<std::unique_ptr<ImageryLayers>> open(std::span<const LayerOptions> layers,
-                                                     io::TaskRunner& runner,
+                                                     core::TaskRunner& runner,
                                                      const ImageryBudget& budget);
   ~ImageryLayers();
   ImageryLayers(const ImageryLayers&) = delete;
@@ -78,7 +78,7 @@ class ImageryLayers {
       uint32_t verticesPerSide, double maximumScreenSpaceErrorPixels) const;
 
   // Loader counters summed over the layers.
-  io::LoaderCounters counters() const;
+  streaming::LoaderCounters counters() const;
   // Blocks until some layer's load completes or the timeout passes.
   void waitForLoads(std::chrono::milliseconds timeout) const;
   // Lets failed tiles and packs be tried again (a server that was down may be back).

@@ -8,9 +8,9 @@
 #include "geo/ecef.hpp"
 #include "geo/frustum.hpp"
 #include "geo/tiling_scheme.hpp"
-#include "io/network_settings.hpp"
 #include "terrain/block_grid.hpp"
 #include "terrain/tile_mesh.hpp"
+#include "transport/network_settings.hpp"
 
 namespace globe::scene {
 namespace {
@@ -23,18 +23,18 @@ constexpr uint32_t kRemoteLookaheadLevels = 3;
 // is drawn) and is listed there, so that a server's round trip never blocks the frame.
 class SceneCatalog final : public terrain::TileCatalog {
  public:
-  SceneCatalog(io::TileStore& store, const io::TileLoader& loader,
+  SceneCatalog(streaming::TileStore& store, const streaming::TileLoader& loader,
                std::vector<geo::TileId>* notOpen)
       : store_(store), loader_(loader), notOpen_(notOpen) {}
   std::optional<terrain::TileSummary> find(const geo::TileId& tile) const override {
     if (notOpen_ != nullptr) {
-      io::PackEntry e;
+      formats::PackEntry e;
       switch (store_.peekEntry(tile, &e)) {
-        case io::TileStore::Peek::Present:
+        case streaming::TileStore::Peek::Present:
           return terrain::TileSummary{e.subtreeRange, e.geometricErrorMeters};
-        case io::TileStore::Peek::Absent:
+        case streaming::TileStore::Peek::Absent:
           return std::nullopt;
-        case io::TileStore::Peek::NotOpen:
+        case streaming::TileStore::Peek::NotOpen:
           notOpen_->push_back(tile);
           return std::nullopt;
       }
@@ -46,8 +46,8 @@ class SceneCatalog final : public terrain::TileCatalog {
   bool isResident(const geo::TileId& tile) const override { return loader_.isResident(tile); }
 
  private:
-  io::TileStore& store_;
-  const io::TileLoader& loader_;
+  streaming::TileStore& store_;
+  const streaming::TileLoader& loader_;
   std::vector<geo::TileId>* notOpen_;
 };
 
@@ -77,14 +77,14 @@ glm::dvec3 sunDirectionFor(const geo::Ellipsoid& ellipsoid, const camera::Camera
 
 }  // namespace
 
-TerrainScene::TerrainScene(std::unique_ptr<io::TileStore> store, const SceneOptions& options)
+TerrainScene::TerrainScene(std::unique_ptr<streaming::TileStore> store, const SceneOptions& options)
     : options_(options),
       ellipsoid_(geo::ellipsoidFor(options.globeModel)),
       store_(std::move(store)),
       cache_(options.cacheBudgetBytes),
       runner_(options.loaderThreads),
-      loader_(std::make_unique<io::TileLoader>(*store_, runner_, cache_)) {
-  if (store_->remote()) loader_->setMaxInFlight(io::kRemoteLoadsInFlight);
+      loader_(std::make_unique<streaming::TileLoader>(*store_, runner_, cache_)) {
+  if (store_->remote()) loader_->setMaxInFlight(transport::kRemoteLoadsInFlight);
 }
 
 TerrainScene::~TerrainScene() {
@@ -95,15 +95,16 @@ TerrainScene::~TerrainScene() {
 
 Result<std::unique_ptr<TerrainScene>> TerrainScene::open(const std::filesystem::path& pyramidDir,
                                                          const SceneOptions& options) {
-  auto store = io::TileStore::open(pyramidDir, options.sea);
+  auto store = streaming::TileStore::open(pyramidDir, options.sea);
   if (!store) return Error{store.error()};
   SceneOptions sceneOptions = options;
-  const bool remote = (*store)->remote() ||
-                      std::any_of(options.layers.begin(), options.layers.end(),
-                                  [](const LayerOptions& l) { return io::isHttpUrl(l.directory); });
+  const bool remote =
+      (*store)->remote() ||
+      std::any_of(options.layers.begin(), options.layers.end(),
+                  [](const LayerOptions& l) { return transport::isHttpUrl(l.directory); });
   if (remote) {
     sceneOptions.loaderThreads =
-        std::max<unsigned>(sceneOptions.loaderThreads, io::kRemoteLoadsInFlight);
+        std::max<unsigned>(sceneOptions.loaderThreads, transport::kRemoteLoadsInFlight);
   }
   std::unique_ptr<TerrainScene> scene(new TerrainScene(std::move(*store), sceneOptions));
   if (!options.layers.empty()) {
@@ -132,7 +133,7 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   FrameInfo info;
   retryFailedLoadsWhenDue();
   cache_.beginFrame();
-  const io::PollResult polled = loader_->poll();
+  const streaming::PollResult polled = loader_->poll();
   info.arrived = polled.arrived.size();
 
   // Clearance above the terrain sets the near plane: from the finest resident block under us.
@@ -181,11 +182,11 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   if (store_->remote()) {
     // Every level's pack under the camera at once, rather than one level per round trip as the
     // refinement reaches it: the packs a view needs are mostly these (a pack spans 64 tiles).
-    io::PackEntry ignored;
+    formats::PackEntry ignored;
     for (uint32_t level = 0; level <= store_->manifest().maxLevel(); ++level) {
       const auto tile = geo::GeographicTilingScheme::positionToTile(
           pose.position.longitudeRadians, pose.position.latitudeRadians, level);
-      if (tile && store_->peekEntry(*tile, &ignored) == io::TileStore::Peek::NotOpen) {
+      if (tile && store_->peekEntry(*tile, &ignored) == streaming::TileStore::Peek::NotOpen) {
         notOpen.push_back(*tile);
       }
     }
@@ -196,10 +197,10 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
                            options_.hysteresis ? tiles_ : std::vector<geo::TileId>{});
 
   cache_.touch(selection.tiles);
-  std::vector<io::LoadRequest> requests;
+  std::vector<streaming::LoadRequest> requests;
   for (const terrain::TileRequest& r : selection.requests) {
     if (r.tile.level <= options_.maximumLoadLevel &&
-        loader_->state(r.tile) != io::TileState::Failed) {
+        loader_->state(r.tile) != streaming::TileState::Failed) {
       requests.push_back({r.tile, r.priority});
     }
   }
@@ -240,7 +241,7 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
         break;
       }
       auto entry = store_->entry(*tile);
-      if (entry && *entry && loader_->state(*tile) != io::TileState::Failed) {
+      if (entry && *entry && loader_->state(*tile) != streaming::TileState::Failed) {
         requests.push_back({*tile, 1.0});  // after what the view needs
       }
     }
@@ -272,9 +273,10 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
 
 void TerrainScene::openPacksInBackground(const std::vector<geo::TileId>& tiles) {
   for (const geo::TileId& tile : tiles) {
-    packOpens_.post(runner_, io::packOf(tile, store_->manifest().packTilesPerSide), [this, tile] {
-      (void)store_->entry(tile);  // opens the pack: an error is the store's to report
-    });
+    packOpens_.post(
+        runner_, formats::packOf(tile, store_->manifest().packTilesPerSide), [this, tile] {
+          (void)store_->entry(tile);  // opens the pack: an error is the store's to report
+        });
   }
 }
 

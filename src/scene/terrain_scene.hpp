@@ -12,15 +12,15 @@
 #include <vector>
 
 #include "camera/camera_pose.hpp"
+#include "core/result.hpp"
+#include "core/thread_pool_runner.hpp"
 #include "geo/ellipsoid.hpp"
-#include "geo/result.hpp"
-#include "io/background_pack_opens.hpp"
-#include "io/block_cache.hpp"
-#include "io/thread_pool_runner.hpp"
-#include "io/tile_loader.hpp"
-#include "io/tile_store.hpp"
 #include "scene/imagery_layers.hpp"
 #include "scene/tile_gpu.hpp"
+#include "streaming/background_pack_opens.hpp"
+#include "streaming/block_cache.hpp"
+#include "streaming/tile_loader.hpp"
+#include "streaming/tile_store.hpp"
 #include "terrain/height_block.hpp"
 #include "terrain/render_view.hpp"
 #include "terrain/rendering_tile_array.hpp"
@@ -71,9 +71,9 @@ class TerrainScene {
   ~TerrainScene();
 
   const geo::Ellipsoid& ellipsoid() const { return ellipsoid_; }
-  io::TileStore& store() { return *store_; }
-  const io::TileLoader& loader() const { return *loader_; }
-  const io::BlockCache& cache() const { return cache_; }
+  streaming::TileStore& store() { return *store_; }
+  const streaming::TileLoader& loader() const { return *loader_; }
+  const streaming::BlockCache& cache() const { return cache_; }
   // The imagery layers, or null without --layer.
   const ImageryLayers* imagery() const { return imagery_.get(); }
   // Per tile of tiles(), the imagery drawn on it (empty without layers).
@@ -103,7 +103,7 @@ class TerrainScene {
                                         std::chrono::seconds timeout);
 
  private:
-  TerrainScene(std::unique_ptr<io::TileStore> store, const SceneOptions& options);
+  TerrainScene(std::unique_ptr<streaming::TileStore> store, const SceneOptions& options);
   void updateImagery(const glm::dvec3& cameraEcefMeters, TileGpu& gpu, FrameInfo& info);
   void retryFailedLoadsWhenDue();
   // Reads these tiles' pack indexes on the loader's threads (a remote pyramid).
@@ -113,11 +113,12 @@ class TerrainScene {
 
   SceneOptions options_;
   geo::Ellipsoid ellipsoid_;
-  std::unique_ptr<io::TileStore> store_;
-  io::BlockCache cache_;
-  io::ThreadPoolRunner runner_;
-  std::unique_ptr<io::TileLoader> loader_;
-  io::BackgroundPackOpens packOpens_;  // a remote pyramid's pack indexes, read off this thread
+  std::unique_ptr<streaming::TileStore> store_;
+  streaming::BlockCache cache_;
+  core::ThreadPoolRunner runner_;
+  std::unique_ptr<streaming::TileLoader> loader_;
+  streaming::BackgroundPackOpens
+      packOpens_;  // a remote pyramid's pack indexes, read off this thread
   std::chrono::steady_clock::time_point lastRetry_ = std::chrono::steady_clock::now();
   std::unique_ptr<ImageryLayers> imagery_;
   // Where the layers need the terrain's nominal refinement (ImageryLayers::nominalErrorRegions):

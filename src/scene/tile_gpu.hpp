@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <span>
 
-#include "geo/result.hpp"
+#include "core/result.hpp"
 #include "geo/tile_id.hpp"
 #include "terrain/tile_mesh.hpp"
 

@@ -14,7 +14,7 @@ struct TileSummary {
   // Bounds of the tile's vertices and of all its descendants' (metres, sea = 0 m).
   HeightRange subtreeHeightRange;
   // How far the tile's surface lies from the finer data under it, as the tiler measured it
-  // (metres, io/pack_format.hpp); NaN when the pyramid does not say (screen_space_error.hpp).
+  // (metres, formats/pack_format.hpp); NaN when the pyramid does not say (screen_space_error.hpp).
   double measuredGeometricErrorMeters = std::numeric_limits<double>::quiet_NaN();
 };
 

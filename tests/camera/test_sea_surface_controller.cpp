@@ -16,9 +16,9 @@
 #include "collision/collision_response.hpp"
 #include "collision/exact_surface.hpp"
 #include "geo/ecef.hpp"
-#include "io/tile_store.hpp"
+#include "streaming/tile_store.hpp"
 #include "terrain/tile_mesh.hpp"
-#include "tests/io/sea_test_pyramid.hpp"
+#include "tests/support/sea_test_pyramid.hpp"
 #include "tests/support/test_constants.hpp"
 
 namespace globe::terrain {
@@ -46,13 +46,14 @@ struct Spot {
   double seaFloorMeters;
 };
 const Spot kSpots[] = {
-    {"open sea", io::test::kSeaTile, 7, 7, 0.0, io::test::kSeaFloorMeters},
-    {"water over a known floor beside land", io::test::kMixedTile, 6, 1, 0.0,
-     io::test::kSeaFloorMeters},
-    {"water of unknown depth", io::test::kMixedTile, 6, 5, 0.0, 0.0},
-    {"land below sea level", io::test::kMixedTile, 6, 9, io::test::kMixedLandBelowSeaLevelMeters,
-     io::test::kMixedLandBelowSeaLevelMeters},
-    {"land", io::test::kMixedTile, 6, 13, io::test::kMixedLandMeters, io::test::kMixedLandMeters},
+    {"open sea", globe::testing::kSeaTile, 7, 7, 0.0, globe::testing::kSeaFloorMeters},
+    {"water over a known floor beside land", globe::testing::kMixedTile, 6, 1, 0.0,
+     globe::testing::kSeaFloorMeters},
+    {"water of unknown depth", globe::testing::kMixedTile, 6, 5, 0.0, 0.0},
+    {"land below sea level", globe::testing::kMixedTile, 6, 9,
+     globe::testing::kMixedLandBelowSeaLevelMeters, globe::testing::kMixedLandBelowSeaLevelMeters},
+    {"land", globe::testing::kMixedTile, 6, 13, globe::testing::kMixedLandMeters,
+     globe::testing::kMixedLandMeters},
 };
 
 class SeaSurfaceController : public ::testing::TestWithParam<SeaSurface> {
@@ -61,15 +62,15 @@ class SeaSurfaceController : public ::testing::TestWithParam<SeaSurface> {
     dir_ = fs::temp_directory_path() / ("globe_sea_controller_" + std::to_string(::getpid()) + "_" +
                                         std::to_string(static_cast<int>(GetParam())));
     fs::remove_all(dir_);
-    ASSERT_TRUE(io::test::writeSeaTestPyramid(dir_));
+    ASSERT_TRUE(globe::testing::writeSeaTestPyramid(dir_));
     // The blocks as the viewer gets them: from a store opened with the view's sea surface.
-    auto store = io::TileStore::open(dir_, GetParam());
+    auto store = streaming::TileStore::open(dir_, GetParam());
     ASSERT_TRUE(store) << store.error();
     std::vector<terrain::ArrayTile> tiles;
     for (uint32_t dy = 0; dy < 2; ++dy) {
       for (uint32_t dx = 0; dx < 2; ++dx) {
-        const geo::TileId id{io::test::kSeaTestLevel, io::test::kSeaTile.x + dx,
-                             io::test::kSeaTile.y + dy};
+        const geo::TileId id{globe::testing::kSeaTestLevel, globe::testing::kSeaTile.x + dx,
+                             globe::testing::kSeaTile.y + dy};
         auto block = (*store)->loadBlock(id);
         ASSERT_TRUE(block) << block.error();
         blocks_.push_back(std::move(*block));
@@ -84,7 +85,7 @@ class SeaSurfaceController : public ::testing::TestWithParam<SeaSurface> {
     return GetParam() == SeaSurface::Water ? spot.waterSurfaceMeters : spot.seaFloorMeters;
   }
   static geo::Cartographic above(const Spot& spot, double heightMeters) {
-    const auto centre = io::test::cellCentreDegrees(spot.tile, spot.row, spot.column);
+    const auto centre = globe::testing::cellCentreDegrees(spot.tile, spot.row, spot.column);
     return geo::Cartographic::fromDegrees(centre.longitude, centre.latitude, heightMeters);
   }
 
@@ -159,7 +160,7 @@ TEST_P(SeaSurfaceController, OnlyTheSeaFloorLetsTheCameraUnderWater) {
     EXPECT_GT(height, 1.9) << "the water surface is the ground";
   } else {
     EXPECT_LT(height, -150.0) << "under water";
-    EXPECT_GT(height, io::test::kSeaFloorMeters + 1.9) << "above the floor";
+    EXPECT_GT(height, globe::testing::kSeaFloorMeters + 1.9) << "above the floor";
   }
 }
 

@@ -9,7 +9,7 @@
 
 #include "geo/tiling_scheme.hpp"
 #include "terrain/block_grid.hpp"
-#include "tests/tools/tiler/tiler_test_fixture.hpp"
+#include "tests/support/tiler_test_fixture.hpp"
 
 namespace globe::collision::testing {
 namespace {
@@ -88,7 +88,7 @@ double meshVertexLatitude(const geo::TileId& tile, uint32_t verticesPerSide, uin
 
 RealPyramid& RealPyramid::bundled() {
   static RealPyramid* pyramid = [] {
-    auto store = io::TileStore::open(tiler::testing::bundledPyramid());
+    auto store = streaming::TileStore::open(globe::testing::bundledPyramid());
     if (!store) {
       ADD_FAILURE() << store.error();
       std::abort();
@@ -101,8 +101,8 @@ RealPyramid& RealPyramid::bundled() {
 RealPyramid& RealPyramid::zion() {
   static RealPyramid* pyramid = [] {
     const std::string dir = std::string(GLOBE_SOURCE_DIR) + "/data/dem/";
-    auto store = io::TileStore::open(
-        tiler::testing::tilePyramid("zion-pyramid", {dir + "ETOPO20.DEM", dir + "zion-srtm3.tif"}));
+    auto store = streaming::TileStore::open(
+        globe::testing::tilePyramid("zion-pyramid", {dir + "ETOPO20.DEM", dir + "zion-srtm3.tif"}));
     if (!store) {
       ADD_FAILURE() << store.error();
       std::abort();
@@ -144,13 +144,13 @@ RenderingTileArray RealPyramid::array(const std::vector<geo::TileId>& tiles) {
 }
 
 geo::TileId RealPyramid::randomTile(std::mt19937_64& rng, uint32_t level) {
-  std::vector<io::SourceInfo> sources;
-  for (const io::SourceInfo& source : store_->manifest().sources) {
+  std::vector<formats::SourceInfo> sources;
+  for (const formats::SourceInfo& source : store_->manifest().sources) {
     if (source.finestLevel >= level) sources.push_back(source);
   }
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int attempt = 0; attempt < 10000 && !sources.empty(); ++attempt) {
-    const io::BoundsDegrees b = pick(rng, sources).bounds;
+    const formats::BoundsDegrees b = pick(rng, sources).bounds;
     const double lon = b.west + unit(rng) * (b.east - b.west);
     const double lat = std::clamp(b.south + unit(rng) * (b.north - b.south), -90.0, 90.0);
     const auto tile =

@@ -12,7 +12,7 @@
 
 #include "collision/terrain_array.hpp"
 #include "geo/tile_id.hpp"
-#include "io/tile_store.hpp"
+#include "streaming/tile_store.hpp"
 #include "terrain/height_block.hpp"
 
 namespace globe::collision::testing {
@@ -52,8 +52,8 @@ class RealPyramid {
   geo::TileId randomTile(std::mt19937_64& rng, uint32_t level);
 
  private:
-  explicit RealPyramid(std::unique_ptr<io::TileStore> store) : store_(std::move(store)) {}
-  std::unique_ptr<io::TileStore> store_;
+  explicit RealPyramid(std::unique_ptr<streaming::TileStore> store) : store_(std::move(store)) {}
+  std::unique_ptr<streaming::TileStore> store_;
   std::unordered_map<geo::TileId, bool> exists_;
   std::unordered_map<geo::TileId, terrain::HeightBlock> blocks_;
 };

@@ -8,15 +8,15 @@
 #include <span>
 #include <string>
 
-#include "io/big_endian.hpp"
-#include "io/camera_path_file.hpp"
-#include "io/crc32.hpp"
-#include "io/gtopo30_header.hpp"
-#include "io/http_client.hpp"
-#include "io/image_pack.hpp"
-#include "io/layer_manifest.hpp"
-#include "io/pack_format.hpp"
-#include "io/pyramid_manifest.hpp"
+#include "camera/camera_path_file.hpp"
+#include "core/big_endian.hpp"
+#include "core/crc32.hpp"
+#include "formats/image_pack.hpp"
+#include "formats/layer_manifest.hpp"
+#include "formats/pack_format.hpp"
+#include "formats/pyramid_manifest.hpp"
+#include "rasters/gtopo30_header.hpp"
+#include "transport/http_client.hpp"
 
 namespace globe::fuzz {
 namespace {
@@ -34,7 +34,7 @@ std::filesystem::path writeTemp(const uint8_t* data, size_t size, const char* ex
   return path;
 }
 
-void touch(const Result<io::CameraPathFile>& result) {
+void touch(const Result<camera::CameraPathFile>& result) {
   if (result) {
     volatile size_t n = result->keyframes.size();
     (void)n;
@@ -47,34 +47,34 @@ void touch(const Result<io::CameraPathFile>& result) {
 }  // namespace
 
 void gtopo30Header(const uint8_t* data, size_t size) {
-  auto header = io::parseGtopo30Header(asText(data, size), "fuzz.HDR");
-  if (header) (void)io::formatGtopo30Header(*header);
+  auto header = rasters::parseGtopo30Header(asText(data, size), "fuzz.HDR");
+  if (header) (void)rasters::formatGtopo30Header(*header);
 }
 
 void pack(const uint8_t* data, size_t size) {
   const std::span<const std::byte> bytes(reinterpret_cast<const std::byte*>(data), size);
-  auto whole = io::decodePack(bytes, "fuzz.pack");
-  if (whole) (void)io::encodePack(*whole);
+  auto whole = formats::decodePack(bytes, "fuzz.pack");
+  if (whole) (void)formats::encodePack(*whole);
   // The streaming reader's path: the head and index only, against the same and a larger file.
-  (void)io::decodePackIndex(bytes, size, "fuzz.pack");
-  (void)io::decodePackIndex(bytes.first(size / 2), size, "fuzz.pack");
+  (void)formats::decodePackIndex(bytes, size, "fuzz.pack");
+  (void)formats::decodePackIndex(bytes.first(size / 2), size, "fuzz.pack");
 }
 
 void manifest(const uint8_t* data, size_t size) {
-  auto result = io::manifestFromJson(asText(data, size), "fuzz/manifest.json");
-  if (result) (void)io::manifestToJson(*result);
+  auto result = formats::manifestFromJson(asText(data, size), "fuzz/manifest.json");
+  if (result) (void)formats::manifestToJson(*result);
 }
 
 void pathJson(const uint8_t* data, size_t size) {
   const auto path = writeTemp(data, size, ".json");
-  touch(io::readCameraPathJson(path));
+  touch(camera::readCameraPathJson(path));
   std::error_code ignored;
   std::filesystem::remove(path, ignored);
 }
 
 void pathKml(const uint8_t* data, size_t size) {
   const auto path = writeTemp(data, size, ".kml");
-  touch(io::readKmlTour(path));
+  touch(camera::readKmlTour(path));
   std::error_code ignored;
   std::filesystem::remove(path, ignored);
 }
@@ -84,18 +84,19 @@ void remote(const uint8_t* data, size_t size) {
   uint64_t first = 0;
   uint64_t last = 0;
   uint64_t total = 0;
-  (void)io::parseContentRange(std::string(text.substr(0, text.find('\n'))), &first, &last, &total);
+  (void)transport::parseContentRange(std::string(text.substr(0, text.find('\n'))), &first, &last,
+                                     &total);
   const std::span<const std::byte> bytes(reinterpret_cast<const std::byte*>(data), size);
   // As a whole pack (its trailer CRC in its last 4 bytes), and as a head of a longer file.
   if (size >= 4) {
-    const uint32_t trailer = io::loadBigEndian32(bytes.data() + size - 4);
-    (void)io::decodeImagePackIndex(bytes, trailer, size, "fuzz.pack");
-    auto whole = io::decodeImagePack(bytes, "fuzz.pack");
+    const uint32_t trailer = core::loadBigEndian32(bytes.data() + size - 4);
+    (void)formats::decodeImagePackIndex(bytes, trailer, size, "fuzz.pack");
+    auto whole = formats::decodeImagePack(bytes, "fuzz.pack");
     if (whole) (void)whole->payloads.size();
   }
-  (void)io::decodeImagePackIndex(bytes, io::crc32(bytes), uint64_t{1} << 40, "fuzz.pack");
-  auto layer = io::layerManifestFromJson(text, "fuzz/layer.json");
-  if (layer) (void)io::layerManifestToJson(*layer);
+  (void)formats::decodeImagePackIndex(bytes, core::crc32(bytes), uint64_t{1} << 40, "fuzz.pack");
+  auto layer = formats::layerManifestFromJson(text, "fuzz/layer.json");
+  if (layer) (void)formats::layerManifestToJson(*layer);
 }
 
 Entry entryNamed(std::string_view target) {

@@ -7,10 +7,10 @@
 #include <iterator>
 #include <vector>
 
+#include "core/crc32.hpp"
+#include "formats/pack_format.hpp"
+#include "formats/pyramid_manifest.hpp"
 #include "fuzz_entries.hpp"
-#include "io/crc32.hpp"
-#include "io/pack_format.hpp"
-#include "io/pyramid_manifest.hpp"
 
 namespace {
 
@@ -49,10 +49,10 @@ TEST(FuzzCorpus, PackSeedsDecodeAndTheVersion1SeedIsRefused) {
     return bytes;
   };
   for (const char* seed : {"seed-p1n5.pack", "seed-p2n3.pack", "seed-p4n3-empty.pack"}) {
-    const auto pack = globe::io::decodePack(read(seed), seed);
+    const auto pack = globe::formats::decodePack(read(seed), seed);
     EXPECT_TRUE(pack.ok()) << seed << ": " << pack.error();
   }
-  const auto old = globe::io::decodePack(read("seed-p1n5-version1.pack"), "v1.pack");
+  const auto old = globe::formats::decodePack(read("seed-p1n5-version1.pack"), "v1.pack");
   ASSERT_FALSE(old.ok());
   EXPECT_EQ(old.error().rfind("v1.pack: pack format version 1 was made by an older globe-tiler", 0),
             0u)
@@ -62,24 +62,30 @@ TEST(FuzzCorpus, PackSeedsDecodeAndTheVersion1SeedIsRefused) {
 // Regression: a 16 MiB pack claiming 1024x1024 slots of 1025x1025 vertices (no tiles present)
 // once made decodePack allocate 2 TiB for its blocks; it is now refused by name.
 TEST(FuzzRegression, PackWithHugeLayoutIsRefusedWithoutAllocating) {
-  const globe::io::PackLayout layout{1024, 1025};
+  const globe::formats::PackLayout layout{1024, 1025};
   std::vector<std::byte> bytes(layout.fileBytes(0));
   const char magic[] = "GLOBEPK1";
   for (size_t i = 0; i < 8; ++i) bytes[i] = static_cast<std::byte>(magic[i]);
-  const uint32_t header[8] = {globe::io::kPackFormatVersion, 10, 0, 0, layout.tilesPerSide,
-                              layout.verticesPerSide,        0,  0};
+  const uint32_t header[8] = {globe::formats::kPackFormatVersion,
+                              10,
+                              0,
+                              0,
+                              layout.tilesPerSide,
+                              layout.verticesPerSide,
+                              0,
+                              0};
   for (size_t i = 0; i < 8; ++i) {
     for (size_t b = 0; b < 4; ++b) {
       bytes[8 + 4 * i + b] = static_cast<std::byte>((header[i] >> (24 - 8 * b)) & 0xFFU);
     }
   }
   const size_t body = bytes.size() - 4;
-  const uint32_t crc = globe::io::crc32(std::span(bytes).first(body));
+  const uint32_t crc = globe::core::crc32(std::span(bytes).first(body));
   for (size_t b = 0; b < 4; ++b) {
     bytes[body + b] = static_cast<std::byte>((crc >> (24 - 8 * b)) & 0xFFU);
   }
-  ASSERT_TRUE(globe::io::decodePackIndex(bytes, bytes.size(), "huge.pack").ok());
-  const auto pack = globe::io::decodePack(bytes, "huge.pack");
+  ASSERT_TRUE(globe::formats::decodePackIndex(bytes, bytes.size(), "huge.pack").ok());
+  const auto pack = globe::formats::decodePack(bytes, "huge.pack");
   ASSERT_FALSE(pack.ok());
   EXPECT_NE(pack.error().find("huge.pack"), std::string::npos) << pack.error();
   EXPECT_NE(pack.error().find("MiB in memory"), std::string::npos) << pack.error();
@@ -90,7 +96,7 @@ TEST(FuzzRegression, PackWithHugeLayoutIsRefusedWithoutAllocating) {
 TEST(FuzzRegression, ManifestIntegerOutOfRangeIsAnError) {
   const std::string text = R"({"format": "globe-pyramid", "formatVersion": 1, "blockSize": 17,
     "packTilesPerSide": 1e64, "globeModel": "wgs84", "levels": [], "sources": []})";
-  const auto manifest = globe::io::manifestFromJson(text, "m/manifest.json");
+  const auto manifest = globe::formats::manifestFromJson(text, "m/manifest.json");
   ASSERT_FALSE(manifest.ok());
   EXPECT_NE(manifest.error().find("m/manifest.json"), std::string::npos) << manifest.error();
   EXPECT_NE(manifest.error().find("expected an integer in 0..4294967295"), std::string::npos)
@@ -98,7 +104,7 @@ TEST(FuzzRegression, ManifestIntegerOutOfRangeIsAnError) {
   for (const char* bad : {"-1", "4294967296", "2.5", "\"17\""}) {
     const std::string other =
         R"({"format": "globe-pyramid", "formatVersion": 1, "blockSize": )" + std::string(bad) + "}";
-    EXPECT_FALSE(globe::io::manifestFromJson(other, "m/manifest.json").ok()) << bad;
+    EXPECT_FALSE(globe::formats::manifestFromJson(other, "m/manifest.json").ok()) << bad;
   }
 }
 

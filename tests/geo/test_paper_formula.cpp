@@ -1,6 +1,6 @@
 // Demonstrates the flaws of the paper's formula (1) against the robust ecefToCartographic:
 // quadrant loss of atan(x/z) and the ill-conditioning of asin near the poles.
-#include "geo/paper_formula.hpp"
+#include "tests/support/paper_formula.hpp"
 
 #include <cmath>
 #include <iostream>
@@ -17,15 +17,15 @@ namespace globe::geo {
 namespace {
 
 TEST(PaperFormula, FrameMapping) {
-  EXPECT_EQ(ecefToPaperYUp({1.0, 2.0, 3.0}), glm::dvec3(2.0, 3.0, 1.0));
+  EXPECT_EQ(globe::testing::ecefToPaperYUp({1.0, 2.0, 3.0}), glm::dvec3(2.0, 3.0, 1.0));
 }
 
 TEST(PaperFormula, AgreesInTheFrontHemisphere) {
   const Ellipsoid sphere = Ellipsoid::sphere();
   for (const double lonDegrees : {0.0, 45.0, -45.0, 89.0, -89.0}) {
     const Cartographic c = Cartographic::fromDegrees(lonDegrees, 30.0, 500.0);
-    const PaperSphereCoordinates paper =
-        paperFormula1(ecefToPaperYUp(cartographicToEcef(sphere, c)));
+    const globe::testing::PaperSphereCoordinates paper = globe::testing::paperFormula1(
+        globe::testing::ecefToPaperYUp(cartographicToEcef(sphere, c)));
     EXPECT_NEAR(paper.longitudeRadians, c.longitudeRadians, 1e-14);
     EXPECT_NEAR(paper.latitudeRadians, c.latitudeRadians, 1e-14);
     EXPECT_NEAR(paper.radiusMeters, 6371500.0, 1e-8);
@@ -39,7 +39,8 @@ TEST(PaperFormula, LongitudeLosesTheQuadrant) {
   for (const double lonDegrees : {135.0, -135.0, 180.0, -180.0, 91.0, -100.0}) {
     const Cartographic c = Cartographic::fromDegrees(lonDegrees, -20.0, 0.0);
     const glm::dvec3 ecef = cartographicToEcef(sphere, c);
-    const PaperSphereCoordinates paper = paperFormula1(ecefToPaperYUp(ecef));
+    const globe::testing::PaperSphereCoordinates paper =
+        globe::testing::paperFormula1(globe::testing::ecefToPaperYUp(ecef));
     EXPECT_NEAR(std::abs(paper.longitudeRadians - c.longitudeRadians), std::numbers::pi, 1e-14)
         << lonDegrees;
     const std::optional<Cartographic> robust = ecefToCartographic(sphere, ecef);
@@ -52,7 +53,7 @@ TEST(PaperFormula, LongitudeLosesTheQuadrant) {
   }
   // On the 90 deg meridians z_gl = x_ecef is ~0 and atan(x/z) divides by (nearly) zero; at the
   // geocentre the formula gives NaN where ecefToCartographic says "undefined".
-  EXPECT_TRUE(std::isnan(paperFormula1(glm::dvec3{0.0}).longitudeRadians));
+  EXPECT_TRUE(std::isnan(globe::testing::paperFormula1(glm::dvec3{0.0}).longitudeRadians));
   EXPECT_FALSE(ecefToCartographic(sphere, glm::dvec3{0.0}).has_value());
 }
 
@@ -73,7 +74,8 @@ TEST(PaperFormula, LatitudeLosesPrecisionNearThePoles) {
     const double latitude = (i % 2 == 0 ? 1.0 : -1.0) * (std::numbers::pi / 2.0 - fromPole);
     const Cartographic c{longitude(rng), latitude, 0.0};
     const glm::dvec3 ecef = cartographicToEcef(sphere, c);
-    const PaperSphereCoordinates paper = paperFormula1(ecefToPaperYUp(ecef));
+    const globe::testing::PaperSphereCoordinates paper =
+        globe::testing::paperFormula1(globe::testing::ecefToPaperYUp(ecef));
     const std::optional<Cartographic> robust = ecefToCartographic(sphere, ecef);
     ASSERT_TRUE(robust);
     paperMaxError = std::max(paperMaxError, std::abs(paper.latitudeRadians - latitude) * radius);

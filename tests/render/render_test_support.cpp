@@ -10,12 +10,12 @@
 #include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>
 
+#include "formats/image_io.hpp"
 #include "geo/ecef.hpp"
 #include "geo/tiling_scheme.hpp"
-#include "io/image_io.hpp"
 #include "render/read_pixels.hpp"
 #include "terrain/tile_mesh.hpp"
-#include "tools/tiler/tiler.hpp"
+#include "tiling/tiler.hpp"
 
 namespace globe::render::test {
 namespace {
@@ -23,7 +23,7 @@ namespace {
 // Tiles the bundled data into a temporary directory; removes it when the process ends.
 struct TempPyramid {
   std::filesystem::path root;
-  std::unique_ptr<io::TileStore> store;
+  std::unique_ptr<streaming::TileStore> store;
 
   TempPyramid() {
     root = std::filesystem::temp_directory_path() /
@@ -31,16 +31,16 @@ struct TempPyramid {
     std::filesystem::remove_all(root);
     std::filesystem::create_directories(root);
     const std::string dem = std::string(GLOBE_SOURCE_DIR) + "/data/dem/";
-    tiler::TilerOptions options;
+    tiling::TilerOptions options;
     options.inputs = {dem + "ETOPO20.DEM", dem + "W002N52.DEM", dem + "E138N35_FUJI.DEM"};
     options.outputDir = root / "pyramid";
     options.progress = false;
-    auto report = tiler::runTiler(options);
+    auto report = tiling::runTiler(options);
     if (!report) {
       ADD_FAILURE() << report.error();
       return;
     }
-    auto opened = io::TileStore::open(options.outputDir);
+    auto opened = streaming::TileStore::open(options.outputDir);
     if (!opened) {
       ADD_FAILURE() << opened.error();
       return;
@@ -63,12 +63,12 @@ TempPyramid& tempPyramid() {
 
 }  // namespace
 
-io::TileStore* bundledStore() { return tempPyramid().store.get(); }
+streaming::TileStore* bundledStore() { return tempPyramid().store.get(); }
 
 std::vector<LoadedTile> loadTiles(uint32_t level, double westDegrees, double southDegrees,
                                   double eastDegrees, double northDegrees) {
   std::vector<LoadedTile> tiles;
-  io::TileStore* store = bundledStore();
+  streaming::TileStore* store = bundledStore();
   if (store == nullptr) return tiles;
   using Scheme = geo::GeographicTilingScheme;
   const auto nw = Scheme::positionToTile(geo::degreesToRadians(westDegrees),
@@ -169,7 +169,7 @@ Image readImage(int width, int height) {
 
 void savePng(const Image& image, const std::string& name) {
   const auto path = outputDirectory() / (name + ".png");
-  auto written = io::writePngAtomically(path, image.rgba, image.width, image.height);
+  auto written = formats::writePngAtomically(path, image.rgba, image.width, image.height);
   EXPECT_TRUE(written.ok()) << written.error();
 }
 

@@ -17,9 +17,9 @@
 
 #include "geo/ellipsoid.hpp"
 #include "geo/tile_id.hpp"
-#include "io/tile_store.hpp"
 #include "render/osmesa_context.hpp"
 #include "render/terrain_renderer.hpp"
+#include "streaming/tile_store.hpp"
 #include "terrain/height_block.hpp"
 #include "terrain/render_view.hpp"
 
@@ -29,7 +29,7 @@ inline const geo::Ellipsoid kWgs84 = geo::Ellipsoid::wgs84();
 
 // ETOPO20 + W002N52 + E138N35_FUJI from data/dem, tiled with the real tiler into a temporary
 // directory on first use (removed when the process exits). nullptr (and a test failure) on error.
-io::TileStore* bundledStore();
+streaming::TileStore* bundledStore();
 
 struct LoadedTile {
   geo::TileId id;

@@ -10,13 +10,13 @@ namespace {
 constexpr int kNeighbours = 12;
 
 // Rec. 709 luma of pixel (x, y), or of (y, x) when transposed.
-double luma(const io::ImageRgba& image, int x, int y) {
+double luma(const formats::ImageRgba& image, int x, int y) {
   const uint8_t* p = &image.pixels[(static_cast<size_t>(y) * image.widthPixels + x) * 4];
   return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
 }
 
 // The worst ratio over the steps between neighbouring columns (or rows when transposed).
-std::pair<double, int> worstLine(const io::ImageRgba& image, bool transposed) {
+std::pair<double, int> worstLine(const formats::ImageRgba& image, bool transposed) {
   const int lines = transposed ? image.heightPixels : image.widthPixels;
   const int along = transposed ? image.widthPixels : image.heightPixels;
   std::vector<double> steps(static_cast<size_t>(std::max(lines - 1, 0)));
@@ -49,7 +49,7 @@ std::pair<double, int> worstLine(const io::ImageRgba& image, bool transposed) {
 
 }  // namespace
 
-SeamScore seamScore(const io::ImageRgba& image) {
+SeamScore seamScore(const formats::ImageRgba& image) {
   SeamScore s;
   std::tie(s.columns, s.worstColumn) = worstLine(image, false);
   std::tie(s.rows, s.worstRow) = worstLine(image, true);

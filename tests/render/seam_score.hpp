@@ -5,7 +5,7 @@
 // faint straight step along a whole column stands out above 2.
 #pragma once
 
-#include "io/image_io.hpp"
+#include "formats/image_io.hpp"
 
 namespace globe::testing {
 
@@ -17,6 +17,6 @@ struct SeamScore {
   int worstRow = 0;
 };
 
-SeamScore seamScore(const io::ImageRgba& image);
+SeamScore seamScore(const formats::ImageRgba& image);
 
 }  // namespace globe::testing

@@ -9,10 +9,10 @@
 #include <cstdlib>
 #include <string>
 
-#include "io/image_io.hpp"
-#include "tests/render/golden_compare.hpp"
-#include "tests/tools/tiler/imagery_test_layers.hpp"
-#include "tests/tools/tiler/tiler_test_fixture.hpp"
+#include "formats/image_io.hpp"
+#include "tests/support/golden_compare.hpp"
+#include "tests/support/imagery_test_layers.hpp"
+#include "tests/support/tiler_test_fixture.hpp"
 
 namespace globe {
 namespace {
@@ -51,7 +51,7 @@ const GoldenView kViews[] = {
 // The view's arguments with the layer placeholders replaced by the layers (tiled once).
 std::string expandLayers(std::string arguments) {
   const std::pair<const char*, const fs::path& (*)()> layers[] = {
-      {"@bm", tiler::testing::blueMarbleLayer}, {"@zion", tiler::testing::zionLayer}};
+      {"@bm", globe::testing::blueMarbleLayer}, {"@zion", globe::testing::zionLayer}};
   for (const auto& [token, layer] : layers) {
     for (size_t at = arguments.find(token); at != std::string::npos; at = arguments.find(token)) {
       arguments.replace(at, std::string(token).size(), layer().string());
@@ -71,12 +71,12 @@ TEST_P(GoldenImages, MatchesTheCommittedGolden) {
   fs::create_directories(outDir);
   const fs::path actualPath = outDir / (std::string(view.name) + ".actual.png");
   const fs::path& pyramid =
-      view.zionPyramid ? tiler::testing::zionPyramid() : tiler::testing::bundledPyramid();
+      view.zionPyramid ? globe::testing::zionPyramid() : globe::testing::bundledPyramid();
   const std::string command = std::string(GLOBE_EXE) + " snapshot " + pyramid.string() + " " +
                               expandLayers(view.arguments) + " --size 480x270 -o " +
                               actualPath.string() + " > /dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
-  auto actual = io::loadImageRgba(actualPath);
+  auto actual = formats::loadImageRgba(actualPath);
   ASSERT_TRUE(actual) << actual.error();
 
   const fs::path goldenPath = fs::path(GLOBE_GOLDEN_DIR) / (std::string(view.name) + ".png");
@@ -84,14 +84,14 @@ TEST_P(GoldenImages, MatchesTheCommittedGolden) {
     fs::copy_file(actualPath, goldenPath, fs::copy_options::overwrite_existing);
     GTEST_SKIP() << "golden updated: " << goldenPath;
   }
-  auto golden = io::loadImageRgba(goldenPath);
+  auto golden = formats::loadImageRgba(goldenPath);
   ASSERT_TRUE(golden) << golden.error() << " (regenerate with GLOBE_UPDATE_GOLDENS=1)";
-  const auto difference = testing::compareImages(*golden, *actual, kChannelTolerance);
+  const auto difference = globe::testing::compareImages(*golden, *actual, kChannelTolerance);
   if (difference.differingFraction > kMaxDifferingFraction) {
     const fs::path diffPath = outDir / (std::string(view.name) + ".diff.png");
     if (!difference.diffRgba.empty()) {
-      (void)io::writePngAtomically(diffPath, difference.diffRgba, golden->widthPixels,
-                                   golden->heightPixels);
+      (void)formats::writePngAtomically(diffPath, difference.diffRgba, golden->widthPixels,
+                                        golden->heightPixels);
     }
     FAIL() << view.name << ": " << 100 * difference.differingFraction
            << "% of pixels differ (max channel " << difference.largestChannelDifference
@@ -109,16 +109,16 @@ INSTANTIATE_TEST_SUITE_P(Views, GoldenImages, ::testing::ValuesIn(kViews),
                          [](const auto& param) { return std::string(param.param.name); });
 
 TEST(GoldenCompare, DetectsAChangedImage) {
-  io::ImageRgba a{4, 4, std::vector<uint8_t>(64, 100)};
-  io::ImageRgba b = a;
-  EXPECT_EQ(testing::compareImages(a, b, 24).differingFraction, 0.0);
+  formats::ImageRgba a{4, 4, std::vector<uint8_t>(64, 100)};
+  formats::ImageRgba b = a;
+  EXPECT_EQ(globe::testing::compareImages(a, b, 24).differingFraction, 0.0);
   b.pixels[0] = 200;
-  const auto d = testing::compareImages(a, b, 24);
+  const auto d = globe::testing::compareImages(a, b, 24);
   EXPECT_DOUBLE_EQ(d.differingFraction, 1.0 / 16);
   EXPECT_EQ(d.largestChannelDifference, 100);
   EXPECT_EQ(d.diffRgba[0], 255);
-  io::ImageRgba small{2, 2, std::vector<uint8_t>(16, 0)};
-  EXPECT_EQ(testing::compareImages(a, small, 24).differingFraction, 1.0);
+  formats::ImageRgba small{2, 2, std::vector<uint8_t>(16, 0)};
+  EXPECT_EQ(globe::testing::compareImages(a, small, 24).differingFraction, 1.0);
 }
 
 }  // namespace

@@ -3,8 +3,8 @@
 
 #include <fstream>
 
+#include "formats/image_io.hpp"
 #include "geo/ecef.hpp"
-#include "io/image_io.hpp"
 #include "tests/render/render_test_support.hpp"
 
 namespace globe::render::test {
@@ -15,28 +15,28 @@ const std::filesystem::path kBlueMarble =
 
 TEST(ImageIo, PngRoundTripAndClearErrors) {
   const auto dir = outputDirectory();
-  io::ImageRgba image{3, 2, {}};
+  formats::ImageRgba image{3, 2, {}};
   for (int k = 0; k < 3 * 2 * 4; ++k) image.pixels.push_back(static_cast<uint8_t>(k * 10));
   const auto path = dir / "image_io_round_trip.png";
-  ASSERT_TRUE(io::writePngAtomically(path, image.pixels, 3, 2).ok());
-  auto back = io::loadImageRgba(path);
+  ASSERT_TRUE(formats::writePngAtomically(path, image.pixels, 3, 2).ok());
+  auto back = formats::loadImageRgba(path);
   ASSERT_TRUE(back.ok()) << back.error();
   EXPECT_EQ(back->widthPixels, 3);
   EXPECT_EQ(back->heightPixels, 2);
   EXPECT_EQ(back->pixels, image.pixels);
 
-  auto wrongSize = io::writePngAtomically(dir / "never.png", image.pixels, 4, 2);
+  auto wrongSize = formats::writePngAtomically(dir / "never.png", image.pixels, 4, 2);
   ASSERT_FALSE(wrongSize.ok());
   EXPECT_NE(wrongSize.error().find("never.png"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir / "never.png"));
 
-  auto missing = io::loadImageRgba(dir / "no-such-image.jpg");
+  auto missing = formats::loadImageRgba(dir / "no-such-image.jpg");
   ASSERT_FALSE(missing.ok());
   EXPECT_NE(missing.error().find("no-such-image.jpg"), std::string::npos);
 
   const auto garbage = dir / "garbage.jpg";
   std::ofstream(garbage) << "this is not a JPEG";
-  auto undecodable = io::loadImageRgba(garbage);
+  auto undecodable = formats::loadImageRgba(garbage);
   ASSERT_FALSE(undecodable.ok());
   EXPECT_NE(undecodable.error().find("garbage.jpg: not a readable image"), std::string::npos)
       << undecodable.error();
@@ -46,7 +46,7 @@ class Imagery : public RenderTest {};
 
 TEST_F(Imagery, BlueMarbleDrapesOverTheGlobe) {
   ASSERT_TRUE(std::filesystem::exists(kBlueMarble)) << kBlueMarble << " is missing";
-  auto image = io::loadImageRgba(kBlueMarble);
+  auto image = formats::loadImageRgba(kBlueMarble);
   ASSERT_TRUE(image.ok()) << image.error();
   EXPECT_EQ(image->widthPixels, 2048);
   EXPECT_EQ(image->heightPixels, 1024);

@@ -9,10 +9,10 @@
 #include <random>
 #include <string>
 
-#include "io/image_io.hpp"
+#include "formats/image_io.hpp"
 #include "tests/render/seam_score.hpp"
-#include "tests/tools/tiler/imagery_test_layers.hpp"
-#include "tests/tools/tiler/tiler_test_fixture.hpp"
+#include "tests/support/imagery_test_layers.hpp"
+#include "tests/support/tiler_test_fixture.hpp"
 
 namespace globe {
 namespace {
@@ -44,12 +44,12 @@ TEST_P(ShadingSeams, NadirViewScoresAtMostTwo) {
   fs::create_directories(outDir);
   const fs::path image = outDir / (std::string("seams_") + view.name + ".png");
   const fs::path& pyramid =
-      view.zionPyramid ? tiler::testing::zionPyramid() : tiler::testing::bundledPyramid();
+      view.zionPyramid ? globe::testing::zionPyramid() : globe::testing::bundledPyramid();
   const std::string command = std::string(GLOBE_EXE) + " snapshot " + pyramid.string() +
                               " --camera " + view.camera + " --size " + view.size + " -o " +
                               image.string() + " > /dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
-  auto rgba = io::loadImageRgba(image);
+  auto rgba = formats::loadImageRgba(image);
   ASSERT_TRUE(rgba) << rgba.error();
   if (view.scoredRows > 0 && view.scoredRows < rgba->heightPixels) {
     rgba->heightPixels = view.scoredRows;
@@ -68,7 +68,7 @@ INSTANTIATE_TEST_SUITE_P(Views, ShadingSeams, ::testing::ValuesIn(kSeamViews),
 // straight step (6 of 255, as a tile edge's lighting step) high, at that column.
 TEST(SeamScore, FindsAFaintStraightStep) {
   constexpr int kW = 200, kH = 150;
-  io::ImageRgba image{kW, kH, std::vector<uint8_t>(size_t{kW} * kH * 4, 255)};
+  formats::ImageRgba image{kW, kH, std::vector<uint8_t>(size_t{kW} * kH * 4, 255)};
   std::mt19937 random(7);
   std::uniform_real_distribution<double> noise(-2.0, 2.0);
   for (int y = 0; y < kH; ++y) {
@@ -80,7 +80,7 @@ TEST(SeamScore, FindsAFaintStraightStep) {
     }
   }
   EXPECT_LT(testing::seamScore(image).score, 1.8);
-  io::ImageRgba stepped = image;
+  formats::ImageRgba stepped = image;
   for (int y = 0; y < kH; ++y) {
     for (int x = 120; x < kW; ++x) {
       for (int c = 0; c < 3; ++c) stepped.pixels[(static_cast<size_t>(y) * kW + x) * 4 + c] += 6;

@@ -1,6 +1,6 @@
 // The scene's GPU bookkeeping with no GL: every drawn tile is prepared on the TileGpu, tiles not
 // drawn for a while are released once over the budget, and BookkeepingGpu counts bytes exactly.
-#include "scene/bookkeeping_gpu.hpp"
+#include "tests/support/bookkeeping_gpu.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,13 +8,13 @@
 
 #include "scene/terrain_scene.hpp"
 #include "terrain/tile_mesh.hpp"
-#include "tests/tools/tiler/tiler_test_fixture.hpp"
+#include "tests/support/tiler_test_fixture.hpp"
 
 namespace globe::scene {
 namespace {
 
 TEST(BookkeepingGpu, CountsMeshAndTextureBytesThroughReplaceAndRelease) {
-  BookkeepingGpu gpu;
+  globe::testing::BookkeepingGpu gpu;
   terrain::TileMesh mesh;
   mesh.vertices.assign(1000, 0.0f);
   const geo::TileId a{3, 1, 2}, b{3, 2, 2};
@@ -43,11 +43,11 @@ TEST(BookkeepingGpu, CountsMeshAndTextureBytesThroughReplaceAndRelease) {
 // A flight over the bundled pyramid with a small GPU budget: what a frame draws is always on the
 // GPU, and the GPU never holds more than the budget beyond that frame's own tiles.
 TEST(BookkeepingGpu, TheSceneKeepsDrawnTilesResidentAndReleasesOldOnesOverTheBudget) {
-  BookkeepingGpu gpu;
+  globe::testing::BookkeepingGpu gpu;
   SceneOptions options;
   options.hysteresis = false;
   options.gpuTileBudget = 60;
-  auto scene = TerrainScene::open(tiler::testing::bundledPyramid(), options);
+  auto scene = TerrainScene::open(globe::testing::bundledPyramid(), options);
   ASSERT_TRUE(scene) << scene.error();
   size_t largestFrame = 0;
   for (int step = 0; step < 8; ++step) {

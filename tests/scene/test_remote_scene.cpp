@@ -5,11 +5,11 @@
 #include <chrono>
 #include <filesystem>
 
-#include "io/network_settings.hpp"
-#include "scene/bookkeeping_gpu.hpp"
 #include "scene/terrain_scene.hpp"
-#include "tests/io/nginx_server.hpp"
-#include "tests/tools/tiler/tiler_test_fixture.hpp"
+#include "tests/support/bookkeeping_gpu.hpp"
+#include "tests/support/nginx_server.hpp"
+#include "tests/support/tiler_test_fixture.hpp"
+#include "transport/network_settings.hpp"
 
 namespace globe::scene {
 namespace {
@@ -23,26 +23,26 @@ camera::CameraPose fujiOblique() {
 }
 
 void useCacheIn(const fs::path& dir) {
-  io::NetworkSettings settings;
+  transport::NetworkSettings settings;
   settings.cacheDirectory = dir;
   settings.http.stallTimeoutMs = 2000;
   settings.remote.attempts = 1;
-  io::setNetworkSettings(settings);
+  transport::setNetworkSettings(settings);
 }
 
 TEST(RemoteScene, TheSameTilesAsLocal) {
-  const fs::path site = tiler::testing::freshTempDir("remote-scene");
+  const fs::path site = globe::testing::freshTempDir("remote-scene");
   fs::create_directories(site / "www");
-  fs::create_symlink(tiler::testing::bundledPyramid(), site / "www" / "pyramid");
-  auto server = io::test::NginxServer::start({site / "www", ""});
+  fs::create_symlink(globe::testing::bundledPyramid(), site / "www" / "pyramid");
+  auto server = globe::testing::NginxServer::start({site / "www", ""});
   ASSERT_TRUE(server);
   useCacheIn(site / "cache");
   SceneOptions options;
   options.hysteresis = false;
-  auto local = TerrainScene::open(tiler::testing::bundledPyramid(), options);
+  auto local = TerrainScene::open(globe::testing::bundledPyramid(), options);
   auto remote = TerrainScene::open(server->url("/pyramid"), options);
   ASSERT_TRUE(local && remote);
-  BookkeepingGpu a, b;
+  globe::testing::BookkeepingGpu a, b;
   auto x =
       (*local)->updateUntilComplete(fujiOblique(), kWidth, kHeight, a, std::chrono::seconds(60));
   auto y =
@@ -56,19 +56,19 @@ TEST(RemoteScene, TheSameTilesAsLocal) {
 // Every pack below level 2 stalls (1 byte/s): each frame still returns at once, drawing the
 // coarse levels it has; nothing is complete while the packs are on their way.
 TEST(RemoteScene, AFrameNeverWaitsOnAStalledServer) {
-  const fs::path site = tiler::testing::freshTempDir("remote-stall");
+  const fs::path site = globe::testing::freshTempDir("remote-stall");
   fs::create_directories(site / "www");
-  fs::create_symlink(tiler::testing::bundledPyramid(), site / "www" / "pyramid");
+  fs::create_symlink(globe::testing::bundledPyramid(), site / "www" / "pyramid");
   std::string stalls;
   for (int level = 2; level <= 14; ++level) {
     stalls += "location /pyramid/L" + std::to_string(level) + "/ { limit_rate 1; }\n";
   }
-  auto server = io::test::NginxServer::start({site / "www", stalls});
+  auto server = globe::testing::NginxServer::start({site / "www", stalls});
   ASSERT_TRUE(server);
   useCacheIn(site / "cache");
   auto scene = TerrainScene::open(server->url("/pyramid"), SceneOptions{});
   ASSERT_TRUE(scene) << scene.error();
-  BookkeepingGpu gpu;
+  globe::testing::BookkeepingGpu gpu;
   double slowest = 0;
   const auto start = std::chrono::steady_clock::now();
   FrameInfo info;

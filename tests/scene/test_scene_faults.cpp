@@ -14,9 +14,9 @@
 #include <sstream>
 
 #include "geo/tiling_scheme.hpp"
-#include "scene/bookkeeping_gpu.hpp"
 #include "scene/terrain_scene.hpp"
-#include "tests/tools/tiler/tiler_test_fixture.hpp"
+#include "tests/support/bookkeeping_gpu.hpp"
+#include "tests/support/tiler_test_fixture.hpp"
 
 namespace globe::scene {
 namespace {
@@ -75,7 +75,7 @@ struct SceneRun {
 template <class Hook>
 SceneRun view(const fs::path& pyramid, const fs::path& log, Hook beforeViewing) {
   SceneRun run;
-  BookkeepingGpu gpu;
+  globe::testing::BookkeepingGpu gpu;
   SceneOptions options;
   options.hysteresis = false;
   auto scene = TerrainScene::open(pyramid, options);
@@ -122,23 +122,23 @@ const Damage kDamages[] = {
 
 // One process for every kind (each test process tiles the pyramid once), repaired in between.
 TEST(SceneFaults, EachDamagedPackIsReportedOnceAndItsParentsAreDrawn) {
-  const fs::path dir = tiler::testing::freshTempDir("scene-faults");
-  const SceneRun reference = view(tiler::testing::bundledPyramid(), dir / "log", [](auto&) {});
+  const fs::path dir = globe::testing::freshTempDir("scene-faults");
+  const SceneRun reference = view(globe::testing::bundledPyramid(), dir / "log", [](auto&) {});
   ASSERT_TRUE(reference.messages.empty()) << reference.messages;
   ASSERT_EQ(reference.nadirLevel, 14U);
 
   const fs::path pyramid = dir / "pyramid";
-  fs::copy(tiler::testing::bundledPyramid(), pyramid, fs::copy_options::recursive);
+  fs::copy(globe::testing::bundledPyramid(), pyramid, fs::copy_options::recursive);
   const auto pose = fujiPose();
   const auto nadir = geo::GeographicTilingScheme::positionToTile(pose.position.longitudeRadians,
                                                                  pose.position.latitudeRadians, 14);
   ASSERT_TRUE(nadir);
-  const io::PackLayout layout;  // the bundled pyramid's
-  const io::PackId damaged = io::packOf(*nadir, layout.tilesPerSide);
-  const fs::path pack = io::packPath(pyramid, damaged);
+  const formats::PackLayout layout;  // the bundled pyramid's
+  const formats::PackId damaged = formats::packOf(*nadir, layout.tilesPerSide);
+  const fs::path pack = formats::packPath(pyramid, damaged);
   fs::copy_file(pack, dir / "good.pack");
   auto inDamagedPack = [&](const TileId& t) {
-    return t.level == damaged.level && io::packOf(t, layout.tilesPerSide) == damaged;
+    return t.level == damaged.level && formats::packOf(t, layout.tilesPerSide) == damaged;
   };
   ASSERT_GT(std::count_if(reference.tiles.begin(), reference.tiles.end(), inDamagedPack), 10)
       << "the reference view must draw the damaged pack's tiles";

@@ -10,10 +10,10 @@
 
 #include "geo/cartographic.hpp"
 #include "geo/tiling_scheme.hpp"
-#include "scene/bookkeeping_gpu.hpp"
-#include "tests/io/sea_test_pyramid.hpp"
-#include "tests/tools/tiler/imagery_test_layers.hpp"
-#include "tests/tools/tiler/tiler_test_fixture.hpp"
+#include "tests/support/bookkeeping_gpu.hpp"
+#include "tests/support/imagery_test_layers.hpp"
+#include "tests/support/sea_test_pyramid.hpp"
+#include "tests/support/tiler_test_fixture.hpp"
 
 namespace globe::scene {
 namespace {
@@ -24,7 +24,7 @@ std::vector<geo::TileId> drawnTiles(const std::filesystem::path& pyramid,
                                     const std::vector<LayerOptions>& layers, bool measuredLod,
                                     const camera::CameraPose& pose,
                                     std::vector<terrain::NominalErrorRegion>* regions = nullptr) {
-  BookkeepingGpu gpu;
+  globe::testing::BookkeepingGpu gpu;
   SceneOptions options;
   options.hysteresis = false;
   options.layers = layers;
@@ -66,34 +66,34 @@ std::vector<geo::TileId> underNominal(const std::vector<geo::TileId>& tiles,
 // terrain refines as with the nominal error; beyond it, by the measured error again.
 TEST(TerrainScene, ImageryKeepsTheTerrainRefiningOnlyWhereThatSharpensIt) {
   const auto fuji = camera::CameraPose::fromDegrees(138.60, 35.20, 6000, 30, -15, 0);
-  const std::vector<LayerOptions> blueMarble{{tiler::testing::blueMarbleLayer(), 1.0f}};
-  const auto measured = drawnTiles(tiler::testing::bundledPyramid(), {}, true, fuji);
-  const auto nominal = drawnTiles(tiler::testing::bundledPyramid(), {}, false, fuji);
+  const std::vector<LayerOptions> blueMarble{{globe::testing::blueMarbleLayer(), 1.0f}};
+  const auto measured = drawnTiles(globe::testing::bundledPyramid(), {}, true, fuji);
+  const auto nominal = drawnTiles(globe::testing::bundledPyramid(), {}, false, fuji);
   ASSERT_LT(measured.size() * 10, nominal.size() * 8) << "the view needs measured errors to matter";
-  EXPECT_EQ(drawnTiles(tiler::testing::bundledPyramid(), blueMarble, true, fuji), measured);
+  EXPECT_EQ(drawnTiles(globe::testing::bundledPyramid(), blueMarble, true, fuji), measured);
 
   const auto zion = camera::CameraPose::fromDegrees(-112.98, 37.25, 3500, 330, -20, 0);
-  const std::vector<LayerOptions> landsat{{tiler::testing::zionLayer(), 1.0f}};
-  const auto zionMeasured = drawnTiles(tiler::testing::zionPyramid(), {}, true, zion);
-  const auto zionNominal = drawnTiles(tiler::testing::zionPyramid(), {}, false, zion);
+  const std::vector<LayerOptions> landsat{{globe::testing::zionLayer(), 1.0f}};
+  const auto zionMeasured = drawnTiles(globe::testing::zionPyramid(), {}, true, zion);
+  const auto zionNominal = drawnTiles(globe::testing::zionPyramid(), {}, false, zion);
   ASSERT_NE(zionMeasured, zionNominal);
   std::vector<terrain::NominalErrorRegion> regions;
-  const auto zionLandsat = drawnTiles(tiler::testing::zionPyramid(), landsat, true, zion, &regions);
+  const auto zionLandsat = drawnTiles(globe::testing::zionPyramid(), landsat, true, zion, &regions);
   ASSERT_EQ(regions.size(), 1u);
   const auto nominalPart = underNominal(zionLandsat, regions);
   EXPECT_GT(nominalPart.size(), 20u) << "the view needs the layer's region to matter";
   EXPECT_EQ(nominalPart, underNominal(zionNominal, regions));
   EXPECT_GT(zionLandsat.size(), zionMeasured.size()) << "sharper imagery wants finer terrain";
   // A layer drawn at opacity 0 shows nothing and refines nothing.
-  const std::vector<LayerOptions> hidden{{tiler::testing::zionLayer(), 0.0f}};
-  EXPECT_EQ(drawnTiles(tiler::testing::zionPyramid(), hidden, true, zion), zionMeasured);
+  const std::vector<LayerOptions> hidden{{globe::testing::zionLayer(), 0.0f}};
+  EXPECT_EQ(drawnTiles(globe::testing::zionPyramid(), hidden, true, zion), zionMeasured);
 }
 
 TEST(TerrainScene, NadirTileJoinsTheCollisionArrayWhenNotDrawn) {
-  BookkeepingGpu gpu;
+  globe::testing::BookkeepingGpu gpu;
   SceneOptions options;
   options.hysteresis = false;
-  auto scene = TerrainScene::open(tiler::testing::bundledPyramid(), options);
+  auto scene = TerrainScene::open(globe::testing::bundledPyramid(), options);
   ASSERT_TRUE(scene) << scene.error();
   // Level, looking north over Fuji's southern slope from 2,500 m: the ground below is out of view.
   const auto pose = camera::CameraPose::fromDegrees(138.60, 35.20, 2500, 0, 0, 0);
@@ -118,8 +118,8 @@ TEST(TerrainScene, NadirTileJoinsTheCollisionArrayWhenNotDrawn) {
 // SceneOptions::sea reaches every block the scene reads: the height under the camera here (the
 // near plane's), the drawn tiles and the collision array alike (they share the scene's store).
 TEST(TerrainScene, TheSeaOptionChoosesTheGroundOverWater) {
-  namespace sea = io::test;
-  const auto pyramid = tiler::testing::freshTempDir("scene-sea") / "pyramid";
+  namespace sea = testing;
+  const auto pyramid = globe::testing::freshTempDir("scene-sea") / "pyramid";
   ASSERT_TRUE(sea::writeSeaTestPyramid(pyramid));
   const auto open = sea::cellCentreDegrees(sea::kSeaTile, 7, 7);
   const auto below = sea::cellCentreDegrees(sea::kMixedTile, 6, 9);

@@ -18,7 +18,7 @@
 
 #include "geo/ecef.hpp"
 #include "geo/tiling_scheme.hpp"
-#include "tests/tools/tiler/tiler_test_fixture.hpp"
+#include "tests/support/tiler_test_fixture.hpp"
 
 namespace globe::terrain::testing {
 
@@ -135,13 +135,13 @@ Residency randomResidency(uint64_t seed, double probability, bool rootsResident)
 
 PyramidCatalog& PyramidCatalog::bundled() {
   static PyramidCatalog* catalog = [] {
-    auto store = io::TileStore::open(tiler::testing::bundledPyramid());
+    auto store = streaming::TileStore::open(globe::testing::bundledPyramid());
     if (!store) {
       ADD_FAILURE() << store.error();
       std::abort();
     }
     // The pyramid is tiled into a temporary directory per process: remove it at exit.
-    static const std::filesystem::path tempDir = tiler::testing::bundledPyramid().parent_path();
+    static const std::filesystem::path tempDir = globe::testing::bundledPyramid().parent_path();
     std::atexit([] {
       std::error_code ignored;
       std::filesystem::remove_all(tempDir, ignored);

@@ -15,7 +15,7 @@
 #include <glm/vec3.hpp>
 
 #include "geo/tile_id.hpp"
-#include "io/tile_store.hpp"
+#include "streaming/tile_store.hpp"
 #include "terrain/selection_view.hpp"
 #include "terrain/tile_catalog.hpp"
 #include "terrain/tile_selection.hpp"
@@ -40,8 +40,8 @@ class PyramidCatalog final : public TileCatalog {
   uint32_t maxLevel() const { return store_->manifest().maxLevel(); }
 
  private:
-  explicit PyramidCatalog(std::unique_ptr<io::TileStore> store) : store_(std::move(store)) {}
-  std::unique_ptr<io::TileStore> store_;
+  explicit PyramidCatalog(std::unique_ptr<streaming::TileStore> store) : store_(std::move(store)) {}
+  std::unique_ptr<streaming::TileStore> store_;
   Residency residency_;
 };
 

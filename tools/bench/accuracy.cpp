@@ -40,10 +40,10 @@ struct Region {
   std::string name;
   std::string source;
   uint32_t level;
-  io::BoundsDegrees tileBounds;   // the array: every tile of the level meeting these bounds
-  io::BoundsDegrees queryBounds;  // where the queries lie
-  bool wholeGlobe;                // queries uniform by area over the globe, on land, outside
-                                  // the finer sources (so that the finest source is ETOPO20)
+  formats::BoundsDegrees tileBounds;   // the array: every tile of the level meeting these bounds
+  formats::BoundsDegrees queryBounds;  // where the queries lie
+  bool wholeGlobe;                     // queries uniform by area over the globe, on land, outside
+                                       // the finer sources (so that the finest source is ETOPO20)
 };
 
 std::vector<Region> regions() {
@@ -53,7 +53,7 @@ std::vector<Region> regions() {
       {"world", "ETOPO20 20' (land)", 6, {-180, -90, 180, 90}, {-180, -90, 180, 90}, true},
   };
 }
-bool inside(const io::BoundsDegrees& b, double lonDegrees, double latDegrees) {
+bool inside(const formats::BoundsDegrees& b, double lonDegrees, double latDegrees) {
   return lonDegrees >= b.west && lonDegrees <= b.east && latDegrees >= b.south &&
          latDegrees <= b.north;
 }
@@ -106,7 +106,7 @@ double sphereEffectiveHeight(const collision::SphereTreeSet& trees,
 int runAccuracy(Pyramid& pyramid, const AccuracyOptions& options) {
   const geo::Ellipsoid ellipsoid = pyramid.ellipsoid();
   std::vector<std::filesystem::path> rasterPaths;
-  for (const io::SourceInfo& source : pyramid.manifest().sources) {
+  for (const formats::SourceInfo& source : pyramid.manifest().sources) {
     rasterPaths.emplace_back(source.path);
   }
   auto reference = SourceReference::load(rasterPaths);
@@ -130,7 +130,7 @@ int runAccuracy(Pyramid& pyramid, const AccuracyOptions& options) {
   size_t tileTotal = 0;
 
   for (const Region& region : regions()) {
-    const io::BoundsDegrees& b = region.tileBounds;
+    const formats::BoundsDegrees& b = region.tileBounds;
     const std::vector<geo::TileId> ids =
         pyramid.tilesOfLevel(region.level, b.west, b.south, b.east, b.north);
     std::vector<terrain::ArrayTile> tiles;
@@ -148,7 +148,7 @@ int runAccuracy(Pyramid& pyramid, const AccuracyOptions& options) {
         offset(kLowestOffsetMeters, kHighestOffsetMeters);
     std::vector<AccuracyQuery> queries;
     queries.reserve(options.queriesPerRegion);
-    const io::BoundsDegrees& qb = region.queryBounds;
+    const formats::BoundsDegrees& qb = region.queryBounds;
     while (queries.size() < options.queriesPerRegion) {
       AccuracyQuery q;
       if (region.wholeGlobe) {

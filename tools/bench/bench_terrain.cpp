@@ -11,7 +11,7 @@
 #include "collision/exact_surface.hpp"
 #include "geo/ecef.hpp"
 #include "geo/tiling_scheme.hpp"
-#include "tools/tiler/tiler.hpp"
+#include "tiling/tiler.hpp"
 
 namespace globe::bench {
 namespace {
@@ -53,18 +53,18 @@ Result<std::unique_ptr<Pyramid>> Pyramid::open(const std::filesystem::path& dire
     std::error_code ignored;
     std::filesystem::remove_all(scratch, ignored);
     const std::string dem = std::string(GLOBE_SOURCE_DIR) + "/data/dem/";
-    tiler::TilerOptions options;
+    tiling::TilerOptions options;
     options.inputs = {dem + "ETOPO20.DEM", dem + "W002N52.DEM", dem + "E138N35_FUJI.DEM"};
     options.outputDir = scratch / "pyramid";
     options.progress = false;
-    auto report = tiler::runTiler(options);
+    auto report = tiling::runTiler(options);
     if (!report) {
       std::filesystem::remove_all(scratch, ignored);
       return Error{report.error()};
     }
     dir = options.outputDir;
   }
-  auto store = io::TileStore::open(dir);
+  auto store = streaming::TileStore::open(dir);
   if (!store) return Error{store.error()};
   return std::unique_ptr<Pyramid>(new Pyramid(std::move(*store), scratch));
 }
@@ -119,7 +119,7 @@ Result<std::unique_ptr<BenchArray>> makeBenchArray(Pyramid& pyramid, uint32_t ti
     return Error{"the pyramid has no level " + std::to_string(kBenchLevel)};
   }
   // The Fuji tiles of the bench level: a full rectangle of the pyramid.
-  const io::BoundsDegrees b = pyramid.manifest().levels[kBenchLevel].bounds;
+  const formats::BoundsDegrees b = pyramid.manifest().levels[kBenchLevel].bounds;
   const std::vector<geo::TileId> fuji =
       pyramid.tilesOfLevel(kBenchLevel, b.west, b.south, b.east, b.north);
   if (fuji.empty()) return Error{"no tiles at the bench level"};

@@ -11,11 +11,11 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/result.hpp"
 #include "geo/ellipsoid.hpp"
 #include "geo/globe_rectangle.hpp"
-#include "geo/result.hpp"
 #include "geo/tile_id.hpp"
-#include "io/tile_store.hpp"
+#include "streaming/tile_store.hpp"
 #include "terrain/height_block.hpp"
 #include "terrain/rendering_tile_array.hpp"
 
@@ -30,7 +30,7 @@ class Pyramid {
   Pyramid(const Pyramid&) = delete;
   Pyramid& operator=(const Pyramid&) = delete;
 
-  const io::PyramidManifest& manifest() const { return store_->manifest(); }
+  const formats::PyramidManifest& manifest() const { return store_->manifest(); }
   geo::Ellipsoid ellipsoid() const { return geo::ellipsoidFor(manifest().globeModel); }
   bool has(const geo::TileId& tile);
   // The tile's block, loaded once; an empty block when it cannot be read.
@@ -40,9 +40,9 @@ class Pyramid {
                                         double eastDegrees, double northDegrees);
 
  private:
-  Pyramid(std::unique_ptr<io::TileStore> store, std::filesystem::path scratch)
+  Pyramid(std::unique_ptr<streaming::TileStore> store, std::filesystem::path scratch)
       : store_(std::move(store)), scratch_(std::move(scratch)) {}
-  std::unique_ptr<io::TileStore> store_;
+  std::unique_ptr<streaming::TileStore> store_;
   std::filesystem::path scratch_;
   std::unordered_map<geo::TileId, terrain::HeightBlock> blocks_;
 };

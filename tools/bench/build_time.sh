@@ -3,7 +3,7 @@
 # per variant, an empty build directory configured like tools/configure.sh (RelWithDebInfo) with
 # ccache off, then `globe` + `globe-tiler` (what tools/setup.sh builds), then everything else
 # (what tools/run-tests.sh adds). Variants run in turn, ROUNDS times each, interleaved; the table
-# gives the median wall times and their ratios to the plain build. Writes docs/build-time.md.
+# gives the median wall times and their ratios to the plain build. Writes docs/performance/build-time.md.
 #
 #   tools/bench/build_time.sh [ROUNDS] [VARIANT...]
 #
@@ -16,7 +16,7 @@ ROUNDS=${1:-1}
 shift || true
 VARIANTS=("$@")
 [ ${#VARIANTS[@]} -gt 0 ] || VARIANTS=(plain unity unity-g)
-OUT_MD=${OUT_MD:-$ROOT/docs/build-time.md}
+OUT_MD=${OUT_MD:-$ROOT/docs/performance/build-time.md}
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 export CCACHE_DISABLE=1

@@ -4,12 +4,12 @@
 # base), a fresh clone of HEAD in it, then `bash tools/setup.sh` as root inside it under
 # /usr/bin/time: apt-get update, the download and install of every package, the build, tiling,
 # rendering and the demo flight. Needs root and Debian's package mirror (not run by CI: it
-# downloads ~420 MB of packages). Writes docs/first-run-fresh-debian.md.
+# downloads ~420 MB of packages). Writes docs/performance/first-run-fresh-debian.md.
 #
 #   sudo tools/bench/first_run_fresh_debian.sh
 set -euo pipefail
 REPO=$(cd "$(dirname "$0")/../.." && pwd)
-OUT_MD=${OUT_MD:-$REPO/docs/first-run-fresh-debian.md}
+OUT_MD=${OUT_MD:-$REPO/docs/performance/first-run-fresh-debian.md}
 COMMIT=$(git -C "$REPO" rev-parse --short HEAD)
 # shellcheck source=SCRIPTDIR/../fresh-debian-root.sh
 source "$REPO/tools/fresh-debian-root.sh"

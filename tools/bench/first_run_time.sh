@@ -3,12 +3,12 @@
 # directory with nothing beside it, `bash tools/setup.sh` then `bash tools/run-tests.sh`, each
 # under /usr/bin/time, with ccache off (a cold build, as on a machine that never built globe).
 # The Debian packages are installed already on a machine that ran this before, so apt-get only
-# checks them; the README says what a truly new machine adds. Writes docs/first-run-time.md.
+# checks them; the README says what a truly new machine adds. Writes docs/performance/first-run-time.md.
 #
 #   tools/bench/first_run_time.sh
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
-OUT_MD=${OUT_MD:-$ROOT/docs/first-run-time.md}
+OUT_MD=${OUT_MD:-$ROOT/docs/performance/first-run-time.md}
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 COMMIT=$(git -C "$ROOT" rev-parse --short HEAD)

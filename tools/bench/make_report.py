@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes docs/performance-collision.md and the two plots from globe-bench's results.
+"""Writes docs/performance/performance-collision.md and the two plots from globe-bench's results.
 
 Inputs (--results): benchmarks.json (Google Benchmark, aggregates of repetitions) and
 accuracy.json (globe-bench --accuracy); machine facts from the environment run-benchmarks.sh
@@ -215,7 +215,7 @@ def write_readme_summary(readme, bench, machine):
     ratio = sphere[-1] / idx[-1] if sphere and idx else float("nan")
     fair = bvh[-1] / idx[-1] if idx else float("nan")
     block = (
-        "* **Collision** ([docs/performance-collision.md](docs/performance-collision.md), "
+        "* **Collision** ([docs/performance/performance-collision.md](docs/performance/performance-collision.md), "
         "regenerate with\n  `tools/bench/run-benchmarks.sh`, which also rewrites this bullet): "
         "the paper's Fig. 7 measured\n  here over 10 to 100,000 real 17×17 tiles "
         f"(commit {machine['commit']}, {machine['cpu']},\n  {machine['date_utc'][:10]}). "

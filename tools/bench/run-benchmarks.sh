@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs globe-bench (the Fig. 7 timings and the accuracy mode) pinned to one core and writes
-# docs/performance-collision.md, tools/bench/*.png and tools/bench/results/. About 2 minutes.
+# docs/performance/performance-collision.md, tools/bench/*.png and tools/bench/results/. About 2 minutes.
 #
 # Environment: BUILD_DIR (default build-bench; configured RelWithDebInfo if missing),
 # REPETITIONS (9), MIN_TIME (0.2 s per repetition), QUERIES_PER_REGION (40000, three regions),
@@ -53,4 +53,4 @@ export STARTED LOAD_BEFORE LOAD_AFTER REPETITIONS MIN_TIME
 export PINNED="${PIN[*]:-}"
 export COMMIT DIRTY
 MPLBACKEND=Agg "$PYTHON" "$REPO/tools/bench/make_report.py" --results "$RESULTS" \
-  --doc "$REPO/docs/performance-collision.md" --plots "$REPO/tools/bench" --readme "$REPO/README.md"
+  --doc "$REPO/docs/performance/performance-collision.md" --plots "$REPO/tools/bench" --readme "$REPO/README.md"

@@ -7,7 +7,7 @@
 
 #include <gdal.h>
 
-#include "io/gtopo30_header.hpp"
+#include "rasters/gtopo30_header.hpp"
 
 namespace globe::bench {
 
@@ -27,7 +27,7 @@ Result<SourceReference> SourceReference::load(const std::vector<std::filesystem:
     }
     GDALRasterBandH band = GDALGetRasterBand(dataset.get(), 1);
     if (band == nullptr) return makeError(path.string() + ": no band 1");
-    io::SampleGrid grid;
+    rasters::SampleGrid grid;
     grid.cols = GDALGetRasterXSize(dataset.get());
     grid.rows = GDALGetRasterYSize(dataset.get());
     grid.columnStepDegrees = transform[1];
@@ -36,7 +36,7 @@ Result<SourceReference> SourceReference::load(const std::vector<std::filesystem:
     grid.firstRowLatitudeDegrees = transform[3] + 0.5 * transform[5];
     Raster r;
     r.path = path.string();
-    r.grid = io::snapSampleGrid(grid);
+    r.grid = rasters::snapSampleGrid(grid);
     r.samples.resize(static_cast<size_t>(grid.cols * grid.rows));
     if (GDALRasterIO(band, GF_Read, 0, 0, static_cast<int>(grid.cols), static_cast<int>(grid.rows),
                      r.samples.data(), static_cast<int>(grid.cols), static_cast<int>(grid.rows),
@@ -46,7 +46,7 @@ Result<SourceReference> SourceReference::load(const std::vector<std::filesystem:
     int hasNoData = 0;
     const double noData = GDALGetRasterNoDataValue(band, &hasNoData);
     for (int16_t& sample : r.samples) {
-      if (hasNoData && sample == noData) sample = io::kNoDataHeight;
+      if (hasNoData && sample == noData) sample = rasters::kNoDataHeight;
     }
     r.step = std::min(r.grid.columnStepDegrees, r.grid.rowStepDegrees);
     reference.rasters_.push_back(std::move(r));
@@ -63,7 +63,7 @@ int16_t SourceReference::Raster::sample(int64_t row, int64_t column) const {
 
 std::optional<double> SourceReference::heightMeters(double lon, double lat) const {
   for (const Raster& r : rasters_) {
-    const io::SampleGrid& g = r.grid;
+    const rasters::SampleGrid& g = r.grid;
     const double south = std::max(-90.0, g.southDegrees());
     const double north = std::min(90.0, g.northDegrees());
     if (lat < south || lat > north) continue;
@@ -79,10 +79,10 @@ std::optional<double> SourceReference::heightMeters(double lon, double lat) cons
     const int64_t c1 = g.wrapsLongitude ? c0 + 1 : std::min(c0 + 1, g.cols - 1);
     const int64_t r1 = std::min(r0 + 1, g.rows - 1);
     const double tu = u - static_cast<double>(c0), tv = v - static_cast<double>(r0);
-    if (r.sample(tv < 0.5 ? r0 : r1, tu < 0.5 ? c0 : c1) == io::kNoDataHeight) return 0.0;
+    if (r.sample(tv < 0.5 ? r0 : r1, tu < 0.5 ? c0 : c1) == rasters::kNoDataHeight) return 0.0;
     auto h = [&](int64_t row, int64_t column) {
       const int16_t s = r.sample(row, column);
-      return s == io::kNoDataHeight ? 0.0 : static_cast<double>(s);
+      return s == rasters::kNoDataHeight ? 0.0 : static_cast<double>(s);
     };
     return (1 - tv) * ((1 - tu) * h(r0, c0) + tu * h(r0, c1)) +
            tv * ((1 - tu) * h(r1, c0) + tu * h(r1, c1));

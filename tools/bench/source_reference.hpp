@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "geo/result.hpp"
-#include "io/raster_source.hpp"
+#include "core/result.hpp"
+#include "rasters/raster_source.hpp"
 
 namespace globe::bench {
 
@@ -25,7 +25,7 @@ class SourceReference {
  private:
   struct Raster {
     std::string path;
-    io::SampleGrid grid;  // snapped as the tiler snaps it
+    rasters::SampleGrid grid;  // snapped as the tiler snaps it
     std::vector<int16_t> samples;
     double step = 0;
     int16_t sample(int64_t row, int64_t column) const;

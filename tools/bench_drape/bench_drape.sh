@@ -1,15 +1,15 @@
 #!/usr/bin/env bash
 # Frame time of steady views with the bundled imagery layers (Blue Marble + Zion) against the same
 # views without, measured in one process with interleaved rounds (globe-bench-drape). Tiles the
-# bundled data into a scratch directory first. Writes docs/imagery-frame-time.md.
+# bundled data into a scratch directory first. Writes docs/performance/imagery-frame-time.md.
 #
 #   tools/bench_drape/bench_drape.sh [BUILD_DIR]
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${1:-$ROOT/build}
-TILER=$BUILD/tools/tiler/globe-tiler
+TILER=$BUILD/apps/globe-tiler/globe-tiler
 BENCH=$BUILD/tools/bench_drape/globe-bench-drape
-OUT_MD=$ROOT/docs/imagery-frame-time.md
+OUT_MD=$ROOT/docs/performance/imagery-frame-time.md
 for exe in "$TILER" "$BENCH"; do [ -x "$exe" ] || { echo "build it first: $exe" >&2; exit 1; }; done
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT

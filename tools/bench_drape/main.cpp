@@ -14,12 +14,12 @@
 #include <string>
 #include <vector>
 
-#include "app/camera_argument.hpp"
-#include "app/renderer_gpu.hpp"
-#include "io/atomic_file.hpp"
+#include "apps/globe/camera_argument.hpp"
+#include "apps/globe/renderer_gpu.hpp"
 #include "render/osmesa_context.hpp"
 #include "render/read_pixels.hpp"
 #include "scene/terrain_scene.hpp"
+#include "transport/atomic_file.hpp"
 
 namespace {
 
@@ -177,7 +177,7 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
   }
   if (!out.empty()) {
-    if (auto written = io::writeFileAtomically(out, table); !written) {
+    if (auto written = transport::writeFileAtomically(out, table); !written) {
       std::fprintf(stderr, "globe-bench-drape: %s\n", written.error().c_str());
       return 1;
     }

@@ -3,7 +3,7 @@
 
 #include <cstdint>
 
-#include "dem/dem_grid.hpp"
+#include "conditioning/dem_grid.hpp"
 
 namespace globe::bench_fill {
 
@@ -12,6 +12,6 @@ namespace globe::bench_fill {
 // the area mean of the fine surface over it (the trapezoid rule: edge samples weigh 1/2,
 // corners 1/4), rounded to whole metres. No-data fine samples are left out of the mean; a cell
 // with none valid is no-data. The result has (fine.rows - 1) / factor rows, likewise columns.
-dem::DemGrid blockAverage(const dem::DemGrid& fine, int64_t factor);
+conditioning::DemGrid blockAverage(const conditioning::DemGrid& fine, int64_t factor);
 
 }  // namespace globe::bench_fill

@@ -19,11 +19,12 @@ double median(std::vector<double> values) {
 struct Run {
   std::vector<int16_t> samples;
   double seconds = 0;
-  dem::FillStats stats;
+  conditioning::FillStats stats;
 };
 
-Result<Run> runOnce(const FillMethod& method, const dem::DemGrid& holed,
-                    const std::vector<uint8_t>& isVoid, const dem::FillOptions& fillOptions) {
+Result<Run> runOnce(const FillMethod& method, const conditioning::DemGrid& holed,
+                    const std::vector<uint8_t>& isVoid,
+                    const conditioning::FillOptions& fillOptions) {
   Run run;
   if (method.kind == FillMethod::Kind::Gdal) {
     auto filled = gdalFillNodata(holed, isVoid, method.gdal);
@@ -32,11 +33,11 @@ Result<Run> runOnce(const FillMethod& method, const dem::DemGrid& holed,
     run.seconds = filled->fillSeconds;
     return run;
   }
-  dem::DemGrid grid = holed;
-  dem::FillOptions options = fillOptions;
+  conditioning::DemGrid grid = holed;
+  conditioning::FillOptions options = fillOptions;
   if (method.harmonicOnly) options.minimumCurvatureMaxSamples = 0;
   const auto start = std::chrono::steady_clock::now();
-  run.stats = dem::fillVoids(grid, isVoid, method.coarser, options);
+  run.stats = conditioning::fillVoids(grid, isVoid, method.coarser, options);
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run.samples = std::move(grid.samples);
   return run;
@@ -44,7 +45,7 @@ Result<Run> runOnce(const FillMethod& method, const dem::DemGrid& holed,
 
 }  // namespace
 
-Result<std::vector<ClassResult>> benchmarkTile(const dem::DemGrid& truth,
+Result<std::vector<ClassResult>> benchmarkTile(const conditioning::DemGrid& truth,
                                                const std::vector<FillMethod>& methods,
                                                const std::vector<HoleClass>& classes,
                                                const BenchOptions& options) {
@@ -64,7 +65,7 @@ Result<std::vector<ClassResult>> benchmarkTile(const dem::DemGrid& truth,
       continue;
     }
     const std::vector<uint8_t> isVoid = voidMask(truth, holes);
-    dem::DemGrid holed = truth;
+    conditioning::DemGrid holed = truth;
     for (size_t i = 0; i < isVoid.size(); ++i) {
       if (isVoid[i]) holed.samples[i] = kNoData;
     }
@@ -86,7 +87,7 @@ Result<std::vector<ClassResult>> benchmarkTile(const dem::DemGrid& truth,
       }
       scored.medianFillMilliseconds = 1e3 * median(seconds);
       scored.error = summariseErrors(first, truth.samples, holes);
-      dem::DemGrid filled = truth;
+      conditioning::DemGrid filled = truth;
       filled.samples = std::move(first);
       scored.border = checkBorderRange(filled, truth, holes, isVoid);
       result.methods.push_back(std::move(scored));

@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "dem/coarser_sources.hpp"
-#include "dem/dem_grid.hpp"
-#include "dem/void_fill.hpp"
-#include "geo/result.hpp"
+#include "conditioning/coarser_sources.hpp"
+#include "conditioning/dem_grid.hpp"
+#include "conditioning/void_fill.hpp"
+#include "core/result.hpp"
 #include "tools/bench_fill/fill_error.hpp"
 #include "tools/bench_fill/gdal_fill.hpp"
 #include "tools/bench_fill/hole_generator.hpp"
@@ -20,8 +20,8 @@ struct FillMethod {
   enum class Kind { Globe, Gdal };
   std::string label;
   Kind kind = Kind::Globe;
-  const dem::CoarserSources* coarser = nullptr;  // Globe: nullptr = interpolation only
-  GdalFillOptions gdal;                          // Gdal
+  const conditioning::CoarserSources* coarser = nullptr;  // Globe: nullptr = interpolation only
+  GdalFillOptions gdal;                                   // Gdal
   bool harmonicOnly = false;  // Globe: no minimum-curvature refinement (what it adds, measured)
 };
 
@@ -36,7 +36,7 @@ struct MethodResult {
   double medianFillMilliseconds = 0;
   bool deterministic = true;  // every repeat gave the same samples
   BorderCheck border;
-  dem::FillStats stats;  // Globe only
+  conditioning::FillStats stats;  // Globe only
 };
 
 struct ClassResult {
@@ -48,10 +48,10 @@ struct ClassResult {
 struct BenchOptions {
   int repeats = 3;
   HolePlacement placement;  // its seed is combined with each class's diameter
-  dem::FillOptions fill;
+  conditioning::FillOptions fill;
 };
 
-Result<std::vector<ClassResult>> benchmarkTile(const dem::DemGrid& truth,
+Result<std::vector<ClassResult>> benchmarkTile(const conditioning::DemGrid& truth,
                                                const std::vector<FillMethod>& methods,
                                                const std::vector<HoleClass>& classes,
                                                const BenchOptions& options);

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "io/gtopo30_header.hpp"
+#include "rasters/gtopo30_header.hpp"
 
 namespace globe::bench_fill {
 
@@ -33,11 +33,13 @@ ErrorSummary summariseErrors(const std::vector<int16_t>& filled, const std::vect
   return summary;
 }
 
-BorderCheck checkBorderRange(const dem::DemGrid& filled, const dem::DemGrid& truth,
-                             const std::vector<Hole>& holes, const std::vector<uint8_t>& isVoid) {
+BorderCheck checkBorderRange(const conditioning::DemGrid& filled,
+                             const conditioning::DemGrid& truth, const std::vector<Hole>& holes,
+                             const std::vector<uint8_t>& isVoid) {
   BorderCheck check;
   for (size_t i = 0; i < isVoid.size(); ++i) {
-    if (isVoid[i] || truth.samples[i] == io::kNoDataHeight) continue;  // GDAL fills all no-data
+    if (isVoid[i] || truth.samples[i] == rasters::kNoDataHeight)
+      continue;  // GDAL fills all no-data
     if (filled.samples[i] != truth.samples[i]) ++check.changedOutsideHoles;
   }
   for (const Hole& hole : holes) {

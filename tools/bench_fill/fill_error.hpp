@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "dem/dem_grid.hpp"
+#include "conditioning/dem_grid.hpp"
 #include "tools/bench_fill/hole_generator.hpp"
 
 namespace globe::bench_fill {
@@ -31,7 +31,8 @@ struct BorderCheck {
   size_t holeSamples = 0;
   size_t changedOutsideHoles = 0;
 };
-BorderCheck checkBorderRange(const dem::DemGrid& filled, const dem::DemGrid& truth,
-                             const std::vector<Hole>& holes, const std::vector<uint8_t>& isVoid);
+BorderCheck checkBorderRange(const conditioning::DemGrid& filled,
+                             const conditioning::DemGrid& truth, const std::vector<Hole>& holes,
+                             const std::vector<uint8_t>& isVoid);
 
 }  // namespace globe::bench_fill

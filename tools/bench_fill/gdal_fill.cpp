@@ -9,7 +9,7 @@
 #include <memory>
 #include <mutex>
 
-#include "io/gtopo30_header.hpp"
+#include "rasters/gtopo30_header.hpp"
 
 namespace globe::bench_fill {
 namespace {
@@ -27,7 +27,8 @@ std::string lastGdalError(const std::string& what) { return what + ": " + CPLGet
 
 }  // namespace
 
-Result<GdalFillResult> gdalFillNodata(const dem::DemGrid& grid, const std::vector<uint8_t>& isVoid,
+Result<GdalFillResult> gdalFillNodata(const conditioning::DemGrid& grid,
+                                      const std::vector<uint8_t>& isVoid,
                                       const GdalFillOptions& options) {
   static std::once_flag registered;
   std::call_once(registered, [] { GDALAllRegister(); });
@@ -37,12 +38,12 @@ Result<GdalFillResult> gdalFillNodata(const dem::DemGrid& grid, const std::vecto
   DatasetPtr dataset(GDALCreate(mem, "", cols, rows, 1, GDT_Int16, nullptr));
   if (!dataset) return Error{lastGdalError("GDALCreate(MEM)")};
   GDALRasterBandH band = GDALGetRasterBand(dataset.get(), 1);
-  GDALSetRasterNoDataValue(band, io::kNoDataHeight);
+  GDALSetRasterNoDataValue(band, rasters::kNoDataHeight);
 
   GdalFillResult result;
   result.samples = grid.samples;
   for (size_t i = 0; i < isVoid.size(); ++i) {
-    if (isVoid[i]) result.samples[i] = io::kNoDataHeight;
+    if (isVoid[i]) result.samples[i] = rasters::kNoDataHeight;
   }
   if (GDALRasterIO(band, GF_Write, 0, 0, cols, rows, result.samples.data(), cols, rows, GDT_Int16,
                    0, 0) != CE_None) {

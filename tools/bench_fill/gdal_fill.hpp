@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "dem/dem_grid.hpp"
-#include "geo/result.hpp"
+#include "conditioning/dem_grid.hpp"
+#include "core/result.hpp"
 
 namespace globe::bench_fill {
 
@@ -23,7 +23,8 @@ struct GdalFillResult {
 // Copies the grid into a MEM dataset with one Int16 band whose no-data value is -9999, sets the
 // void samples to -9999 and runs GDALFillNodata with the band's own mask (every no-data sample
 // is filled; only valid samples feed the fill) and TEMP_FILE_DRIVER=MEM.
-Result<GdalFillResult> gdalFillNodata(const dem::DemGrid& grid, const std::vector<uint8_t>& isVoid,
+Result<GdalFillResult> gdalFillNodata(const conditioning::DemGrid& grid,
+                                      const std::vector<uint8_t>& isVoid,
                                       const GdalFillOptions& options);
 
 // "GDAL 3.6.2", from GDALVersionInfo.

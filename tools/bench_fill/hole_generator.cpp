@@ -50,7 +50,8 @@ std::vector<Offset> connectedToOrigin(const std::vector<Offset>& offsets, int64_
 }
 
 // Marks every sample within `gap` (Chebyshev) of the hole as blocked for later holes.
-void block(const dem::DemGrid& grid, const Hole& hole, int64_t gap, std::vector<uint8_t>& blocked) {
+void block(const conditioning::DemGrid& grid, const Hole& hole, int64_t gap,
+           std::vector<uint8_t>& blocked) {
   for (size_t index : hole.samples) {
     const auto row = static_cast<int64_t>(index) / grid.cols;
     const auto column = static_cast<int64_t>(index) % grid.cols;
@@ -75,7 +76,7 @@ int64_t blobReach(double diameterSamples) {
 
 // Chessboard distance from each sample to the nearest sample that is not land or lies beyond
 // the grid (0 on such samples): two chamfer passes over the 8-neighbourhood.
-std::vector<int64_t> distanceToNonLand(const dem::DemGrid& grid) {
+std::vector<int64_t> distanceToNonLand(const conditioning::DemGrid& grid) {
   std::vector<int64_t> distance(grid.samples.size());
   auto at = [&](int64_t row, int64_t column) -> int64_t {
     if (row < 0 || column < 0 || row >= grid.rows || column >= grid.cols) return 0;
@@ -128,8 +129,8 @@ std::vector<Offset> blobOffsets(double diameterSamples, uint64_t seed) {
   return connectedToOrigin(offsets, reach);
 }
 
-std::vector<Hole> placeHoles(const dem::DemGrid& grid, double diameterSamples, size_t count,
-                             const HolePlacement& placement) {
+std::vector<Hole> placeHoles(const conditioning::DemGrid& grid, double diameterSamples,
+                             size_t count, const HolePlacement& placement) {
   std::mt19937_64 rng(placement.seed);
   std::vector<uint8_t> blocked(grid.samples.size(), 0);
   std::vector<Hole> holes;
@@ -173,7 +174,7 @@ std::vector<Hole> placeHoles(const dem::DemGrid& grid, double diameterSamples, s
   return holes;
 }
 
-std::vector<uint8_t> voidMask(const dem::DemGrid& grid, const std::vector<Hole>& holes) {
+std::vector<uint8_t> voidMask(const conditioning::DemGrid& grid, const std::vector<Hole>& holes) {
   std::vector<uint8_t> mask(grid.samples.size(), 0);
   for (const Hole& hole : holes) {
     for (size_t index : hole.samples) mask[index] = 1;

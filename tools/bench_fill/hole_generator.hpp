@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "dem/dem_grid.hpp"
+#include "conditioning/dem_grid.hpp"
 
 namespace globe::bench_fill {
 
@@ -38,10 +38,10 @@ constexpr bool isLand(int16_t sample) { return sample > 0; }
 // tile edge. The same grid, diameter, count and placement give the same holes, on every
 // platform (own integer-to-double mapping, no std distributions). Fewer holes come back when
 // the land has no room for more.
-std::vector<Hole> placeHoles(const dem::DemGrid& grid, double diameterSamples, size_t count,
-                             const HolePlacement& placement);
+std::vector<Hole> placeHoles(const conditioning::DemGrid& grid, double diameterSamples,
+                             size_t count, const HolePlacement& placement);
 
 // One flag per grid sample: 1 inside any of the holes.
-std::vector<uint8_t> voidMask(const dem::DemGrid& grid, const std::vector<Hole>& holes);
+std::vector<uint8_t> voidMask(const conditioning::DemGrid& grid, const std::vector<Hole>& holes);
 
 }  // namespace globe::bench_fill

@@ -13,14 +13,14 @@
 #include <utility>
 #include <vector>
 
-#include "dem/condition.hpp"
-#include "dem/grid_coarser_sources.hpp"
-#include "io/atomic_file.hpp"
+#include "conditioning/condition.hpp"
+#include "conditioning/grid_coarser_sources.hpp"
+#include "tiling/dem_reader.hpp"
 #include "tools/bench_fill/block_average.hpp"
 #include "tools/bench_fill/fill_benchmark.hpp"
 #include "tools/bench_fill/gdal_fill.hpp"
 #include "tools/bench_fill/report.hpp"
-#include "tools/tiler/dem_reader.hpp"
+#include "transport/atomic_file.hpp"
 
 namespace {
 
@@ -57,13 +57,14 @@ std::string commandLine(int argc, char** argv) {
 }
 
 // A 3″ SRTM tile (its 30″ block means are SRTM30-like).
-bool isSrtm3(const dem::DemGrid& grid) {
+bool isSrtm3(const conditioning::DemGrid& grid) {
   return std::abs(grid.columnStepDegrees * 3600 - 3) < 1e-6 && (grid.cols - 1) % kSrtm30Factor == 0;
 }
 
 // The classes whose blobs (at most 1.3 × the diameter across) fit the tile at all (W002N52 is
 // only 240 samples wide).
-std::vector<HoleClass> classesThatFit(const dem::DemGrid& grid, const HolePlacement& placement) {
+std::vector<HoleClass> classesThatFit(const conditioning::DemGrid& grid,
+                                      const HolePlacement& placement) {
   std::vector<HoleClass> fitting;
   for (const HoleClass& c : kHoleClasses) {
     const double span =
@@ -105,15 +106,15 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   const auto start = std::chrono::steady_clock::now();
 
-  auto etopo = tiler::readDemGrid(etopoPath);
+  auto etopo = tiling::readDemGrid(etopoPath);
   if (!etopo) {
     std::fprintf(stderr, "globe-bench-fill: %s\n", etopo.error().c_str());
     return 1;
   }
   // Conditioned as the tiler conditions its coarsest source: the sea (negative depths connected
   // to open sea) becomes water, which the coarser surface takes at 0 m.
-  dem::conditionGrid(*etopo, nullptr, {});
-  const dem::GridCoarserSources etopoSource({&*etopo});
+  conditioning::conditionGrid(*etopo, nullptr, {});
+  const conditioning::GridCoarserSources etopoSource({&*etopo});
 
   ReportInput report;
   report.commandLine = commandLine(argc, argv);
@@ -136,7 +137,7 @@ int main(int argc, char** argv) {
       "removed truth itself: **optimistic**, an upper bound of what a real 30″ source gives.\n";
 
   for (const std::string& path : tiles) {
-    auto truth = tiler::readDemGrid(path);
+    auto truth = tiling::readDemGrid(path);
     if (!truth) {
       std::fprintf(stderr, "globe-bench-fill: %s\n", truth.error().c_str());
       return 1;
@@ -155,15 +156,16 @@ int main(int argc, char** argv) {
       tile.noDataSamples += h == -9999;
     }
 
-    dem::DemGrid srtm30Grid;
-    std::unique_ptr<dem::GridCoarserSources> srtm30;
+    conditioning::DemGrid srtm30Grid;
+    std::unique_ptr<conditioning::GridCoarserSources> srtm30;
     std::vector<FillMethod> methods = {{kInterpolation, FillMethod::Kind::Globe, nullptr, {}},
                                        {kHarmonic, FillMethod::Kind::Globe, nullptr, {}, true},
                                        {kEtopo, FillMethod::Kind::Globe, &etopoSource, {}}};
     if (isSrtm3(*truth)) {
       srtm30Grid = blockAverage(*truth, kSrtm30Factor);
-      dem::conditionGrid(srtm30Grid, &etopoSource, {});
-      srtm30 = std::make_unique<dem::GridCoarserSources>(std::vector{&std::as_const(srtm30Grid)});
+      conditioning::conditionGrid(srtm30Grid, &etopoSource, {});
+      srtm30 = std::make_unique<conditioning::GridCoarserSources>(
+          std::vector{&std::as_const(srtm30Grid)});
       methods.push_back({kSrtm30, FillMethod::Kind::Globe, srtm30.get(), {}});
     }
     GdalFillOptions smoothed = gdal;
@@ -187,7 +189,7 @@ int main(int argc, char** argv) {
   const std::string markdown = markdownReport(report);
   std::fputs(markdown.c_str(), stdout);
   if (!outPath.empty()) {
-    if (auto written = io::writeFileAtomically(outPath, markdown); !written) {
+    if (auto written = transport::writeFileAtomically(outPath, markdown); !written) {
       std::fprintf(stderr, "globe-bench-fill: %s\n", written.error().c_str());
       return 1;
     }

@@ -59,7 +59,8 @@ void appendSetup(const ReportInput& in, std::string& out) {
       static_cast<long long>(in.options.placement.gapSamples));
   out += "Methods, all on the same holes in the same run:\n\n";
   out += format(
-      "- **globe**: `dem::fillVoids` (src/dem/void_fill.hpp). Voids up to `smallVoidMaxSamples` "
+      "- **globe**: `dem::fillVoids` (src/conditioning/void_fill.hpp). Voids up to "
+      "`smallVoidMaxSamples` "
       "= %lld, and all voids when there is no coarser source, by interpolation from the border; "
       "larger ones by the delta surface over the coarser source. The interpolation (of the "
       "heights, or of the fine − coarse difference) is harmonic (multigrid beyond 1,024 "

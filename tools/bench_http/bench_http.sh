@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Streaming over HTTP, measured in one run and written to docs/http-streaming.md:
+# Streaming over HTTP, measured in one run and written to docs/performance/http-streaming.md:
 #   * cold: `globe snapshot` of a view from a pyramid served by nginx behind a proxy that adds a
 #     50 ms round trip (globe-delay-proxy), with an empty disk cache: requests, bytes, seconds;
 #   * the same blocks as one file per tile (the z/x/y layout) fetched by curl over the same proxy
@@ -16,10 +16,10 @@ cd "$(dirname "$0")/../.."
 BUILD=${1:?build directory}
 RTT=${2:-50}
 RUNS=${3:-3}
-GLOBE=$BUILD/src/app/globe
-TILER=$BUILD/tools/tiler/globe-tiler
+GLOBE=$BUILD/apps/globe/globe
+TILER=$BUILD/apps/globe-tiler/globe-tiler
 PROXY=$BUILD/tools/bench_http/globe-delay-proxy
-OUT=docs/http-streaming.md
+OUT=docs/performance/http-streaming.md
 WORK=$(mktemp -d /tmp/globe-bench-http.XXXXXX)
 cleanup() {
   kill "${NGINX_PID:-}" "${PROXY_PID:-}" 2>/dev/null || true

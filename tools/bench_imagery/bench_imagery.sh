@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Speed of `globe-tiler imagery` against gdal2tiles.py -p geodetic --tmscompatible (the same
 # quadtree) on the same inputs, the same levels and the same number of processes: median of 3
-# runs each, tiles per second, the ratio. Writes docs/imagery-tiler-speed.md.
+# runs each, tiles per second, the ratio. Writes docs/performance/imagery-tiler-speed.md.
 #
 #   tools/bench_imagery/bench_imagery.sh [BUILD_DIR] [PROCESSES]
 #
@@ -13,10 +13,10 @@ set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${1:-$ROOT/build}
 PROCESSES=${2:-2}
-TILER=$BUILD/tools/tiler/globe-tiler
+TILER=$BUILD/apps/globe-tiler/globe-tiler
 DATA=${GLOBE_IMAGERY_DATA:-$ROOT/../shared/data/imagery}
 GDAL2TILES=${GDAL2TILES:-$(command -v gdal2tiles.py || echo /usr/bin/gdal2tiles.py)}
-OUT_MD=$ROOT/docs/imagery-tiler-speed.md
+OUT_MD=$ROOT/docs/performance/imagery-tiler-speed.md
 [ -x "$TILER" ] || { echo "build globe-tiler first: $TILER" >&2; exit 1; }
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT

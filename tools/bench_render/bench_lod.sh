@@ -15,13 +15,18 @@ ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BASE=${1:?baseline build directory}
 NEW=${2:?new build directory}
 ROUNDS=${3:-3}
-OUT_MD=${4:-$ROOT/docs/performance-lod.md}
+OUT_MD=${4:-$ROOT/docs/performance/performance-lod.md}
 IMAGE_ERROR=$NEW/tools/bench_render/globe-image-error
-for b in "$BASE" "$NEW"; do
-  for exe in "$b/src/app/globe" "$b/tools/tiler/globe-tiler"; do
-    [ -x "$exe" ] || { echo "build it first: $exe" >&2; exit 1; }
+# A program of build $1 named $2: apps/ since the redesign, src/app and tools/tiler before it.
+program() {
+  for p in "$1/apps/$2/$2" "$1/src/app/$2" "$1/tools/tiler/$2"; do
+    [ -x "$p" ] && { echo "$p"; return; }
   done
-done
+  echo "build it first: $1/apps/$2/$2" >&2
+  exit 1
+}
+BASE_GLOBE=$(program "$BASE" globe); BASE_TILER=$(program "$BASE" globe-tiler)
+NEW_GLOBE=$(program "$NEW" globe); NEW_TILER=$(program "$NEW" globe-tiler)
 [ -x "$IMAGE_ERROR" ] || { echo "build it first: $IMAGE_ERROR" >&2; exit 1; }
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
@@ -29,8 +34,8 @@ SHARED=$ROOT/../shared/data/dem/gtopo30
 INPUTS=("$ROOT/data/dem/ETOPO20.DEM" "$ROOT/data/dem/W002N52.DEM" "$ROOT/data/dem/E138N35_FUJI.DEM"
         "$ROOT/data/dem/zion-srtm3.tif")
 for f in N50E008 N50E009 N57E011; do [ -f "$SHARED/$f.DEM" ] && INPUTS+=("$SHARED/$f.DEM"); done
-"$BASE/tools/tiler/globe-tiler" -q -o "$WORK/base-pyramid" "${INPUTS[@]}"
-"$NEW/tools/tiler/globe-tiler" -q -o "$WORK/new-pyramid" "${INPUTS[@]}"
+"$BASE_TILER" -q -o "$WORK/base-pyramid" "${INPUTS[@]}"
+"$NEW_TILER" -q -o "$WORK/new-pyramid" "${INPUTS[@]}"
 
 # name=camera (LON,LAT,HEIGHT,HEADING,PITCH,ROLL)
 VIEWS=(fuji_oblique=138.60,35.20,6000,30,-15,0
@@ -52,7 +57,7 @@ steadyFrameMs() {  # build pyramid camera [flags] → median total_ms of the sec
  {"t": 2, "lon": $lon, "lat": $lat, "height": $h, "heading": $hd, "pitch": $p, "roll": $r}]}
 JSON
   rm -rf "$WORK/play"
-  "$1/src/app/globe" play "$2" "$WORK/hold.json" --out "$WORK/play" --no-frames --size $SIZE \
+  "$(program "$1" globe)" play "$2" "$WORK/hold.json" --out "$WORK/play" --no-frames --size $SIZE \
     ${4:-} >/dev/null
   tail -n +2 "$WORK/play/timing.csv" | awk -F, '{print $7 - $6}' | tail -n 30 | median
 }
@@ -62,9 +67,9 @@ printf '|---|---|---|---|---|---|---|\n' >>"$WORK/table.md"
 for view in "${VIEWS[@]}"; do
   name=${view%%=*}
   camera=${view#*=}
-  "$BASE/src/app/globe" snapshot "$WORK/base-pyramid" --camera "$camera" --size $SIZE --sse 0.5 \
+  "$BASE_GLOBE" snapshot "$WORK/base-pyramid" --camera "$camera" --size $SIZE --sse 0.5 \
     -o "$WORK/$name.base.reference.png" >/dev/null
-  "$NEW/src/app/globe" snapshot "$WORK/new-pyramid" --camera "$camera" --size $SIZE --sse 0.5 \
+  "$NEW_GLOBE" snapshot "$WORK/new-pyramid" --camera "$camera" --size $SIZE --sse 0.5 \
     --nominal-lod -o "$WORK/$name.new.reference.png" >/dev/null
   SIDES=(base nominal new)
   for side in "${SIDES[@]}"; do : >"$WORK/$name.$side.ms"; done
@@ -73,7 +78,7 @@ for view in "${VIEWS[@]}"; do
       build=$NEW; pyramid=$WORK/new-pyramid; flags=
       [ $side = base ] && build=$BASE pyramid=$WORK/base-pyramid
       [ $side = nominal ] && flags=--nominal-lod
-      out=$("$build/src/app/globe" snapshot "$pyramid" --camera "$camera" --size $SIZE $flags \
+      out=$("$(program "$build" globe)" snapshot "$pyramid" --camera "$camera" --size $SIZE $flags \
         -o "$WORK/$name.$side.png")
       echo "$out" | sed -E 's/.* ([0-9]+) triangles.*/\1/' >"$WORK/$name.$side.triangles"
       steadyFrameMs "$build" "$pyramid" "$camera" $flags >>"$WORK/$name.$side.ms"

@@ -16,8 +16,8 @@ int main(int argc, char** argv) {
   app.add_option("--tolerance", options.channelTolerance, "per channel, of 255")
       ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
-  auto image = globe::io::loadImageRgba(imagePath);
-  auto reference = globe::io::loadImageRgba(referencePath);
+  auto image = globe::formats::loadImageRgba(imagePath);
+  auto reference = globe::formats::loadImageRgba(referencePath);
   if (!image || !reference) {
     std::fprintf(stderr, "globe-image-error: %s\n",
                  (image ? reference.error() : image.error()).c_str());

@@ -9,9 +9,10 @@ namespace {
 
 // Fraction of a's pixels with no pixel in b within the shift whose channels are all within the
 // tolerance.
-double unmatched(const io::ImageRgba& a, const io::ImageRgba& b, const ShiftErrorOptions& o) {
+double unmatched(const formats::ImageRgba& a, const formats::ImageRgba& b,
+                 const ShiftErrorOptions& o) {
   const int w = a.widthPixels, h = a.heightPixels;
-  auto at = [w](const io::ImageRgba& image, int x, int y) {
+  auto at = [w](const formats::ImageRgba& image, int x, int y) {
     return &image.pixels[(static_cast<size_t>(y) * w + x) * 4];
   };
   size_t missing = 0;
@@ -39,7 +40,7 @@ double unmatched(const io::ImageRgba& a, const io::ImageRgba& b, const ShiftErro
 
 }  // namespace
 
-Result<ShiftError> shiftError(const io::ImageRgba& image, const io::ImageRgba& reference,
+Result<ShiftError> shiftError(const formats::ImageRgba& image, const formats::ImageRgba& reference,
                               const ShiftErrorOptions& options) {
   if (image.widthPixels != reference.widthPixels || image.heightPixels != reference.heightPixels) {
     return makeError("images differ in size: " + std::to_string(image.widthPixels) + "x" +

@@ -4,8 +4,8 @@
 // silhouettes between LODs; what remains are features drawn wrong or missing.
 #pragma once
 
-#include "geo/result.hpp"
-#include "io/image_io.hpp"
+#include "core/result.hpp"
+#include "formats/image_io.hpp"
 
 namespace globe::bench {
 
@@ -21,7 +21,7 @@ struct ShiftError {
 };
 
 // Images of different sizes are refused.
-Result<ShiftError> shiftError(const io::ImageRgba& image, const io::ImageRgba& reference,
+Result<ShiftError> shiftError(const formats::ImageRgba& image, const formats::ImageRgba& reference,
                               const ShiftErrorOptions& options = {});
 
 }  // namespace globe::bench

@@ -15,7 +15,7 @@
 
 #include "render/embedded_shaders.hpp"
 #include "render_scenarios.hpp"
-#include "tools/tiler/tiler.hpp"
+#include "tiling/tiler.hpp"
 
 namespace {
 
@@ -141,11 +141,11 @@ int main(int argc, char** argv) {
   std::filesystem::remove_all(scratch);
   if (pyramid.empty()) {
     const std::string dem = std::string(GLOBE_SOURCE_DIR) + "/data/dem/";
-    tiler::TilerOptions tilerOptions;
+    tiling::TilerOptions tilerOptions;
     tilerOptions.inputs = {dem + "ETOPO20.DEM", dem + "W002N52.DEM", dem + "E138N35_FUJI.DEM"};
     tilerOptions.outputDir = scratch / "pyramid";
     tilerOptions.progress = false;
-    if (auto report = tiler::runTiler(tilerOptions); !report) {
+    if (auto report = tiling::runTiler(tilerOptions); !report) {
       std::fprintf(stderr, "globe-bench-render: %s\n", report.error().c_str());
       return 1;
     }

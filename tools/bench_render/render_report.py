@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes docs/render-frame-time.md and the README's rendering bullet from globe-bench-render
+"""Writes docs/performance/render-frame-time.md and the README's rendering bullet from globe-bench-render
 tables (one per round): per scenario the median over the rounds of each round's median frame
 time, the rounds' range, and the tiles, triangles and loads (the same in every round)."""
 import argparse
@@ -83,7 +83,7 @@ def main():
     globe = next(v for k, v in summary.items() if k.startswith("(b) whole globe"))
     jump = next(v for k, v in summary.items() if k.startswith("(c') the same jump"))
     bullet = (
-        "* **Rendering** ([docs/render-frame-time.md](docs/render-frame-time.md), regenerate with\n"
+        "* **Rendering** ([docs/performance/render-frame-time.md](docs/performance/render-frame-time.md), regenerate with\n"
         "  `tools/bench_render/bench_render.sh BUILD`, which also rewrites this bullet; commit "
         f"{args.commit},\n  {args.machine}, {date}): 1280×720 on llvmpipe, the Fuji oblique view "
         f"near the ground\n  **{fuji['median']:.1f} ms/frame** (rounds {fuji['low']:.1f}–"
@@ -91,7 +91,7 @@ def main():
         f"globe {globe['median']:.1f} ms.\n  A jump from the globe to Fuji is complete in "
         f"{jump['median']:.0f} ms when paced as `globe view` paces it\n  ({jump['loads']} tile "
         "loads). How the renderer got there: "
-        "[docs/performance-render.md](docs/performance-render.md).\n")
+        "[docs/performance/performance-render.md](docs/performance/performance-render.md).\n")
     text = args.readme.read_text()
     begin, end = text.find(BEGIN), text.find(END)
     if begin < 0 or end < begin:

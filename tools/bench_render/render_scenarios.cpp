@@ -8,8 +8,8 @@
 #include <ctime>
 #include <sstream>
 
-#include "app/renderer_gpu.hpp"
-#include "app/view_command.hpp"
+#include "apps/globe/renderer_gpu.hpp"
+#include "apps/globe/view_command.hpp"
 #include "render/osmesa_context.hpp"
 #include "render/read_pixels.hpp"
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "geo/result.hpp"
+#include "core/result.hpp"
 
 namespace globe::bench {
 

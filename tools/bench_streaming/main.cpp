@@ -12,12 +12,12 @@
 #include <thread>
 #include <vector>
 
+#include "core/thread_pool_runner.hpp"
 #include "flight_path.hpp"
-#include "io/block_cache.hpp"
-#include "io/thread_pool_runner.hpp"
-#include "io/tile_loader.hpp"
-#include "io/tile_store.hpp"
-#include "tools/tiler/tiler.hpp"
+#include "streaming/block_cache.hpp"
+#include "streaming/tile_loader.hpp"
+#include "streaming/tile_store.hpp"
+#include "tiling/tiler.hpp"
 #include "wanted_tiles.hpp"
 
 namespace {
@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
   std::string pyramid;
   double budgetMegabytes = 2;
   unsigned threads = 2;
-  size_t maxInFlight = io::TileLoader::kDefaultMaxInFlight;
+  size_t maxInFlight = streaming::TileLoader::kDefaultMaxInFlight;
   size_t stepsPerLeg = 1500;
   double frameMilliseconds = 1;
   app.add_option("--pyramid", pyramid,
@@ -65,28 +65,28 @@ int main(int argc, char** argv) {
               ("globe-bench-streaming-" + std::to_string(::getpid()));
     std::filesystem::remove_all(scratch);
     const std::string dem = std::string(GLOBE_SOURCE_DIR) + "/data/dem/";
-    tiler::TilerOptions options;
+    tiling::TilerOptions options;
     options.inputs = {dem + "ETOPO20.DEM", dem + "W002N52.DEM", dem + "E138N35_FUJI.DEM"};
     options.outputDir = scratch / "pyramid";
     options.progress = false;
-    auto report = tiler::runTiler(options);
+    auto report = tiling::runTiler(options);
     if (!report) {
       std::fprintf(stderr, "globe-bench-streaming: %s\n", report.error().c_str());
       return 1;
     }
     pyramid = options.outputDir.string();
   }
-  auto opened = io::TileStore::open(pyramid);
+  auto opened = streaming::TileStore::open(pyramid);
   if (!opened) {
     std::fprintf(stderr, "globe-bench-streaming: %s\n", opened.error().c_str());
     return 1;
   }
-  io::TileStore& store = **opened;
+  streaming::TileStore& store = **opened;
 
   const auto budgetBytes = static_cast<size_t>(budgetMegabytes * 1024 * 1024);
-  io::BlockCache cache(budgetBytes);
-  io::ThreadPoolRunner pool(threads);
-  io::TileLoader loader(store, pool, cache);
+  streaming::BlockCache cache(budgetBytes);
+  core::ThreadPoolRunner pool(threads);
+  streaming::TileLoader loader(store, pool, cache);
   loader.setMaxInFlight(maxInFlight);
 
   const std::vector<bench::CameraSample> path = bench::scriptedFlight(stepsPerLeg);
@@ -99,18 +99,18 @@ int main(int argc, char** argv) {
   size_t maxOverBudgetBytes = 0;
   std::vector<geo::TileId> drawn;
 
-  auto collect = [&](const io::PollResult& result, LegTotals* leg) {
+  auto collect = [&](const streaming::PollResult& result, LegTotals* leg) {
     for (const auto& arrival : result.arrived) {
       workerSeconds.push_back(arrival.workerLatencySeconds);
       visibleSeconds.push_back(arrival.visibleLatencySeconds);
     }
-    for (const io::LoadError& error : result.errors) {
+    for (const streaming::LoadError& error : result.errors) {
       std::fprintf(stderr, "load failed: %s\n", error.message.c_str());
     }
     if (!result.arrived.empty()) ++framesWithArrivals;
     if (leg) leg->arrivals += result.arrived.size();
     // The cache's rule: over budget only by the frame's pinned tiles.
-    const io::BlockCacheCounters& c = cache.counters();
+    const streaming::BlockCacheCounters& c = cache.counters();
     if (c.residentBytes > std::max(budgetBytes, c.pinnedBytes)) ++ruleViolations;
     if (c.residentBytes > budgetBytes) {
       maxOverBudgetBytes = std::max(maxOverBudgetBytes, c.residentBytes - budgetBytes);
@@ -123,14 +123,14 @@ int main(int argc, char** argv) {
     LegTotals& leg = legs[camera.leg];
     ++leg.steps;
     cache.beginFrame();
-    const std::vector<io::LoadRequest> wanted = bench::wantedTiles(camera, store.manifest());
+    const std::vector<streaming::LoadRequest> wanted = bench::wantedTiles(camera, store.manifest());
     // The frame draws what is resident of what it wants (a real viewer draws parents for the
     // rest); looking them up counts the cache's hits and misses.
     drawn.clear();
-    for (const io::LoadRequest& r : wanted) {
+    for (const streaming::LoadRequest& r : wanted) {
       distinctTiles.insert(r.tile);
-      const io::TileState state = loader.state(r.tile);
-      if (state == io::TileState::Absent || state == io::TileState::Failed) continue;
+      const streaming::TileState state = loader.state(r.tile);
+      if (state == streaming::TileState::Absent || state == streaming::TileState::Failed) continue;
       if (loader.get(r.tile)) drawn.push_back(r.tile);
     }
     cache.touch(drawn);
@@ -150,14 +150,14 @@ int main(int argc, char** argv) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
-  const io::LoaderCounters l = loader.counters();
-  const io::BlockCacheCounters& c = cache.counters();
+  const streaming::LoaderCounters l = loader.counters();
+  const streaming::BlockCacheCounters& c = cache.counters();
   size_t distinctBytes = 0;
   for (const geo::TileId& tile : distinctTiles) {
-    if (cache.contains(tile) || loader.state(tile) != io::TileState::Absent) {
+    if (cache.contains(tile) || loader.state(tile) != streaming::TileState::Absent) {
       distinctBytes +=
           size_t{store.manifest().verticesPerSide} * store.manifest().verticesPerSide * 2 +
-          io::BlockCache::kEntryOverheadBytes;
+          streaming::BlockCache::kEntryOverheadBytes;
     }
   }
 

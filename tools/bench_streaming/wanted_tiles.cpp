@@ -11,7 +11,7 @@ namespace {
 
 constexpr double kEquatorMeters = 40'075'016.7;
 
-bool insideLevelBounds(const geo::TileId& tile, const io::BoundsDegrees& bounds) {
+bool insideLevelBounds(const geo::TileId& tile, const formats::BoundsDegrees& bounds) {
   const geo::GlobeRectangle r = geo::GeographicTilingScheme::tileRectangle(tile);
   return r.intersects(
       geo::GlobeRectangle::fromDegrees(bounds.west, bounds.south, bounds.east, bounds.north));
@@ -26,9 +26,9 @@ uint32_t finestLevelForHeight(double heightMeters, uint32_t maxLevel) {
   return static_cast<uint32_t>(std::clamp(level, 0.0, static_cast<double>(maxLevel)));
 }
 
-std::vector<io::LoadRequest> wantedTiles(const CameraSample& camera,
-                                         const io::PyramidManifest& manifest) {
-  std::vector<io::LoadRequest> wanted;
+std::vector<streaming::LoadRequest> wantedTiles(const CameraSample& camera,
+                                                const formats::PyramidManifest& manifest) {
+  std::vector<streaming::LoadRequest> wanted;
   const uint32_t finest = finestLevelForHeight(camera.heightMeters, manifest.maxLevel());
   for (uint32_t k = 0; k < kLevelsWanted && k <= finest; ++k) {
     const uint32_t level = finest - k;

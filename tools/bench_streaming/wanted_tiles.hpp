@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "flight_path.hpp"
-#include "io/load_request.hpp"
-#include "io/pyramid_manifest.hpp"
+#include "formats/pyramid_manifest.hpp"
+#include "streaming/load_request.hpp"
 
 namespace globe::bench {
 
@@ -16,7 +16,7 @@ inline constexpr uint32_t kLevelsWanted = 4;
 uint32_t finestLevelForHeight(double heightMeters, uint32_t maxLevel);
 
 // Only tiles inside their level's bounds in the manifest, as a viewer would ask.
-std::vector<io::LoadRequest> wantedTiles(const CameraSample& camera,
-                                         const io::PyramidManifest& manifest);
+std::vector<streaming::LoadRequest> wantedTiles(const CameraSample& camera,
+                                                const formats::PyramidManifest& manifest);
 
 }  // namespace globe::bench

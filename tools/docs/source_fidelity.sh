@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# docs/source-fidelity.md: how the tiler draws each source it is given (README, "How real
+# docs/performance/source-fidelity.md: how the tiler draws each source it is given (README, "How real
 # inputs are drawn"), on real cases made from the repository's DEMs with GDAL's own tools: a
 # summit at a crop's edge, a coastal tile half blanked, two adjacent SRTM tiles, a DEM warped to
 # UTM, a no-data collar, and the bundled tiles over the 20′ world grid. Each case is tiled by
@@ -11,8 +11,8 @@ set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${1:-$ROOT/build}
 BASELINE=${2:-}
-OUT_MD=${OUT_MD:-$ROOT/docs/source-fidelity.md}
-TILER=$BUILD/tools/tiler/globe-tiler
+OUT_MD=${OUT_MD:-$ROOT/docs/performance/source-fidelity.md}
+TILER=$BUILD/apps/globe-tiler/globe-tiler
 MEASURE=$BUILD/tools/fidelity/globe-source-fidelity
 for exe in "$TILER" "$MEASURE"; do [ -x "$exe" ] || { echo "build it first: $exe" >&2; exit 1; }; done
 WORK=$(mktemp -d)

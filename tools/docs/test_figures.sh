@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The figures the README quotes from tests (void fills, collision audits, stress maxima): runs
-# those tests from a built tree and writes what each prints, verbatim, to docs/test-figures.md,
+# those tests from a built tree and writes what each prints, verbatim, to docs/performance/test-figures.md,
 # with the commit and machine, so the README cites a generated document instead of numbers
 # copied by hand (tools/docs/check_numbers.py checks that they agree).
 #
@@ -8,10 +8,10 @@
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${1:-$ROOT/build}
-OUT_MD=${OUT_MD:-$ROOT/docs/test-figures.md}
+OUT_MD=${OUT_MD:-$ROOT/docs/performance/test-figures.md}
 # test program (under BUILD/tests) and GoogleTest filter
 RUNS=(
-  "tools/tiler/globe_tiler_tests TilerConditioning.*"
+  "tiling/globe_tiler_tests TilerConditioning.*"
   "collision/globe_response_tests FujiDrive.*:WallDrive.*:RidgeSlide.*"
   "collision/globe_collision_tests RealPyramid.*:StressQotcd.*"
   "geo/globe_geo_tests StressGeodesy.*"

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "io/tile_store.hpp"
+#include "streaming/tile_store.hpp"
 #include "tools/fidelity/source_fidelity.hpp"
 
 namespace globe::fidelity {
@@ -18,7 +18,7 @@ struct InputFidelity {
 
 // inputs and noDataIsSea as given to globe-tiler; finest first, whole-globe inputs (no edge)
 // left out.
-Result<std::vector<InputFidelity>> measureInputs(io::TileStore& store,
+Result<std::vector<InputFidelity>> measureInputs(streaming::TileStore& store,
                                                  const std::vector<std::string>& inputs,
                                                  bool noDataIsSea = false,
                                                  double edgeBandDegrees = 0.1);

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "io/tile_store.hpp"
+#include "streaming/tile_store.hpp"
 #include "tools/fidelity/input_fidelity.hpp"
 
 int main(int argc, char** argv) {
@@ -23,7 +23,7 @@ int main(int argc, char** argv) {
   app.add_flag("--no-data-is-sea", noDataIsSea, "as given to globe-tiler");
   CLI11_PARSE(app, argc, argv);
 
-  auto store = globe::io::TileStore::open(pyramid);
+  auto store = globe::streaming::TileStore::open(pyramid);
   if (!store) {
     std::fprintf(stderr, "globe-source-fidelity: %s\n", store.error().c_str());
     return 1;

@@ -32,7 +32,7 @@ struct Lattice {
   double latitude(int64_t row) const { return 90.0 - spacingDegrees * static_cast<double>(row); }
 };
 
-Result<Lattice> readLattice(io::TileStore& store, uint32_t level, double west, double south,
+Result<Lattice> readLattice(streaming::TileStore& store, uint32_t level, double west, double south,
                             double east, double north) {
   const uint32_t n = store.manifest().verticesPerSide;
   const double tileDegrees = 180.0 / static_cast<double>(uint64_t{1} << level);
@@ -71,7 +71,7 @@ Result<Lattice> readLattice(io::TileStore& store, uint32_t level, double west, d
 }
 
 // No-data samples reaching the grid's border through no data (8 neighbours): off the footprint.
-std::vector<uint8_t> noDataReachingBorder(const dem::DemGrid& grid) {
+std::vector<uint8_t> noDataReachingBorder(const conditioning::DemGrid& grid) {
   std::vector<uint8_t> reached(grid.samples.size(), 0);
   std::vector<size_t> stack;
   auto push = [&](int64_t r, int64_t c) {
@@ -98,7 +98,8 @@ std::vector<uint8_t> noDataReachingBorder(const dem::DemGrid& grid) {
 
 // A coarser source's surface as given: bilinear over its samples, sea floors where measured, its
 // no data (GTOPO30's sea) at 0 m. Nullopt beyond its cells.
-std::optional<double> coarseSurfaceMeters(const dem::DemGrid& grid, double lon, double lat) {
+std::optional<double> coarseSurfaceMeters(const conditioning::DemGrid& grid, double lon,
+                                          double lat) {
   const double halfColumn = grid.columnStepDegrees / 2, halfRow = grid.rowStepDegrees / 2;
   if (lat > grid.firstRowLatitudeDegrees + halfRow ||
       lat < grid.latitudeDegrees(grid.rows - 1) - halfRow)
@@ -126,7 +127,7 @@ std::optional<double> coarseSurfaceMeters(const dem::DemGrid& grid, double lon, 
          tv * ((1 - tu) * h(r1, c0) + tu * h(r1, c1));
 }
 
-bool betweenSampleCentres(const dem::DemGrid& grid, double lon, double lat) {
+bool betweenSampleCentres(const conditioning::DemGrid& grid, double lon, double lat) {
   const double column = (lon - grid.firstColumnLongitudeDegrees) / grid.columnStepDegrees;
   const double row = (grid.firstRowLatitudeDegrees - lat) / grid.rowStepDegrees;
   return column >= 0 && column <= static_cast<double>(grid.cols - 1) && row >= 0 &&
@@ -135,7 +136,8 @@ bool betweenSampleCentres(const dem::DemGrid& grid, double lon, double lat) {
 
 // The largest step between the source's own neighbouring data samples within `radius` samples
 // of (row, column).
-double largestSourceStep(const dem::DemGrid& grid, int64_t row, int64_t column, int64_t radius) {
+double largestSourceStep(const conditioning::DemGrid& grid, int64_t row, int64_t column,
+                         int64_t radius) {
   double largest = 0;
   for (int64_t r = std::max<int64_t>(0, row - radius); r <= std::min(grid.rows - 1, row + radius);
        ++r) {
@@ -167,11 +169,11 @@ DifferenceStats summarise(std::vector<double> differences) {
 
 }  // namespace
 
-Result<SourceFidelity> measureSourceFidelity(io::TileStore& store, uint32_t level,
-                                             const dem::DemGrid& source,
-                                             const std::vector<const dem::DemGrid*>& coarser,
-                                             const std::vector<const dem::DemGrid*>& peers,
-                                             bool noDataIsWater, double edgeBandDegrees) {
+Result<SourceFidelity> measureSourceFidelity(
+    streaming::TileStore& store, uint32_t level, const conditioning::DemGrid& source,
+    const std::vector<const conditioning::DemGrid*>& coarser,
+    const std::vector<const conditioning::DemGrid*>& peers, bool noDataIsWater,
+    double edgeBandDegrees) {
   const double west = source.longitudeDegrees(0) - source.columnStepDegrees / 2;
   const double east = source.longitudeDegrees(source.cols - 1) + source.columnStepDegrees / 2;
   const double north = source.latitudeDegrees(0) + source.rowStepDegrees / 2;
@@ -189,8 +191,8 @@ Result<SourceFidelity> measureSourceFidelity(io::TileStore& store, uint32_t leve
   std::vector<uint8_t> where(count, 0);
   std::vector<double> sourceMeters(count, 0);
   // Land: the 2×2 samples all measured above 0 m (a coast's vertices follow the coast rule of
-  // dem/vertex_sample.hpp instead). Over no data: the nearest sample is no data and none of the
-  // four is a measured sample at or below 0 m.
+  // conditioning/vertex_sample.hpp instead). Over no data: the nearest sample is no data and none
+  // of the four is a measured sample at or below 0 m.
   std::vector<uint8_t> land(count, 0), overNoData(count, 0);
   auto indexOf = [&](int64_t row, int64_t column) {
     return static_cast<size_t>((row - lattice.firstRow) * lattice.columns +
@@ -210,9 +212,9 @@ Result<SourceFidelity> measureSourceFidelity(io::TileStore& store, uint32_t leve
       if (columnAt < 0 || columnAt > static_cast<double>(source.cols - 1) || rowAt < 0 ||
           rowAt > static_cast<double>(source.rows - 1)) {
         // Where an equally fine source goes on, the two join as they are: not an edge.
-        const bool peerGoesOn = std::any_of(peers.begin(), peers.end(), [&](const dem::DemGrid* p) {
-          return betweenSampleCentres(*p, lon, lat);
-        });
+        const bool peerGoesOn = std::any_of(
+            peers.begin(), peers.end(),
+            [&](const conditioning::DemGrid* p) { return betweenSampleCentres(*p, lon, lat); });
         where[k] = peerGoesOn ? 0 : 2;
         continue;
       }
@@ -323,7 +325,7 @@ Result<SourceFidelity> measureSourceFidelity(io::TileStore& store, uint32_t leve
   // the 2×2 source sample positions around them (the coast resolved to the source's own cell),
   // or where no coarser source says anything.
   auto coarserLandAt = [&](double lon, double lat) {
-    for (const dem::DemGrid* grid : coarser) {
+    for (const conditioning::DemGrid* grid : coarser) {
       if (const auto meters = coarseSurfaceMeters(*grid, lon, lat)) return *meters > 0.0;
     }
     return true;

@@ -13,8 +13,8 @@
 
 #include <cstdint>
 
-#include "dem/dem_grid.hpp"
-#include "io/tile_store.hpp"
+#include "conditioning/dem_grid.hpp"
+#include "streaming/tile_store.hpp"
 
 namespace globe::fidelity {
 
@@ -46,10 +46,10 @@ struct SourceFidelity {
 // first; empty: none), for the sea check; peers: the equally fine ones (their joins are not
 // edges); noDataIsWater: the source's no data is an explicit water code (GTOPO30's ocean mask),
 // so no sea check. Level: the source's finest level.
-Result<SourceFidelity> measureSourceFidelity(io::TileStore& store, uint32_t level,
-                                             const dem::DemGrid& source,
-                                             const std::vector<const dem::DemGrid*>& coarser,
-                                             const std::vector<const dem::DemGrid*>& peers,
-                                             bool noDataIsWater, double edgeBandDegrees = 0.1);
+Result<SourceFidelity> measureSourceFidelity(
+    streaming::TileStore& store, uint32_t level, const conditioning::DemGrid& source,
+    const std::vector<const conditioning::DemGrid*>& coarser,
+    const std::vector<const conditioning::DemGrid*>& peers, bool noDataIsWater,
+    double edgeBandDegrees = 0.1);
 
 }  // namespace globe::fidelity

@@ -6,16 +6,16 @@
 #include <cstdio>
 #include <string>
 
-#include "app/camera_argument.hpp"
-#include "app/playback_soak.hpp"
+#include "apps/globe/camera_argument.hpp"
 #include "geo/ellipsoid.hpp"
 #include "terrain/height_block.hpp"
+#include "tools/soak/playback_soak.hpp"
 
 namespace {
 
 double mebibytes(size_t bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.0); }
 
-void print(const globe::app::SoakCheckpoint& c) {
+void print(const globe::soak::SoakCheckpoint& c) {
   std::printf(
       "frames %lld  wall %.1f s (%.3f ms/frame)  drift %.3g m %.3g rad (%lld frames differ)  "
       "VmRSS %.1f MiB  VmHWM %.1f MiB  VmRSS after loop 1 %.1f MiB, max since %.1f MiB  "
@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
       "(10^6 drawn frames would take hours on llvmpipe): reports the drift between loops, "
       "VmRSS/VmHWM and the loader and cache counters at 10^4, 10^5, 10^6 frames and the end",
       "globe-soak"};
-  globe::app::SoakOptions options;
+  globe::soak::SoakOptions options;
   std::string pyramid, path, globeName = "wgs84", fpsText = "30", sizeText = "1280x720",
                              cacheText = "256";
   long long frames = options.frames;
@@ -96,12 +96,12 @@ int main(int argc, char** argv) {
       seaFloor ? globe::terrain::SeaSurface::SeaFloor : globe::terrain::SeaSurface::Water;
   options.scene.cacheBudgetBytes = static_cast<size_t>(*cache * 1024 * 1024);
   options.checkpoints = {10'000, 100'000, 1'000'000};
-  const auto report = globe::app::runSoak(options, print);
+  const auto report = globe::soak::runSoak(options, print);
   if (!report) {
     std::fprintf(stderr, "globe-soak: %s\n", report.error().c_str());
     return 1;
   }
   std::printf("frames per loop: %lld\n", static_cast<long long>(report->framesPerLoop));
-  const globe::app::SoakCheckpoint& last = report->checkpoints.back();
+  const globe::soak::SoakCheckpoint& last = report->checkpoints.back();
   return last.framesDrifted == 0 ? 0 : 3;
 }

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "io/gtopo30.hpp"
+#include "rasters/gtopo30.hpp"
 
 namespace {
 
@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
   std::filesystem::create_directories(outDir);
   const double step = 1.0 / 120 * stride;
   for (const TileSpec& t : gtopo30Layout()) {
-    globe::io::Gtopo30Raster raster;
+    globe::rasters::Gtopo30Raster raster;
     auto& h = raster.header;
     h.cols = std::lround(t.widthDegrees / step);
     h.rows = std::lround(t.heightDegrees / step);
@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
       }
     }
     const auto stem = std::filesystem::path(outDir) / tileName(t);
-    if (auto written = globe::io::writeGtopo30(stem, raster); !written) {
+    if (auto written = globe::rasters::writeGtopo30(stem, raster); !written) {
       std::fprintf(stderr, "globe-synth-gtopo30: %s\n", written.error().c_str());
       return 1;
     }

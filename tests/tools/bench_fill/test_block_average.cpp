@@ -6,8 +6,8 @@
 namespace globe::bench_fill {
 namespace {
 
-dem::DemGrid planeGrid() {
-  dem::DemGrid fine;
+conditioning::DemGrid planeGrid() {
+  conditioning::DemGrid fine;
   fine.cols = fine.rows = 21;
   fine.firstColumnLongitudeDegrees = 8;
   fine.firstRowLatitudeDegrees = 51;
@@ -21,7 +21,7 @@ dem::DemGrid planeGrid() {
 }
 
 TEST(BlockAverage, PlaneAveragesToItsValueAtTheCellCentre) {
-  const dem::DemGrid coarse = blockAverage(planeGrid(), 10);
+  const conditioning::DemGrid coarse = blockAverage(planeGrid(), 10);
   ASSERT_EQ(coarse.rows, 2);
   ASSERT_EQ(coarse.cols, 2);
   EXPECT_DOUBLE_EQ(coarse.columnStepDegrees, 1.0 / 120);
@@ -35,13 +35,13 @@ TEST(BlockAverage, PlaneAveragesToItsValueAtTheCellCentre) {
 }
 
 TEST(BlockAverage, LeavesNoDataOut) {
-  dem::DemGrid fine = planeGrid();
+  conditioning::DemGrid fine = planeGrid();
   for (int16_t& h : fine.samples) h = 50;
   fine.samples[fine.index(3, 4)] = -9999;
   for (int64_t row = 10; row < 21; ++row) {
     for (int64_t column = 10; column < 21; ++column) fine.samples[fine.index(row, column)] = -9999;
   }
-  const dem::DemGrid coarse = blockAverage(fine, 10);
+  const conditioning::DemGrid coarse = blockAverage(fine, 10);
   EXPECT_EQ(coarse.at(0, 0), 50);
   EXPECT_EQ(coarse.at(1, 1), -9999);
 }

@@ -16,8 +16,8 @@ constexpr int16_t kNoData = -9999;
 
 // 3″ samples: land (sloping, 100..260 m) inside a disc of radius landRadius around the middle,
 // sea at 0 m outside it, and a 5×5 no-data void in the land.
-dem::DemGrid islandGrid(int64_t side, double landRadius) {
-  dem::DemGrid grid;
+conditioning::DemGrid islandGrid(int64_t side, double landRadius) {
+  conditioning::DemGrid grid;
   grid.cols = grid.rows = side;
   grid.firstColumnLongitudeDegrees = 8;
   grid.firstRowLatitudeDegrees = 51;
@@ -40,7 +40,7 @@ dem::DemGrid islandGrid(int64_t side, double landRadius) {
   return grid;
 }
 
-bool fourConnected(const dem::DemGrid& grid, const Hole& hole) {
+bool fourConnected(const conditioning::DemGrid& grid, const Hole& hole) {
   const std::set<size_t> inside(hole.samples.begin(), hole.samples.end());
   std::set<size_t> reached{hole.samples.front()};
   std::vector<size_t> stack{hole.samples.front()};
@@ -58,7 +58,7 @@ bool fourConnected(const dem::DemGrid& grid, const Hole& hole) {
 }
 
 TEST(PlaceHoles, OnLandWithALandRingAwayFromTheEdgeAndFromEachOther) {
-  const dem::DemGrid grid = islandGrid(200, 80);
+  const conditioning::DemGrid grid = islandGrid(200, 80);
   HolePlacement placement;
   placement.seed = 7;
   for (const double diameter : {3.0, 8.0, 20.0, 50.0}) {
@@ -110,7 +110,7 @@ TEST(PlaceHoles, OnLandWithALandRingAwayFromTheEdgeAndFromEachOther) {
 }
 
 TEST(PlaceHoles, SameSeedSameHolesOtherSeedOtherHoles) {
-  const dem::DemGrid grid = islandGrid(200, 80);
+  const conditioning::DemGrid grid = islandGrid(200, 80);
   HolePlacement placement;
   placement.seed = 11;
   const std::vector<Hole> first = placeHoles(grid, 8, 20, placement);
@@ -124,7 +124,7 @@ TEST(PlaceHoles, SameSeedSameHolesOtherSeedOtherHoles) {
 
 TEST(PlaceHoles, NoneWhereTheLandHasNoRoom) {
   // Land only as a 20-sample-wide strip: a 40-sample blob (at least 28 wide) never fits.
-  dem::DemGrid grid = islandGrid(200, 0);
+  conditioning::DemGrid grid = islandGrid(200, 0);
   for (int64_t row = 0; row < grid.rows; ++row) {
     for (int64_t column = 90; column < 110; ++column) grid.samples[grid.index(row, column)] = 50;
   }
@@ -135,7 +135,7 @@ TEST(PlaceHoles, NoneWhereTheLandHasNoRoom) {
 }
 
 TEST(VoidMask, FlagsExactlyTheHoleSamples) {
-  const dem::DemGrid grid = islandGrid(200, 80);
+  const conditioning::DemGrid grid = islandGrid(200, 80);
   const std::vector<Hole> holes = placeHoles(grid, 20, 5, HolePlacement{});
   const std::vector<uint8_t> mask = voidMask(grid, holes);
   size_t holeSamples = 0;

@@ -7,8 +7,8 @@ namespace globe::bench {
 namespace {
 
 // A white 8×8 square on black, its corner at (x0, y0), in a 40×30 image.
-io::ImageRgba square(int x0, int y0) {
-  io::ImageRgba image{40, 30, std::vector<uint8_t>(40 * 30 * 4, 0)};
+formats::ImageRgba square(int x0, int y0) {
+  formats::ImageRgba image{40, 30, std::vector<uint8_t>(40 * 30 * 4, 0)};
   for (int y = y0; y < y0 + 8; ++y) {
     for (int x = x0; x < x0 + 8; ++x) {
       for (int c = 0; c < 3; ++c) image.pixels[(static_cast<size_t>(y) * 40 + x) * 4 + c] = 255;
@@ -33,7 +33,7 @@ TEST(ImageShiftError, CountsWhatMovedFurtherOrVanished) {
   // left behind is more than 2 px from any black (4 pixels); the same the other way round.
   EXPECT_EQ(moved->imageUnmatched, 12.0 / 1200.0);
   EXPECT_EQ(moved->referenceUnmatched, 12.0 / 1200.0);
-  io::ImageRgba black{40, 30, std::vector<uint8_t>(40 * 30 * 4, 0)};
+  formats::ImageRgba black{40, 30, std::vector<uint8_t>(40 * 30 * 4, 0)};
   auto vanished = shiftError(black, square(10, 10));
   ASSERT_TRUE(vanished);
   EXPECT_EQ(vanished->imageUnmatched, 16.0 / 1200.0);  // black more than 2 px inside the square
@@ -42,7 +42,7 @@ TEST(ImageShiftError, CountsWhatMovedFurtherOrVanished) {
 }
 
 TEST(ImageShiftError, RefusesImagesOfDifferentSizes) {
-  io::ImageRgba small{4, 4, std::vector<uint8_t>(64, 0)};
+  formats::ImageRgba small{4, 4, std::vector<uint8_t>(64, 0)};
   auto error = shiftError(small, square(0, 0));
   ASSERT_FALSE(error);
   EXPECT_NE(error.error().find("differ in size"), std::string::npos);

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "io/tile_store.hpp"
+#include "streaming/tile_store.hpp"
+#include "tests/support/tiler_test_fixture.hpp"
 #include "tests/tools/fidelity/real_input_cases.hpp"
-#include "tests/tools/tiler/tiler_test_fixture.hpp"
 #include "tools/fidelity/input_fidelity.hpp"
 
 namespace globe::fidelity {
@@ -27,8 +27,8 @@ constexpr double kResamplingMeters = 0.5 + 1e-6;
 // Tiles the inputs and measures how the pyramid draws each of them that has an edge.
 std::vector<SourceFidelity> tileAndMeasure(const std::string& name,
                                            const std::vector<std::string>& inputs) {
-  const fs::path pyramid = tiler::testing::tilePyramid(name + "-pyramid", inputs);
-  auto store = io::TileStore::open(pyramid.string());
+  const fs::path pyramid = globe::testing::tilePyramid(name + "-pyramid", inputs);
+  auto store = streaming::TileStore::open(pyramid.string());
   EXPECT_TRUE(store) << store.error();
   if (!store) return {};
   auto inputsMeasured = measureInputs(**store, inputs);
@@ -69,7 +69,7 @@ void expectNoWallAndNoFalseSea(const SourceFidelity& f) {
 
 TEST(RealInputs, ASummitAtTheEdgeIsDrawnAtItsMeasuredHeight) {
   // Mount Fuji's summit (138.7275°E, 35.3606°N) 0.01° inside the crop's north edge.
-  const fs::path dir = tiler::testing::freshTempDir("summit-edge");
+  const fs::path dir = globe::testing::freshTempDir("summit-edge");
   testing::cropRaster(kFujiTiff, dir / "fuji-crop.tif", 138.55, 35.10, 138.95, 35.37);
   const auto measured = tileAndMeasure("summit-edge", {kWorld, (dir / "fuji-crop.tif").string()});
   ASSERT_EQ(measured.size(), 1U);
@@ -80,7 +80,7 @@ TEST(RealInputs, ASummitAtTheEdgeIsDrawnAtItsMeasuredHeight) {
 TEST(RealInputs, ABlankedHalfOfACoastalTileShowsTheCoarserSeaAndLand) {
   // The Fuji tile's south half (Suruga Bay, the Izu peninsula) blanked: the 20′ grid has both
   // sea and land along that coast.
-  const fs::path dir = tiler::testing::freshTempDir("blanked-half");
+  const fs::path dir = globe::testing::freshTempDir("blanked-half");
   testing::blankRaster(kFujiTiff, dir / "fuji-north.tif",
                        [](double, double latitude) { return latitude < 35.5; });
   const auto measured = tileAndMeasure("blanked-half", {kWorld, (dir / "fuji-north.tif").string()});
@@ -102,7 +102,7 @@ TEST(RealInputs, TwoAdjacentSrtmTilesJoinUntouched) {
 
 TEST(RealInputs, ADemWarpedToUtmHasNoMoatsAndNoWalls) {
   // Warped to UTM 54N and back to lat/long by the tiler: no-data wedges along every side.
-  const fs::path dir = tiler::testing::freshTempDir("utm");
+  const fs::path dir = globe::testing::freshTempDir("utm");
   testing::warpRaster(kFujiTiff, dir / "fuji-utm.tif", "EPSG:32654", 90.0);
   const auto measured = tileAndMeasure("utm", {kWorld, (dir / "fuji-utm.tif").string()});
   ASSERT_EQ(measured.size(), 1U);
@@ -114,7 +114,7 @@ TEST(RealInputs, ADemWarpedToUtmHasNoMoatsAndNoWalls) {
 TEST(RealInputs, ANoDataCollarShowsTheCoarserGridBentToTheData) {
   // A collar of no data three samples wide round the tile (as GeoTIFF exports often have): one
   // thin ring of outside samples, bent on its own samples rather than over the whole tile.
-  const fs::path dir = tiler::testing::freshTempDir("collar");
+  const fs::path dir = globe::testing::freshTempDir("collar");
   testing::blankRaster(kFujiTiff, dir / "fuji-collar.tif", [](double lon, double lat) {
     return lon < 138.0025 || lon > 138.9975 || lat < 35.0025 || lat > 35.9975;
   });

@@ -1,0 +1,160 @@
+#include "apps/globe/info_command.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "formats/source_conditioning_json.hpp"
+#include "formats/vertical_units_json.hpp"
+
+namespace globe::app {
+namespace {
+
+formats::BoundsDegrees overallBounds(const formats::PyramidManifest& m) {
+  // Level 0 always spans the globe; the finest level shows where the detail is.
+  return m.levels.empty() ? formats::BoundsDegrees{} : m.levels.back().bounds;
+}
+
+terrain::HeightRange overallRange(const formats::PyramidManifest& m) {
+  terrain::HeightRange range{INT16_MAX, INT16_MIN};
+  for (const formats::LevelInfo& level : m.levels) range.include(level.heightRange);
+  return range;
+}
+
+std::string boundsText(const formats::BoundsDegrees& b) {
+  char text[128];
+  std::snprintf(text, sizeof text, "lon %.6f..%.6f, lat %.6f..%.6f", b.west, b.east, b.south,
+                b.north);
+  return text;
+}
+
+}  // namespace
+
+std::string formatPyramidInfoText(const formats::PyramidManifest& m, const std::string& path) {
+  std::string out;
+  char line[1024];
+  const auto range = overallRange(m);
+  std::snprintf(
+      line, sizeof line,
+      "pyramid     %s\nscheme      geographic lat/long quadtree, level 0 = 2x1 tiles of "
+      "180 deg\nblocks      %ux%u vertices, GTOPO30 int16 big-endian, -9999 and "
+      "-32767..-20001 = water\n"
+      "globe       %s\nlevels      0..%u\ntiles       %llu\nheights     %d..%d m (sea floors "
+      "included)\n"
+      "finest      %s\n",
+      path.c_str(), m.verticesPerSide, m.verticesPerSide,
+      std::string(geo::toString(m.globeModel)).c_str(), m.maxLevel(),
+      static_cast<unsigned long long>(m.tileCount()), range.minimumMeters, range.maximumMeters,
+      boundsText(overallBounds(m)).c_str());
+  out += line;
+  out += "\nlevel      tiles  packs  heights (m)     bounds (deg)\n";
+  for (const formats::LevelInfo& level : m.levels) {
+    std::snprintf(line, sizeof line, "%5u %10llu %6zu  %6d..%-6d  %s\n", level.level,
+                  static_cast<unsigned long long>(level.tileCount), level.packs.size(),
+                  level.heightRange.minimumMeters, level.heightRange.maximumMeters,
+                  boundsText(level.bounds).c_str());
+    out += line;
+  }
+  out += "\nsources (finest first)\n";
+  for (const formats::SourceInfo& s : m.sources) {
+    std::snprintf(line, sizeof line,
+                  "  %s  %s %lldx%lld, %.6g deg (%.1f arcsec), finest level %u, %s\n",
+                  s.path.c_str(), s.format.c_str(), static_cast<long long>(s.columns),
+                  static_cast<long long>(s.rows), s.stepDegrees, s.stepDegrees * 3600.0,
+                  s.finestLevel, boundsText(s.bounds).c_str());
+    out += line;
+    const formats::SourceConditioning& c = s.conditioning;
+    std::snprintf(line, sizeof line,
+                  "    sea %llu samples; voids %llu (%llu interpolated, %llu from a coarser "
+                  "source, %llu left); %llu outside its footprint; coarser sources bend to "
+                  "its edges within %.4g deg%s\n",
+                  static_cast<unsigned long long>(c.seaSamples),
+                  static_cast<unsigned long long>(c.voidSamples),
+                  static_cast<unsigned long long>(c.interpolatedSamples),
+                  static_cast<unsigned long long>(c.fromCoarserSamples),
+                  static_cast<unsigned long long>(c.unfilledSamples),
+                  static_cast<unsigned long long>(c.outsideSamples), c.bendMarginDegrees,
+                  c.noDataIsWater ? "; its no data is its sea" : "");
+    out += line;
+    if (s.verticalUnits) out += "    heights " + formats::describe(*s.verticalUnits) + "\n";
+  }
+  return out;
+}
+
+std::string formatPyramidInfoJson(const formats::PyramidManifest& m, const std::string& path) {
+  using nlohmann::json;
+  auto boundsJson = [](const formats::BoundsDegrees& b) {
+    return json{{"west", b.west}, {"south", b.south}, {"east", b.east}, {"north", b.north}};
+  };
+  const auto range = overallRange(m);
+  json levels = json::array();
+  for (const formats::LevelInfo& level : m.levels) {
+    levels.push_back(
+        {{"level", level.level},
+         {"tiles", level.tileCount},
+         {"packs", level.packs.size()},
+         {"heightRangeMeters", {level.heightRange.minimumMeters, level.heightRange.maximumMeters}},
+         {"boundsDegrees", boundsJson(level.bounds)}});
+  }
+  json sources = json::array();
+  for (const formats::SourceInfo& s : m.sources) {
+    sources.push_back({{"path", s.path},
+                       {"format", s.format},
+                       {"columns", s.columns},
+                       {"rows", s.rows},
+                       {"stepDegrees", s.stepDegrees},
+                       {"finestLevel", s.finestLevel},
+                       {"boundsDegrees", boundsJson(s.bounds)},
+                       {"conditioning", formats::conditioningToJson(s.conditioning)}});
+    if (s.verticalUnits) {
+      sources.back()["verticalUnits"] = formats::verticalUnitsToJson(*s.verticalUnits);
+    }
+  }
+  const json j = {{"pyramid", path},
+                  {"blockSize", m.verticesPerSide},
+                  {"globeModel", std::string(geo::toString(m.globeModel))},
+                  {"minLevel", 0},
+                  {"maxLevel", m.maxLevel()},
+                  {"tiles", m.tileCount()},
+                  {"heightRangeMeters", {range.minimumMeters, range.maximumMeters}},
+                  {"finestBoundsDegrees", boundsJson(overallBounds(m))},
+                  {"levels", levels},
+                  {"sources", sources}};
+  return j.dump(2) + "\n";
+}
+
+std::string formatLayerInfoText(const formats::LayerManifest& m, const std::string& path) {
+  std::string out;
+  char line[1024];
+  std::snprintf(
+      line, sizeof line,
+      "layer       %s\n"
+      "scheme      geographic lat/long quadtree, level 0 = 2x1 tiles of 180 deg\n"
+      "tiles       %ux%u pixels, JPEG (opaque) or PNG (with alpha), %llu in all\n"
+      "levels      0..%u\n"
+      "finest      %s\n",
+      path.c_str(), m.tileSizePixels, m.tileSizePixels,
+      static_cast<unsigned long long>(m.tileCount()), m.maxLevel(),
+      boundsText(m.levels.empty() ? formats::BoundsDegrees{} : m.levels.back().bounds).c_str());
+  out += line;
+  out += "\nlevel      tiles  packs  bounds (deg)\n";
+  for (const formats::ImageryLevelInfo& info : m.levels) {
+    std::snprintf(line, sizeof line, "%5u %10llu %6zu  %s\n", info.level,
+                  static_cast<unsigned long long>(info.tileCount), info.packs.size(),
+                  boundsText(info.bounds).c_str());
+    out += line;
+  }
+  out += "\nsources (finest first)\n";
+  for (const formats::ImagerySourceInfo& s : m.sources) {
+    std::snprintf(line, sizeof line,
+                  "  %s  %s %lldx%lld, %s, %.6g deg per pixel, finest level %u, bands %s%s%s, %s\n",
+                  s.path.c_str(), s.driver.c_str(), static_cast<long long>(s.columns),
+                  static_cast<long long>(s.rows), s.crs.c_str(), s.pixelDegrees, s.finestLevel,
+                  s.bands.c_str(), s.stretch.empty() ? "" : ", stretch ", s.stretch.c_str(),
+                  boundsText(s.bounds).c_str());
+    out += line;
+  }
+  return out;
+}
+
+}  // namespace globe::app

@@ -1,0 +1,21 @@
+// A path file's keyframes (degrees, heights maybe above the terrain) as a camera path (radians,
+// heights above the ellipsoid): the one place where the two meet.
+#pragma once
+
+#include <functional>
+
+#include "camera/camera_path.hpp"
+#include "camera/camera_path_file.hpp"
+#include "core/result.hpp"
+
+namespace globe::app {
+
+// The terrain height (metres) under a position in radians, for keyframes above the terrain.
+using TerrainHeightFunction = std::function<Result<double>(double, double)>;
+
+// Converts every keyframe; aboveTerrain heights get terrainHeight(lon, lat) added. Errors: an
+// unknown interpolation, a failing terrain lookup (named with the keyframe).
+Result<camera::CameraPath> toCameraPath(const camera::CameraPathFile& file,
+                                        const TerrainHeightFunction& terrainHeight);
+
+}  // namespace globe::app

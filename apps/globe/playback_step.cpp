@@ -1,0 +1,138 @@
+// Scripted pose → controller against the complete array → complete view for the corrected pose →
+// settle → the frame's record (terrain under the camera, clearances).
+#include "apps/globe/playback_step.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "apps/globe/elapsed.hpp"
+#include "apps/globe/path_conversion.hpp"
+#include "camera/camera_path_file.hpp"
+#include "collision/exact_surface.hpp"
+
+namespace globe::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr int kMaximumSettleRounds = 8;
+
+}  // namespace
+
+Result<ScriptedPlayback> openScriptedPlayback(const std::filesystem::path& pyramid,
+                                              const std::filesystem::path& pathFile,
+                                              scene::SceneOptions sceneOptions) {
+  auto file = camera::readCameraPath(pathFile);
+  if (!file) return Error{file.error()};
+  sceneOptions.hysteresis = false;
+  auto scene = scene::TerrainScene::open(pyramid, sceneOptions);
+  if (!scene) return Error{scene.error()};
+  auto path = toCameraPath(
+      *file, [&](double lon, double lat) { return (*scene)->terrainHeightMeters(lon, lat); });
+  if (!path) return makeError(pathFile.string() + ": " + path.error());
+  return ScriptedPlayback{std::move(*scene), std::move(*path)};
+}
+
+double playbackFrameCount(double durationSeconds, double framesPerSecond) {
+  return std::floor(durationSeconds * framesPerSecond + 1e-9) + 1;
+}
+
+PlaybackStep::PlaybackStep(scene::TerrainScene& scene, scene::TileGpu& gpu,
+                           const camera::CameraPath& path, int widthPixels, int heightPixels,
+                           std::chrono::seconds viewTimeout)
+    : scene_(scene),
+      gpu_(gpu),
+      path_(path),
+      widthPixels_(widthPixels),
+      heightPixels_(heightPixels),
+      viewTimeout_(viewTimeout),
+      finestSurface_(scene.store(), scene.ellipsoid()),
+      controller_(camera::samplePath(path, path.startSeconds(), scene.ellipsoid())) {
+  const double fovY = scene.options().fovYRadians;
+  controller_.setNearPlane(
+      {camera::projectionForHeight(0, controller_.settings().clearance.eyeMeters, fovY, 1,
+                                   scene.ellipsoid())
+           .nearMeters,
+       fovY, static_cast<double>(widthPixels) / std::max(heightPixels, 1)});
+}
+
+Result<void> PlaybackStep::start(FrameTimings& timings) {
+  return completeView(controller_.pose(), timings);
+}
+
+Result<void> PlaybackStep::completeView(const camera::CameraPose& pose, FrameTimings& timings) {
+  const auto until = Clock::now() + viewTimeout_;
+  for (;;) {
+    const auto start = Clock::now();
+    const scene::FrameInfo info = scene_.update(pose, widthPixels_, heightPixels_, gpu_);
+    timings.selectMs += millisecondsSince(start);
+    if (info.complete) return {};
+    if (Clock::now() > until) {
+      return makeError("the view was not complete after " + std::to_string(viewTimeout_.count()) +
+                       " s (" + std::to_string(info.requests) + " tiles still wanted)");
+    }
+    const auto wait = Clock::now();
+    scene_.waitForLoads(std::chrono::milliseconds(50));
+    timings.loadMs += millisecondsSince(wait);
+  }
+}
+
+void PlaybackStep::collide(double dtSeconds, FrameRecord& record) {
+  const auto start = Clock::now();
+  const camera::CollisionState& state =
+      controller_.update(dtSeconds, scene_.renderingTileArray(), scene_.ellipsoid());
+  record.timings.collisionMs += millisecondsSince(start);
+  record.collided = record.collided || state.collided;
+  if (record.response == collision::Response::None) record.response = state.response;
+}
+
+Result<FrameRecord> PlaybackStep::frame(int frameIndex, double timeSeconds, double dtSeconds,
+                                        camera::MotionKind kind) {
+  const geo::Ellipsoid& ellipsoid = scene_.ellipsoid();
+  FrameRecord record;
+  record.frame = frameIndex;
+  record.timeSeconds = timeSeconds;
+  const camera::CameraPose scripted = camera::samplePath(path_, timeSeconds, ellipsoid);
+  record.scriptedHeightMeters = scripted.position.heightMeters;
+  // The move, against the array drawn last frame (complete, so the same on every run).
+  controller_.propose(scripted, kind);
+  collide(dtSeconds, record);
+  // The view for the corrected pose, and the controller once more against that array (dt 0:
+  // the floor and the near-plane push only) until it keeps the pose.
+  bool settled = false;
+  for (int round = 0; round < kMaximumSettleRounds && !settled; ++round) {
+    if (auto view = completeView(controller_.pose(), record.timings); !view) {
+      return Error{view.error()};
+    }
+    const camera::CameraPose before = controller_.pose();
+    collide(0.0, record);
+    settled = camera::samePose(before, controller_.pose());
+  }
+  if (!settled) {
+    if (auto view = completeView(controller_.pose(), record.timings); !view) {
+      return Error{view.error()};
+    }
+  }
+  record.pose = controller_.pose();
+  const auto surfaceHeight = collision::exactSurfaceHeight(scene_.renderingTileArray(), ellipsoid,
+                                                           record.pose.position.longitudeRadians,
+                                                           record.pose.position.latitudeRadians);
+  if (surfaceHeight) {
+    record.terrainHeightMeters = surfaceHeight->heightMeters;
+    const std::vector<geo::TileId>& drawn = scene_.tiles();
+    record.terrainSource = std::find(drawn.begin(), drawn.end(), surfaceHeight->tile) != drawn.end()
+                               ? TerrainSource::Drawn
+                               : TerrainSource::Nadir;
+  } else {
+    record.terrainSource = TerrainSource::Finest;
+    auto finest = finestSurface_.heightMeters(record.pose.position.longitudeRadians,
+                                              record.pose.position.latitudeRadians);
+    if (!finest) return Error{finest.error()};
+    record.terrainHeightMeters = *finest;
+  }
+  record.clearanceMeters = record.pose.position.heightMeters - record.terrainHeightMeters;
+  record.nearClearanceMeters = controller_.state().nearPlaneClearanceMeters;
+  return record;
+}
+
+}  // namespace globe::app

@@ -1,0 +1,70 @@
+// One frame of scripted playback up to the drawing: the path's pose through the collision
+// controller against complete views. Shared by `globe play` and the soak tool (globe-soak).
+#pragma once
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+
+#include "apps/globe/finest_surface.hpp"
+#include "apps/globe/play_log.hpp"
+#include "camera/camera_controller.hpp"
+#include "camera/camera_path.hpp"
+#include "scene/terrain_scene.hpp"
+#include "scene/tile_gpu.hpp"
+
+namespace globe::app {
+
+// A pyramid's scene and a path file's camera path, as both `globe play` and the soak run them.
+struct ScriptedPlayback {
+  std::unique_ptr<scene::TerrainScene> scene;
+  camera::CameraPath path;
+};
+
+// Reads the path file (.json or .kml) and opens the pyramid with the selection's hysteresis off
+// (each view then depends on its pose only, not on the load order); heights above the terrain
+// are resolved against the pyramid. Errors name the file.
+Result<ScriptedPlayback> openScriptedPlayback(const std::filesystem::path& pyramid,
+                                              const std::filesystem::path& pathFile,
+                                              scene::SceneOptions sceneOptions);
+
+// Frames i = 0, 1, ... with i / fps <= durationSeconds (1e-9 frames of slack for rounding), as
+// a double so that callers can refuse absurd counts before converting.
+double playbackFrameCount(double durationSeconds, double framesPerSecond);
+
+class PlaybackStep {
+ public:
+  // The controller starts at the path's start pose with the near plane of a widthPixels x
+  // heightPixels view. The scene, GPU and path must outlive this.
+  PlaybackStep(scene::TerrainScene& scene, scene::TileGpu& gpu, const camera::CameraPath& path,
+               int widthPixels, int heightPixels, std::chrono::seconds viewTimeout);
+
+  // Makes the view at the scripted start complete: call once before the first frame, so the first
+  // collision test runs against a complete array.
+  Result<void> start(FrameTimings& timings);
+
+  // One frame at path time `timeSeconds`, `dtSeconds` after the previous one (0 for the first):
+  // the scripted pose is proposed (as `kind`: Auto, or Jump where a looping path starts over) and
+  // checked against the previous frame's complete array; the view for the corrected pose is
+  // completed and the controller run again with dt = 0 until it keeps the pose (the floor and the
+  // near-plane push over finer terrain). The record has everything but tilesDrawn and the draw
+  // and write timings; the scene's array is then exactly the one to draw.
+  Result<FrameRecord> frame(int frameIndex, double timeSeconds, double dtSeconds,
+                            camera::MotionKind kind = camera::MotionKind::Auto);
+
+  const camera::CameraController& controller() const { return controller_; }
+
+ private:
+  Result<void> completeView(const camera::CameraPose& pose, FrameTimings& timings);
+  void collide(double dtSeconds, FrameRecord& record);
+
+  scene::TerrainScene& scene_;
+  scene::TileGpu& gpu_;
+  const camera::CameraPath& path_;
+  int widthPixels_, heightPixels_;
+  std::chrono::seconds viewTimeout_;
+  FinestSurface finestSurface_;
+  camera::CameraController controller_;
+};
+
+}  // namespace globe::app

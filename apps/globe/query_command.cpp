@@ -1,0 +1,99 @@
+#include "apps/globe/query_command.hpp"
+
+#include <cmath>
+#include <map>
+#include <string>
+
+#include "camera/path_checks.hpp"
+#include "geo/cartographic.hpp"
+#include "geo/tiling_scheme.hpp"
+#include "streaming/tile_store.hpp"
+
+namespace globe::app {
+namespace {
+
+constexpr size_t kMaxCachedBlocks = 4096;
+
+std::optional<double> parseNumber(std::string_view text) {
+  while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
+  while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r')) {
+    text.remove_suffix(1);
+  }
+  return camera::parseDecimal(text);  // 1e999 reads as inf, refused below as not finite
+}
+
+// "lon,lat" → radians, or the reason the line is rejected.
+Result<std::pair<double, double>> parseLine(const std::string& line) {
+  const auto comma = line.find(',');
+  if (comma == std::string::npos) return makeError("expected lon,lat in degrees");
+  const auto lon = parseNumber(std::string_view(line).substr(0, comma));
+  const auto lat = parseNumber(std::string_view(line).substr(comma + 1));
+  if (!lon || !lat) return makeError("expected lon,lat in degrees");
+  if (!std::isfinite(*lon)) return makeError("longitude is not a finite number");
+  if (!std::isfinite(*lat)) return makeError("latitude is not a finite number");
+  if (*lat < -90 || *lat > 90) return makeError("latitude must be within -90..90");
+  if (*lon < -540 || *lon > 540) return makeError("longitude must be within -540..540");
+  return std::pair{geo::wrapLongitudeRadians(geo::degreesToRadians(*lon)),
+                   geo::degreesToRadians(*lat)};
+}
+
+}  // namespace
+
+Result<QueryReport> runQuery(const QueryOptions& options, std::istream& in, std::FILE* out,
+                             std::FILE* errors) {
+  auto store = streaming::TileStore::open(options.pyramid, options.sea);
+  if (!store) return Error{store.error()};
+  const uint32_t maxLevel = (*store)->manifest().maxLevel();
+  if (options.level && *options.level > maxLevel) {
+    return makeError("--level " + std::to_string(*options.level) +
+                     ": the pyramid's levels are 0.." + std::to_string(maxLevel));
+  }
+  const geo::Ellipsoid ellipsoid = geo::ellipsoidFor(options.globeModel);
+  std::map<geo::TileId, terrain::HeightBlock> blocks;
+  QueryReport report;
+  std::string line;
+  for (uint64_t number = 1; std::getline(in, line); ++number) {
+    if (line.empty() || line == "\r") continue;
+    auto position = parseLine(line);
+    std::optional<geo::TileId> tile;
+    std::string problem = position ? "" : position.error();
+    // The finest level the pyramid has at this point (every level is loadable from disk).
+    for (uint32_t level = options.level.value_or(maxLevel) + 1; position && level-- > 0;) {
+      const auto candidate =
+          geo::GeographicTilingScheme::positionToTile(position->first, position->second, level);
+      auto entry = candidate ? (*store)->entry(*candidate)
+                             : Result<std::optional<formats::PackEntry>>(std::nullopt);
+      if (!entry) return Error{entry.error()};
+      if (*entry) {
+        tile = candidate;
+        break;
+      }
+      if (options.level) break;
+    }
+    if (position && !tile) problem = "the pyramid has no tile there at the requested level";
+    if (!problem.empty()) {
+      std::fprintf(errors, "globe query: line %llu: '%s': %s\n",
+                   static_cast<unsigned long long>(number), line.c_str(), problem.c_str());
+      ++report.rejected;
+      continue;
+    }
+    auto found = blocks.find(*tile);
+    if (found == blocks.end()) {
+      if (blocks.size() >= kMaxCachedBlocks) blocks.clear();
+      auto block = (*store)->loadBlock(*tile);
+      if (!block) return Error{block.error()};
+      found = blocks.emplace(*tile, std::move(*block)).first;
+    }
+    terrain::RenderingTileArray array;
+    array.assign({terrain::makeArrayTile(*tile, found->second)});
+    const auto sample =
+        collision::sampleHeight(array, ellipsoid, position->first, position->second, options.mode);
+    if (!sample) return makeError("internal: no height in the tile that contains the point");
+    std::fprintf(out, "%.9g,%.9g,%u,%.3f\n", geo::radiansToDegrees(position->first),
+                 geo::radiansToDegrees(position->second), sample->level, sample->heightMeters);
+    ++report.answered;
+  }
+  return report;
+}
+
+}  // namespace globe::app

@@ -1,0 +1,383 @@
+// The `globe view` loop: input → (orbit controls | fly controls | fly-to animation) → camera
+// controller (collision every frame) → scene::TerrainScene::update → draw terrain and HUD, on
+// change only.
+#define GLFW_INCLUDE_NONE
+#include "apps/globe/view_command.hpp"
+
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "apps/globe/elapsed.hpp"
+#include "apps/globe/go_to.hpp"
+#include "apps/globe/hud_text.hpp"
+#include "apps/globe/imagery.hpp"
+#include "apps/globe/path_recorder.hpp"
+#include "apps/globe/renderer_gpu.hpp"
+#include "apps/globe/view_input.hpp"
+#include "camera/camera_controller.hpp"
+#include "camera/navigator.hpp"
+#include "collision/surface_probe.hpp"
+#include "formats/image_io.hpp"
+#include "geo/ecef.hpp"
+#include "render/glfw_window_context.hpp"
+#include "render/hud_renderer.hpp"
+#include "render/hud_widgets.hpp"
+#include "render/read_pixels.hpp"
+
+namespace globe::app {
+namespace {
+
+constexpr const char* kTitlePrefix = "globe";  // tests find the window by this name
+using Clock = std::chrono::steady_clock;
+
+// The window title: position, tiles, and what collision did this frame.
+std::string titleFor(const camera::CameraPose& pose, size_t tiles, bool loading,
+                     const camera::CollisionState& collision) {
+  char text[320];
+  std::snprintf(text, sizeof text, "%s  lon %.5f  lat %.5f  height %.0f m  %s  %s%s  tiles %zu%s",
+                kTitlePrefix, pose.position.longitudeDegrees(), pose.position.latitudeDegrees(),
+                pose.position.heightMeters, terrainStatus(collision).c_str(),
+                collision.collided ? "COLLISION " : "",
+                std::string(collision::toString(collision.response)).c_str(), tiles,
+                loading ? " (loading)" : "");
+  return text;
+}
+
+std::string formatPose(const camera::CameraPose& pose) {
+  char text[160];
+  std::snprintf(text, sizeof text, "%.6f,%.6f,%.2f,%.3f,%.3f,%.3f",
+                pose.position.longitudeDegrees(), pose.position.latitudeDegrees(),
+                pose.position.heightMeters, geo::radiansToDegrees(pose.headingRadians),
+                geo::radiansToDegrees(pose.pitchRadians), geo::radiansToDegrees(pose.rollRadians));
+  return text;
+}
+
+std::filesystem::path shown(const std::filesystem::path& path) {
+  std::error_code error;
+  const std::filesystem::path absolute = std::filesystem::absolute(path, error);
+  return error ? path : absolute;
+}
+
+void writeRecordedPath(const std::filesystem::path& directory,
+                       const std::vector<PathKeyframe>& keyframes) {
+  const std::filesystem::path path = timestampedPath(directory, "globe-path", ".json");
+  if (auto written = camera::writeCameraPathJson(path, recordedPathFile(keyframes)); !written) {
+    std::fprintf(stderr, "globe view: cannot write the path: %s\n", written.error().c_str());
+    return;
+  }
+  std::printf("wrote path %s (%zu keyframes)\n", shown(path).string().c_str(), keyframes.size());
+  std::fflush(stdout);
+}
+
+// Reads the frame drawn into the back buffer (before the swap) and writes it as a PNG.
+void writeScreenshot(const std::filesystem::path& directory, int width, int height) {
+  const std::filesystem::path path = timestampedPath(directory, "globe-shot", ".png");
+  const std::vector<uint8_t> pixels = render::readPixelsRgba(width, height);
+  if (auto written = formats::writePngAtomically(path, pixels, width, height); !written) {
+    std::fprintf(stderr, "globe view: cannot write the screenshot: %s\n", written.error().c_str());
+    return;
+  }
+  std::printf("wrote screenshot %s\n", shown(path).string().c_str());
+  std::fflush(stdout);
+}
+
+// The HUD, in framebuffer pixels: the status block at the top left and, when shown, the help
+// under it, the compass rose at the top right and the scale bar at the bottom left; larger on
+// tall windows. compassBox gets the rose's bounding box (a click there turns north up).
+std::vector<render::HudItem> hudItems(std::vector<std::string> status, bool help,
+                                      double headingRadians, double metersPerPixel, int widthPixels,
+                                      int heightPixels,
+                                      std::pair<glm::dvec2, glm::dvec2>& compassBox) {
+  std::vector<render::HudItem> items;
+  render::HudTextBlock statusBlock;
+  statusBlock.lines = std::move(status);
+  statusBlock.scale = heightPixels >= 600 ? 2.0f : 1.0f;
+  const float scale = statusBlock.scale;
+  if (help) {
+    render::HudTextBlock helpBlock;
+    helpBlock.lines = hudHelpLines();
+    helpBlock.scale = scale;
+    helpBlock.topLeftPixels = statusBlock.topLeftPixels +
+                              glm::vec2(0.0f, render::hudBlockSizePixels(statusBlock).y + 8.0f);
+    helpBlock.textRgba = {1.0f, 1.0f, 0.75f, 1.0f};
+    items.emplace_back(std::move(helpBlock));
+  }
+  items.emplace(items.begin(), std::move(statusBlock));
+  const float radius = 28.0f * scale;
+  const glm::vec2 centre(static_cast<float>(widthPixels) - 8.0f - radius, 8.0f + radius);
+  for (render::HudItem& item : render::compassRose(centre, radius, scale, -headingRadians)) {
+    items.push_back(std::move(item));
+  }
+  compassBox = {glm::dvec2(centre - radius), glm::dvec2(centre + radius)};
+  if (const auto bar = scaleBarLength(metersPerPixel, 100.0 * scale)) {
+    const glm::vec2 leftEnd(12.0f * scale, static_cast<float>(heightPixels) - 10.0f * scale);
+    for (render::HudItem& item :
+         render::scaleBar(leftEnd, static_cast<float>(bar->pixels), bar->label, scale)) {
+      items.push_back(std::move(item));
+    }
+  }
+  return items;
+}
+
+}  // namespace
+
+Result<ViewReport> runView(const ViewOptions& options) {
+  if (!options.pose.isFinite()) return makeError("the camera pose is not finite");
+  auto scene = scene::TerrainScene::open(options.pyramid, options.scene);
+  if (!scene) return Error{scene.error()};
+  render::GlfwWindowOptions windowOptions;
+  windowOptions.widthPixels = options.widthPixels;
+  windowOptions.heightPixels = options.heightPixels;
+  windowOptions.title = kTitlePrefix;
+  auto window = render::GlfwWindowContext::create(windowOptions);
+  if (!window) {
+    return makeError("cannot open a window (no display? set DISPLAY or run under xvfb-run): " +
+                     window.error());
+  }
+  // Declared after the window: destroyed before its context goes.
+  auto renderer = render::TerrainRenderer::create({});
+  if (!renderer) return Error{renderer.error()};
+  RendererGpu gpu(**renderer, options.scene);
+  auto hud = render::HudRenderer::create({});
+  if (!hud) return Error{hud.error()};
+  if (options.imagery) {
+    if (auto draped = drapeImagery(**renderer, *options.imagery); !draped)
+      return Error{draped.error()};
+  }
+  std::error_code directoryError;
+  if (!options.recordDirectory.empty()) {
+    std::filesystem::create_directories(options.recordDirectory, directoryError);
+  }
+
+  const geo::Ellipsoid& ellipsoid = (*scene)->ellipsoid();
+  const double fovY = options.scene.fovYRadians;
+  // Picks march through the tiles drawn now (the scene keeps one array, updated each frame).
+  const terrain::RenderingTileArray& drawnArray = (*scene)->renderingTileArray();
+  camera::Navigator navigator(
+      ellipsoid, options.pose, fovY, [&](double lon, double lat) -> std::optional<double> {
+        const auto surface = collision::surfaceHeightAt(drawnArray, ellipsoid, lon, lat,
+                                                        collision::SurfaceModel::Exact);
+        if (!surface || !surface->found) return std::nullopt;
+        return surface->heightMeters;
+      });
+  // A start pose orbit mode cannot show is changed, and said so (never silently).
+  for (const std::string& clamp : camera::describeStartClamp(options.pose, navigator.home())) {
+    std::fprintf(stderr, "globe view: --camera %s\n", clamp.c_str());
+  }
+  camera::CameraController controller(navigator.home());
+  ViewInput input;
+  input.navigator = &navigator;
+  GLFWwindow* handle = (*window)->window();
+  installViewCallbacks(handle, input);
+  const auto setViewport = [&] {
+    int windowWidth = 0, windowHeight = 0;  // events and picks take window pixels
+    glfwGetWindowSize(handle, &windowWidth, &windowHeight);
+    navigator.setViewport(windowWidth, windowHeight);
+  };
+  setViewport();
+  PathRecorder recorder;
+
+  const bool continuous = options.frames > 0;
+  const auto start = Clock::now();
+  auto lastChange = start, lastDraw = start, lastUpdate = start;
+  const auto secondsAt = [&](Clock::time_point t) {
+    return std::chrono::duration<double>(t - start).count();
+  };
+  ViewReport report;
+  std::vector<geo::TileId> drawnTiles;
+  std::string title;
+  std::vector<std::string> drawnHud;  // the HUD's status lines drawn, frame time aside
+  bool drawnHelp = false;
+  double frameMilliseconds = 0;
+  bool loading = true, wasComplete = false, tilesChanged = false;
+  while (!(*window)->shouldClose()) {
+    setViewport();
+    const int width = (*window)->framebufferWidthPixels();
+    const int height = (*window)->framebufferHeightPixels();
+    const bool visible = width > 0 && height > 0;  // not minimised
+    if (visible && (input.changed || loading || continuous)) {
+      const auto now = Clock::now();
+      bool redraw = input.changed || continuous;
+      if (input.changed) lastChange = now;
+      input.changed = false;
+      // Animations run on the clock; the controller's motion integrates at most 0.1 s a frame.
+      const double frameSeconds =
+          std::max(std::chrono::duration<double>(now - lastUpdate).count(), 0.0);
+      const double dtSeconds = std::min(frameSeconds, 0.1);
+      lastUpdate = now;
+
+      // One-shot requests.
+      if (input.recordToggleRequested) {
+        input.recordToggleRequested = false;
+        if (recorder.recording()) {
+          writeRecordedPath(options.recordDirectory,
+                            recorder.stop(secondsAt(now), controller.pose()));
+        } else {
+          recorder.start(secondsAt(now), controller.pose());
+          std::printf("recording the path (P again stops and writes it)\n");
+          std::fflush(stdout);
+        }
+      }
+      if (input.goToRequest) {
+        auto target = parseGoTo(*input.goToRequest);
+        input.goToRequest.reset();
+        if (!target) {
+          input.promptMessage = target.error();
+        } else {
+          input.promptMessage.clear();
+          navigator.goTo(geo::degreesToRadians(target->longitudeDegrees),
+                         geo::degreesToRadians(target->latitudeDegrees));
+          std::printf("go to %s (%.5f, %.5f)\n", target->name.c_str(), target->latitudeDegrees,
+                      target->longitudeDegrees);
+          std::fflush(stdout);
+        }
+        input.changed = true;
+      }
+
+      // This frame's move, proposed to the controller, which checks it against the tiles drawn
+      // now (QOTCD) and corrects it (stop, slide, heighten, raise).
+      if (const auto proposal = navigator.update(frameSeconds)) {
+        controller.propose(proposal->pose, proposal->kind);
+      }
+      if (navigator.animating()) input.changed = true;  // keep flying
+      controller.setNearPlane({camera::projectionForHeight(
+                                   0, controller.settings().clearance.eyeMeters, fovY, 1, ellipsoid)
+                                   .nearMeters,
+                               fovY, static_cast<double>(width) / std::max(height, 1)});
+      const camera::CollisionState& collisionState =
+          controller.update(dtSeconds, (*scene)->renderingTileArray(), ellipsoid);
+      navigator.adopt(controller.pose(), collisionState);
+      // A smooth raise over new, finer terrain takes a few frames: keep updating until done.
+      if (collisionState.raisedForNewTerrain) input.changed = true;
+      recorder.sample(secondsAt(now), controller.pose());
+      const scene::FrameInfo info = (*scene)->update(controller.pose(), width, height, gpu);
+      tilesChanged =
+          tilesChanged || info.arrived > 0 || info.uploaded > 0 || (*scene)->tiles() != drawnTiles;
+      loading = !info.complete;
+      const bool throttled = loading && now - lastDraw < kLoadingRedrawInterval;
+      redraw = redraw || (tilesChanged && !throttled);
+
+      // The HUD: redrawn when what it says changes (the frame time alone does not count).
+      HudState hudState;
+      hudState.mode = navigator.mode();
+      hudState.pose = controller.pose();
+      hudState.collision = collisionState;
+      hudState.tilesDrawn = (*scene)->tiles().size();
+      hudState.tilesLoading = info.requests;
+      hudState.flySpeedMetersPerSecond = navigator.flySpeedMetersPerSecond();
+      hudState.speedFactor = navigator.speed().factor();
+      hudState.recording = recorder.recording();
+      hudState.keyframes = recorder.keyframes().size();
+      hudState.flyingTo = navigator.flyingTo();
+      if (input.promptOpen) hudState.prompt = input.promptText;
+      hudState.message = input.promptMessage;
+      if (input.cursorKnown) {
+        if (const auto ground = navigator.groundAt(glm::dvec2(input.lastX, input.lastY))) {
+          hudState.underCursor = geo::ecefToCartographic(ellipsoid, *ground);
+        }
+      }
+      hudState.metersPerPixel = navigator.metersPerPixelAtCentre();
+      std::vector<std::string> hudKey = hudStatusLines(hudState, false);
+      // The compass and the scale bar change the HUD too (to the degree, to the pixel).
+      const auto rounded = [](double value) {
+        return std::isfinite(value) && std::abs(value) < 1e15 ? std::to_string(std::lround(value))
+                                                              : std::string("-");
+      };
+      hudKey.push_back(rounded(geo::radiansToDegrees(controller.pose().headingRadians)) + " " +
+                       rounded(hudState.metersPerPixel * 100));
+      const bool hudChanged = hudKey != drawnHud || input.helpVisible != drawnHelp;
+      redraw = redraw || (hudChanged && !throttled) || input.screenshotRequested;
+
+      if (redraw) {
+        const auto drawStart = Clock::now();
+        tilesChanged = false;
+        lastDraw = now;
+        if (hudChanged || continuous) {
+          hudState.frameMilliseconds = frameMilliseconds;
+          // Picks and clicks are in window pixels, the HUD in the framebuffer's.
+          int windowWidth = 0, windowHeight = 0;
+          glfwGetWindowSize(handle, &windowWidth, &windowHeight);
+          const double toWindow = static_cast<double>(windowWidth) / std::max(width, 1);
+          std::pair<glm::dvec2, glm::dvec2> compassBox;
+          const std::vector<render::HudItem> items = hudItems(
+              hudStatusLines(hudState), input.helpVisible, controller.pose().headingRadians,
+              hudState.metersPerPixel * toWindow, width, height, compassBox);
+          input.compassTopLeft = compassBox.first * toWindow;
+          input.compassBottomRight = compassBox.second * toWindow;
+          (*hud)->setItems(items);
+          drawnHud = std::move(hudKey);
+          drawnHelp = input.helpVisible;
+        }
+        gpu.draw(**scene);
+        (*hud)->draw(width, height);
+        if (input.screenshotRequested) {
+          input.screenshotRequested = false;
+          writeScreenshot(options.recordDirectory, width, height);
+        }
+        (*window)->swapBuffers();
+        frameMilliseconds = millisecondsSince(drawStart);
+        ++report.framesDrawn;
+        drawnTiles = (*scene)->tiles();
+        if (std::string next =
+                titleFor(controller.pose(), drawnTiles.size(), loading, controller.state());
+            next != title) {
+          title = std::move(next);
+          glfwSetWindowTitle(handle, title.c_str());
+        }
+      }
+      if (options.log && info.complete && !wasComplete) {
+        std::printf("view complete: %zu tiles, %.0f ms after the last change, frame %d\n",
+                    drawnTiles.size(), millisecondsSince(lastChange), report.framesDrawn);
+        std::fflush(stdout);
+      }
+      wasComplete = info.complete;
+    }
+    if (continuous && report.framesDrawn >= options.frames) break;
+    if (continuous || (visible && input.changed)) {
+      glfwPollEvents();
+    } else if (visible && loading && (*scene)->loader().counters().inFlight > 0) {
+      // Wake as soon as a load finishes (each update round starts only a few loads), or after
+      // kLoadWait at the latest for input.
+      glfwPollEvents();
+      (*scene)->waitForLoads(kLoadWait);
+    } else if (visible && loading) {
+      glfwWaitEventsTimeout(std::chrono::duration<double>(kLoadWait).count());
+    } else {
+      glfwWaitEvents();  // idle (or minimised): nothing moves until an event arrives
+    }
+  }
+
+  if (recorder.recording()) {  // closed while recording: keep what was flown
+    writeRecordedPath(options.recordDirectory,
+                      recorder.stop(secondsAt(Clock::now()), controller.pose()));
+  }
+  report.finalPose = controller.pose();
+  if (options.screenshot) {
+    // The back buffer is undefined after a swap: draw the last frame again and read it back.
+    const int width = (*window)->framebufferWidthPixels();
+    const int height = (*window)->framebufferHeightPixels();
+    gpu.draw(**scene);
+    const std::vector<uint8_t> pixels = render::readPixelsRgba(width, height);
+    if (auto written = formats::writePngAtomically(*options.screenshot, pixels, width, height);
+        !written) {
+      return Error{written.error()};
+    }
+  }
+  if (options.log) {
+    std::printf("frames drawn: %d\ncamera %s\n", report.framesDrawn,
+                formatPose(report.finalPose).c_str());
+    std::fflush(stdout);
+  }
+  return report;
+}
+
+}  // namespace globe::app

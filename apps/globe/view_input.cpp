@@ -1,0 +1,273 @@
+// GLFW callbacks of `globe view`: keys by mode, drags, double-clicks, the scroll wheel.
+#define GLFW_INCLUDE_NONE
+#include "apps/globe/view_input.hpp"
+
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace globe::app {
+namespace {
+
+ViewInput& inputOf(GLFWwindow* window) {
+  return *static_cast<ViewInput*>(glfwGetWindowUserPointer(window));
+}
+
+// Held movement keys; true when the key is one of them.
+bool trackFlyKey(camera::FlyKeys& keys, int key, bool down) {
+  switch (key) {
+    case GLFW_KEY_W:
+      keys.forward = down;
+      return true;
+    case GLFW_KEY_S:
+      keys.back = down;
+      return true;
+    case GLFW_KEY_A:
+      keys.left = down;
+      return true;
+    case GLFW_KEY_D:
+      keys.right = down;
+      return true;
+    case GLFW_KEY_Q:
+      keys.down = down;
+      return true;
+    case GLFW_KEY_E:
+      keys.up = down;
+      return true;
+    case GLFW_KEY_LEFT_SHIFT:
+    case GLFW_KEY_RIGHT_SHIFT:
+      keys.fast = down;
+      return true;
+    default:
+      return false;
+  }
+}
+
+// Keys that do the same in both modes; false when the key is not one of them.
+bool commonKey(GLFWwindow* window, ViewInput& input, int key) {
+  switch (key) {
+    case GLFW_KEY_ESCAPE:
+      glfwSetWindowShouldClose(window, GLFW_TRUE);
+      return true;
+    case GLFW_KEY_F:
+    case GLFW_KEY_TAB:
+      input.navigator->toggleMode();
+      return true;
+    case GLFW_KEY_R:
+      input.navigator->reset();
+      return true;
+    case GLFW_KEY_P:
+      input.recordToggleRequested = true;
+      return true;
+    case GLFW_KEY_K:
+    case GLFW_KEY_F12:
+      input.screenshotRequested = true;
+      return true;
+    case GLFW_KEY_H:
+    case GLFW_KEY_F1:
+      input.helpVisible = !input.helpVisible;
+      return true;
+    case GLFW_KEY_G:
+      input.promptOpen = input.promptSwallowG = true;
+      input.promptText.clear();
+      input.promptMessage.clear();
+      return true;
+    case GLFW_KEY_N:
+      input.navigator->northUp();
+      return true;
+    default:
+      return false;
+  }
+}
+
+bool orbitKey(ViewInput& input, int key) {
+  camera::Navigator& navigator = *input.navigator;
+  switch (key) {
+    case GLFW_KEY_UP:
+      navigator.panByKey(0, kPanPixelsPerKey);
+      return true;
+    case GLFW_KEY_DOWN:
+      navigator.panByKey(0, -kPanPixelsPerKey);
+      return true;
+    case GLFW_KEY_LEFT:
+      navigator.panByKey(kPanPixelsPerKey, 0);
+      return true;
+    case GLFW_KEY_RIGHT:
+      navigator.panByKey(-kPanPixelsPerKey, 0);
+      return true;
+    case GLFW_KEY_EQUAL:  // '+' is shift + '=' on most layouts
+    case GLFW_KEY_KP_ADD:
+      navigator.zoom(1);
+      return true;
+    case GLFW_KEY_MINUS:
+    case GLFW_KEY_KP_SUBTRACT:
+      navigator.zoom(-1);
+      return true;
+    default:
+      return false;
+  }
+}
+
+bool flyKey(ViewInput& input, int key) {
+  camera::Navigator& navigator = *input.navigator;
+  switch (key) {
+    case GLFW_KEY_UP:
+      navigator.lookRadians(0, kLookRadiansPerKey);
+      return true;
+    case GLFW_KEY_DOWN:
+      navigator.lookRadians(0, -kLookRadiansPerKey);
+      return true;
+    case GLFW_KEY_LEFT:
+      navigator.lookRadians(-kLookRadiansPerKey, 0);
+      return true;
+    case GLFW_KEY_RIGHT:
+      navigator.lookRadians(kLookRadiansPerKey, 0);
+      return true;
+    case GLFW_KEY_EQUAL:
+    case GLFW_KEY_KP_ADD:
+      navigator.changeSpeed(1);
+      return true;
+    case GLFW_KEY_MINUS:
+    case GLFW_KEY_KP_SUBTRACT:
+      navigator.changeSpeed(-1);
+      return true;
+    default:
+      return false;
+  }
+}
+
+// While the go-to prompt is open it takes every key: Enter submits, Escape closes it, Backspace
+// deletes; the text itself comes from the character callback.
+void promptKey(ViewInput& input, int key) {
+  if (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER) {
+    input.goToRequest = input.promptText;
+    input.promptOpen = false;
+  } else if (key == GLFW_KEY_ESCAPE) {
+    input.promptOpen = false;
+    input.promptMessage.clear();
+  } else if (key == GLFW_KEY_BACKSPACE && !input.promptText.empty()) {
+    input.promptText.pop_back();
+  }
+  input.changed = true;
+}
+
+void onChar(GLFWwindow* window, unsigned int codepoint) {
+  ViewInput& input = inputOf(window);
+  if (!input.promptOpen) return;
+  // The G that opened the prompt arrives as a character too: it is not part of the text.
+  if (input.promptSwallowG) {
+    input.promptSwallowG = false;
+    if (codepoint == 'g' || codepoint == 'G') return;
+  }
+  if (codepoint >= 0x20 && codepoint < 0x7f && input.promptText.size() < 80) {
+    input.promptText.push_back(static_cast<char>(codepoint));
+    input.changed = true;
+  }
+}
+
+void onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods*/) {
+  ViewInput& input = inputOf(window);
+  if (input.promptOpen) {
+    if (action != GLFW_RELEASE) promptKey(input, key);
+    return;
+  }
+  if (trackFlyKey(input.flyKeys, key, action != GLFW_RELEASE)) {
+    input.navigator->setFlyKeys(input.flyKeys);
+    input.changed = true;
+    return;
+  }
+  if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
+  const bool handled =
+      (action == GLFW_PRESS && commonKey(window, input, key)) ||
+      (input.navigator->mode() == camera::NavigationMode::Orbit ? orbitKey(input, key)
+                                                                : flyKey(input, key));
+  if (handled) input.changed = true;
+}
+
+void onScroll(GLFWwindow* window, double /*dx*/, double dy) {
+  ViewInput& input = inputOf(window);
+  if (input.navigator->mode() == camera::NavigationMode::Orbit) {
+    if (!input.cursorKnown) glfwGetCursorPos(window, &input.lastX, &input.lastY);
+    input.cursorKnown = true;
+    input.navigator->zoomAt(dy, glm::dvec2(input.lastX, input.lastY));
+  } else {
+    input.navigator->changeSpeed(dy);
+  }
+  input.changed = true;
+}
+
+void onMouseButton(GLFWwindow* window, int button, int action, int mods) {
+  ViewInput& input = inputOf(window);
+  const bool down = action == GLFW_PRESS;
+  // The position from the last motion event, not the pointer's now: events may lag the pointer.
+  if (down && !input.cursorKnown) glfwGetCursorPos(window, &input.lastX, &input.lastY);
+  input.cursorKnown = true;
+  if (button == GLFW_MOUSE_BUTTON_LEFT) {
+    if (down && input.lastX >= input.compassTopLeft.x && input.lastY >= input.compassTopLeft.y &&
+        input.lastX <= input.compassBottomRight.x && input.lastY <= input.compassBottomRight.y) {
+      input.navigator->northUp();  // a click on the compass
+      input.changed = true;
+      return;
+    }
+    input.leftDown = down;
+    input.shiftDrag = down && (mods & GLFW_MOD_SHIFT) != 0;
+    if (down && !input.shiftDrag) input.navigator->grab(glm::dvec2(input.lastX, input.lastY));
+    if (!down) input.navigator->release();
+    if (down) {
+      const double now = glfwGetTime();
+      if (now - input.lastClickSeconds <= kDoubleClickSeconds &&
+          std::abs(input.lastX - input.lastClickX) <= kDoubleClickPixels &&
+          std::abs(input.lastY - input.lastClickY) <= kDoubleClickPixels) {
+        input.navigator->flyToPixel(glm::dvec2(input.lastX, input.lastY));
+        input.lastClickSeconds = -1;  // a third click starts a new pair
+        input.changed = true;
+      } else {
+        input.lastClickSeconds = now;
+        input.lastClickX = input.lastX;
+        input.lastClickY = input.lastY;
+      }
+    }
+  } else if (button == GLFW_MOUSE_BUTTON_RIGHT) {
+    input.rightDown = down;
+  }
+}
+
+void onCursor(GLFWwindow* window, double x, double y) {
+  ViewInput& input = inputOf(window);
+  const double dx = x - input.lastX, dy = y - input.lastY;
+  input.lastX = x;
+  input.lastY = y;
+  input.cursorKnown = true;
+  if (!input.leftDown && !input.rightDown) {
+    input.changed = true;  // the HUD shows the ground under the pointer
+    return;
+  }
+  camera::Navigator& navigator = *input.navigator;
+  if (navigator.mode() == camera::NavigationMode::Fly) {
+    navigator.look(dx, dy);
+  } else if (input.rightDown || input.shiftDrag) {
+    navigator.tilt(dx, dy);
+  } else {
+    navigator.dragTo(glm::dvec2(x, y), dx, dy);
+  }
+  input.changed = true;
+}
+
+void onRepaintNeeded(GLFWwindow* window) { inputOf(window).changed = true; }
+void onFramebufferSize(GLFWwindow* window, int, int) { inputOf(window).changed = true; }
+
+}  // namespace
+
+void installViewCallbacks(GLFWwindow* window, ViewInput& input) {
+  glfwSetWindowUserPointer(window, &input);
+  glfwSetKeyCallback(window, onKey);
+  glfwSetCharCallback(window, onChar);
+  glfwSetScrollCallback(window, onScroll);
+  glfwSetMouseButtonCallback(window, onMouseButton);
+  glfwSetCursorPosCallback(window, onCursor);
+  glfwSetWindowRefreshCallback(window, onRepaintNeeded);
+  glfwSetFramebufferSizeCallback(window, onFramebufferSize);
+}
+
+}  // namespace globe::app

@@ -1,0 +1,71 @@
+// Camera path files as plain keyframes in degrees: the JSON path format (read and written) and
+// Google Earth KML tours (gx:Tour of gx:FlyTo + Camera, read). Errors name the file, line, field.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/result.hpp"
+
+namespace globe::camera {
+
+// One keyframe as the file states it: seconds, degrees, metres. heightMeters is above the
+// ellipsoid, or above the terrain under (lon, lat) when heightAboveTerrain (KML relativeToGround
+// and clampToGround, JSON "aboveTerrain": true): the player resolves it against the pyramid.
+struct PathKeyframe {
+  double timeSeconds = 0;
+  double longitudeDegrees = 0;
+  double latitudeDegrees = 0;
+  double heightMeters = 0;
+  double headingDegrees = 0;  // 0 = north, clockwise
+  double pitchDegrees = -90;  // 0 = the horizon, -90 = straight down
+  double rollDegrees = 0;
+  bool heightAboveTerrain = false;
+};
+
+// Keyframes with strictly increasing times (at least one); interpolation "linear" or "smooth".
+struct CameraPathFile {
+  std::vector<PathKeyframe> keyframes;
+  std::string interpolation = "smooth";
+};
+
+// The ranges every reader checks (and the messages quote).
+inline constexpr double kPathMinimumHeightMeters = -11000.0;    // below the deepest trench
+inline constexpr double kPathMaximumHeightMeters = 40000000.0;  // 40,000 km
+inline constexpr uint64_t kPathFileMaximumBytes = uint64_t{64} << 20;
+
+// The JSON format (docs/playback.md):
+//   {"interpolation": "smooth",            optional: "linear" | "smooth" (default)
+//    "description": "...",                 optional, ignored
+//    "keyframes": [{"t": 0, "lon": 138.73, "lat": 35.36, "height": 5000,
+//                   "heading": 0, "pitch": -20, "roll": 0, "aboveTerrain": false}, ...]}
+// t, lon, lat and height are required; heading (0), pitch (-90), roll (0) and aboveTerrain
+// (false) are optional. lon in -180..180, lat in -90..90, pitch in -90..90, height in
+// -11,000..40,000,000 m, every number finite, t strictly increasing. Unknown fields are errors
+// (a misspelt "heigth" is not silently ignored). Errors: "FILE:LINE: keyframes[2].lat: 95 is
+// outside -90..90", malformed JSON at the line of nlohmann's byte position.
+Result<CameraPathFile> readCameraPathJson(const std::filesystem::path& path);
+
+// A KML tour: the first gx:Tour's gx:Playlist, in document order. Each gx:FlyTo with a Camera
+// is a keyframe: longitude, latitude (required), altitude (required unless clampToGround),
+// heading (0), tilt (0; KML tilt 0 = straight down, 90 = the horizon: pitch = tilt - 90, tilt in
+// 0..180), roll (0, passed through unchanged). altitudeMode (or gx:altitudeMode): absolute =
+// above sea level (taken as above the ellipsoid, as the pyramid's heights are); relativeToGround
+// = above the terrain; clampToGround (KML's default when absent) = on the terrain (the camera
+// controller then keeps it at its eye clearance); the sea-floor modes are refused. Time: the
+// first FlyTo is at t = 0 (its gx:duration is Google Earth's flight from wherever it was, and is
+// ignored); each later FlyTo is its gx:duration after the previous one, and a gx:Wait holds the
+// previous keyframe for its duration. Interpolation: "smooth" when every FlyTo's gx:flyToMode is
+// smooth, else "linear" (bounce, KML's default, is played linearly). A FlyTo holding a LookAt
+// instead of a Camera, or a zero time step (an instant jump), is refused with its line.
+Result<CameraPathFile> readKmlTour(const std::filesystem::path& path);
+
+// By extension: .json → readCameraPathJson, .kml → readKmlTour (case-insensitive).
+Result<CameraPathFile> readCameraPath(const std::filesystem::path& path);
+
+// Writes the JSON format (one keyframe per line, numbers that read back to the same double)
+// atomically. Refuses (writing nothing) a path that readCameraPathJson would refuse.
+Result<void> writeCameraPathJson(const std::filesystem::path& path, const CameraPathFile& file);
+
+}  // namespace globe::camera

@@ -1,0 +1,199 @@
+// The JSON camera path format: nlohmann parses, JsonLocations gives every error its line.
+#include <algorithm>
+#include <array>
+#include <nlohmann/json.hpp>
+#include <string_view>
+
+#include "camera/camera_path_file.hpp"
+#include "camera/json_locations.hpp"
+#include "camera/path_checks.hpp"
+#include "transport/atomic_file.hpp"
+
+namespace globe::camera {
+namespace {
+
+using detail::kUnbounded;
+using nlohmann::json;
+
+struct NumberField {
+  const char* name;
+  double PathKeyframe::*member;
+  bool required;
+  double minimum, maximum;
+};
+
+constexpr std::array<NumberField, 7> kNumberFields = {{
+    {"t", &PathKeyframe::timeSeconds, true, -kUnbounded, kUnbounded},
+    {"lon", &PathKeyframe::longitudeDegrees, true, -180, 180},
+    {"lat", &PathKeyframe::latitudeDegrees, true, -90, 90},
+    {"height", &PathKeyframe::heightMeters, true, kPathMinimumHeightMeters,
+     kPathMaximumHeightMeters},
+    {"heading", &PathKeyframe::headingDegrees, false, -kUnbounded, kUnbounded},
+    {"pitch", &PathKeyframe::pitchDegrees, false, -90, 90},
+    {"roll", &PathKeyframe::rollDegrees, false, -kUnbounded, kUnbounded},
+}};
+constexpr std::string_view kKeyframeFields =
+    "t, lon, lat, height, heading, pitch, roll, aboveTerrain";
+
+std::string_view typeName(const json& value) {
+  return value.is_number()    ? "a number"
+         : value.is_string()  ? "a string"
+         : value.is_boolean() ? "a boolean"
+         : value.is_null()    ? "null"
+         : value.is_array()   ? "an array"
+                              : "an object";
+}
+
+// Reads and checks one keyframe object; `previous` is the keyframe before it, if any.
+Result<PathKeyframe> readKeyframe(const json& object, const std::string& where,
+                                  const JsonLocations& at, const std::filesystem::path& path,
+                                  const PathKeyframe* previous) {
+  auto fail = [&](const std::string& field, const std::string& what) -> Error {
+    const std::string name = field.empty() ? where : where + "." + field;
+    return makeError(detail::fileLine(path, at.line(name)) + name + ": " + what);
+  };
+  if (!object.is_object()) {
+    return fail("", "expected a keyframe object, got " + std::string(typeName(object)));
+  }
+  for (const auto& item : object.items()) {
+    const std::string& key = item.key();  // not a structured binding: clang 14 cannot capture one
+    const bool known = key == "aboveTerrain" ||
+                       std::any_of(kNumberFields.begin(), kNumberFields.end(),
+                                   [&](const NumberField& field) { return key == field.name; });
+    if (!known) {
+      return fail(key, "unknown field (a keyframe has " + std::string(kKeyframeFields) + ")");
+    }
+  }
+  PathKeyframe keyframe;
+  for (const NumberField& field : kNumberFields) {
+    const auto it = object.find(field.name);
+    if (it == object.end()) {
+      if (field.required) return fail("", std::string("missing field '") + field.name + "'");
+      continue;
+    }
+    if (!it->is_number()) {
+      return fail(field.name, "expected a number, got " + std::string(typeName(*it)));
+    }
+    const double value = it->get<double>();
+    if (auto problem = detail::checkNumber(at.written(where + "." + field.name), value,
+                                           field.minimum, field.maximum)) {
+      return fail(field.name, *problem);
+    }
+    keyframe.*field.member = value;
+  }
+  if (const auto it = object.find("aboveTerrain"); it != object.end()) {
+    if (!it->is_boolean()) {
+      return fail("aboveTerrain", "expected true or false, got " + std::string(typeName(*it)));
+    }
+    keyframe.heightAboveTerrain = it->get<bool>();
+  }
+  if (previous != nullptr) {
+    if (auto problem = detail::checkTimeAfter(at.written(where + ".t"), keyframe.timeSeconds,
+                                              previous->timeSeconds)) {
+      return fail("t", *problem);
+    }
+  }
+  return keyframe;
+}
+
+Result<CameraPathFile> parsePath(std::string_view text, const std::filesystem::path& path) {
+  json document;
+  try {
+    document = json::parse(text);
+  } catch (const json::parse_error& error) {
+    // nlohmann's message is "[json.exception.parse_error.101] parse error at line L, column C:
+    // what"; the line comes from its byte position, the text after the position is kept.
+    std::string what = error.what();
+    if (const size_t colon = what.find(": "); colon != std::string::npos) what.erase(0, colon + 2);
+    const size_t offset = error.byte > 0 ? error.byte - 1 : 0;
+    return makeError(detail::fileLine(path, lineOfOffset(text, offset)) +
+                     "not valid JSON: " + what);
+  } catch (const json::exception& error) {
+    // A number too large for a double ("number overflow parsing '1e999'", no position): found by
+    // its text, it is reported like any other non-finite value.
+    const std::string what = error.what();
+    const size_t open = what.find('\''), close = what.rfind('\'');
+    if (open != std::string::npos && close > open) {
+      const std::string token = what.substr(open + 1, close - open - 1);
+      const JsonLocations at(text);
+      if (const std::string name = at.pathWritten(token); !name.empty()) {
+        return makeError(detail::fileLine(path, at.line(name)) + name + ": " + token +
+                         " is not a finite number");
+      }
+    }
+    return makeError(detail::fileLine(path, 1) + "not valid JSON: " + what);
+  }
+  const JsonLocations at(text);
+  auto fail = [&](const std::string& name, const std::string& what) -> Error {
+    return makeError(detail::fileLine(path, at.line(name)) + name + ": " + what);
+  };
+  if (!document.is_object()) {
+    return makeError(detail::fileLine(path, at.line("")) +
+                     "expected an object {\"keyframes\": [...]}, got " +
+                     std::string(typeName(document)));
+  }
+  for (const auto& [key, value] : document.items()) {
+    (void)value;
+    if (key != "keyframes" && key != "interpolation" && key != "description") {
+      return fail(key, "unknown field (the top level has keyframes, interpolation, description)");
+    }
+  }
+  CameraPathFile file;
+  if (const auto it = document.find("interpolation"); it != document.end()) {
+    if (!it->is_string()) {
+      return fail("interpolation",
+                  "expected \"linear\" or \"smooth\", got " + std::string(typeName(*it)));
+    }
+    file.interpolation = it->get<std::string>();
+    if (file.interpolation != "linear" && file.interpolation != "smooth") {
+      return fail("interpolation",
+                  at.written("interpolation") + " is not \"linear\" or \"smooth\"");
+    }
+  }
+  const auto keyframes = document.find("keyframes");
+  if (keyframes == document.end()) {
+    return makeError(detail::fileLine(path, at.line("")) + "missing field 'keyframes'");
+  }
+  if (!keyframes->is_array()) {
+    return fail("keyframes", "expected an array, got " + std::string(typeName(*keyframes)));
+  }
+  if (keyframes->empty()) return fail("keyframes", "empty: a path needs at least 1 keyframe");
+  for (size_t k = 0; k < keyframes->size(); ++k) {
+    auto keyframe = readKeyframe((*keyframes)[k], "keyframes[" + std::to_string(k) + "]", at, path,
+                                 file.keyframes.empty() ? nullptr : &file.keyframes.back());
+    if (!keyframe) return Error{keyframe.error()};
+    file.keyframes.push_back(*keyframe);
+  }
+  return file;
+}
+
+}  // namespace
+
+Result<CameraPathFile> readCameraPathJson(const std::filesystem::path& path) {
+  auto bytes = transport::readWholeFile(path, kPathFileMaximumBytes);
+  if (!bytes) return Error{bytes.error()};
+  const std::string_view text(reinterpret_cast<const char*>(bytes->data()), bytes->size());
+  return parsePath(text, path);
+}
+
+Result<void> writeCameraPathJson(const std::filesystem::path& path, const CameraPathFile& file) {
+  if (auto problem = detail::firstProblem(file)) {
+    return makeError(path.string() + ": not written: " + *problem);
+  }
+  std::string text =
+      "{\n  \"interpolation\": \"" + file.interpolation + "\",\n  \"keyframes\": [\n";
+  for (size_t k = 0; k < file.keyframes.size(); ++k) {
+    const PathKeyframe& key = file.keyframes[k];
+    text += "    {";
+    for (size_t f = 0; f < kNumberFields.size(); ++f) {
+      text += std::string(f > 0 ? ", " : "") + "\"" + kNumberFields[f].name +
+              "\": " + detail::formatNumber(key.*kNumberFields[f].member);
+    }
+    if (key.heightAboveTerrain) text += ", \"aboveTerrain\": true";
+    text += k + 1 < file.keyframes.size() ? "},\n" : "}\n";
+  }
+  text += "  ]\n}\n";
+  return transport::writeFileAtomically(path, text);
+}
+
+}  // namespace globe::camera

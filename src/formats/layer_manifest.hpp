@@ -1,0 +1,64 @@
+// layer.json of an imagery layer: tile size, pack size, levels and their packs, where the imagery
+// came from and how its bands were read.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/result.hpp"
+#include "formats/image_pack.hpp"
+#include "formats/pack_format.hpp"
+#include "formats/pyramid_manifest.hpp"
+#include "transport/byte_source.hpp"
+
+namespace globe::formats {
+
+inline constexpr const char* kLayerManifestFileName = "layer.json";
+inline constexpr uint32_t kLayerFormatVersion = 1;
+
+struct ImageryLevelInfo {
+  uint32_t level = 0;
+  uint64_t tileCount = 0;
+  BoundsDegrees bounds;       // union of the level's present tiles' rectangles
+  std::vector<PackId> packs;  // the pack files of this level, sorted
+};
+
+struct ImagerySourceInfo {
+  std::string path;
+  std::string driver;  // GDAL's short name, or "TMS"
+  int64_t columns = 0, rows = 0;
+  std::string crs;          // "EPSG:32612", or the start of its WKT
+  double pixelDegrees = 0;  // after warping to longitude/latitude
+  BoundsDegrees bounds;     // after warping
+  uint32_t finestLevel = 0;
+  std::string bands;    // "RGB", "RGBA", "grey", "palette", ...
+  std::string stretch;  // "" (8-bit as is), "linear MIN..MAX", "2-98% per band: ..."
+  bool operator==(const ImagerySourceInfo&) const = default;
+};
+
+struct LayerManifest {
+  uint32_t tileSizePixels = 256;
+  uint32_t packTilesPerSide = 16;
+  std::vector<ImageryLevelInfo> levels;  // levels[i].level == i, from 0 to the finest
+  std::vector<ImagerySourceInfo> sources;
+  BoundsDegrees bounds;         // of every level's tiles
+  std::string planFingerprint;  // what globe-tiler imagery was asked to do (resume check)
+
+  uint32_t maxLevel() const { return levels.empty() ? 0 : levels.back().level; }
+  uint64_t tileCount() const;
+};
+
+std::string layerManifestToJson(const LayerManifest& manifest);
+Result<LayerManifest> layerManifestFromJson(std::string_view text,
+                                            const std::filesystem::path& path);
+Result<LayerManifest> readLayerManifest(const std::filesystem::path& layerDir);
+// The manifest of a layer in a directory or on a server.
+Result<LayerManifest> readLayerManifest(transport::ByteSource& source);
+// Through writeFileAtomically.
+Result<void> writeLayerManifest(const std::filesystem::path& layerDir,
+                                const LayerManifest& manifest);
+
+}  // namespace globe::formats

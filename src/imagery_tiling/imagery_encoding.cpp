@@ -1,0 +1,163 @@
+#include "imagery_tiling/imagery_encoding.hpp"
+
+// clang-format off
+#include <cstdio>  // jpeglib.h needs FILE first
+#include <jpeglib.h>
+// clang-format on
+#include <libdeflate.h>
+
+#include <csetjmp>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <string>
+
+#include "core/big_endian.hpp"
+#include "core/crc32.hpp"
+
+namespace globe::imagery_tiling {
+namespace {
+
+bool wellFormed(const formats::ImageRgba& image) {
+  return image.widthPixels > 0 && image.heightPixels > 0 &&
+         image.pixels.size() == size_t(image.widthPixels) * size_t(image.heightPixels) * 4;
+}
+
+// libjpeg reports errors by calling error_exit, which must not return: jump back instead.
+struct JpegError {
+  jpeg_error_mgr manager;
+  std::jmp_buf jump;
+  char message[JMSG_LENGTH_MAX];
+};
+
+[[noreturn]] void onJpegError(j_common_ptr info) {
+  auto* error = reinterpret_cast<JpegError*>(info->err);
+  (*info->err->format_message)(info, error->message);
+  std::longjmp(error->jump, 1);
+}
+
+void appendChunk(std::vector<std::byte>& out, const char type[4], std::span<const std::byte> data) {
+  const size_t start = out.size();
+  out.resize(start + 12 + data.size());
+  core::storeBigEndian32(&out[start], static_cast<uint32_t>(data.size()));
+  std::memcpy(&out[start + 4], type, 4);
+  if (!data.empty()) std::memcpy(&out[start + 8], data.data(), data.size());
+  const uint32_t crc = core::crc32(std::span(out).subspan(start + 4, 4 + data.size()));
+  core::storeBigEndian32(&out[start + 8 + data.size()], crc);
+}
+
+int paeth(int a, int b, int c) {
+  const int p = a + b - c;
+  const int pa = std::abs(p - a), pb = std::abs(p - b), pc = std::abs(p - c);
+  return pa <= pb && pa <= pc ? a : (pb <= pc ? b : c);
+}
+
+struct CompressorDeleter {
+  void operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
+};
+
+}  // namespace
+
+Result<std::vector<std::byte>> encodeJpegFast(const formats::ImageRgba& image, int quality) {
+  if (!wellFormed(image)) return makeError("cannot encode JPEG: malformed RGBA image");
+  if (quality < 1 || quality > 100) return makeError("JPEG quality must be 1..100");
+  jpeg_compress_struct info{};
+  JpegError error{};
+  info.err = jpeg_std_error(&error.manager);
+  error.manager.error_exit = onJpegError;
+  unsigned char* buffer = nullptr;
+  unsigned long size = 0;
+  if (setjmp(error.jump) != 0) {
+    jpeg_destroy_compress(&info);
+    std::free(buffer);
+    return makeError(std::string("JPEG encoding failed: ") + error.message);
+  }
+  jpeg_create_compress(&info);
+  jpeg_mem_dest(&info, &buffer, &size);
+  info.image_width = static_cast<JDIMENSION>(image.widthPixels);
+  info.image_height = static_cast<JDIMENSION>(image.heightPixels);
+  info.input_components = 4;
+  info.in_color_space = JCS_EXT_RGBX;  // libjpeg-turbo reads RGBA, skipping the alpha byte
+  jpeg_set_defaults(&info);
+  jpeg_set_quality(&info, quality, TRUE);
+  info.dct_method = JDCT_ISLOW;
+  jpeg_start_compress(&info, TRUE);
+  const auto stride = static_cast<size_t>(image.widthPixels) * 4;
+  while (info.next_scanline < info.image_height) {
+    auto* row = const_cast<JSAMPROW>(&image.pixels[info.next_scanline * stride]);
+    jpeg_write_scanlines(&info, &row, 1);
+  }
+  jpeg_finish_compress(&info);
+  jpeg_destroy_compress(&info);
+  std::vector<std::byte> out(size);
+  std::memcpy(out.data(), buffer, size);
+  std::free(buffer);
+  return out;
+}
+
+Result<std::vector<std::byte>> encodePngFast(const formats::ImageRgba& image) {
+  if (!wellFormed(image)) return makeError("cannot encode PNG: malformed RGBA image");
+  const auto stride = static_cast<size_t>(image.widthPixels) * 4;
+  const auto rows = static_cast<size_t>(image.heightPixels);
+  std::vector<uint8_t> filtered(rows * (stride + 1));
+  std::vector<uint8_t> candidate[5];
+  for (auto& c : candidate) c.resize(stride);
+  const std::vector<uint8_t> zeros(stride, 0);
+  for (size_t r = 0; r < rows; ++r) {
+    const uint8_t* row = &image.pixels[r * stride];
+    const uint8_t* above = r > 0 ? row - stride : zeros.data();
+    // One tight loop per filter type (they vectorise); a and c are 0 for the first pixel.
+    auto filter = [&](int type, auto predict) {
+      uint8_t* out = candidate[type].data();
+      uint32_t cost = 0;
+      for (size_t i = 0; i < stride; ++i) {
+        const int a = i >= 4 ? row[i - 4] : 0, b = above[i], c = i >= 4 ? above[i - 4] : 0;
+        out[i] = static_cast<uint8_t>(row[i] - predict(a, b, c));
+        cost += static_cast<uint32_t>(std::abs(static_cast<int8_t>(out[i])));
+      }
+      return cost;
+    };
+    const uint32_t costs[5] = {
+        filter(0, [](int, int, int) { return 0; }),
+        filter(1, [](int a, int, int) { return a; }),
+        filter(2, [](int, int b, int) { return b; }),
+        filter(3, [](int a, int b, int) { return (a + b) / 2; }),
+        filter(4, [](int a, int b, int c) { return paeth(a, b, c); }),
+    };
+    int best = 0;
+    for (int type = 1; type < 5; ++type) {
+      if (costs[type] < costs[best]) best = type;
+    }
+    filtered[r * (stride + 1)] = static_cast<uint8_t>(best);
+    std::memcpy(&filtered[r * (stride + 1) + 1], candidate[best].data(), stride);
+  }
+  // One compressor per thread: allocating one costs more than compressing a tile.
+  thread_local std::unique_ptr<libdeflate_compressor, CompressorDeleter> compressor(
+      libdeflate_alloc_compressor(6));
+  if (!compressor) return makeError("PNG encoding failed: cannot allocate a compressor");
+  std::vector<std::byte> zlib(libdeflate_zlib_compress_bound(compressor.get(), filtered.size()));
+  const size_t compressed = libdeflate_zlib_compress(compressor.get(), filtered.data(),
+                                                     filtered.size(), zlib.data(), zlib.size());
+  if (compressed == 0) return makeError("PNG encoding failed: deflate output too large");
+  zlib.resize(compressed);
+
+  std::vector<std::byte> png;
+  png.reserve(compressed + 64);
+  const uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  for (uint8_t b : signature) png.push_back(std::byte{b});
+  std::byte header[13];
+  core::storeBigEndian32(&header[0], static_cast<uint32_t>(image.widthPixels));
+  core::storeBigEndian32(&header[4], static_cast<uint32_t>(image.heightPixels));
+  header[8] = std::byte{8};   // bits per channel
+  header[9] = std::byte{6};   // RGBA
+  header[10] = std::byte{0};  // deflate
+  header[11] = std::byte{0};  // adaptive filtering
+  header[12] = std::byte{0};  // not interlaced
+  appendChunk(png, "IHDR", header);
+  appendChunk(png, "IDAT", zlib);
+  appendChunk(png, "IEND", {});
+  return png;
+}
+
+}  // namespace globe::imagery_tiling

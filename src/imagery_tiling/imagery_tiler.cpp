@@ -1,0 +1,474 @@
+#include "imagery_tiling/imagery_tiler.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <thread>
+
+#include "core/crc32.hpp"
+#include "formats/image_pack.hpp"
+#include "formats/layer_manifest.hpp"
+#include "formats/pyramid_manifest.hpp"
+#include "imagery_tiling/imagery_pixels.hpp"
+#include "imagery_tiling/imagery_plan.hpp"
+#include "imagery_tiling/imagery_reader.hpp"
+#include "tiling/progress.hpp"
+#include "tiling/write_failed.hpp"
+#include "transport/atomic_file.hpp"
+
+namespace globe::imagery_tiling {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr const char* kImageryPlanFileName = "imagery-plan.json";
+constexpr uint64_t kMaxImagePackBytes = uint64_t{1} << 34;
+// Names the sampling and compositing rules: a layer resumed under other rules would mix them.
+constexpr const char* kRulesVersion = "bilinear-premultiplied-finest-over 1";
+
+std::string boundsText(const formats::BoundsDegrees& b) {
+  char text[128];
+  std::snprintf(text, sizeof text, "%.17g,%.17g,%.17g,%.17g", b.west, b.south, b.east, b.north);
+  return text;
+}
+
+// Everything that decides the layer's bytes: a resumed run must match it exactly.
+std::string planFingerprint(const ImageryTilerOptions& options,
+                            const std::vector<ImageryInput>& inputs) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const ImageryInput& input : inputs) {
+    std::error_code error;
+    const auto bytes = fs::is_regular_file(input.argument, error)
+                           ? fs::file_size(input.argument, error)
+                           : uintmax_t{0};
+    list.push_back({{"path", input.argument},
+                    {"bytes", error ? 0 : bytes},
+                    {"columns", input.info.columns},
+                    {"rows", input.info.rows},
+                    {"boundsDegrees", boundsText(input.extent)},
+                    {"wrappedBoundsDegrees",
+                     input.wrappedExtent ? boundsText(*input.wrappedExtent) : std::string()},
+                    {"finestLevel", input.finestLevel},
+                    {"bands", input.info.bands},
+                    {"stretch", input.info.stretch}});
+  }
+  const nlohmann::json plan = {{"inputs", list},
+                               {"packTilesPerSide", options.packTilesPerSide},
+                               {"jpegQuality", options.jpegQuality},
+                               {"rules", kRulesVersion}};
+  return plan.dump(1) + "\n";
+}
+
+Result<void> prepareOutput(const fs::path& dir, const std::string& fingerprint) {
+  std::error_code error;
+  fs::create_directories(dir, error);
+  if (error) return makeError(dir.string() + ": cannot create: " + error.message());
+  // Temporaries left by a killed run are never complete files: remove them.
+  for (auto it = fs::recursive_directory_iterator(dir, error);
+       !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
+    std::error_code typeError;
+    if (it->is_regular_file(typeError) &&
+        it->path().filename().string().find(".tmp-") != std::string::npos) {
+      fs::remove(it->path(), typeError);
+    }
+  }
+  if (fs::exists(dir / formats::kManifestFileName, error)) {
+    return makeError(dir.string() + ": holds a terrain pyramid; choose another output directory");
+  }
+  const fs::path planPath = dir / kImageryPlanFileName;
+  if (fs::exists(planPath, error)) {
+    auto existing = transport::readWholeFile(planPath, 1 << 24);
+    if (!existing) return Error{existing.error()};
+    if (std::string(reinterpret_cast<const char*>(existing->data()), existing->size()) !=
+        fingerprint) {
+      return makeError(dir.string() +
+                       ": holds a layer made from other inputs or options; remove it or choose "
+                       "another output directory");
+    }
+    return {};
+  }
+  if (fs::exists(dir / formats::kLayerManifestFileName, error)) {
+    return makeError(dir.string() + ": holds a layer without " + kImageryPlanFileName +
+                     "; remove it or choose another output directory");
+  }
+  if (auto written = transport::writeFileAtomically(planPath, fingerprint); !written) {
+    return tiling::writeFailed(written.error());
+  }
+  return {};
+}
+
+Result<formats::ImagePack> readImagePack(const fs::path& path) {
+  auto bytes = transport::readWholeFile(path, kMaxImagePackBytes);
+  if (!bytes) return Error{bytes.error()};
+  return formats::decodeImagePack(*bytes, path);
+}
+
+// What the manifest needs from one finished pack.
+struct ImagePackSummary {
+  uint64_t tiles = 0;
+  formats::BoundsDegrees bounds{180, 90, -180, -90};
+};
+
+void include(formats::BoundsDegrees& bounds, const formats::BoundsDegrees& more) {
+  bounds = {std::min(bounds.west, more.west), std::min(bounds.south, more.south),
+            std::max(bounds.east, more.east), std::max(bounds.north, more.north)};
+}
+
+ImagePackSummary summarise(const formats::ImagePackIndex& index) {
+  ImagePackSummary summary;  // of a reused pack
+  for (size_t slot = 0; slot < index.entries.size(); ++slot) {
+    if (!index.entries[slot].present()) continue;
+    ++summary.tiles;
+    const TileFrameDegrees f =
+        tileFrameDegrees(formats::tileOfSlot(index.id, slot, index.tilesPerSide));
+    include(summary.bounds, {f.west, f.north - f.size, f.west + f.size, f.north});
+  }
+  return summary;
+}
+
+// The finished packs of the level below, read whole and kept a while: a tile's four children
+// usually share one pack.
+class ChildTiles {
+ public:
+  ChildTiles(fs::path dir, uint32_t tilesPerSide, size_t capacity)
+      : dir_(std::move(dir)), tilesPerSide_(tilesPerSide), capacity_(capacity) {}
+
+  Result<std::optional<formats::ImageRgba>> load(const geo::TileId& tile) {
+    const formats::PackId id = formats::packOf(tile, tilesPerSide_);
+    std::shared_ptr<const formats::ImagePack> pack;
+    {
+      std::lock_guard lock(mutex_);
+      if (auto it = packs_.find(id); it != packs_.end()) {
+        pack = it->second;
+      } else {
+        auto read = readImagePack(formats::packPath(dir_, id));
+        if (!read) return Error{read.error()};
+        if (packs_.size() >= capacity_) packs_.clear();
+        pack = std::make_shared<const formats::ImagePack>(std::move(*read));
+        packs_.emplace(id, pack);
+      }
+    }
+    const size_t slot = formats::slotOf(tile, tilesPerSide_);
+    if (pack->payloads[slot].empty()) return std::optional<formats::ImageRgba>();
+    auto image =
+        formats::decodeImageRgba(pack->payloads[slot], formats::packPath(dir_, id).string() +
+                                                           " slot " + std::to_string(slot));
+    if (!image) return Error{image.error()};
+    return std::optional<formats::ImageRgba>(std::move(*image));
+  }
+
+ private:
+  fs::path dir_;
+  uint32_t tilesPerSide_;
+  size_t capacity_;
+  std::mutex mutex_;
+  std::map<formats::PackId, std::shared_ptr<const formats::ImagePack>> packs_;
+};
+
+// One worker's readers, one per input, opened on first use.
+class Readers {
+ public:
+  explicit Readers(const std::vector<ImageryInput>& inputs) : inputs_(inputs) {
+    readers_.resize(inputs.size());
+  }
+  Result<ImageryReader*> get(size_t i) {
+    if (!readers_[i]) {
+      auto opened = ImageryReader::open(inputs_[i]);
+      if (!opened) return Error{opened.error()};
+      readers_[i] = std::move(*opened);
+    }
+    return readers_[i].get();
+  }
+
+ private:
+  const std::vector<ImageryInput>& inputs_;
+  std::vector<std::unique_ptr<ImageryReader>> readers_;
+};
+
+struct TileMaker {
+  const std::vector<ImageryInput>& inputs;
+  const std::vector<size_t>& finestFirst;  // input indices, finest pixel first
+  const ImageryPlan& plan;
+  int jpegQuality;
+
+  // The tile's encoded bytes, or nullopt when no input covers any of its pixels.
+  Result<std::optional<std::vector<std::byte>>> make(const geo::TileId& tile, Readers& readers,
+                                                     ChildTiles* children, bool& copied) const {
+    copied = false;
+    const TileFrameDegrees frame = tileFrameDegrees(tile);
+    std::vector<size_t> over;
+    for (size_t i : finestFirst) {
+      if (overlapsFootprint(inputs[i], frame.west, frame.north - frame.size,
+                            frame.west + frame.size, frame.north)) {
+        over.push_back(i);
+      }
+    }
+    // A TMS tree alone under this tile: its own tile, byte for byte.
+    if (over.size() == 1 && inputs[over[0]].kind == ImageryInput::Kind::Tms &&
+        tile.level <= inputs[over[0]].tmsMaxLevel) {
+      auto reader = readers.get(over[0]);
+      if (!reader) return Error{reader.error()};
+      copied = true;
+      return (*reader)->ownTile(tile);
+    }
+    formats::ImageRgba image = transparentTile();
+    if (children != nullptr) {
+      std::array<std::optional<formats::ImageRgba>, 4> quadrants;
+      bool any = false;
+      const auto ids = tile.children();
+      for (size_t q = 0; q < 4; ++q) {
+        if (!plan.planned(ids[q])) continue;
+        auto child = children->load(ids[q]);
+        if (!child) return Error{child.error()};
+        quadrants[q] = std::move(*child);
+        any = any || quadrants[q].has_value();
+      }
+      if (any) image = averageChildren(quadrants);
+    }
+    // Inputs whose finest level is this one or coarser paint here, finest first, each under
+    // what is already there; finer inputs came in through the children.
+    bool covered = anyCovered(image);
+    formats::ImageRgba layer;
+    for (size_t i : over) {
+      if (inputs[i].finestLevel > tile.level) continue;
+      if (covered && fullyOpaque(image)) break;
+      auto reader = readers.get(i);
+      if (!reader) return Error{reader.error()};
+      if (!covered) {  // nothing yet to composite under: draw straight into the tile
+        auto drawn = (*reader)->render(tile, image);
+        if (!drawn) return Error{drawn.error()};
+        covered = *drawn;
+        continue;
+      }
+      layer = transparentTile();
+      auto drawn = (*reader)->render(tile, layer);
+      if (!drawn) return Error{drawn.error()};
+      if (*drawn) compositeOver(image, layer);
+    }
+    if (!covered) return std::optional<std::vector<std::byte>>();
+    auto encoded = encodeTile(image, jpegQuality);
+    if (!encoded) return Error{encoded.error()};
+    return std::optional<std::vector<std::byte>>(std::move(*encoded));
+  }
+};
+
+// A pack being built: its tiles' payloads fill in from any worker; the last one writes it.
+struct PackWork {
+  formats::PackId id;
+  std::vector<geo::TileId> tiles;
+  std::vector<std::vector<std::byte>> payloads;
+  std::atomic<size_t> remaining{0};
+  size_t summaryIndex = 0;
+};
+
+}  // namespace
+
+Result<ImageryTilerReport> runImageryTiler(const ImageryTilerOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  if (options.inputs.empty()) return makeError("no input given");
+  if (options.jpegQuality < 1 || options.jpegQuality > 100) {
+    return makeError("--quality must be between 1 and 100");
+  }
+  if (options.packTilesPerSide == 0 ||
+      options.packTilesPerSide > formats::kImagePackMaxTilesPerSide) {
+    return makeError("--pack-tiles must be between 1 and " +
+                     std::to_string(formats::kImagePackMaxTilesPerSide));
+  }
+  if (options.input.maxLevel && *options.input.maxLevel > geo::kMaxLevel) {
+    return makeError("--max-level must be at most " + std::to_string(geo::kMaxLevel));
+  }
+  auto described = describeImageryInputs(options.inputs, options.input);
+  if (!described) return Error{described.error()};
+  const std::vector<ImageryInput>& inputs = *described;
+  std::vector<formats::BoundsDegrees> extents;
+  std::vector<uint32_t> finestLevels;
+  std::vector<size_t> finestFirst;
+  for (size_t i = 0; i < inputs.size(); ++i) {
+    extents.push_back(inputs[i].extent);
+    finestLevels.push_back(inputs[i].finestLevel);
+    if (inputs[i].wrappedExtent) {
+      extents.push_back(*inputs[i].wrappedExtent);
+      finestLevels.push_back(inputs[i].finestLevel);
+    }
+    finestFirst.push_back(i);
+  }
+  std::stable_sort(finestFirst.begin(), finestFirst.end(), [&](size_t a, size_t b) {
+    return inputs[a].pixelDegrees < inputs[b].pixelDegrees;
+  });
+  const ImageryPlan plan(extents, finestLevels, options.packTilesPerSide);
+  const std::string fingerprint = planFingerprint(options, inputs);
+  if (auto prepared = prepareOutput(options.outputDir, fingerprint); !prepared) {
+    return Error{prepared.error()};
+  }
+  const unsigned threads =
+      options.threads != 0 ? options.threads : std::max(1U, std::thread::hardware_concurrency());
+  std::vector<std::unique_ptr<Readers>> readers;
+  for (unsigned w = 0; w < threads; ++w) readers.push_back(std::make_unique<Readers>(inputs));
+
+  ImageryTilerReport report;
+  report.maxLevel = plan.maxLevel();
+  for (const ImageryInput& input : inputs) {
+    report.warnings.insert(report.warnings.end(), input.warnings.begin(), input.warnings.end());
+  }
+  tiling::ProgressBar progress(plan.tileCount(), options.progress && ::isatty(STDERR_FILENO) != 0);
+  const TileMaker maker{inputs, finestFirst, plan, options.jpegQuality};
+  formats::LayerManifest manifest;
+  manifest.packTilesPerSide = options.packTilesPerSide;
+  manifest.levels.resize(plan.maxLevel() + 1);
+  manifest.bounds = {180, 90, -180, -90};
+  for (const ImageryInput& input : inputs) manifest.sources.push_back(input.info);
+  char fingerprintText[16];
+  std::snprintf(fingerprintText, sizeof fingerprintText, "crc32:%08x",
+                core::crc32(std::as_bytes(std::span(fingerprint))));
+  manifest.planFingerprint = fingerprintText;
+
+  std::atomic<uint64_t> tilesDone{0};
+  for (uint32_t level = plan.maxLevel() + 1; level-- > 0;) {
+    const std::vector<formats::PackId>& packs = plan.packs(level);
+    std::vector<ImagePackSummary> summaries(packs.size());
+    std::vector<std::unique_ptr<PackWork>> work;
+    for (size_t i = 0; i < packs.size(); ++i) {
+      const fs::path path = formats::packPath(options.outputDir, packs[i]);
+      std::error_code error;
+      if (fs::exists(path, error)) {  // a damaged or foreign file is rebuilt
+        auto existing = readImagePack(path);
+        if (existing && existing->index.id == packs[i] &&
+            existing->index.tilesPerSide == options.packTilesPerSide) {
+          summaries[i] = summarise(existing->index);
+          ++report.packsReused;
+          tilesDone += plan.tilesInPack(packs[i]).size();
+          continue;
+        }
+      }
+      auto pack = std::make_unique<PackWork>();
+      pack->id = packs[i];
+      pack->tiles = plan.tilesInPack(packs[i]);
+      pack->payloads.resize(size_t{options.packTilesPerSide} * options.packTilesPerSide);
+      pack->remaining = pack->tiles.size();
+      pack->summaryIndex = i;
+      work.push_back(std::move(pack));
+    }
+    std::vector<std::pair<size_t, size_t>> items;  // (pack, tile), packs in order
+    for (size_t p = 0; p < work.size(); ++p) {
+      for (size_t t = 0; t < work[p]->tiles.size(); ++t) items.emplace_back(p, t);
+    }
+    std::unique_ptr<ChildTiles> children;
+    if (level < plan.maxLevel()) {
+      children = std::make_unique<ChildTiles>(options.outputDir, options.packTilesPerSide,
+                                              4 * size_t{threads} + 8);
+    }
+    std::atomic<size_t> next{0};
+    std::atomic<bool> failed{false};
+    std::mutex mutex;
+    std::string firstError;
+    unsigned running = 0;
+    auto fail = [&](const std::string& message) {
+      std::lock_guard lock(mutex);
+      if (!failed.exchange(true)) firstError = message;
+    };
+    auto finishPack = [&](PackWork& pack) -> Result<void> {
+      const fs::path path = formats::packPath(options.outputDir, pack.id);
+      const auto bytes = formats::encodeImagePack(pack.id, options.packTilesPerSide, pack.payloads);
+      std::error_code error;
+      fs::create_directories(path.parent_path(), error);
+      if (error) {
+        return makeError(path.parent_path().string() + ": cannot create: " + error.message());
+      }
+      if (auto written = transport::writeFileAtomically(path, bytes); !written) {
+        return tiling::writeFailed(written.error());
+      }
+      ImagePackSummary& summary = summaries[pack.summaryIndex];
+      for (const geo::TileId& tile : pack.tiles) {
+        if (pack.payloads[formats::slotOf(tile, options.packTilesPerSide)].empty()) continue;
+        ++summary.tiles;
+        const TileFrameDegrees f = tileFrameDegrees(tile);
+        include(summary.bounds, {f.west, f.north - f.size, f.west + f.size, f.north});
+      }
+      pack.payloads = {};
+      return {};
+    };
+    std::vector<std::thread> workers;
+    std::atomic<uint64_t> built{0}, copied{0}, packsBuilt{0};
+    const unsigned workerCount =
+        static_cast<unsigned>(std::min<size_t>(threads, std::max<size_t>(items.size(), 1)));
+    running = workerCount;
+    std::condition_variable finished;
+    for (unsigned w = 0; w < workerCount; ++w) {
+      workers.emplace_back([&, w] {
+        for (size_t i; !failed && (i = next++) < items.size();) {
+          PackWork& pack = *work[items[i].first];
+          const geo::TileId& tile = pack.tiles[items[i].second];
+          bool wasCopied = false;
+          auto made = maker.make(tile, *readers[w], children.get(), wasCopied);
+          if (!made) {
+            fail(made.error());
+            break;
+          }
+          if (*made) {
+            pack.payloads[formats::slotOf(tile, options.packTilesPerSide)] = std::move(**made);
+            ++built;
+            copied += wasCopied ? 1 : 0;
+          }
+          ++tilesDone;
+          if (--pack.remaining == 0) {
+            if (auto written = finishPack(pack); !written) {
+              fail(written.error());
+              break;
+            }
+            ++packsBuilt;
+          }
+        }
+        std::lock_guard lock(mutex);
+        --running;
+        finished.notify_all();
+      });
+    }
+    tiling::waitForLevel(progress, mutex, finished, running, tilesDone, level, plan.maxLevel());
+    for (std::thread& worker : workers) worker.join();
+    if (failed) return makeError(firstError);
+    // A pack with no planned tile to render (all empty) is still written, for resuming.
+    for (auto& pack : work) {
+      if (pack->tiles.empty()) {
+        if (auto written = finishPack(*pack); !written) return Error{written.error()};
+        ++packsBuilt;
+      }
+    }
+    report.tilesBuilt += built;
+    report.tilesCopied += copied;
+    report.packsBuilt += packsBuilt;
+
+    formats::ImageryLevelInfo& info = manifest.levels[level];
+    info.level = level;
+    info.packs = packs;
+    info.bounds = {180, 90, -180, -90};
+    for (const ImagePackSummary& s : summaries) {
+      info.tileCount += s.tiles;
+      include(info.bounds, s.bounds);
+    }
+    if (info.tileCount == 0) {
+      info.bounds = {};
+    } else {
+      include(manifest.bounds, info.bounds);
+    }
+    report.tiles += info.tileCount;
+  }
+  progress.finish(tilesDone, "done");
+  if (manifest.tileCount() == 0) {
+    return makeError("no input covers any pixel: nothing to tile");
+  }
+  if (auto written = formats::writeLayerManifest(options.outputDir, manifest); !written) {
+    return tiling::writeFailed(written.error());
+  }
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+}  // namespace globe::imagery_tiling

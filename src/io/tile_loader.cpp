@@ -1,7 +1,0 @@
-#include "io/tile_loader.hpp"
-
-namespace globe::io {
-
-template class PayloadLoader<terrain::HeightBlock>;
-
-}  // namespace globe::io

@@ -1,0 +1,73 @@
+// Read access to an imagery layer on disk: each pack's index is read once, then every tile is one
+// read with its CRC checked. Same spirit as TileStore.
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/result.hpp"
+#include "formats/image_pack.hpp"
+#include "formats/layer_manifest.hpp"
+#include "geo/tile_id.hpp"
+#include "streaming/open_packs.hpp"
+#include "transport/byte_source.hpp"
+
+namespace globe::streaming {
+
+class ImageryStore {
+ public:
+  // `layer`: a directory, or the http(s) URL of one on a static server (transport/byte_source.hpp).
+  static Result<std::unique_ptr<ImageryStore>> open(const std::string& layer);
+  ~ImageryStore() = default;
+  ImageryStore(const ImageryStore&) = delete;
+  ImageryStore& operator=(const ImageryStore&) = delete;
+
+  const formats::LayerManifest& manifest() const { return manifest_; }
+  // The layer's directory or URL.
+  const std::string& location() const { return source_->location(); }
+  bool remote() const { return source_->remote(); }
+
+  // Whether the layer has this tile (reads the pack's index on first use). Thread-safe.
+  Result<bool> hasTile(const geo::TileId& tile);
+  // For a render thread that must not wait on a server: whether the layer has the tile, from its
+  // pack's index without any I/O; Absent also for a pack that failed; NotOpen when the pack was
+  // not read yet (hasTile, on a worker, reads it).
+  enum class Peek { Absent, Present, NotOpen };
+  Peek peekTile(const geo::TileId& tile);
+  // The tile's encoded bytes (JPEG or PNG) with one read, CRC checked; nullopt when the layer
+  // has no such tile. Thread-safe.
+  Result<std::optional<std::vector<std::byte>>> loadEncoded(const geo::TileId& tile);
+  // Where a tile lives (its pack file path), for error messages.
+  std::string packFileOf(const geo::TileId& tile) const;
+
+  // The first error of each pack found missing or damaged since the last call, each pack once.
+  std::vector<std::string> takeNewPackErrors();
+  // Lets failed packs be opened (again, from their current file) and reported again.
+  void forgetFailedPacks();
+
+  uint64_t tileReads() const { return tileReads_.load(); }
+  uint64_t packIndexReads() const { return packIndexReads_.load(); }
+
+ private:
+  using OpenPack = OpenPackFile<formats::ImagePackIndex>;
+  ImageryStore(std::shared_ptr<transport::ByteSource> source, formats::LayerManifest manifest);
+  // nullptr when the layer has no such pack.
+  Result<std::shared_ptr<const OpenPack>> pack(const formats::PackId& id);
+  Result<std::shared_ptr<const OpenPack>> openPack(const formats::PackId& id);
+
+  std::shared_ptr<transport::ByteSource> source_;
+  formats::LayerManifest manifest_;
+  OpenPacks<OpenPack> packs_;
+  std::atomic<uint64_t> tileReads_{0};
+  std::atomic<uint64_t> packIndexReads_{0};
+};
+
+}  // namespace globe::streaming

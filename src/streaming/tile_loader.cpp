@@ -1,0 +1,7 @@
+#include "streaming/tile_loader.hpp"
+
+namespace globe::streaming {
+
+template class PayloadLoader<terrain::HeightBlock>;
+
+}  // namespace globe::streaming

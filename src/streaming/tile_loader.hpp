@@ -1,0 +1,270 @@
+// Streams tiles of one payload kind from a tile source into a tile cache in the background:
+// prioritised, cancellable, at most K loads at once, failures reported once. TileLoader is the
+// one for height blocks; imagery layers use the same class over their own payload.
+#pragma once
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <span>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+#include "core/task_runner.hpp"
+#include "geo/tile_id.hpp"
+#include "streaming/block_cache.hpp"
+#include "streaming/completion_queue.hpp"
+#include "streaming/load_request.hpp"
+#include "streaming/tile_cache.hpp"
+#include "streaming/tile_source.hpp"
+#include "terrain/height_block.hpp"
+
+namespace globe::streaming {
+
+enum class TileState {
+  NotRequested,  // never asked for, cancelled, or loaded once and since evicted
+  Pending,       // wanted, waiting for a free load slot
+  Loading,       // started, not yet collected by poll()
+  Resident,      // in the cache
+  Absent,        // the source has no such tile (beyond its coverage); never retried
+  Failed,        // its load failed (reported once); not retried until forgetFailures()
+};
+
+struct LoadError {
+  geo::TileId tile;
+  std::filesystem::path file;  // where the tile lives (TileSource::location)
+  std::string message;         // names the file and what went wrong
+};
+
+struct LoaderCounters {
+  uint64_t requested = 0;  // tiles newly queued (not already queued, loading, resident or known)
+  uint64_t started = 0;    // loads handed to the runner
+  uint64_t completed = 0;  // loads whose payload went into the cache
+  uint64_t absent = 0;     // loads that found no such tile in the source
+  uint64_t failed = 0;     // loads that failed
+  uint64_t cancelled = 0;  // queued tiles dropped because a later request() no longer wanted them
+  size_t pending = 0;      // queued, not started
+  size_t inFlight = 0;     // started, not yet collected by poll(); at most maxInFlight()
+};
+
+struct PollResult {
+  struct Arrival {
+    geo::TileId tile;
+    double workerLatencySeconds;   // from the load's start (post) to its end on the worker
+    double visibleLatencySeconds;  // from the load's start to this poll()
+  };
+  std::vector<Arrival> arrived;   // now resident (and pinned in the cache's current frame)
+  std::vector<LoadError> errors;  // loads that failed since the last poll: each tile once
+};
+
+// One frame on the main thread:
+//   cache.beginFrame();          // releases last frame's pins
+//   ...select the rendering tile array from what isResident()...
+//   cache.touch(array);          // pins what is drawn this frame
+//   loader.request(wanted);      // replaces the wanted set
+//   auto result = loader.poll(); // redraw next frame if result.arrived is not empty
+// request, poll, get, isResident and state are for the main thread only. Load tasks touch
+// only the thread-safe TileSource and the loader's mutex-protected CompletionQueue.
+//
+// Lifetime: the source must outlive the loader. The loader may go before the runner: its
+// destructor waits for the loads already running, and loads that start later do nothing. A
+// runner that drops tasks (ThreadPoolRunner::shutdown) leaves their tiles Loading.
+template <class Payload>
+class PayloadLoader {
+ public:
+  static constexpr size_t kDefaultMaxInFlight = 4;
+
+  PayloadLoader(TileSource<Payload>& source, core::TaskRunner& runner, TileCache<Payload>& cache)
+      : source_(source),
+        runner_(runner),
+        cache_(cache),
+        completions_(std::make_shared<CompletionQueue<Payload>>()) {}
+  ~PayloadLoader() { completions_->close(); }
+  PayloadLoader(const PayloadLoader&) = delete;
+  PayloadLoader& operator=(const PayloadLoader&) = delete;
+
+  // Replaces the wanted set, then starts loads up to maxInFlight(), highest priority first
+  // (ties in request order; a tile listed twice keeps its higher priority). Queued tiles that
+  // are no longer wanted are cancelled; loads already started complete and are cached but
+  // keep no priority. Tiles resident, loading, absent or failed are not queued.
+  void request(std::span<const LoadRequest> requests);
+  // Moves the finished loads into the cache, records failures, starts queued loads in the
+  // freed slots, and reports what arrived. Call once per frame.
+  PollResult poll();
+
+  bool isResident(const geo::TileId& tile) const { return cache_.contains(tile); }
+  // The payload or null; counts a cache hit or miss.
+  std::shared_ptr<const Payload> get(const geo::TileId& tile) { return cache_.get(tile); }
+  TileState state(const geo::TileId& tile) const {
+    if (cache_.contains(tile)) return TileState::Resident;
+    if (loading_.contains(tile)) return TileState::Loading;
+    if (pending_.contains(tile)) return TileState::Pending;
+    if (failed_.contains(tile)) return TileState::Failed;
+    if (absent_.contains(tile)) return TileState::Absent;
+    return TileState::NotRequested;
+  }
+
+  size_t maxInFlight() const { return maxInFlight_; }
+  // At least 1. Lowering it cancels nothing: slots free up as loads finish.
+  void setMaxInFlight(size_t loads) {
+    maxInFlight_ = std::max<size_t>(1, loads);
+    startLoads();
+  }
+
+  // Every failure so far, in the order poll() collected them.
+  const std::vector<LoadError>& errors() const { return errors_; }
+  // Lets failed tiles be queued again and their source files reopened (say, after a repair).
+  void forgetFailures() {
+    failed_.clear();
+    source_.forgetSourceFailures();
+  }
+
+  LoaderCounters counters() const {
+    LoaderCounters counters = counters_;
+    counters.pending = pending_.size();
+    counters.inFlight = loading_.size();
+    return counters;
+  }
+  // Blocks until a load has finished on its worker (ready for poll()) or the timeout passes.
+  bool waitForCompletion(std::chrono::milliseconds timeout) const {
+    return completions_->waitForFinished(timeout);
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  using Finished = FinishedLoad<Payload>;
+
+  void startLoads();
+  static Finished loadTile(TileSource<Payload>& source, const geo::TileId& tile,
+                           Clock::time_point postedAt);
+
+  TileSource<Payload>& source_;
+  core::TaskRunner& runner_;
+  TileCache<Payload>& cache_;
+  std::shared_ptr<CompletionQueue<Payload>> completions_;
+  size_t maxInFlight_ = kDefaultMaxInFlight;
+  std::vector<LoadRequest> queue_;  // highest priority first; queue_[nextQueued_..] are pending
+  size_t nextQueued_ = 0;
+  std::unordered_set<geo::TileId> pending_;  // the tiles of queue_[nextQueued_..]
+  std::unordered_set<geo::TileId> loading_;
+  std::unordered_set<geo::TileId> absent_;
+  std::unordered_set<geo::TileId> failed_;
+  std::vector<LoadError> errors_;
+  LoaderCounters counters_;
+};
+
+// Runs on a worker.
+template <class Payload>
+FinishedLoad<Payload> PayloadLoader<Payload>::loadTile(TileSource<Payload>& source,
+                                                       const geo::TileId& tile,
+                                                       Clock::time_point postedAt) {
+  Finished done{tile, Finished::Outcome::Failed, nullptr, {}, postedAt, {}};
+  auto loaded = source.load(tile);
+  if (!loaded) {
+    done.error = geo::tileName(tile) + ": " + loaded.error();
+  } else if (!*loaded) {
+    done.outcome = Finished::Outcome::Absent;
+  } else {
+    done.outcome = Finished::Outcome::Loaded;
+    done.payload = std::make_shared<const Payload>(std::move(**loaded));
+  }
+  done.finishedAt = Clock::now();
+  return done;
+}
+
+template <class Payload>
+void PayloadLoader<Payload>::request(std::span<const LoadRequest> requests) {
+  std::vector<LoadRequest> wanted;
+  std::unordered_map<geo::TileId, size_t> position;  // index in `wanted`, to merge duplicates
+  wanted.reserve(requests.size());
+  for (const LoadRequest& r : requests) {
+    const double priority =
+        std::isnan(r.priority) ? -std::numeric_limits<double>::infinity() : r.priority;
+    if (auto it = position.find(r.tile); it != position.end()) {
+      wanted[it->second].priority = std::max(wanted[it->second].priority, priority);
+      continue;
+    }
+    if (cache_.contains(r.tile) || loading_.contains(r.tile) || absent_.contains(r.tile) ||
+        failed_.contains(r.tile)) {
+      continue;
+    }
+    position.emplace(r.tile, wanted.size());
+    wanted.push_back({r.tile, priority});
+  }
+
+  for (const geo::TileId& tile : pending_) {
+    if (!position.contains(tile)) ++counters_.cancelled;
+  }
+  for (const LoadRequest& r : wanted) {
+    if (!pending_.contains(r.tile)) ++counters_.requested;
+  }
+  std::stable_sort(wanted.begin(), wanted.end(), [](const LoadRequest& a, const LoadRequest& b) {
+    return a.priority > b.priority;
+  });
+  queue_ = std::move(wanted);
+  nextQueued_ = 0;
+  pending_.clear();
+  for (const LoadRequest& r : queue_) pending_.insert(r.tile);
+  startLoads();
+}
+
+template <class Payload>
+void PayloadLoader<Payload>::startLoads() {
+  while (loading_.size() < maxInFlight_ && nextQueued_ < queue_.size()) {
+    const geo::TileId tile = queue_[nextQueued_++].tile;
+    pending_.erase(tile);
+    loading_.insert(tile);
+    ++counters_.started;
+    runner_.post([completions = completions_, source = &source_, tile, postedAt = Clock::now()] {
+      if (!completions->begin()) return;  // the loader is gone
+      completions->finish(loadTile(*source, tile, postedAt));
+    });
+  }
+}
+
+template <class Payload>
+PollResult PayloadLoader<Payload>::poll() {
+  PollResult result;
+  const Clock::time_point now = Clock::now();
+  const auto seconds = [](Clock::time_point from, Clock::time_point to) {
+    return std::chrono::duration<double>(to - from).count();
+  };
+  for (Finished& done : completions_->takeAll()) {
+    loading_.erase(done.tile);
+    switch (done.outcome) {
+      case Finished::Outcome::Loaded:
+        cache_.insert(done.tile, std::move(done.payload));
+        ++counters_.completed;
+        result.arrived.push_back(
+            {done.tile, seconds(done.postedAt, done.finishedAt), seconds(done.postedAt, now)});
+        break;
+      case Finished::Outcome::Absent:
+        absent_.insert(done.tile);
+        ++counters_.absent;
+        break;
+      case Finished::Outcome::Failed: {
+        failed_.insert(done.tile);
+        ++counters_.failed;
+        LoadError error{done.tile, source_.location(done.tile), std::move(done.error)};
+        errors_.push_back(error);
+        result.errors.push_back(std::move(error));
+        break;
+      }
+    }
+  }
+  startLoads();
+  return result;
+}
+
+using TileLoader = PayloadLoader<terrain::HeightBlock>;
+extern template class PayloadLoader<terrain::HeightBlock>;
+
+}  // namespace globe::streaming

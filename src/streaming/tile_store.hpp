@@ -1,0 +1,97 @@
+// Read access to a tile pyramid on disk: tile lookups and block loads, one read per block.
+#pragma once
+
+#include <atomic>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/result.hpp"
+#include "formats/pack_format.hpp"
+#include "formats/pyramid_manifest.hpp"
+#include "geo/tile_id.hpp"
+#include "streaming/open_packs.hpp"
+#include "streaming/tile_source.hpp"
+#include "terrain/height_block.hpp"
+#include "transport/byte_source.hpp"
+
+namespace globe::streaming {
+
+// The height-block source of the loader (TileSource<HeightBlock>).
+class TileStore final : public TileSource<terrain::HeightBlock> {
+ public:
+  // `sea`: the surface every block loaded from this store reads as the ground over water
+  // (HeightBlock::sea): the one place a viewer's --sea-floor reaches rendering, collision and
+  // heights alike. Refuses a pyramid whose packs have another format version (checked on the
+  // first level-0 pack; every pack is checked again when opened).
+  // `pyramid`: a directory, or the http(s) URL of one on a static server
+  // (transport/byte_source.hpp).
+  static Result<std::unique_ptr<TileStore>> open(
+      const std::string& pyramid, terrain::SeaSurface sea = terrain::SeaSurface::Water);
+  static Result<std::unique_ptr<TileStore>> open(
+      std::shared_ptr<transport::ByteSource> source,
+      terrain::SeaSurface sea = terrain::SeaSurface::Water);
+  ~TileStore() override = default;
+  TileStore(const TileStore&) = delete;
+  TileStore& operator=(const TileStore&) = delete;
+
+  const formats::PyramidManifest& manifest() const { return manifest_; }
+  // The pyramid's directory or URL.
+  const std::string& location() const { return source_->location(); }
+  bool remote() const { return source_->remote(); }
+  terrain::SeaSurface sea() const { return sea_; }
+
+  // The tile's index entry, or nullopt when the pyramid has no such tile. Thread-safe.
+  Result<std::optional<formats::PackEntry>> entry(const geo::TileId& tile);
+  // For a render thread that must not wait on a server: the tile's entry from its pack's index
+  // without any I/O. Absent also for a pack that failed (its parent is drawn); NotOpen when the
+  // pack was not read yet: entry() (on a worker) reads it.
+  enum class Peek { Absent, Present, NotOpen };
+  Peek peekEntry(const geo::TileId& tile, formats::PackEntry* entry);
+
+  // Loads a present tile's block with one read (its pack's index is parsed once), its `sea` set
+  // to the store's. Thread-safe.
+  Result<terrain::HeightBlock> loadBlock(const geo::TileId& tile);
+
+  // TileSource: the entry first, so that a tile beyond the pyramid's coverage (nullopt) is told
+  // apart from a pack that is missing or damaged (an error); then loadBlock.
+  Result<std::optional<terrain::HeightBlock>> load(const geo::TileId& tile) override;
+  std::string location(const geo::TileId& tile) const override;
+  std::vector<std::string> takeNewSourceErrors() override { return takeNewPackErrors(); }
+  void forgetSourceFailures() override { forgetFailedPacks(); }
+
+  uint64_t blockReads() const { return blockReads_.load(); }
+  uint64_t packIndexReads() const { return packIndexReads_.load(); }
+  // Packs that could not be opened: each is tried once, then its error is returned from memory.
+  uint64_t packOpenFailures() const { return packOpenFailures_.load(); }
+
+  // The first error of each pack found missing or damaged (at open or at a block read) since the
+  // last call, each pack once: a viewer reports these instead of one error per tile or frame.
+  std::vector<std::string> takeNewPackErrors();
+  // Lets failed packs be opened (again, from their current file) and reported again: say, after
+  // the pyramid was repaired.
+  void forgetFailedPacks();
+
+ private:
+  using OpenPack = OpenPackFile<formats::PackIndex>;
+  TileStore(std::shared_ptr<transport::ByteSource> source, formats::PyramidManifest manifest,
+            terrain::SeaSurface sea);
+  // nullptr when the level has no such pack.
+  Result<std::shared_ptr<const OpenPack>> pack(const formats::PackId& id);
+  Result<std::shared_ptr<const OpenPack>> openPack(const formats::PackId& id);
+
+  std::shared_ptr<transport::ByteSource> source_;
+  formats::PyramidManifest manifest_;
+  terrain::SeaSurface sea_;
+  OpenPacks<OpenPack> packs_;
+  std::atomic<uint64_t> blockReads_{0};
+  std::atomic<uint64_t> packIndexReads_{0};
+  std::atomic<uint64_t> packOpenFailures_{0};
+};
+
+}  // namespace globe::streaming

@@ -1,0 +1,42 @@
+// globe-tiler's job: builds a tile pyramid from rasters, level by level from the finest, packs
+// in parallel, every file written atomically, resumable after a kill.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/result.hpp"
+#include "formats/vertical_units.hpp"
+#include "geo/ellipsoid.hpp"
+
+namespace globe::tiling {
+
+struct TilerOptions {
+  std::vector<std::string> inputs;
+  std::filesystem::path outputDir;
+  uint32_t verticesPerSide = 17;
+  uint32_t packTilesPerSide = 64;
+  std::optional<uint32_t> maxLevel;
+  geo::GlobeModel globeModel = geo::GlobeModel::Wgs84;
+  unsigned threads = 0;                  // 0 = every core
+  bool progress = true;                  // drawn only when stderr is a terminal
+  formats::VerticalOverride vertical{};  // --z-units / --z-scale: replace every input's own unit
+  bool noDataIsSea = false;              // --no-data-is-sea: every input's no data is water
+};
+
+struct TilerReport {
+  uint64_t tiles = 0;
+  uint64_t packsBuilt = 0;
+  uint64_t packsReused = 0;  // complete packs found from an earlier, interrupted run
+  uint64_t sourceBytes = 0;
+  uint64_t sampledVertices = 0;
+  double seconds = 0;
+  std::vector<std::string> warnings;  // one line each, naming the input
+};
+
+Result<TilerReport> runTiler(const TilerOptions& options);
+
+}  // namespace globe::tiling

@@ -1,0 +1,656 @@
+// `globe view`: orbit-control math, and the real window under Xvfb: a screenshot shows terrain,
+// keys and the scroll wheel zoom, Escape quits, an idle window uses almost no CPU; fly mode moves
+// the camera and keeps it above the terrain, the HUD is drawn, P records a path, double-click
+// flies to a point.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <glm/geometric.hpp>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+
+#include "camera/fly_to.hpp"
+#include "camera/orbit_controls.hpp"
+#include "formats/image_io.hpp"
+#include "geo/ecef.hpp"
+#include "tests/support/test_constants.hpp"
+#include "tests/support/tiler_test_fixture.hpp"
+
+namespace {
+
+using globe::camera::CameraPose;
+using globe::camera::OrbitControls;
+
+using globe::test::kWgs84;
+constexpr double kFov = std::numbers::pi / 4;
+
+TEST(OrbitControls, DragMovesTheCameraAgainstTheDragSoTheGroundFollows) {
+  OrbitControls controls(kWgs84, CameraPose::fromDegrees(10, 20, 10000), kFov);
+  controls.rotateByDrag(100, 0, 720);  // drag right: the ground moves right, the camera west
+  EXPECT_LT(controls.pose().position.longitudeDegrees(), 10);
+  EXPECT_DOUBLE_EQ(controls.pose().position.latitudeDegrees(), 20);
+  // 100 px at 10 km straight down with a 45° view 720 px high: 100 · 2 · 10 km · tan 22.5° / 720.
+  const double meters = 100 * 2 * 10000 * std::tan(kFov / 2) / 720;
+  const double expectedDegrees = globe::geo::radiansToDegrees(
+      meters / (kWgs84.semiMajorAxisMeters * std::cos(20 * std::numbers::pi / 180)));
+  EXPECT_NEAR(10 - controls.pose().position.longitudeDegrees(), expectedDegrees, 1e-9);
+  controls.rotateByDrag(0, 100, 720);  // drag down: the camera goes north
+  EXPECT_GT(controls.pose().position.latitudeDegrees(), 20);
+}
+
+TEST(OrbitControls, DragFollowsTheHeadingAndScalesWithHeight) {
+  // Heading east: "up" on the screen is east, so a drag down moves the camera east.
+  OrbitControls east(kWgs84, CameraPose::fromDegrees(10, 20, 10000, 90), kFov);
+  east.rotateByDrag(0, 50, 720);
+  EXPECT_GT(east.pose().position.longitudeDegrees(), 10);
+  EXPECT_NEAR(east.pose().position.latitudeDegrees(), 20, 1e-9);
+  OrbitControls low(kWgs84, CameraPose::fromDegrees(10, 20, 1000), kFov);
+  OrbitControls high(kWgs84, CameraPose::fromDegrees(10, 20, 2000), kFov);
+  low.rotateByDrag(0, 50, 720);
+  high.rotateByDrag(0, 50, 720);
+  EXPECT_NEAR(high.pose().position.latitudeDegrees() - 20,
+              2 * (low.pose().position.latitudeDegrees() - 20), 1e-9);
+}
+
+TEST(OrbitControls, LongitudeWrapsAndLatitudeStaysOffThePoles) {
+  // 10 px at 10 km up is ~115 m: east across the antimeridian.
+  OrbitControls dateLine(kWgs84, CameraPose::fromDegrees(179.9995, 0, 10000), kFov);
+  dateLine.rotateByDrag(-10, 0, 720);
+  EXPECT_NEAR(dateLine.pose().position.longitudeDegrees(), -180 + 0.0005, 1e-4);
+  OrbitControls pole(kWgs84, CameraPose::fromDegrees(0, 88.9, 1e6), kFov);
+  pole.rotateByDrag(0, 400, 720);  // far north: stops at 89°
+  EXPECT_NEAR(pole.pose().position.latitudeDegrees(), 89, 1e-9);
+}
+
+TEST(OrbitControls, ZoomScalesTheClearanceWithinLimits) {
+  OrbitControls controls(kWgs84, CameraPose::fromDegrees(0, 0, 11000), kFov);
+  EXPECT_FALSE(controls.setGroundHeight(1000));
+  controls.zoom(1);
+  EXPECT_NEAR(controls.pose().position.heightMeters, 1000 + 10000 * 0.8, 1e-6);
+  controls.zoom(-1);
+  EXPECT_NEAR(controls.pose().position.heightMeters, 11000, 1e-6);
+  controls.zoom(1000);
+  EXPECT_NEAR(controls.pose().position.heightMeters, 1001, 1e-9);  // 1 m above the ground
+  controls.zoom(-1000);
+  EXPECT_DOUBLE_EQ(controls.pose().position.heightMeters, 4e7);
+  controls.reset();
+  EXPECT_DOUBLE_EQ(controls.pose().position.heightMeters, 11000);
+}
+
+TEST(OrbitControls, TiltTurnsAndClampsThePitch) {
+  OrbitControls controls(kWgs84, CameraPose::fromDegrees(0, 0, 5000), kFov);
+  controls.tiltByDrag(100, 0);
+  EXPECT_NEAR(controls.pose().headingRadians, 100 * OrbitControls::kTiltRadiansPerPixel, 1e-12);
+  controls.tiltByDrag(0, -100);  // drag up: towards the horizon
+  EXPECT_NEAR(controls.pose().pitchRadians, -std::numbers::pi / 2 + 0.5, 1e-12);
+  controls.tiltByDrag(0, -10000);
+  EXPECT_DOUBLE_EQ(controls.pose().pitchRadians, 0);
+  controls.tiltByDrag(0, 10000);
+  EXPECT_DOUBLE_EQ(controls.pose().pitchRadians, -std::numbers::pi / 2);
+}
+
+TEST(OrbitControls, RisingGroundLiftsTheCamera) {
+  OrbitControls controls(kWgs84, CameraPose::fromDegrees(138.73, 35.36, 3000), kFov);
+  EXPECT_TRUE(controls.setGroundHeight(3700));
+  EXPECT_DOUBLE_EQ(controls.pose().position.heightMeters, 3701);
+}
+
+// ---- The real window under Xvfb ----
+
+bool onPath(const std::string& program) {
+  return std::system(("command -v " + program + " >/dev/null 2>&1").c_str()) == 0;
+}
+
+struct ShellRun {
+  int exitCode;
+  std::string output;
+};
+
+ShellRun runShell(const std::string& command) {
+  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
+  std::string output;
+  std::array<char, 4096> buffer{};
+  while (pipe != nullptr && std::fgets(buffer.data(), buffer.size(), pipe) != nullptr)
+    output += buffer.data();
+  const int status = pipe != nullptr ? ::pclose(pipe) : -1;
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+// Runs a shell script inside a fresh Xvfb; a per-process starting display number keeps tests run
+// in parallel from racing for the same one.
+ShellRun runUnderXvfb(const std::string& name, const std::string& script) {
+  const auto dir = globe::testing::freshTempDir(name);
+  const auto path = dir / "script.sh";
+  std::ofstream(path) << "set -u\ncd " << dir.string() << "\n" << script;
+  const std::string display = std::to_string(100 + ::getpid() % 800);
+  return runShell("xvfb-run -a -n " + display + " -s '-screen 0 1280x720x24' sh " + path.string());
+}
+
+// "key=value" lines of a script's output.
+std::map<std::string, std::string> valuesOf(const std::string& output) {
+  std::map<std::string, std::string> values;
+  size_t start = 0;
+  while (start < output.size()) {
+    size_t end = output.find('\n', start);
+    if (end == std::string::npos) end = output.size();
+    const std::string line = output.substr(start, end - start);
+    if (const size_t eq = line.find('='); eq != std::string::npos && line.find(' ') > eq)
+      values[line.substr(0, eq)] = line.substr(eq + 1);
+    start = end + 1;
+  }
+  return values;
+}
+
+// The height in the "camera LON,LAT,HEIGHT,..." line `globe view --log` prints on exit.
+double loggedHeightMeters(const std::string& output) {
+  const size_t at = output.find("\ncamera ");
+  if (at == std::string::npos) return -1;
+  double lon = 0, lat = 0, height = -1;
+  std::sscanf(output.c_str() + at, "\ncamera %lf,%lf,%lf", &lon, &lat, &height);
+  return height;
+}
+
+std::string globeView(const std::string& arguments) {
+  return "timeout 120 " + std::string(GLOBE_EXE) + " view " +
+         globe::testing::bundledPyramid().string() + " " + arguments;
+}
+
+// Waits for the window, then for the view to complete (a line in the log).
+const char* kFindWindow =
+    "WID=$(timeout 60 xdotool search --sync --onlyvisible --name '^globe')\n"
+    "echo wid=$WID\n"
+    "PID=$(xdotool getwindowpid $WID)\n"
+    "for i in $(seq 600); do grep -q 'view complete' log.txt && break; sleep 0.1; done\n";
+
+// Waits until the window title (pose, tiles, collision) stays the same for 1 s: the camera
+// and the view have settled, however slow the machine (sanitizer builds are).
+const char* kWaitUntilStill =
+    "LAST=; for i in $(seq 60); do sleep 1; T=$(xdotool getwindowname $WID); "
+    "[ \"$T\" = \"$LAST\" ] && break; LAST=$T; done\n";
+
+#define SKIP_WITHOUT(program) \
+  if (!onPath(program)) GTEST_SKIP() << program " is not installed"
+
+TEST(GlobeViewWindow, ScreenshotShowsTheGlobe) {
+  SKIP_WITHOUT("xvfb-run");
+  const auto dir = globe::testing::freshTempDir("view-screenshot");
+  const auto png = dir / "out.png";
+  const ShellRun run = runUnderXvfb(
+      "view-screenshot-run",
+      globeView("--size 640x360 --frames 30 --camera 138,35,7000000 --screenshot " + png.string()));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  auto image = globe::formats::loadImageRgba(png);
+  ASSERT_TRUE(image) << image.error();
+  ASSERT_EQ(image->widthPixels, 640);
+  ASSERT_EQ(image->heightPixels, 360);
+  size_t lit = 0, sea = 0, land = 0;
+  std::set<int> colours;
+  for (size_t k = 0; k + 3 < image->pixels.size(); k += 4) {
+    const int r = image->pixels[k], g = image->pixels[k + 1], b = image->pixels[k + 2];
+    if (std::max({r, g, b}) < 16) continue;
+    ++lit;
+    (b > r + 20 && b > g ? sea : land) += 1;
+    colours.insert((r / 8) << 10 | (g / 8) << 5 | (b / 8));
+  }
+  const size_t pixels = 640 * 360;
+  EXPECT_GT(lit, pixels / 3) << "the globe should fill much of the window";
+  EXPECT_GT(sea, pixels / 20) << "the Pacific should show as blue";
+  EXPECT_GT(land, pixels / 50) << "Japan and Asia should show as land colours";
+  EXPECT_GT(colours.size(), 200u) << "hill-shading should give many shades";
+}
+
+TEST(GlobeViewWindow, KeysAndScrollZoomInAndEscapeQuits) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const ShellRun run = runUnderXvfb(
+      "view-keys",
+      globeView("--size 640x360 --log --camera 138.73,35.36,50000 > log.txt &\n") + "VIEW=$!\n" +
+          kFindWindow +
+          "echo title0=$(xdotool getwindowname $WID)\n"
+          "xdotool key --window $WID plus plus KP_Add\n"
+          "xdotool mousemove --window $WID 320 180 click --window $WID 4\n"
+          "for i in $(seq 100); do [ \"$(grep -c 'view complete' log.txt)\" -ge 2 ] && break; "
+          "sleep 0.1; done\n"
+          "echo title1=$(xdotool getwindowname $WID)\n"
+          "xdotool keydown --window $WID Escape\n"
+          "wait $VIEW; echo exit=$?\n"
+          "cat log.txt\n");
+  const auto values = valuesOf(run.output);
+  ASSERT_EQ(values.count("exit"), 1u) << run.output;
+  EXPECT_EQ(values.at("exit"), "0") << run.output;
+  EXPECT_NE(values.at("title0").find("height 50000 m"), std::string::npos) << run.output;
+  EXPECT_NE(values.at("title0"), values.at("title1")) << run.output;
+  // Four notches of 0.8 on the clearance above the ~3,700 m summit: ~22,500 m.
+  const double height = loggedHeightMeters(run.output);
+  EXPECT_GT(height, 0) << run.output;
+  EXPECT_LT(height, 30000) << run.output;
+}
+
+TEST(GlobeViewWindow, IdleWindowUsesAlmostNoCpu) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const ShellRun run = runUnderXvfb(
+      "view-idle",
+      globeView("--size 1280x720 --log --camera 138.60,35.20,3000,30,-12,0 > log.txt &\n") +
+          "VIEW=$!\n" + kFindWindow +
+          "sleep 0.5\n"
+          "read -r _ _ _ _ _ _ _ _ _ _ _ _ _ u0 s0 _ < /proc/$PID/stat\n"
+          "sleep 3\n"
+          "read -r _ _ _ _ _ _ _ _ _ _ _ _ _ u1 s1 _ < /proc/$PID/stat\n"
+          "echo idle_ticks=$((u1 + s1 - u0 - s0))\n"
+          "echo ticks_per_second=$(getconf CLK_TCK)\n"
+          "echo busy_ticks=$((u0 + s0))\n"
+          "xdotool keydown --window $WID Escape\n"
+          "wait $VIEW; echo exit=$?\n"
+          "cat log.txt\n");
+  const auto values = valuesOf(run.output);
+  ASSERT_EQ(values.count("idle_ticks"), 1u) << run.output;
+  EXPECT_NE(run.output.find("view complete"), std::string::npos) << run.output;
+  EXPECT_EQ(values.at("exit"), "0") << run.output;
+  const double tick = 1.0 / std::stod(values.at("ticks_per_second"));
+  const double idleSeconds = std::stod(values.at("idle_ticks")) * tick;
+  std::printf("CPU while loading and drawing: %.2f s; during 3 s idle: %.2f s\n",
+              std::stod(values.at("busy_ticks")) * tick, idleSeconds);
+  RecordProperty("idle_cpu_seconds", std::to_string(idleSeconds));
+  EXPECT_LT(idleSeconds, 0.3) << run.output;
+}
+
+TEST(GlobeViewWindow, NoDisplayIsAClearError) {
+  const ShellRun run = runShell("env -u DISPLAY -u WAYLAND_DISPLAY " + globeView("--frames 1"));
+  EXPECT_EQ(run.exitCode, 1) << run.output;
+  EXPECT_NE(run.output.find("no display"), std::string::npos) << run.output;
+}
+
+}  // namespace
+
+namespace {
+
+// The controller runs every frame in the window: a camera started 100 m above the ellipsoid at
+// Mount Fuji's summit (3,731 m of drawn surface) is raised out of the terrain and stays above it.
+TEST(GlobeViewWindow, CameraBelowTheTerrainIsRaisedAboveTheDrawnSurface) {
+  SKIP_WITHOUT("xvfb-run");
+  const ShellRun run = runUnderXvfb(
+      "view-collision",
+      globeView("--size 320x180 --frames 40 --log --camera 138.7275,35.3606,100,0,-10,0"));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const double height = loggedHeightMeters("\n" + run.output);
+  const ShellRun ground = runShell("echo 138.7275,35.3606 | " + std::string(GLOBE_EXE) + " query " +
+                                   globe::testing::bundledPyramid().string() + " --mode exact");
+  ASSERT_EQ(ground.exitCode, 0) << ground.output;
+  double lon = 0, lat = 0, level = 0, surface = 0;
+  ASSERT_EQ(std::sscanf(ground.output.c_str(), "%lf,%lf,%lf,%lf", &lon, &lat, &level, &surface), 4);
+  EXPECT_GT(surface, 3700);
+  EXPECT_GE(height, surface + 1.0) << "the hard floor is 1 m above the drawn surface";
+  EXPECT_LE(height, surface + 2.5) << "raised to the clearance, not launched";
+}
+
+}  // namespace
+
+namespace {
+
+struct LoggedCamera {
+  double lon = 0, lat = 0, height = -1;
+  bool found = false;
+};
+
+// The "camera LON,LAT,HEIGHT,..." line `globe view --log` prints on exit.
+LoggedCamera loggedCamera(const std::string& output) {
+  LoggedCamera camera;
+  const size_t at = ("\n" + output).find("\ncamera ");
+  if (at == std::string::npos) return camera;
+  camera.found = std::sscanf(output.c_str() + at, "camera %lf,%lf,%lf", &camera.lon, &camera.lat,
+                             &camera.height) == 3;
+  return camera;
+}
+
+// The drawn surface's height at a position, from `globe query --mode exact`.
+double surfaceHeightMeters(double lon, double lat) {
+  char position[64];
+  std::snprintf(position, sizeof position, "%.7f,%.7f", lon, lat);
+  const ShellRun ground =
+      runShell("echo " + std::string(position) + " | " + std::string(GLOBE_EXE) + " query " +
+               globe::testing::bundledPyramid().string() + " --mode exact");
+  double qLon = 0, qLat = 0, level = 0, surface = -1e9;
+  if (std::sscanf(ground.output.c_str(), "%lf,%lf,%lf,%lf", &qLon, &qLat, &level, &surface) != 4)
+    ADD_FAILURE() << ground.output;
+  return surface;
+}
+
+// The path after "wrote <what> " in the log (the file `globe view` says it wrote).
+std::string writtenFile(const std::string& output, const std::string& what) {
+  const std::string marker = "wrote " + what + " ";
+  const size_t at = output.find(marker);
+  if (at == std::string::npos) return {};
+  const size_t end = output.find_first_of(" \n", at + marker.size());
+  return output.substr(at + marker.size(), end - at - marker.size());
+}
+
+// Fly mode from 300 m above Mount Fuji's southern slope, heading north and a little down: holding
+// W flies north (only north), the controller keeps the camera above the drawn surface, and with
+// the key up the window idles.
+TEST(GlobeViewWindow, FlyModeWFliesForwardAndStaysAboveTheTerrain) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const ShellRun run = runUnderXvfb(
+      "view-fly",
+      globeView("--size 640x360 --log --camera 138.7275,35.25,1000,0,-5,0 > log.txt &\n") +
+          "VIEW=$!\n" + kFindWindow +
+          "xdotool key --window $WID f\n"
+          "xdotool keydown --window $WID w\n"
+          "sleep 1.5\n"
+          "xdotool keyup --window $WID w\n"
+          // Keys up, the camera still: fly mode and its HUD idle like orbit mode.
+          "sleep 0.5\n"
+          "read -r _ _ _ _ _ _ _ _ _ _ _ _ _ u0 s0 _ < /proc/$PID/stat\n"
+          "sleep 2\n"
+          "read -r _ _ _ _ _ _ _ _ _ _ _ _ _ u1 s1 _ < /proc/$PID/stat\n"
+          "echo idle_ticks=$((u1 + s1 - u0 - s0))\n"
+          "echo ticks_per_second=$(getconf CLK_TCK)\n"
+          "xdotool keydown --window $WID Escape\n"
+          "wait $VIEW; echo exit=$?\n"
+          "cat log.txt\n");
+  const auto values = valuesOf(run.output);
+  ASSERT_EQ(values.count("exit"), 1u) << run.output;
+  EXPECT_EQ(values.at("exit"), "0") << run.output;
+  const LoggedCamera camera = loggedCamera(run.output);
+  ASSERT_TRUE(camera.found) << run.output;
+  const double northMeters = (camera.lat - 35.25) * 111000;
+  std::printf("flew %.0f m north in fly mode; %.1f m above the surface\n", northMeters,
+              camera.height - surfaceHeightMeters(camera.lon, camera.lat));
+  RecordProperty("fly_north_meters", std::to_string(northMeters));
+  EXPECT_GT(northMeters, 100) << "about 300 m/s for 1.5 s: hundreds of metres\n" << run.output;
+  EXPECT_NEAR(camera.lon, 138.7275, 1e-5) << "heading north: no sideways motion\n" << run.output;
+  EXPECT_LT(camera.height, 1000) << "pitched 5 deg down: lower\n" << run.output;
+  EXPECT_GE(camera.height, surfaceHeightMeters(camera.lon, camera.lat) + 1.0) << run.output;
+  ASSERT_EQ(values.count("idle_ticks"), 1u) << run.output;
+  const double idleSeconds =
+      std::stod(values.at("idle_ticks")) / std::stod(values.at("ticks_per_second"));
+  std::printf("CPU during 2 s idle in fly mode: %.2f s\n", idleSeconds);
+  EXPECT_LT(idleSeconds, 0.2) << run.output;
+}
+
+// H shows the help and K takes a screenshot with the HUD: its top-left corner has text where the
+// same view without the HUD (--screenshot on exit) has none.
+TEST(GlobeViewWindow, HudIsDrawnAndKTakesAScreenshot) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const auto dir = globe::testing::freshTempDir("view-hud-shots");
+  const auto plain = dir / "plain.png";
+  const ShellRun run = runUnderXvfb(
+      "view-hud",
+      globeView("--size 640x360 --log --record-dir " + dir.string() + " --screenshot " +
+                plain.string() + " --camera 138.73,35.36,50000 > log.txt &\n") +
+          "VIEW=$!\n" + kFindWindow +
+          "xdotool key --window $WID h\n"
+          "xdotool key --window $WID k\n"
+          "for i in $(seq 200); do grep -q 'wrote screenshot' log.txt && break; sleep 0.1; done\n"
+          "xdotool keydown --window $WID Escape\n"
+          "wait $VIEW; echo exit=$?\n"
+          "cat log.txt\n");
+  const auto values = valuesOf(run.output);
+  ASSERT_EQ(values.count("exit"), 1u) << run.output;
+  EXPECT_EQ(values.at("exit"), "0") << run.output;
+  const std::string shot = writtenFile(run.output, "screenshot");
+  ASSERT_FALSE(shot.empty()) << run.output;
+  EXPECT_EQ(std::filesystem::path(shot).parent_path(), dir) << shot;
+  EXPECT_EQ(std::filesystem::path(shot).filename().string().substr(0, 11), "globe-shot-") << shot;
+  auto withHud = globe::formats::loadImageRgba(shot);
+  auto without = globe::formats::loadImageRgba(plain);
+  ASSERT_TRUE(withHud) << withHud.error();
+  ASSERT_TRUE(without) << without.error();
+  ASSERT_EQ(withHud->widthPixels, 640);
+  ASSERT_EQ(without->widthPixels, 640);
+  // Text pixels (white status, light-yellow help) in the status and the help areas.
+  const auto textPixels = [](const globe::formats::ImageRgba& image, int y0, int y1) {
+    size_t count = 0;
+    for (int y = y0; y < y1; ++y) {
+      for (int x = 0; x < 400; ++x) {
+        const uint8_t* p = &image.pixels[static_cast<size_t>(y * image.widthPixels + x) * 4];
+        if (p[0] >= 220 && p[1] >= 220 && p[2] >= 150) ++count;
+      }
+    }
+    return count;
+  };
+  std::printf("text pixels with the HUD: status %zu, help %zu; without: %zu, %zu\n",
+              textPixels(*withHud, 0, 100), textPixels(*withHud, 110, 280),
+              textPixels(*without, 0, 100), textPixels(*without, 110, 280));
+  EXPECT_GT(textPixels(*withHud, 0, 100), textPixels(*without, 0, 100) + 500) << run.output;
+  EXPECT_GT(textPixels(*withHud, 110, 280), textPixels(*without, 110, 280) + 500) << run.output;
+  size_t differing = 0;
+  for (size_t k = 0; k < withHud->pixels.size(); k += 4) {
+    if (std::abs(withHud->pixels[k] - without->pixels[k]) > 40) ++differing;
+  }
+  EXPECT_GT(differing, 5000u) << "the HUD's boxes darken the corner";
+  EXPECT_LT(differing, 640u * 360 / 2) << "the rest of the view is the same";
+}
+
+// P starts recording, W flies, P stops and writes a path file `globe play` reads.
+TEST(GlobeViewWindow, PRecordsTheFlownPathAsJson) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const auto dir = globe::testing::freshTempDir("view-record-paths");
+  const ShellRun run = runUnderXvfb(
+      "view-record",
+      globeView("--size 640x360 --log --record-dir " + dir.string() +
+                " --camera 138.60,35.20,2500,0,0,0 > log.txt &\n") +
+          "VIEW=$!\n" + kFindWindow +
+          "xdotool key --window $WID Tab\n"
+          "xdotool key --window $WID p\n"
+          "xdotool keydown --window $WID w\n"
+          "sleep 1.2\n"
+          "xdotool keyup --window $WID w\n"
+          "xdotool key --window $WID p\n"
+          "for i in $(seq 200); do grep -q 'wrote path' log.txt && break; sleep 0.1; done\n"
+          "xdotool keydown --window $WID Escape\n"
+          "wait $VIEW; echo exit=$?\n"
+          "cat log.txt\n");
+  const auto values = valuesOf(run.output);
+  ASSERT_EQ(values.count("exit"), 1u) << run.output;
+  EXPECT_EQ(values.at("exit"), "0") << run.output;
+  const std::string file = writtenFile(run.output, "path");
+  ASSERT_FALSE(file.empty()) << run.output;
+  EXPECT_EQ(std::filesystem::path(file).parent_path(), dir) << file;
+  const std::string name = std::filesystem::path(file).filename().string();
+  EXPECT_EQ(name.size(), std::string("globe-path-YYYYMMDD-HHMMSS.json").size()) << name;
+  std::ifstream in(file);
+  const auto json = nlohmann::json::parse(in, nullptr, false);
+  ASSERT_FALSE(json.is_discarded()) << file;
+  EXPECT_EQ(json.at("interpolation"), "smooth");
+  const auto& keyframes = json.at("keyframes");
+  ASSERT_GE(keyframes.size(), 2u) << json.dump();
+  for (size_t k = 0; k < keyframes.size(); ++k) {
+    for (const char* field : {"t", "lon", "lat", "height", "heading", "pitch", "roll"})
+      EXPECT_TRUE(keyframes[k].at(field).is_number()) << field;
+    if (k > 0) {
+      EXPECT_GT(keyframes[k].at("t"), keyframes[k - 1].at("t")) << json.dump();
+    }
+  }
+  EXPECT_DOUBLE_EQ(keyframes.front().at("t").get<double>(), 0.0);
+  EXPECT_NEAR(keyframes.front().at("lat").get<double>(), 35.20, 1e-6) << json.dump();
+  EXPECT_GT(keyframes.back().at("lat").get<double>(), 35.21) << "flew north\n" << json.dump();
+  EXPECT_NEAR(keyframes.back().at("lon").get<double>(), 138.60, 1e-5) << json.dump();
+}
+
+// The scroll wheel zooms toward the ground under the cursor (Google Earth, CesiumJS): with the
+// cursor up and right of the centre of a straight-down view, the camera comes down and moves
+// north-east, toward the point, not straight down.
+TEST(GlobeViewWindow, ScrollZoomsTowardTheCursor) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const ShellRun run = runUnderXvfb(
+      "view-zoom-cursor",
+      globeView("--size 640x360 --log --camera 138.5,35.2,60000,0,-90,0 > log.txt &\n") +
+          "VIEW=$!\n" + kFindWindow +
+          "for i in $(seq 100); do grep -q 'view complete' log.txt && break; sleep 0.1; done\n"
+          "xdotool mousemove --window $WID 560 60 click --window $WID --repeat 4 --delay 60 4\n"
+          // Until the title's height shows all four notches taken (a loaded machine is slow).
+          "for i in $(seq 100); do H=$(xdotool getwindowname $WID | "
+          "sed -n 's/.* height \\([0-9]*\\) m .*/\\1/p'); "
+          "[ -n \"$H\" ] && [ \"$H\" -lt 35000 ] && break; sleep 0.1; done\n"
+          "sleep 0.3\n"
+          "xdotool keydown --window $WID Escape\n"
+          "wait $VIEW; echo exit=$?\n"
+          "cat log.txt\n");
+  const auto values = valuesOf(run.output);
+  ASSERT_EQ(values.count("exit"), 1u) << run.output;
+  EXPECT_EQ(values.at("exit"), "0") << run.output;
+  const LoggedCamera camera = loggedCamera(run.output);
+  ASSERT_TRUE(camera.found) << run.output;
+  EXPECT_GT(camera.lon, 138.55) << "toward the cursor (east)\n" << run.output;
+  EXPECT_GT(camera.lat, 35.22) << "toward the cursor (north)\n" << run.output;
+  EXPECT_LT(camera.height, 40000) << run.output;
+}
+
+// Right-drag tilts and turns about the ground point at the centre of the view (Google Earth,
+// CesiumJS): that point stays at the centre while the camera swings round it.
+TEST(GlobeViewWindow, RightDragTurnsAboutTheCentreGroundPoint) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const ShellRun run = runUnderXvfb(
+      "view-tilt-pivot",
+      globeView("--size 640x360 --log --camera 138.60,35.20,15000,30,-40,0 > log.txt &\n") +
+          "VIEW=$!\n" + kFindWindow +
+          "for i in $(seq 100); do grep -q 'view complete' log.txt && break; sleep 0.1; done\n"
+          "xdotool mousemove --window $WID 320 180 mousedown --window $WID 3\n"
+          "for x in 340 360 380 400 420; do xdotool mousemove --window $WID $x 170; sleep 0.05; "
+          "done\n"
+          "xdotool mouseup --window $WID 3\n" +
+          std::string(kWaitUntilStill) +
+          "xdotool keydown --window $WID Escape\n"
+          "wait $VIEW; echo exit=$?\n"
+          "cat log.txt\n");
+  const auto values = valuesOf(run.output);
+  ASSERT_EQ(values.count("exit"), 1u) << run.output;
+  EXPECT_EQ(values.at("exit"), "0") << run.output;
+  const size_t at = ("\n" + run.output).find("\ncamera ");
+  ASSERT_NE(at, std::string::npos) << run.output;
+  double lon = 0, lat = 0, height = 0, heading = 0, pitch = 0;
+  ASSERT_EQ(std::sscanf(run.output.c_str() + at, "camera %lf,%lf,%lf,%lf,%lf", &lon, &lat, &height,
+                        &heading, &pitch),
+            5)
+      << run.output;
+  const CameraPose start = CameraPose::fromDegrees(138.60, 35.20, 15000, 30, -40, 0);
+  const CameraPose end = CameraPose::fromDegrees(lon, lat, height, heading, pitch, 0);
+  EXPECT_GT(heading, 40) << "the drag turned the view\n" << run.output;
+  // The centre ray's ground point, on the surface at the height of the start's centre point
+  // (found by a few rounds of `globe query`): the same point before and after.
+  const globe::geo::Ellipsoid wgs84 = globe::geo::Ellipsoid::wgs84();
+  const auto centreGround = [&](const CameraPose& pose, double groundMeters) {
+    const auto frame = globe::camera::cameraFrame(wgs84, pose);
+    return globe::camera::intersectTerrain(wgs84, frame.positionEcefMeters, frame.forward,
+                                           [&](double, double) { return groundMeters; });
+  };
+  double ground = 0;
+  for (int round = 0; round < 4; ++round) {
+    const auto point = centreGround(start, ground);
+    ASSERT_TRUE(point);
+    const auto cartographic = globe::geo::ecefToCartographic(wgs84, *point);
+    ASSERT_TRUE(cartographic);
+    ground = surfaceHeightMeters(cartographic->longitudeDegrees(), cartographic->latitudeDegrees());
+  }
+  const auto before = centreGround(start, ground), after = centreGround(end, ground);
+  ASSERT_TRUE(before && after);
+  const double moved = glm::distance(*before, *after);
+  const double camera = glm::distance(globe::camera::cameraFrame(wgs84, start).positionEcefMeters,
+                                      globe::camera::cameraFrame(wgs84, end).positionEcefMeters);
+  EXPECT_GT(camera, 2000) << "the camera swung round the point\n" << run.output;
+  EXPECT_LT(moved, 150) << "the centre's ground point stayed (within the pivot's terrain)\n"
+                        << run.output;
+}
+
+// "Go to": G, a place name, Enter: the camera flies there (it ends ~15 km from the place, looking
+// at it), from Mount Fuji to Zion; a typo is said on the HUD and nothing moves.
+TEST(GlobeViewWindow, GoToReachesThePlace) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const ShellRun run = runUnderXvfb(
+      "view-go-to",
+      globeView("--size 640x360 --log --camera 138.73,35.36,50000 > log.txt &\n") + "VIEW=$!\n" +
+          kFindWindow +
+          "for i in $(seq 100); do grep -q 'view complete' log.txt && break; sleep 0.1; done\n"
+          "xdotool key --window $WID g\n"
+          "xdotool type --window $WID --delay 30 'Angels Landing'\n"
+          "xdotool key --window $WID Return\n"
+          "for i in $(seq 100); do grep -q '^go to' log.txt && break; sleep 0.1; done\n"
+          "sleep 1\n" +
+          std::string(kWaitUntilStill) +
+          "xdotool keydown --window $WID Escape\n"
+          "wait $VIEW; echo exit=$?\n"
+          "cat log.txt\n");
+  const auto values = valuesOf(run.output);
+  ASSERT_EQ(values.count("exit"), 1u) << run.output;
+  EXPECT_EQ(values.at("exit"), "0") << run.output;
+  EXPECT_NE(run.output.find("go to Angels Landing (37.26920, -112.94800)"), std::string::npos)
+      << run.output;
+  const LoggedCamera camera = loggedCamera(run.output);
+  ASSERT_TRUE(camera.found) << run.output;
+  // ~15 km from Angels Landing: within 0.2 degrees of it, and above the ground.
+  EXPECT_NEAR(camera.lat, 37.2692, 0.2) << run.output;
+  EXPECT_NEAR(camera.lon, -112.9480, 0.2) << run.output;
+  EXPECT_GT(camera.height, 3000) << run.output;
+}
+
+// The compass (top right) shows where north is; a click on it turns the view north up about the
+// ground at the centre.
+TEST(GlobeViewWindow, CompassClickTurnsNorthUp) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const ShellRun run = runUnderXvfb(
+      "view-compass",
+      globeView("--size 640x360 --log --camera 138.60,35.20,15000,120,-40,0 > log.txt &\n") +
+          "VIEW=$!\n" + kFindWindow +
+          "for i in $(seq 100); do grep -q 'view complete' log.txt && break; sleep 0.1; done\n"
+          "xdotool mousemove --window $WID 610 16 click --window $WID 1\n" +
+          std::string(kWaitUntilStill) +
+          "xdotool keydown --window $WID Escape\n"
+          "wait $VIEW; echo exit=$?\n"
+          "cat log.txt\n");
+  const auto values = valuesOf(run.output);
+  ASSERT_EQ(values.count("exit"), 1u) << run.output;
+  EXPECT_EQ(values.at("exit"), "0") << run.output;
+  const size_t at = ("\n" + run.output).find("\ncamera ");
+  ASSERT_NE(at, std::string::npos) << run.output;
+  double lon = 0, lat = 0, height = 0, heading = -1;
+  ASSERT_EQ(
+      std::sscanf(run.output.c_str() + at, "camera %lf,%lf,%lf,%lf", &lon, &lat, &height, &heading),
+      4)
+      << run.output;
+  EXPECT_LT(std::min(heading, 360 - heading), 1.0) << "north up\n" << run.output;
+}
+
+// In orbit mode a double-click flies towards the point under the cursor (up and right of the
+// centre: north-east) and closer to it.
+TEST(GlobeViewWindow, DoubleClickFliesToThePoint) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const ShellRun run = runUnderXvfb(
+      "view-double-click",
+      globeView("--size 640x360 --log --camera 138.5,35.2,60000,0,-90,0 > log.txt &\n") +
+          "VIEW=$!\n" + kFindWindow +
+          "T0=$(xdotool getwindowname $WID)\n"
+          "xdotool mousemove --window $WID 480 90 click --window $WID --repeat 2 --delay 80 1\n"
+          // Until the title has changed and then stays the same for 0.5 s (the flight ended).
+          "LAST=$T0\n"
+          "for i in $(seq 60); do sleep 0.5; T=$(xdotool getwindowname $WID); "
+          "[ \"$T\" != \"$T0\" ] && [ \"$T\" = \"$LAST\" ] && break; LAST=$T; done\n"
+          "xdotool keydown --window $WID Escape\n"
+          "wait $VIEW; echo exit=$?\n"
+          "cat log.txt\n");
+  const auto values = valuesOf(run.output);
+  ASSERT_EQ(values.count("exit"), 1u) << run.output;
+  EXPECT_EQ(values.at("exit"), "0") << run.output;
+  const LoggedCamera camera = loggedCamera(run.output);
+  ASSERT_TRUE(camera.found) << run.output;
+  EXPECT_GT(camera.lon, 138.6) << run.output;
+  EXPECT_GT(camera.lat, 35.25) << run.output;
+  EXPECT_LT(camera.height, 30000) << "0.3 of the way from 60 km up\n" << run.output;
+  EXPECT_GE(camera.height, surfaceHeightMeters(camera.lon, camera.lat) + 1.0) << run.output;
+}
+
+}  // namespace
