@@ -29,7 +29,7 @@ if(GLOBE_FUZZ)
   add_link_options(-fsanitize=address,undefined)
 endif()
 
-# Precompiled headers (tools/bench/build_time.sh measures what they save: docs/build-time.md):
+# Precompiled headers (tools/bench/build_time.sh measures what they save: docs/performance/build-time.md):
 # the standard and GLM headers nearly every file includes, and GoogleTest for the tests.
 option(GLOBE_PRECOMPILED_HEADERS "Precompile the common standard, GLM and GoogleTest headers" OFF)
 function(globe_precompile name)
@@ -57,7 +57,7 @@ function(globe_test name)
   target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR})  # tests/support/...
   # Line tables only (-g1) for the tests' own sources: enough for backtraces and sanitizer
   # reports, and the test batches compile much faster than with full debug info
-  # (docs/build-time.md). The libraries and programs they link keep the build type's -g.
+  # (docs/performance/build-time.md). The libraries and programs they link keep the build type's -g.
   if((CMAKE_BUILD_TYPE STREQUAL "RelWithDebInfo" OR CMAKE_BUILD_TYPE STREQUAL "Debug") AND
      NOT GLOBE_TESTS_FULL_DEBUG_INFO)
     target_compile_options(${name} PRIVATE -g1)

@@ -9,7 +9,7 @@
 //
 // Colour and light are computed here, not per fragment: llvmpipe shades several fragments per
 // vertex even near the ground, and the normals are per vertex anyway, so per-fragment lighting
-// bought little but cost a fifth of the frame (docs/performance-render.md). The land and the sea
+// bought little but cost a fifth of the frame (docs/performance/performance-render.md). The land and the sea
 // colour both travel, with the sea flag, so the coastline stays sharp (the fragment picks one)
 // instead of blending across a grid cell. Few varyings keep llvmpipe's per-triangle set-up cheap.
 #version 330 core

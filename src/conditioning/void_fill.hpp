@@ -22,7 +22,7 @@ struct FillOptions {
   // (0: never). Larger ones gain little from it (measured: 1-2 % RMSE) at 10-100× the time.
   int64_t minimumCurvatureMaxSamples = 4096;
   // The tension T: 0.25 was the best balance over holes of 3 to 50 samples across
-  // (docs/fill-accuracy.md); 0 bulges in 50-sample holes, 0.5 loses a tenth on small ones.
+  // (docs/performance/fill-accuracy.md); 0 bulges in 50-sample holes, 0.5 loses a tenth on small ones.
   double tension = 0.25;
 };
 

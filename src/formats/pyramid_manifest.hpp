@@ -30,7 +30,7 @@ struct LevelInfo {
   std::vector<PackId> packs;         // the pack files of this level, sorted
 };
 
-// What the tiler did to a source's samples before tiling (README: how real inputs are drawn).
+// What the tiler did to a source's samples before tiling (docs/conditioning.md).
 struct SourceConditioning {
   uint64_t noDataSamples = 0;        // in the source as given
   uint64_t seaSamples = 0;           // written as water

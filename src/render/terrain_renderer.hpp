@@ -43,7 +43,7 @@ struct TerrainStyle {
   bool sky = false;
   // Imagery magnified over a whole tile is sampled bilinearly from the base level, which is what
   // trilinear filtering does there too, but without a level of detail per fragment: on llvmpipe
-  // the imagery's own cost on the Zion nadir view falls by a third (docs/imagery-frame-time.md).
+  // the imagery's own cost on the Zion nadir view falls by a third (docs/performance/imagery-frame-time.md).
   // Off: always trilinear (for comparing the two).
   bool bilinearWhereMagnified = true;
 };

@@ -1,7 +1,7 @@
 // Whether a draped imagery texture is magnified over a whole tile. Where it is, GL's trilinear
 // filtering samples the base level only (level of detail <= 0), so a sampler without mipmaps draws
 // the same pixels for less: llvmpipe computes no level of detail per fragment (the Zion nadir
-// view's frame 13 % cheaper, docs/imagery-frame-time.md).
+// view's frame 13 % cheaper, docs/performance/imagery-frame-time.md).
 #pragma once
 
 #include <array>

@@ -28,7 +28,7 @@ struct PackBuildStats {
 // deviations are a few vertices on cliff edges, which change few pixels; bounding them made the
 // selection refine canyons (Zion) a level further than the image needed. The fraction of the
 // largest keeps a lone peak from being ignored: at the 2 px threshold it moves at most 5 px.
-// tools/bench_render/bench_lod.sh measures the images (docs/performance-lod.md).
+// tools/bench_render/bench_lod.sh measures the images (docs/performance/performance-lod.md).
 inline constexpr double kDeviationIgnoredFraction = 0.03;
 inline constexpr double kDeviationMaxFraction = 0.4;
 

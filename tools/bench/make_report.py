@@ -215,7 +215,8 @@ def write_readme_summary(readme, bench, machine):
     ratio = sphere[-1] / idx[-1] if sphere and idx else float("nan")
     fair = bvh[-1] / idx[-1] if idx else float("nan")
     block = (
-        "* **Collision** ([docs/performance/performance-collision.md](docs/performance/performance-collision.md), "
+        "* **Collision** ([docs/performance/performance-collision.md]"
+        "(docs/performance/performance-collision.md), "
         "regenerate with\n  `tools/bench/run-benchmarks.sh`, which also rewrites this bullet): "
         "the paper's Fig. 7 measured\n  here over 10 to 100,000 real 17×17 tiles "
         f"(commit {machine['commit']}, {machine['cpu']},\n  {machine['date_utc'][:10]}). "

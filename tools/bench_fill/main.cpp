@@ -1,6 +1,6 @@
 // globe-bench-fill: cuts holes of several sizes into the valid land of real tiles, fills them with
 // dem::fillVoids (with and without a coarser source) and with GDAL's GDALFillNodata, and reports
-// RMSE, p99 and max error against the removed truth (docs/fill-accuracy.md).
+// RMSE, p99 and max error against the removed truth (docs/performance/fill-accuracy.md).
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>

@@ -1,4 +1,4 @@
-// The markdown report of the fill benchmark (docs/fill-accuracy.md): setup, summary, details and
+// The markdown report of the fill benchmark (docs/performance/fill-accuracy.md): setup, summary, details and
 // checks, all from the numbers of one run.
 #pragma once
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""Writes docs/performance/render-frame-time.md and the README's rendering bullet from globe-bench-render
-tables (one per round): per scenario the median over the rounds of each round's median frame
-time, the rounds' range, and the tiles, triangles and loads (the same in every round)."""
+"""Writes docs/performance/render-frame-time.md and the README's rendering bullet from
+globe-bench-render tables (one per round): per scenario the median over the rounds of each round's
+median frame time, the rounds' range, and the tiles, triangles and loads (the same in every
+round)."""
 import argparse
 import datetime
 import re
@@ -83,7 +84,8 @@ def main():
     globe = next(v for k, v in summary.items() if k.startswith("(b) whole globe"))
     jump = next(v for k, v in summary.items() if k.startswith("(c') the same jump"))
     bullet = (
-        "* **Rendering** ([docs/performance/render-frame-time.md](docs/performance/render-frame-time.md), regenerate with\n"
+        "* **Rendering** ([docs/performance/render-frame-time.md]"
+        "(docs/performance/render-frame-time.md), regenerate with\n"
         "  `tools/bench_render/bench_render.sh BUILD`, which also rewrites this bullet; commit "
         f"{args.commit},\n  {args.machine}, {date}): 1280×720 on llvmpipe, the Fuji oblique view "
         f"near the ground\n  **{fuji['median']:.1f} ms/frame** (rounds {fuji['low']:.1f}–"

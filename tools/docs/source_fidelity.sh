@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# docs/performance/source-fidelity.md: how the tiler draws each source it is given (README, "How real
-# inputs are drawn"), on real cases made from the repository's DEMs with GDAL's own tools: a
+# docs/performance/source-fidelity.md: how the tiler draws each source it is given
+# (docs/conditioning.md), on real cases made from the repository's DEMs with GDAL's own tools: a
 # summit at a crop's edge, a coastal tile half blanked, two adjacent SRTM tiles, a DEM warped to
 # UTM, a no-data collar, and the bundled tiles over the 20′ world grid. Each case is tiled by
 # this tree's globe-tiler and, when BASELINE_TILER names another (e.g. the previous commit's), by

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# The figures the README quotes from tests (void fills, collision audits, stress maxima): runs
-# those tests from a built tree and writes what each prints, verbatim, to docs/performance/test-figures.md,
-# with the commit and machine, so the README cites a generated document instead of numbers
-# copied by hand (tools/docs/check_numbers.py checks that they agree).
+# The figures the docs quote from tests (void fills, collision audits, stress maxima): runs
+# those tests from a built tree and writes what each prints, verbatim, to
+# docs/performance/test-figures.md, with the commit and machine, so the docs cite a generated
+# document instead of numbers copied by hand (tools/docs/check_numbers.py checks that they agree).
 #
 #   tools/docs/test_figures.sh [BUILD_DIR]      (default: build)
 set -euo pipefail
