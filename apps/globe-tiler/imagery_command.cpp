@@ -1,4 +1,6 @@
-#include "apps/globe-tiler/imagery_command.hpp"
+#include "apps/globe-tiler/commands.hpp"
+
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -9,8 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "apps/globe-tiler/progress_bar.hpp"
 #include "imagery_tiling/imagery_tiler.hpp"
-#include "tiling/progress.hpp"
 
 namespace globe::tiler_app {
 namespace {
@@ -82,7 +84,8 @@ int runImageryCommand(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   options.outputDir = output;
-  options.progress = !quiet;
+  ProgressBar bar(!quiet && ::isatty(STDERR_FILENO) != 0);
+  options.progress = bar.sink();
   if (maxLevelOption->count() > 0) options.input.maxLevel = maxLevel;
   if (!bounds.empty()) {
     const auto b = parseNumbers(bounds, 4);
@@ -140,8 +143,7 @@ int runImageryCommand(int argc, char** argv) {
       static_cast<unsigned long long>(report->tilesBuilt),
       static_cast<unsigned long long>(report->tilesCopied),
       static_cast<unsigned long long>(report->packsBuilt),
-      static_cast<unsigned long long>(report->packsReused),
-      tiling::formatDuration(report->seconds).c_str(),
+      static_cast<unsigned long long>(report->packsReused), formatDuration(report->seconds).c_str(),
       report->seconds > 0 ? static_cast<double>(report->tilesBuilt) / report->seconds : 0.0);
   return 0;
 }

@@ -318,7 +318,6 @@ Result<ImageryTilerReport> runImageryTiler(const ImageryTilerOptions& options) {
   for (const ImageryInput& input : inputs) {
     report.warnings.insert(report.warnings.end(), input.warnings.begin(), input.warnings.end());
   }
-  tiling::ProgressBar progress(plan.tileCount(), options.progress && ::isatty(STDERR_FILENO) != 0);
   const TileMaker maker{inputs, finestFirst, plan, options.jpegQuality};
   formats::LayerManifest manifest;
   manifest.packTilesPerSide = options.packTilesPerSide;
@@ -431,7 +430,8 @@ Result<ImageryTilerReport> runImageryTiler(const ImageryTilerOptions& options) {
         finished.notify_all();
       });
     }
-    tiling::waitForLevel(progress, mutex, finished, running, tilesDone, level, plan.maxLevel());
+    tiling::waitForLevel(options.progress, mutex, finished, running, tilesDone, plan.tileCount(),
+                         level, plan.maxLevel());
     for (std::thread& worker : workers) worker.join();
     if (failed) return makeError(firstError);
     // A pack with no planned tile to render (all empty) is still written, for resuming.
@@ -460,7 +460,7 @@ Result<ImageryTilerReport> runImageryTiler(const ImageryTilerOptions& options) {
     }
     report.tiles += info.tileCount;
   }
-  progress.finish(tilesDone, "done");
+  if (options.progress) options.progress({tilesDone, plan.tileCount(), "done", true});
   if (manifest.tileCount() == 0) {
     return makeError("no input covers any pixel: nothing to tile");
   }

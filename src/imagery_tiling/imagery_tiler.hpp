@@ -10,6 +10,7 @@
 
 #include "core/result.hpp"
 #include "imagery_tiling/imagery_input.hpp"
+#include "tiling/progress.hpp"
 
 namespace globe::imagery_tiling {
 
@@ -19,8 +20,8 @@ struct ImageryTilerOptions {
   ImageryInputOptions input;  // --bounds, --bands, --scale, --max-level
   uint32_t packTilesPerSide = 16;
   int jpegQuality = 85;
-  unsigned threads = 0;  // 0 = every core
-  bool progress = true;  // drawn only when stderr is a terminal
+  unsigned threads = 0;           // 0 = every core
+  tiling::ProgressSink progress;  // how far the run is; empty: not reported
 };
 
 struct ImageryTilerReport {

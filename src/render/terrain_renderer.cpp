@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <map>
 #include <memory>
@@ -104,7 +103,7 @@ struct TerrainRenderer::Impl {
     if (sky || skyFailed) return sky != nullptr;
     auto made = SkyPass::create(options.shaderDirectory);
     if (!made) {
-      std::fprintf(stderr, "globe: no sky: %s\n", made.error().c_str());
+      core::warn(options.warn, "no sky: " + made.error());
       skyFailed = true;
       return false;
     }
@@ -509,8 +508,7 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
                                   currentOpaqueBase);
         if (!found) {
           // Layers this GL cannot compile: the terrain without them, said once.
-          if (!impl.programErrorReported)
-            std::fprintf(stderr, "globe: %s\n", found.error().c_str());
+          if (!impl.programErrorReported) core::warn(impl.options.warn, found.error());
           impl.programErrorReported = true;
           found = impl.program(useImagery, 0, variant == 1, false);
           if (!found) continue;

@@ -10,6 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/result.hpp"
+#include "core/warnings.hpp"
 #include "geo/tile_id.hpp"
 #include "render/frame_stats.hpp"
 #include "terrain/render_view.hpp"
@@ -28,6 +29,8 @@ struct TerrainRendererOptions {
   // software rasterisers (llvmpipe, softpipe), which take it on a slow path: 300 tiles at
   // 1280x720 looking at the horizon, one layer ~11 → 25-50 ms a frame, four ~16 → 70-150 ms.
   float maxImageryAnisotropy = 0.0f;
+  // Said once each: no sky (its shaders did not build), draped layers this GL cannot compile.
+  core::WarningSink warn;
 };
 
 struct TerrainStyle {
@@ -43,8 +46,8 @@ struct TerrainStyle {
   bool sky = false;
   // Imagery magnified over a whole tile is sampled bilinearly from the base level, which is what
   // trilinear filtering does there too, but without a level of detail per fragment: on llvmpipe
-  // the imagery's own cost on the Zion nadir view falls by a third (docs/performance/imagery-frame-time.md).
-  // Off: always trilinear (for comparing the two).
+  // the imagery's own cost on the Zion nadir view falls by a third
+  // (docs/performance/imagery-frame-time.md). Off: always trilinear (for comparing the two).
   bool bilinearWhereMagnified = true;
 };
 

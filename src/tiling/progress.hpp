@@ -1,40 +1,32 @@
-// A one-line progress bar with rate and ETA, redrawn in place on a terminal.
+// How far a tiling run is. The tilers report it; the program decides how to show it
+// (globe-tiler draws a bar on a terminal).
 #pragma once
 
 #include <atomic>
-#include <chrono>
 #include <condition_variable>
 #include <cstdint>
-#include <cstdio>
+#include <functional>
 #include <mutex>
 #include <string>
 
 namespace globe::tiling {
 
-class ProgressBar {
- public:
-  ProgressBar(uint64_t total, bool enabled, std::FILE* out = stderr);
-  // Redraws at most a few times a second; call as often as you like.
-  void update(uint64_t done, const std::string& label);
-  void finish(uint64_t done, const std::string& label);
-
- private:
-  void draw(uint64_t done, const std::string& label);
-
-  uint64_t total_;
-  bool enabled_;
-  std::FILE* out_;
-  std::chrono::steady_clock::time_point start_;
-  std::chrono::steady_clock::time_point lastDraw_;
+struct Progress {
+  uint64_t tilesDone = 0;
+  uint64_t tilesTotal = 0;
+  std::string label;      // "level 3/9", "done"
+  bool finished = false;  // the run's last report
 };
 
-// Waits until `running` (guarded by `mutex`, changes signalled on `finished`) is 0, redrawing the
-// bar with `done` and "level L/MAX" meanwhile: how both tilers wait for a level's workers.
-void waitForLevel(ProgressBar& progress, std::mutex& mutex, std::condition_variable& finished,
-                  const unsigned& running, const std::atomic<uint64_t>& done, uint32_t level,
-                  uint32_t maxLevel);
+// Called from the thread that runs the tiler, often (every 100 ms while a level runs): a sink
+// that draws should throttle itself. Empty: no reports.
+using ProgressSink = std::function<void(const Progress&)>;
 
-// "1:02:03" / "02:03"
-std::string formatDuration(double seconds);
+// Waits until `running` (guarded by `mutex`, changes signalled on `finished`) is 0, reporting
+// `done` of `total` and "level L/MAX" meanwhile: how both tilers wait for a level's workers.
+void waitForLevel(const ProgressSink& progress, std::mutex& mutex,
+                  std::condition_variable& finished, const unsigned& running,
+                  const std::atomic<uint64_t>& done, uint64_t total, uint32_t level,
+                  uint32_t maxLevel);
 
 }  // namespace globe::tiling

@@ -232,7 +232,6 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
 
   uint64_t totalTiles = 0;
   for (uint32_t level = 0; level <= plan.maxLevel(); ++level) totalTiles += plan.tileCount(level);
-  ProgressBar progress(totalTiles, options.progress && ::isatty(STDERR_FILENO) != 0);
   const formats::PackLayout layout{options.packTilesPerSide, options.verticesPerSide};
   const PackJob job{options, layout, plan, sources};
 
@@ -286,7 +285,8 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
         finished.notify_all();
       });
     }
-    waitForLevel(progress, mutex, finished, running, tilesDone, level, plan.maxLevel());
+    waitForLevel(options.progress, mutex, finished, running, tilesDone, totalTiles, level,
+                 plan.maxLevel());
     for (std::thread& worker : workers) worker.join();
     if (failed) return makeError(firstError);
 
@@ -304,7 +304,7 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
     }
     report.tiles += info.tileCount;
   }
-  progress.finish(tilesDone, "done");
+  if (options.progress) options.progress({tilesDone, totalTiles, "done", true});
   if (auto written = transport::writeFileAtomically(options.outputDir / formats::kManifestFileName,
                                                     formats::manifestToJson(manifest));
       !written) {

@@ -11,6 +11,7 @@
 #include "core/result.hpp"
 #include "formats/vertical_units.hpp"
 #include "geo/ellipsoid.hpp"
+#include "tiling/progress.hpp"
 
 namespace globe::tiling {
 
@@ -22,7 +23,7 @@ struct TilerOptions {
   std::optional<uint32_t> maxLevel;
   geo::GlobeModel globeModel = geo::GlobeModel::Wgs84;
   unsigned threads = 0;                  // 0 = every core
-  bool progress = true;                  // drawn only when stderr is a terminal
+  ProgressSink progress;                 // how far the run is; empty: not reported
   formats::VerticalOverride vertical{};  // --z-units / --z-scale: replace every input's own unit
   bool noDataIsSea = false;              // --no-data-is-sea: every input's no data is water
 };

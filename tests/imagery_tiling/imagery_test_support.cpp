@@ -13,7 +13,6 @@ Result<imagery_tiling::ImageryTilerReport> tileLayer(const std::vector<std::stri
                                                      imagery_tiling::ImageryTilerOptions options) {
   options.inputs = inputs;
   options.outputDir = out;
-  options.progress = false;
   if (options.threads == 0) options.threads = 2;
   return imagery_tiling::runImageryTiler(options);
 }

@@ -34,7 +34,6 @@ struct TempPyramid {
     tiling::TilerOptions options;
     options.inputs = {dem + "ETOPO20.DEM", dem + "W002N52.DEM", dem + "E138N35_FUJI.DEM"};
     options.outputDir = root / "pyramid";
-    options.progress = false;
     auto report = tiling::runTiler(options);
     if (!report) {
       ADD_FAILURE() << report.error();

@@ -244,7 +244,6 @@ TEST(TilerConditioning, TheKattegatAtZeroMetresIsWater) {
   TilerOptions options;
   options.inputs = {kWorld, kattegat};
   options.outputDir = dir / "pyramid";
-  options.progress = false;
   ASSERT_TRUE(runTiler(options));
   auto store = streaming::TileStore::open(options.outputDir);
   ASSERT_TRUE(store) << store.error();
@@ -317,7 +316,6 @@ TEST(TilerConditioning, AnInputTooLargeToConditionIsAClearError) {
   TilerOptions options;
   options.inputs = {vrt.string()};
   options.outputDir = dir / "pyramid";
-  options.progress = false;
   auto report = runTiler(options);
   ASSERT_FALSE(report);
   EXPECT_NE(report.error().find("huge.vrt"), std::string::npos) << report.error();
@@ -342,7 +340,6 @@ TEST(TilerConditioning, ASourceThatIsAllNoDataIsRefusedUnlessItsNoDataIsSea) {
   const auto dir = globe::testing::freshTempDir("all-no-data");
   TilerOptions options;
   options.outputDir = dir / "pyramid";
-  options.progress = false;
   // Missing data everywhere: nothing to tile, and the error names the file.
   options.inputs = {kWorld, allNoData(dir, "EMPTY", 0.025)};
   auto refused = runTiler(options);

@@ -30,7 +30,6 @@ fs::path tile(const std::vector<std::string>& inputs, const std::string& name) {
   TilerOptions options;
   options.inputs = inputs;
   options.outputDir = globe::testing::freshTempDir(name) / "pyramid";
-  options.progress = false;
   auto report = runTiler(options);
   EXPECT_TRUE(report) << report.error();
   return options.outputDir;

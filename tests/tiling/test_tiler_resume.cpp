@@ -102,7 +102,6 @@ TEST(TilerResume, DamagedPacksAndStaleTemporariesAreRepaired) {
   TilerOptions options;
   options.inputs = globe::testing::bundledInputs();
   options.outputDir = out;
-  options.progress = false;
   auto report = runTiler(options);
   ASSERT_TRUE(report) << report.error();
   EXPECT_EQ(report->packsBuilt, 3u);
@@ -115,7 +114,6 @@ TEST(TilerResume, RefusesADirectoryMadeFromOtherInputs) {
   TilerOptions options;
   options.inputs = {globe::testing::bundledInputs()[0]};
   options.outputDir = out;
-  options.progress = false;
   auto report = runTiler(options);
   ASSERT_FALSE(report);
   EXPECT_NE(report.error().find("other inputs or options"), std::string::npos) << report.error();
@@ -125,7 +123,6 @@ TEST(TilerErrors, MissingAndBadInputsNameTheFile) {
   const fs::path dir = globe::testing::freshTempDir("bad-inputs");
   TilerOptions options;
   options.outputDir = dir / "pyramid";
-  options.progress = false;
   options.inputs = {(dir / "nope.DEM").string()};
   auto report = runTiler(options);
   ASSERT_FALSE(report);
@@ -144,7 +141,6 @@ TEST(TilerOptions, OtherBlockSizesAndLevelCaps) {
   TilerOptions options;
   options.inputs = globe::testing::bundledInputs();
   options.outputDir = out;
-  options.progress = false;
   options.verticesPerSide = 33;
   options.maxLevel = 9;
   auto report = runTiler(options);

@@ -56,7 +56,6 @@ Result<std::unique_ptr<Pyramid>> Pyramid::open(const std::filesystem::path& dire
     tiling::TilerOptions options;
     options.inputs = {dem + "ETOPO20.DEM", dem + "W002N52.DEM", dem + "E138N35_FUJI.DEM"};
     options.outputDir = scratch / "pyramid";
-    options.progress = false;
     auto report = tiling::runTiler(options);
     if (!report) {
       std::filesystem::remove_all(scratch, ignored);

@@ -144,7 +144,6 @@ int main(int argc, char** argv) {
     tiling::TilerOptions tilerOptions;
     tilerOptions.inputs = {dem + "ETOPO20.DEM", dem + "W002N52.DEM", dem + "E138N35_FUJI.DEM"};
     tilerOptions.outputDir = scratch / "pyramid";
-    tilerOptions.progress = false;
     if (auto report = tiling::runTiler(tilerOptions); !report) {
       std::fprintf(stderr, "globe-bench-render: %s\n", report.error().c_str());
       return 1;

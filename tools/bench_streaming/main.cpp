@@ -68,7 +68,6 @@ int main(int argc, char** argv) {
     tiling::TilerOptions options;
     options.inputs = {dem + "ETOPO20.DEM", dem + "W002N52.DEM", dem + "E138N35_FUJI.DEM"};
     options.outputDir = scratch / "pyramid";
-    options.progress = false;
     auto report = tiling::runTiler(options);
     if (!report) {
       std::fprintf(stderr, "globe-bench-streaming: %s\n", report.error().c_str());

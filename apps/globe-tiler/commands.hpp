@@ -1,0 +1,14 @@
+// globe-tiler's commands. Each parses its own command line (argv[0] is the command's name, or
+// the program's for the default one), runs, prints, and returns the exit status.
+#pragma once
+
+namespace globe::tiler_app {
+
+// globe-tiler -o PYRAMID INPUT...: elevation rasters to a pyramid.
+int runTileCommand(int argc, char** argv);
+// globe-tiler export PYRAMID L X Y OUT_STEM: one block as a GTOPO30 file.
+int runExportCommand(int argc, char** argv);
+// globe-tiler imagery -o LAYER INPUT...: imagery to a layer.
+int runImageryCommand(int argc, char** argv);
+
+}  // namespace globe::tiler_app

@@ -1,0 +1,111 @@
+#include "apps/globe-tiler/commands.hpp"
+
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+
+#include "apps/globe-tiler/progress_bar.hpp"
+#include "geo/ellipsoid.hpp"
+#include "globe_version.hpp"
+#include "tiling/tiler.hpp"
+
+namespace globe::tiler_app {
+
+int runTileCommand(int argc, char** argv) {
+  CLI::App app{
+      "Builds a tile pyramid (lat/long quadtree of N×N GTOPO30-encoded blocks) from GTOPO30 "
+      ".DEM/.HDR files or any raster GDAL opens.\nAlso: globe-tiler export PYRAMID L X Y "
+      "OUT_STEM\n      "
+      "globe-tiler imagery -o LAYER_DIR INPUT... (imagery layers; see globe-tiler imagery --help)",
+      "globe-tiler"};
+  app.set_version_flag("--version",
+                       std::string("globe-tiler ") + kVersion + " (" + kSourceRevision + ")");
+  tiling::TilerOptions options;
+  std::string output, globeName = "wgs84";
+  uint32_t maxLevel = 0;
+  app.add_option("-o,--output", output, "pyramid directory to create (or resume)")->required();
+  app.add_option("INPUT", options.inputs, "elevation rasters; the finest wins where they overlap")
+      ->required();
+  app.add_option("-n,--block-size", options.verticesPerSide, "vertices per block side, 2^k+1")
+      ->capture_default_str();
+  auto* maxLevelOption = app.add_option("--max-level", maxLevel,
+                                        "deepest level (default: from each input's resolution)");
+  app.add_option("--pack-tiles", options.packTilesPerSide, "tiles per pack file side")
+      ->capture_default_str();
+  app.add_option("-j,--threads", options.threads, "worker threads (default: every core)");
+  app.add_option("--globe", globeName, "globe model recorded in the manifest: wgs84 | sphere")
+      ->capture_default_str();
+  std::string zUnits;
+  double zScale = 1;
+  auto* zUnitsOption = app.add_option(
+      "--z-units", zUnits,
+      "m | ft | us-ft: the heights' unit of the inputs that state none (GDAL unit type; none "
+      "= m; an unknown one is an error); a stated unit, and GTOPO30's metres, are kept. Band "
+      "scale/offset still apply");
+  auto* zScaleOption = app.add_option("--z-scale", zScale,
+                                      "metres per stored unit (after the band's scale/offset) of "
+                                      "the inputs that state no unit")
+                           ->excludes(zUnitsOption);
+  app.add_flag("--no-data-is-sea", options.noDataIsSea,
+               "every input's no data is water (an explicit water code), not missing data");
+  bool quiet = false;
+  app.add_flag("-q,--quiet", quiet, "no progress bar");
+  app.footer(
+      "How inputs are drawn:\n"
+      "  - The finest input covering a point wins and is drawn as it is inside its footprint "
+      "(where "
+      "it has data).\n"
+      "  - Sea only where something says sea: a measured height <= 0 m connected to open water; an "
+      "explicit water code (GTOPO30's own 30\" grids, whose -9999 is the ocean mask, or any "
+      "input's no data with --no-data-is-sea); or a coarser input's surface there at or below "
+      "0 m. No data is never sea by connectivity alone.\n"
+      "  - No data reaching a raster's border (reprojection wedges, a blanked part, clipped "
+      "corners) is outside its footprint: coarser inputs show through. No data enclosed by data "
+      "is a void, filled (from a coarser input's shape where one covers it); with no coarser "
+      "input every void is filled.\n"
+      "  - Outside a finer input, coarser ones bend to meet its edge over 1.5 of their own cells: "
+      "no wall, no moat; finer land meeting coarser water becomes a shore sloping into it.\n"
+      "  - Heights: the GDAL unit type (m, ft, US survey foot) and band scale/offset are applied; "
+      "--z-units/--z-scale give the unit of inputs that state none; an unknown unit is an "
+      "error.\n"
+      "  - A raster with fewer than 2x2 valid samples is refused.");
+  CLI11_PARSE(app, argc, argv);
+  if (zUnitsOption->count() > 0) options.vertical.units = zUnits;
+  if (zScaleOption->count() > 0) options.vertical.metersPerUnit = zScale;
+
+  options.outputDir = output;
+  ProgressBar bar(!quiet && ::isatty(STDERR_FILENO) != 0);
+  options.progress = bar.sink();
+  if (maxLevelOption->count() > 0) options.maxLevel = maxLevel;
+  const auto model = geo::parseGlobeModel(globeName);
+  if (!model) {
+    std::fprintf(stderr, "globe-tiler: --globe must be wgs84 or sphere, not '%s'\n",
+                 globeName.c_str());
+    return 2;
+  }
+  options.globeModel = *model;
+
+  auto report = tiling::runTiler(options);
+  if (!report) {
+    std::fprintf(stderr, "globe-tiler: %s\n", report.error().c_str());
+    return 1;
+  }
+  for (const std::string& warning : report->warnings) {
+    std::fprintf(stderr, "globe-tiler: warning: %s\n", warning.c_str());
+  }
+  const double mb = static_cast<double>(report->sourceBytes) / 1e6;
+  std::printf(
+      "%s: %llu tiles (%llu packs built, %llu reused) in %s; %.1f MB of source at %.1f MB/s, %.0f "
+      "tiles/s\n",
+      output.c_str(), static_cast<unsigned long long>(report->tiles),
+      static_cast<unsigned long long>(report->packsBuilt),
+      static_cast<unsigned long long>(report->packsReused), formatDuration(report->seconds).c_str(),
+      mb, report->seconds > 0 ? mb / report->seconds : 0.0,
+      report->seconds > 0 ? static_cast<double>(report->tiles) / report->seconds : 0.0);
+  return 0;
+}
+
+}  // namespace globe::tiler_app
