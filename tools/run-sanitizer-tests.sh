@@ -25,11 +25,11 @@ ASAN_OPTIONS=halt_on_error=1:abort_on_error=1:detect_leaks=0:strict_string_check
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
   ctest --test-dir build-asan -j"$JOBS" -R "$WINDOW_TESTS" --output-on-failure --timeout 1800
 
-echo "== TSan: globe_loader_tests, the HTTP client and the disk cache"
+echo "== TSan: the loader and its task runners, the HTTP client and the disk cache"
 cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLOBE_WERROR=ON \
   -DGLOBE_SANITIZE_THREAD=ON >/dev/null
-cmake --build build-tsan -j"$JOBS" --target globe_loader_tests globe_http_tests \
-  globe_disk_cache_tests
+cmake --build build-tsan -j"$JOBS" --target globe_loader_tests globe_task_runner_tests \
+  globe_http_tests globe_disk_cache_tests
 TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
-  ctest --test-dir build-tsan -j"$JOBS" -R '^(globe_loader_tests|globe_http_tests|globe_disk_cache_tests)\.' \
+  ctest --test-dir build-tsan -j"$JOBS" -R '^(globe_loader_tests|globe_task_runner_tests|globe_http_tests|globe_disk_cache_tests)\.' \
   --output-on-failure --timeout 1800
