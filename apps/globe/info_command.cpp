@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <string_view>
+#include <vector>
 
 #include "formats/source_conditioning_json.hpp"
 #include "formats/vertical_units_json.hpp"
@@ -155,6 +157,38 @@ std::string formatLayerInfoText(const formats::LayerManifest& m, const std::stri
     out += line;
   }
   return out;
+}
+
+Result<std::string> runInfo(const InfoOptions& options) {
+  auto source = transport::openByteSource(options.location, options.network.get());
+  if (!source) return Error{source.error()};
+  auto asText = [](const std::vector<std::byte>& bytes) {
+    return std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  };
+  auto pyramidBytes =
+      (*source)->readWhole(formats::kManifestFileName, formats::kMaxManifestFileBytes);
+  if (!pyramidBytes) return Error{pyramidBytes.error()};
+  if (!*pyramidBytes) {
+    // An imagery layer (globe-tiler imagery) rather than a pyramid?
+    auto layerBytes =
+        (*source)->readWhole(formats::kLayerManifestFileName, formats::kMaxManifestFileBytes);
+    if (!layerBytes) return Error{layerBytes.error()};
+    if (*layerBytes) {
+      auto layer = formats::layerManifestFromJson(
+          asText(**layerBytes), (*source)->locationOf(formats::kLayerManifestFileName));
+      if (!layer) return Error{layer.error()};
+      return options.json ? formats::layerManifestToJson(*layer) + "\n"
+                          : formatLayerInfoText(*layer, options.location);
+    }
+  }
+  // The pyramid's manifest, or what is missing or wrong with it.
+  auto manifest = *pyramidBytes
+                      ? formats::manifestFromJson(asText(**pyramidBytes),
+                                                  (*source)->locationOf(formats::kManifestFileName))
+                      : formats::readManifest(**source);
+  if (!manifest) return Error{manifest.error()};
+  return options.json ? formatPyramidInfoJson(*manifest, options.location)
+                      : formatPyramidInfoText(*manifest, options.location);
 }
 
 }  // namespace globe::app

@@ -141,7 +141,9 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
 
   auto surface = openSurface(options);
   if (!surface) return Error{surface.error()};
-  auto renderer = render::TerrainRenderer::create({});
+  render::TerrainRendererOptions rendererOptions;
+  rendererOptions.warn = options.scene.warnings;  // no sky, layers this GL cannot compile
+  auto renderer = render::TerrainRenderer::create(rendererOptions);
   if (!renderer) return Error{renderer.error()};
   RendererGpu gpu(**renderer, options.scene);
   const int width = surface->widthPixels, height = surface->heightPixels;

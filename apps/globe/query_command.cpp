@@ -41,7 +41,7 @@ Result<std::pair<double, double>> parseLine(const std::string& line) {
 
 Result<QueryReport> runQuery(const QueryOptions& options, std::istream& in, std::FILE* out,
                              std::FILE* errors) {
-  auto store = streaming::TileStore::open(options.pyramid, options.sea);
+  auto store = streaming::TileStore::open(options.pyramid, options.sea, options.network);
   if (!store) return Error{store.error()};
   const uint32_t maxLevel = (*store)->manifest().maxLevel();
   if (options.level && *options.level > maxLevel) {

@@ -5,12 +5,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <istream>
+#include <memory>
 #include <optional>
 
 #include "collision/height_service.hpp"
 #include "core/result.hpp"
 #include "geo/ellipsoid.hpp"
 #include "terrain/height_block.hpp"
+#include "transport/network_settings.hpp"
 
 namespace globe::app {
 
@@ -20,6 +22,7 @@ struct QueryOptions {
   std::optional<uint32_t> level;
   geo::GlobeModel globeModel = geo::GlobeModel::Wgs84;
   terrain::SeaSurface sea = terrain::SeaSurface::Water;  // --sea-floor: SeaFloor
+  std::shared_ptr<transport::Network> network;           // for an http(s) URL
 };
 
 struct QueryReport {

@@ -26,7 +26,9 @@ Result<SnapshotReport> runSnapshot(const SnapshotOptions& options) {
   }
   auto context = render::OsMesaContext::create(options.widthPixels, options.heightPixels);
   if (!context) return Error{context.error()};
-  auto renderer = render::TerrainRenderer::create({});
+  render::TerrainRendererOptions rendererOptions;
+  rendererOptions.warn = options.scene.warnings;  // no sky, layers this GL cannot compile
+  auto renderer = render::TerrainRenderer::create(rendererOptions);
   if (!renderer) return Error{renderer.error()};
   RendererGpu gpu(**renderer, options.scene);
   if (options.imagery) {

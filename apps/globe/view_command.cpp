@@ -144,7 +144,9 @@ Result<ViewReport> runView(const ViewOptions& options) {
                      window.error());
   }
   // Declared after the window: destroyed before its context goes.
-  auto renderer = render::TerrainRenderer::create({});
+  render::TerrainRendererOptions rendererOptions;
+  rendererOptions.warn = options.scene.warnings;  // no sky, layers this GL cannot compile
+  auto renderer = render::TerrainRenderer::create(rendererOptions);
   if (!renderer) return Error{renderer.error()};
   RendererGpu gpu(**renderer, options.scene);
   auto hud = render::HudRenderer::create({});

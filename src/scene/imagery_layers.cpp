@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+#include <cstdlib>
 #include <optional>
 #include <thread>
 #include <tuple>
@@ -13,7 +13,6 @@
 #include "geo/tiling_scheme.hpp"
 #include "streaming/background_pack_opens.hpp"
 #include "terrain/imagery_level.hpp"
-#include "transport/network_settings.hpp"
 
 namespace globe::scene {
 
@@ -96,26 +95,27 @@ Result<LayerOptions> parseLayerArgument(const std::string& text) {
 }
 
 ImageryLayers::ImageryLayers(std::vector<std::unique_ptr<Layer>> layers,
-                             const ImageryBudget& budget)
-    : layers_(std::move(layers)), budget_(budget) {}
+                             const ImageryBudget& budget, core::WarningSink warnings)
+    : layers_(std::move(layers)), budget_(budget), warnings_(std::move(warnings)) {}
 
 ImageryLayers::~ImageryLayers() = default;
 
-Result<std::unique_ptr<ImageryLayers>> ImageryLayers::open(std::span<const LayerOptions> layers,
-                                                           core::TaskRunner& runner,
-                                                           const ImageryBudget& budget) {
+Result<std::unique_ptr<ImageryLayers>> ImageryLayers::open(
+    std::span<const LayerOptions> layers, core::TaskRunner& runner, const ImageryBudget& budget,
+    std::shared_ptr<transport::Network> network, core::WarningSink warnings) {
   if (layers.size() > terrain::kMaxDrapeLayers) {
     return makeError("at most " + std::to_string(terrain::kMaxDrapeLayers) + " layers, not " +
                      std::to_string(layers.size()));
   }
   std::vector<std::unique_ptr<Layer>> opened;
   for (const LayerOptions& options : layers) {
-    auto store = streaming::ImageryStore::open(options.directory);
+    auto store = streaming::ImageryStore::open(options.directory, network);
     if (!store) return Error{store.error()};
     opened.push_back(
         std::make_unique<Layer>(options, std::move(*store), runner, budget.decodedBytes));
   }
-  return std::unique_ptr<ImageryLayers>(new ImageryLayers(std::move(opened), budget));
+  return std::unique_ptr<ImageryLayers>(
+      new ImageryLayers(std::move(opened), budget, std::move(warnings)));
 }
 
 Result<void> ImageryLayers::preload(Layer& layer, uint32_t index, TileGpu& gpu) {
@@ -168,11 +168,10 @@ Result<ImageryFrame> ImageryLayers::update(std::span<const geo::TileId> tiles,
     const streaming::PollResult polled = layer.loader->poll();
     frame.arrived += polled.arrived.size();
     for (const streaming::LoadError& error : polled.errors) {
-      std::fprintf(stderr, "globe: imagery %s; drawing a coarser tile there\n",
-                   error.message.c_str());
+      core::warn(warnings_, "imagery " + error.message + "; drawing a coarser tile there");
     }
     for (const std::string& error : layer.source->takeNewSourceErrors()) {
-      std::fprintf(stderr, "globe: imagery %s; drawing coarser tiles there\n", error.c_str());
+      core::warn(warnings_, "imagery " + error + "; drawing coarser tiles there");
     }
     const uint32_t tileSize = layer.store->manifest().tileSizePixels;
     const uint32_t maxLevel = layer.store->manifest().maxLevel();

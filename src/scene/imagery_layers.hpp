@@ -16,12 +16,14 @@
 
 #include "core/result.hpp"
 #include "core/task_runner.hpp"
+#include "core/warnings.hpp"
 #include "geo/ellipsoid.hpp"
 #include "geo/tile_id.hpp"
 #include "scene/tile_gpu.hpp"
 #include "streaming/imagery_source.hpp"
 #include "terrain/tile_drape.hpp"
 #include "terrain/tile_selection.hpp"
+#include "transport/network_settings.hpp"
 
 namespace globe::scene {
 
@@ -49,10 +51,12 @@ struct ImageryFrame {
 
 class ImageryLayers {
  public:
-  // Opens every layer (errors name the directory); bottom layer first.
-  static Result<std::unique_ptr<ImageryLayers>> open(std::span<const LayerOptions> layers,
-                                                     core::TaskRunner& runner,
-                                                     const ImageryBudget& budget);
+  // Opens every layer (errors name the directory); bottom layer first. Layers given as http(s)
+  // URLs are read through `network` (null: local directories only). `warnings` gets the tiles
+  // and packs that failed (drawn coarser), from update().
+  static Result<std::unique_ptr<ImageryLayers>> open(
+      std::span<const LayerOptions> layers, core::TaskRunner& runner, const ImageryBudget& budget,
+      std::shared_ptr<transport::Network> network = nullptr, core::WarningSink warnings = {});
   ~ImageryLayers();
   ImageryLayers(const ImageryLayers&) = delete;
   ImageryLayers& operator=(const ImageryLayers&) = delete;
@@ -86,12 +90,14 @@ class ImageryLayers {
 
  private:
   struct Layer;
-  ImageryLayers(std::vector<std::unique_ptr<Layer>> layers, const ImageryBudget& budget);
+  ImageryLayers(std::vector<std::unique_ptr<Layer>> layers, const ImageryBudget& budget,
+                core::WarningSink warnings);
   Result<void> preload(Layer& layer, uint32_t index, TileGpu& gpu);
   void evictTextures(TileGpu& gpu);
 
   std::vector<std::unique_ptr<Layer>> layers_;
   ImageryBudget budget_;
+  core::WarningSink warnings_;
   uint64_t frame_ = 0;
   bool preloaded_ = false;
 };

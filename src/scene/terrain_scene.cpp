@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <thread>
 
 #include "geo/ecef.hpp"
@@ -10,7 +9,6 @@
 #include "geo/tiling_scheme.hpp"
 #include "terrain/block_grid.hpp"
 #include "terrain/tile_mesh.hpp"
-#include "transport/network_settings.hpp"
 
 namespace globe::scene {
 namespace {
@@ -95,7 +93,7 @@ TerrainScene::~TerrainScene() {
 
 Result<std::unique_ptr<TerrainScene>> TerrainScene::open(const std::filesystem::path& pyramidDir,
                                                          const SceneOptions& options) {
-  auto store = streaming::TileStore::open(pyramidDir, options.sea);
+  auto store = streaming::TileStore::open(pyramidDir, options.sea, options.network);
   if (!store) return Error{store.error()};
   SceneOptions sceneOptions = options;
   const bool remote =
@@ -108,7 +106,8 @@ Result<std::unique_ptr<TerrainScene>> TerrainScene::open(const std::filesystem::
   }
   std::unique_ptr<TerrainScene> scene(new TerrainScene(std::move(*store), sceneOptions));
   if (!options.layers.empty()) {
-    auto layers = ImageryLayers::open(options.layers, scene->runner_, options.imageryBudget);
+    auto layers = ImageryLayers::open(options.layers, scene->runner_, options.imageryBudget,
+                                      options.network, options.warnings);
     if (!layers) return Error{layers.error()};
     scene->imagery_ = std::move(*layers);
     scene->nominalErrorRegions_ = scene->imagery_->nominalErrorRegions(
@@ -260,7 +259,7 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   }
   // Each missing or damaged pack once (the store remembers it), not once per tile or frame.
   for (const std::string& error : store_->takeNewPackErrors()) {
-    std::fprintf(stderr, "globe: %s; drawing coarser tiles there\n", error.c_str());
+    core::warn(options_.warnings, error + "; drawing coarser tiles there");
   }
   info.selection = selection.counters;
   info.tilesSelected = tiles_.size();
@@ -302,7 +301,7 @@ void TerrainScene::updateImagery(const glm::dvec3& cameraEcefMeters, TileGpu& gp
     return;
   }
   // A texture that cannot be uploaded: the terrain's own colours rather than no picture.
-  std::fprintf(stderr, "globe: imagery: %s\n", frame.error().c_str());
+  core::warn(options_.warnings, "imagery: " + frame.error());
   drapes_.assign(tiles_.size(), terrain::TileDrapes{});
 }
 

@@ -14,6 +14,7 @@
 #include "camera/camera_pose.hpp"
 #include "core/result.hpp"
 #include "core/thread_pool_runner.hpp"
+#include "core/warnings.hpp"
 #include "geo/ellipsoid.hpp"
 #include "scene/imagery_layers.hpp"
 #include "scene/tile_gpu.hpp"
@@ -25,6 +26,7 @@
 #include "terrain/render_view.hpp"
 #include "terrain/rendering_tile_array.hpp"
 #include "terrain/tile_selection.hpp"
+#include "transport/network_settings.hpp"
 
 namespace globe::scene {
 
@@ -51,6 +53,13 @@ struct SceneOptions {
   // Failed loads (a server down, a 503) are tried again this long after the last try; 0: never
   // (snapshots and playback, whose result must not depend on when a server came back).
   double retryFailedLoadsSeconds = 0;
+  // What pyramids and layers given as http(s) URLs are read through: the program's, made from its
+  // flags (transport/network_settings.hpp). Null: local directories only (a URL is an error).
+  std::shared_ptr<transport::Network> network;
+  // Where the scene's warnings go, each once (a missing or damaged pack, an imagery tile that
+  // failed: drawn coarser), without the program's name in front; none: they are dropped. Called
+  // on the thread that calls update().
+  core::WarningSink warnings;
 };
 
 struct FrameInfo {

@@ -13,8 +13,9 @@ ImageryStore::ImageryStore(std::shared_ptr<transport::ByteSource> source,
                            formats::LayerManifest manifest)
     : source_(std::move(source)), manifest_(std::move(manifest)) {}
 
-Result<std::unique_ptr<ImageryStore>> ImageryStore::open(const std::string& layer) {
-  auto source = transport::openByteSource(layer);
+Result<std::unique_ptr<ImageryStore>> ImageryStore::open(
+    const std::string& layer, std::shared_ptr<transport::Network> network) {
+  auto source = transport::openByteSource(layer, network.get());
   if (!source) return Error{source.error()};
   auto manifest = formats::readLayerManifest(**source);
   if (!manifest) return Error{manifest.error()};

@@ -19,13 +19,17 @@
 #include "geo/tile_id.hpp"
 #include "streaming/open_packs.hpp"
 #include "transport/byte_source.hpp"
+#include "transport/network_settings.hpp"
 
 namespace globe::streaming {
 
 class ImageryStore {
  public:
-  // `layer`: a directory, or the http(s) URL of one on a static server (transport/byte_source.hpp).
-  static Result<std::unique_ptr<ImageryStore>> open(const std::string& layer);
+  // `layer`: a directory, or the http(s) URL of one on a static server read through `network`
+  // (the program's: transport/network_settings.hpp). Without a network (the default, for callers
+  // that open local directories only) a URL is an error naming it.
+  static Result<std::unique_ptr<ImageryStore>> open(
+      const std::string& layer, std::shared_ptr<transport::Network> network = nullptr);
   ~ImageryStore() = default;
   ImageryStore(const ImageryStore&) = delete;
   ImageryStore& operator=(const ImageryStore&) = delete;

@@ -30,8 +30,9 @@ TileStore::TileStore(std::shared_ptr<transport::ByteSource> source,
     : source_(std::move(source)), manifest_(std::move(manifest)), sea_(sea) {}
 
 Result<std::unique_ptr<TileStore>> TileStore::open(const std::string& pyramid,
-                                                   terrain::SeaSurface sea) {
-  auto source = transport::openByteSource(pyramid);
+                                                   terrain::SeaSurface sea,
+                                                   std::shared_ptr<transport::Network> network) {
+  auto source = transport::openByteSource(pyramid, network.get());
   if (!source) return Error{source.error()};
   return open(std::move(*source), sea);
 }

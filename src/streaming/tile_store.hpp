@@ -19,6 +19,7 @@
 #include "streaming/tile_source.hpp"
 #include "terrain/height_block.hpp"
 #include "transport/byte_source.hpp"
+#include "transport/network_settings.hpp"
 
 namespace globe::streaming {
 
@@ -29,10 +30,12 @@ class TileStore final : public TileSource<terrain::HeightBlock> {
   // (HeightBlock::sea): the one place a viewer's --sea-floor reaches rendering, collision and
   // heights alike. Refuses a pyramid whose packs have another format version (checked on the
   // first level-0 pack; every pack is checked again when opened).
-  // `pyramid`: a directory, or the http(s) URL of one on a static server
-  // (transport/byte_source.hpp).
+  // `pyramid`: a directory, or the http(s) URL of one on a static server read through `network`
+  // (the program's: transport/network_settings.hpp). Without a network (the default, for callers
+  // that open local directories only) a URL is an error naming it.
   static Result<std::unique_ptr<TileStore>> open(
-      const std::string& pyramid, terrain::SeaSurface sea = terrain::SeaSurface::Water);
+      const std::string& pyramid, terrain::SeaSurface sea = terrain::SeaSurface::Water,
+      std::shared_ptr<transport::Network> network = nullptr);
   static Result<std::unique_ptr<TileStore>> open(
       std::shared_ptr<transport::ByteSource> source,
       terrain::SeaSurface sea = terrain::SeaSurface::Water);

@@ -1,5 +1,6 @@
 // Where a pyramid's or an imagery layer's files come from: a local directory, or the same
-// directory on any static web server read with HTTP range requests (io/http_byte_source.hpp).
+// directory on any static web server read with HTTP range requests (a transport::Network,
+// transport/network_settings.hpp).
 // The stores read manifests whole and packs by range through this, so they never know which.
 #pragma once
 
@@ -50,8 +51,11 @@ class ByteSource {
 // A local directory.
 std::shared_ptr<ByteSource> localByteSource(const std::filesystem::path& dir);
 
-// A local directory, or an http:// / https:// URL of the same directory on a static server (read
-// through the process's network settings: transport/network_settings.hpp).
-Result<std::shared_ptr<ByteSource>> openByteSource(const std::string& location);
+class Network;  // transport/network_settings.hpp
+
+// A local directory, or an http:// / https:// URL of the same directory on a static server read
+// through `network` (Network::open). Without a network (nullptr) only local directories open: a
+// URL is an error naming it.
+Result<std::shared_ptr<ByteSource>> openByteSource(const std::string& location, Network* network);
 
 }  // namespace globe::transport

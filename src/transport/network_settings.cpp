@@ -1,69 +1,55 @@
 #include "transport/network_settings.hpp"
 
-#include <cstdio>
-#include <mutex>
+#include <optional>
+#include <utility>
 
 #include "transport/disk_cache.hpp"
 
 namespace globe::transport {
-namespace {
 
-struct Network {
-  std::mutex mutex;
-  NetworkSettings settings;
-  std::shared_ptr<HttpClient> client;  // made on first use
-  std::shared_ptr<DiskCache> cache;
-  bool cacheTried = false;
-};
+Network::Network(NetworkSettings settings, core::WarningSink warnings)
+    : settings_(std::move(settings)), warnings_(std::move(warnings)) {}
 
-Network& network() {
-  static Network n;
-  return n;
-}
+Network::~Network() = default;
 
-}  // namespace
-
-void setNetworkSettings(const NetworkSettings& settings) {
-  Network& n = network();
-  std::lock_guard lock(n.mutex);
-  n.settings = settings;
-  n.client.reset();
-  n.cache.reset();
-  n.cacheTried = false;
-}
-
-NetworkSettings networkSettings() {
-  Network& n = network();
-  std::lock_guard lock(n.mutex);
-  return n.settings;
-}
-
-Result<std::shared_ptr<ByteSource>> openByteSource(const std::string& location) {
+Result<std::shared_ptr<ByteSource>> Network::open(const std::string& location) {
   if (!isHttpUrl(location)) return localByteSource(location);
-  Network& n = network();
-  std::lock_guard lock(n.mutex);
-  if (n.settings.useCache && !n.cacheTried) {
-    n.cacheTried = true;
-    const std::filesystem::path dir = n.settings.cacheDirectory.empty()
-                                          ? DiskCache::defaultDirectory()
-                                          : n.settings.cacheDirectory;
-    auto cache = DiskCache::open(dir, n.settings.cacheBudgetBytes);
-    if (cache) {
-      n.cache = std::move(*cache);
-    } else if (n.settings.remote.offline) {
-      return Error{cache.error()};
-    } else {
-      std::fprintf(stderr, "globe: no disk cache: %s\n", cache.error().c_str());
+  std::optional<std::string> warning;  // given to the sink once the lock is released
+  Result<std::shared_ptr<ByteSource>> opened = [&]() -> Result<std::shared_ptr<ByteSource>> {
+    std::lock_guard lock(mutex_);
+    if (settings_.useCache && !cacheTried_) {
+      cacheTried_ = true;
+      const std::filesystem::path dir = settings_.cacheDirectory.empty()
+                                            ? DiskCache::defaultDirectory()
+                                            : settings_.cacheDirectory;
+      auto cache = DiskCache::open(dir, settings_.cacheBudgetBytes);
+      if (cache) {
+        cache_ = std::move(*cache);
+      } else if (settings_.remote.offline) {
+        return Error{cache.error()};
+      } else {
+        warning = "no disk cache: " + cache.error();
+      }
     }
+    if (settings_.remote.offline && !cache_) {
+      return makeError(location + ": --offline needs the disk cache, and there is none");
+    }
+    if (!settings_.remote.offline && !client_) {
+      client_ = std::make_shared<HttpClient>(settings_.http);
+    }
+    return httpByteSource(location, settings_.remote.offline ? nullptr : client_, cache_,
+                          settings_.remote);
+  }();
+  if (warning) core::warn(warnings_, *warning);
+  return opened;
+}
+
+Result<std::shared_ptr<ByteSource>> openByteSource(const std::string& location, Network* network) {
+  if (network != nullptr) return network->open(location);
+  if (isHttpUrl(location)) {
+    return makeError(location + ": an http(s) URL, and no network to read it through");
   }
-  if (n.settings.remote.offline && !n.cache) {
-    return makeError(location + ": --offline needs the disk cache, and there is none");
-  }
-  if (!n.settings.remote.offline && !n.client) {
-    n.client = std::make_shared<HttpClient>(n.settings.http);
-  }
-  return httpByteSource(location, n.settings.remote.offline ? nullptr : n.client, n.cache,
-                        n.settings.remote);
+  return localByteSource(location);
 }
 
 }  // namespace globe::transport

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <memory>
 
 #include "scene/terrain_scene.hpp"
 #include "tests/support/bookkeeping_gpu.hpp"
@@ -22,12 +23,13 @@ camera::CameraPose fujiOblique() {
   return camera::CameraPose::fromDegrees(138.60, 35.20, 6000, 30, -15, 0);
 }
 
-void useCacheIn(const fs::path& dir) {
+// A network with its disk cache in `dir`, for the scene's options.
+std::shared_ptr<transport::Network> networkCachingIn(const fs::path& dir) {
   transport::NetworkSettings settings;
   settings.cacheDirectory = dir;
   settings.http.stallTimeoutMs = 2000;
   settings.remote.attempts = 1;
-  transport::setNetworkSettings(settings);
+  return std::make_shared<transport::Network>(settings);
 }
 
 TEST(RemoteScene, TheSameTilesAsLocal) {
@@ -36,9 +38,9 @@ TEST(RemoteScene, TheSameTilesAsLocal) {
   fs::create_symlink(globe::testing::bundledPyramid(), site / "www" / "pyramid");
   auto server = globe::testing::NginxServer::start({site / "www", ""});
   ASSERT_TRUE(server);
-  useCacheIn(site / "cache");
   SceneOptions options;
   options.hysteresis = false;
+  options.network = networkCachingIn(site / "cache");
   auto local = TerrainScene::open(globe::testing::bundledPyramid(), options);
   auto remote = TerrainScene::open(server->url("/pyramid"), options);
   ASSERT_TRUE(local && remote);
@@ -65,8 +67,9 @@ TEST(RemoteScene, AFrameNeverWaitsOnAStalledServer) {
   }
   auto server = globe::testing::NginxServer::start({site / "www", stalls});
   ASSERT_TRUE(server);
-  useCacheIn(site / "cache");
-  auto scene = TerrainScene::open(server->url("/pyramid"), SceneOptions{});
+  SceneOptions options;
+  options.network = networkCachingIn(site / "cache");
+  auto scene = TerrainScene::open(server->url("/pyramid"), options);
   ASSERT_TRUE(scene) << scene.error();
   globe::testing::BookkeepingGpu gpu;
   double slowest = 0;

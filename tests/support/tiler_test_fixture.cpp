@@ -57,7 +57,6 @@ std::filesystem::path tilePyramid(const std::string& name, const std::vector<std
   tiling::TilerOptions options;
   options.inputs = inputs;
   options.outputDir = out;
-  options.progress = false;
   auto report = tiling::runTiler(options);
   if (!report) ADD_FAILURE() << report.error();
   return out;

@@ -10,8 +10,12 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <memory>
+#include <string>
+#include <vector>
 
 #include "formats/pack_format.hpp"
+#include "streaming/imagery_store.hpp"
 #include "streaming/tile_store.hpp"
 #include "tests/streaming/loader_test_pyramid.hpp"
 #include "tests/support/nginx_server.hpp"
@@ -443,6 +447,61 @@ TEST(HttpClient, TlsIsVerifiedAndHttp2IsUsedWhereOffered) {
   const auto log = server->accessLog();
   ASSERT_FALSE(log.empty());
   EXPECT_EQ(countMatching(log, "GET", " HTTP/2.0"), log.size()) << log.front();
+}
+
+// The program's Network: the stores open URLs through it (one client and one cache for all), a
+// cache that cannot be opened is a warning to its sink (once) and the URLs are read without one,
+// --offline without a cache is an error naming the URL; local directories never touch it.
+TEST(Network, OpensUrlsThroughOneClientAndWarnsOnceWithoutACache) {
+  Served served;
+  ASSERT_TRUE(served.server);
+  TempDir scratch;
+  std::ofstream(scratch / "a-file") << "not a directory";
+  NetworkSettings settings;
+  settings.cacheDirectory = scratch / "a-file";
+  settings.http = quickSettings();
+  settings.remote = quickRetries();
+  std::vector<std::string> warnings;
+  auto network = std::make_shared<Network>(
+      settings, [&](const std::string& warning) { warnings.push_back(warning); });
+
+  auto local = streaming::TileStore::open(testing::loaderTestPyramid().string(),
+                                          terrain::SeaSurface::Water, network);
+  ASSERT_TRUE(local) << local.error();
+  EXPECT_TRUE(warnings.empty()) << "a local directory needs no cache";
+
+  auto first = streaming::TileStore::open(served.url(), terrain::SeaSurface::Water, network);
+  auto second = streaming::TileStore::open(served.url(), terrain::SeaSurface::Water, network);
+  ASSERT_TRUE(first && second) << (first ? second.error() : first.error());
+  EXPECT_TRUE((*first)->remote());
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0], "no disk cache: " + (scratch / "a-file").string() + ": not a directory");
+  const geo::TileId root{0, 0, 0};
+  auto block = (*second)->load(root);
+  ASSERT_TRUE(block && *block) << (block ? "absent" : block.error());
+
+  settings.remote.offline = true;
+  Network offline(settings);
+  auto refused = offline.open(served.url());
+  ASSERT_FALSE(refused);
+  EXPECT_NE(refused.error().find("not a directory"), std::string::npos) << refused.error();
+  auto again = offline.open(served.url());
+  ASSERT_FALSE(again);
+  EXPECT_EQ(again.error(), served.url() + ": --offline needs the disk cache, and there is none");
+}
+
+// Without a network (the stores' default) only local directories open: a URL is an error naming
+// it, and nothing is requested.
+TEST(Network, WithoutOneAUrlIsAnErrorNamingIt) {
+  Served served;
+  ASSERT_TRUE(served.server);
+  auto store = streaming::TileStore::open(served.url());
+  ASSERT_FALSE(store);
+  EXPECT_EQ(store.error().rfind(served.url() + ": ", 0), 0u) << store.error();
+  auto layer = streaming::ImageryStore::open(served.url());
+  ASSERT_FALSE(layer);
+  EXPECT_EQ(layer.error().rfind(served.url() + ": ", 0), 0u) << layer.error();
+  EXPECT_TRUE(served.server->accessLog().empty());
 }
 
 TEST(HttpClient, ContentRangeParsing) {

@@ -16,6 +16,7 @@
 
 #include "apps/globe/camera_argument.hpp"
 #include "apps/globe/renderer_gpu.hpp"
+#include "apps/globe/stderr_warnings.hpp"
 #include "render/osmesa_context.hpp"
 #include "render/read_pixels.hpp"
 #include "scene/terrain_scene.hpp"
@@ -47,10 +48,13 @@ double median(std::vector<double> values) {
 Result<Side> openSide(const std::string& pyramid, const std::vector<scene::LayerOptions>& layers,
                       const camera::CameraPose& pose, int width, int height) {
   Side side;
-  auto renderer = render::TerrainRenderer::create({});
+  scene::SceneOptions options;
+  options.warnings = app::stderrWarnings();
+  render::TerrainRendererOptions rendererOptions;
+  rendererOptions.warn = options.warnings;
+  auto renderer = render::TerrainRenderer::create(rendererOptions);
   if (!renderer) return Error{renderer.error()};
   side.renderer = std::move(*renderer);
-  scene::SceneOptions options;
   options.hysteresis = false;
   options.layers = layers;
   auto scene = scene::TerrainScene::open(pyramid, options);

@@ -8,13 +8,12 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
-#include "render/embedded_shaders.hpp"
 #include "render_scenarios.hpp"
+#include "shader_variants.hpp"
 #include "tiling/tiler.hpp"
 
 namespace {
@@ -25,31 +24,6 @@ std::string shellQuote(const std::string& text) {
   std::string quoted = "'";
   for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return quoted + "'";
-}
-
-// The default (embedded) shaders with the per-fragment depth write removed (an experiment: the
-// image is wrong, the cost of gl_FragDepth is the difference in frame time).
-Result<std::filesystem::path> shadersWithoutFragDepth(const std::filesystem::path& scratch) {
-  const auto to = scratch / "shaders-no-frag-depth";
-  std::filesystem::create_directories(to);
-  bool removed = false;
-  for (const std::string_view name : render::embeddedShaderNames()) {
-    std::istringstream in{std::string(*render::embeddedShader(name))};
-    std::ofstream out(to / name);
-    std::string line;
-    while (std::getline(in, line)) {
-      if (name == "terrain.frag" && line.find("gl_FragDepth") != std::string::npos) {
-        // Keeps u_logDepthScale in use (the renderer requires it) without writing the depth.
-        out << "  o_color.a = min(1.0, 1.0 + u_logDepthScale * v_logDepth);\n";
-        removed = true;
-        continue;
-      }
-      out << line << '\n';
-    }
-    if (!out) return makeError("cannot write " + (to / name).string());
-  }
-  if (!removed) return makeError("no gl_FragDepth line in the embedded terrain.frag");
-  return to;
 }
 
 // The 1-minute load average: frame times are wall clock, on cores other work may share.
@@ -156,7 +130,7 @@ int main(int argc, char** argv) {
   };
   std::vector<Variant> variants{{"", ""}};
   if (noFragDepth) {
-    auto directory = shadersWithoutFragDepth(scratch);
+    auto directory = bench::shadersWithoutFragDepth(scratch);
     if (!directory) {
       std::fprintf(stderr, "globe-bench-render: %s\n", directory.error().c_str());
       return 1;

@@ -5,10 +5,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <ctime>
+#include <memory>
 #include <sstream>
+#include <string>
 
 #include "apps/globe/renderer_gpu.hpp"
+#include "apps/globe/stderr_warnings.hpp"
 #include "apps/globe/view_command.hpp"
 #include "render/osmesa_context.hpp"
 #include "render/read_pixels.hpp"
@@ -161,6 +165,9 @@ Result<std::vector<ScenarioRow>> runScenarios(const ScenarioOptions& options,
                                               std::string& rendererName) {
   scene::SceneOptions sceneOptions;
   sceneOptions.maximumScreenSpaceErrorPixels = options.maximumScreenSpaceErrorPixels;
+  sceneOptions.warnings = app::stderrWarnings();
+  sceneOptions.network =
+      std::make_shared<transport::Network>(transport::NetworkSettings{}, sceneOptions.warnings);
   auto scene = scene::TerrainScene::open(options.pyramid, sceneOptions);
   if (!scene) return Error{scene.error()};
   auto context = render::OsMesaContext::create(options.widthPixels, options.heightPixels);

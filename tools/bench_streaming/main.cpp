@@ -12,25 +12,18 @@
 #include <thread>
 #include <vector>
 
+#include "bundled_pyramid.hpp"
 #include "core/thread_pool_runner.hpp"
 #include "flight_path.hpp"
+#include "report_rows.hpp"
 #include "streaming/block_cache.hpp"
 #include "streaming/tile_loader.hpp"
 #include "streaming/tile_store.hpp"
-#include "tiling/tiler.hpp"
 #include "wanted_tiles.hpp"
 
 namespace {
 
 using namespace globe;
-
-// Nearest-rank percentile in milliseconds; 0 for no samples.
-double percentileMs(std::vector<double> seconds, double p) {
-  if (seconds.empty()) return 0;
-  std::sort(seconds.begin(), seconds.end());
-  const auto rank = static_cast<size_t>(std::ceil(p / 100 * static_cast<double>(seconds.size())));
-  return 1e3 * seconds[std::clamp<size_t>(rank, 1, seconds.size()) - 1];
-}
 
 struct LegTotals {
   size_t steps = 0;
@@ -63,19 +56,16 @@ int main(int argc, char** argv) {
   if (pyramid.empty()) {
     scratch = std::filesystem::temp_directory_path() /
               ("globe-bench-streaming-" + std::to_string(::getpid()));
-    std::filesystem::remove_all(scratch);
-    const std::string dem = std::string(GLOBE_SOURCE_DIR) + "/data/dem/";
-    tiling::TilerOptions options;
-    options.inputs = {dem + "ETOPO20.DEM", dem + "W002N52.DEM", dem + "E138N35_FUJI.DEM"};
-    options.outputDir = scratch / "pyramid";
-    auto report = tiling::runTiler(options);
-    if (!report) {
-      std::fprintf(stderr, "globe-bench-streaming: %s\n", report.error().c_str());
+    auto tiled = bench::tileBundledPyramid(scratch);
+    if (!tiled) {
+      std::fprintf(stderr, "globe-bench-streaming: %s\n", tiled.error().c_str());
       return 1;
     }
-    pyramid = options.outputDir.string();
+    pyramid = tiled->string();
   }
-  auto opened = streaming::TileStore::open(pyramid);
+  // A pyramid's URL is read as `globe` reads one by default (a missing disk cache said).
+  auto opened =
+      streaming::TileStore::open(pyramid, terrain::SeaSurface::Water, bench::defaultNetwork());
   if (!opened) {
     std::fprintf(stderr, "globe-bench-streaming: %s\n", opened.error().c_str());
     return 1;
@@ -160,30 +150,19 @@ int main(int argc, char** argv) {
     }
   }
 
-  auto row = [](const char* name, const std::string& value) {
-    std::printf("| %-44s | %22s |\n", name, value.c_str());
-  };
-  auto num = [](uint64_t v) { return std::to_string(v); };
-  auto ms = [](double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3f ms", v);
-    return std::string(text);
-  };
-  auto kib = [](size_t bytes) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1f KiB", static_cast<double>(bytes) / 1024);
-    return std::string(text);
-  };
+  using bench::percentileMs;
+  auto row = bench::printRow;
+  auto num = bench::countText;
+  auto ms = bench::millisecondsText;
+  auto kib = bench::kibibytesText;
 
   std::printf("globe-bench-streaming: %s\n", pyramid.c_str());
   std::printf("%zu frames of %.2f ms, %zu threads, at most %zu loads in flight, budget %s\n\n",
               path.size(), frameMilliseconds, pool.threadCount(), loader.maxInFlight(),
               kib(budgetBytes).c_str());
-  std::printf("| %-44s | %22s |\n|%s|%s|\n", "metric", "value", std::string(46, '-').c_str(),
-              std::string(24, '-').c_str());
   for (const std::string& name : legOrder) {
     const LegTotals& leg = legs[name];
-    row(("steps: " + name).c_str(), num(leg.steps) + " (" + num(leg.arrivals) + " arrived)");
+    row("steps: " + name, num(leg.steps) + " (" + num(leg.arrivals) + " arrived)");
   }
   row("steps", num(path.size()));
   row("requests (wanted tiles, summed over frames)", num(requests));

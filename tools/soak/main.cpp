@@ -4,12 +4,15 @@
 // between loops, the process's memory and the loader and cache counters.
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <memory>
 #include <string>
 
 #include "apps/globe/camera_argument.hpp"
+#include "apps/globe/stderr_warnings.hpp"
 #include "geo/ellipsoid.hpp"
 #include "terrain/height_block.hpp"
 #include "tools/soak/playback_soak.hpp"
+#include "transport/network_settings.hpp"
 
 namespace {
 
@@ -95,6 +98,11 @@ int main(int argc, char** argv) {
   options.scene.sea =
       seaFloor ? globe::terrain::SeaSurface::SeaFloor : globe::terrain::SeaSurface::Water;
   options.scene.cacheBudgetBytes = static_cast<size_t>(*cache * 1024 * 1024);
+  // The scene's warnings (a damaged pack, drawn coarser) as `globe play` prints them; a pyramid's
+  // URL is read as `globe play` reads one by default.
+  options.scene.warnings = globe::app::stderrWarnings();
+  options.scene.network = std::make_shared<globe::transport::Network>(
+      globe::transport::NetworkSettings{}, options.scene.warnings);
   options.checkpoints = {10'000, 100'000, 1'000'000};
   const auto report = globe::soak::runSoak(options, print);
   if (!report) {

@@ -1,0 +1,105 @@
+#include "apps/globe/common_options.hpp"
+#include "apps/globe/stderr_warnings.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace globe::app {
+
+void addPyramidArgument(CLI::App& command, std::string& pyramid) {
+  command
+      .add_option("PYRAMID", pyramid, "pyramid made by globe-tiler: a directory or its http(s) URL")
+      ->required();
+}
+
+void addImageryOption(CLI::App& command, std::string& image) {
+  command.add_option("--imagery", image, "equirectangular world image to drape (JPEG/PNG)");
+}
+
+void addGlobeOption(CLI::App& command, CommonArguments& arguments) {
+  command
+      .add_option("--globe", arguments.globeName,
+                  "globe model: wgs84 (default) | sphere (the paper's, r = 6,371,000 m)")
+      ->capture_default_str();
+}
+
+void addNetworkOptions(CLI::App& command, CommonArguments& arguments) {
+  command.add_option("--cache-dir", arguments.cacheDirectory,
+                     "disk cache of pyramids and layers read over http(s) (default: "
+                     "$XDG_CACHE_HOME/globe, else ~/.cache/globe)");
+  command.add_option("--cache-size-mb", arguments.cacheMegabytes, "the disk cache's bound (LRU)")
+      ->capture_default_str()
+      ->check(CLI::Range(uint64_t{16}, uint64_t{1} << 24));
+  command.add_flag("--offline", arguments.offline,
+                   "read http(s) pyramids and layers from the disk cache alone");
+  command
+      .add_option("--http-timeout", arguments.httpTimeoutSeconds,
+                  "seconds a request may take, and may go without data (a stalled server); "
+                  "each is tried 3 times")
+      ->capture_default_str()
+      ->check(CLI::Range(1.0, 3600.0));
+}
+
+void addSeaFloorOption(CLI::App& command, CommonArguments& arguments) {
+  command.add_flag("--sea-floor", arguments.seaFloor,
+                   "draw the sea floor (bathymetry) where the pyramid has it, and let the "
+                   "camera go under water; default: the water surface at 0 m is the ground");
+}
+
+void addLayerOptions(CLI::App& command, CommonArguments& arguments) {
+  command.add_option("--layer", arguments.layerTexts,
+                     "imagery layer directory made by `globe-tiler imagery`, optionally "
+                     "DIR,OPACITY (0..1); repeat for more, bottom layer first");
+  command.add_flag("--lighting", arguments.lighting,
+                   "hill-shade the imagery too (off by default: imagery has its own shadows)");
+  command.add_flag("--no-sky", arguments.noSky,
+                   "black space instead of the sky, and no distance fog");
+  command.add_flag("--nominal-lod", arguments.nominalLod,
+                   "refine by each level's nominal error, not the tiler's measured one (more "
+                   "triangles where the ground is smooth; as before pack format 3)");
+}
+
+std::optional<CommandContext> makeCommandContext(const CommonArguments& arguments) {
+  const auto globeModel = geo::parseGlobeModel(arguments.globeName);
+  if (!globeModel) {
+    std::fprintf(stderr, "globe: --globe must be wgs84 or sphere, not '%s'\n",
+                 arguments.globeName.c_str());
+    return std::nullopt;
+  }
+  CommandContext context;
+  context.globeModel = *globeModel;
+  context.sea = arguments.seaFloor ? terrain::SeaSurface::SeaFloor : terrain::SeaSurface::Water;
+  context.warnings = stderrWarnings();
+  transport::NetworkSettings network;
+  network.cacheDirectory = arguments.cacheDirectory;
+  network.cacheBudgetBytes = arguments.cacheMegabytes << 20;
+  network.remote.offline = arguments.offline;
+  network.http.totalTimeoutMs = static_cast<long>(arguments.httpTimeoutSeconds * 1000);
+  network.http.stallTimeoutMs = std::min(network.http.stallTimeoutMs, network.http.totalTimeoutMs);
+  network.http.connectTimeoutMs =
+      std::min(network.http.connectTimeoutMs, network.http.totalTimeoutMs);
+  context.network = std::make_shared<transport::Network>(network, context.warnings);
+  return context;
+}
+
+bool applySceneArguments(const char* command, const CommonArguments& arguments,
+                         const CommandContext& context, scene::SceneOptions& scene) {
+  scene.globeModel = context.globeModel;
+  scene.sea = context.sea;
+  scene.network = context.network;
+  scene.warnings = context.warnings;
+  for (const std::string& text : arguments.layerTexts) {
+    auto layer = scene::parseLayerArgument(text);
+    if (!layer) {
+      std::fprintf(stderr, "globe %s: %s\n", command, layer.error().c_str());
+      return false;
+    }
+    scene.layers.push_back(*layer);
+  }
+  scene.lightImagery = arguments.lighting;
+  scene.measuredLod = !arguments.nominalLod;
+  scene.sky = !arguments.noSky;
+  return true;
+}
+
+}  // namespace globe::app

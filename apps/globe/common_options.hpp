@@ -1,0 +1,66 @@
+// The options several `globe` subcommands share, each declared here once: the PYRAMID argument,
+// --globe, the network's (--cache-dir, --cache-size-mb, --offline, --http-timeout), --sea-floor,
+// --imagery and the imagery layers' (--layer, --lighting, --no-sky, --nominal-lod); and what they
+// become once parsed: the globe model, the sea surface, the program's transport::Network and
+// scene options.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/warnings.hpp"
+#include "geo/ellipsoid.hpp"
+#include "scene/terrain_scene.hpp"
+#include "terrain/height_block.hpp"
+#include "transport/network_settings.hpp"
+
+namespace globe::app {
+
+// The shared options' values as parsed. One instance serves every subcommand (only one runs).
+struct CommonArguments {
+  std::string globeName = "wgs84";
+  bool seaFloor = false;
+  std::vector<std::string> layerTexts;
+  bool lighting = false;
+  bool nominalLod = false;
+  bool noSky = false;
+  std::string cacheDirectory;
+  bool offline = false;
+  uint64_t cacheMegabytes = 2048;
+  double httpTimeoutSeconds = 120;
+};
+
+// Each adds its options to `command`, stored in `arguments` (or `value`).
+void addPyramidArgument(CLI::App& command, std::string& pyramid);
+void addImageryOption(CLI::App& command, std::string& image);
+void addGlobeOption(CLI::App& command, CommonArguments& arguments);
+void addNetworkOptions(CLI::App& command, CommonArguments& arguments);
+void addSeaFloorOption(CLI::App& command, CommonArguments& arguments);
+// --layer, --lighting, --no-sky and --nominal-lod.
+void addLayerOptions(CLI::App& command, CommonArguments& arguments);
+
+// What the chosen subcommand runs with, made from the shared options once they are parsed.
+struct CommandContext {
+  geo::GlobeModel globeModel = geo::GlobeModel::Wgs84;
+  terrain::SeaSurface sea = terrain::SeaSurface::Water;
+  // The program's one network (--cache-dir, --cache-size-mb, --offline, --http-timeout): every
+  // pyramid and layer given as an http(s) URL is read through it.
+  std::shared_ptr<transport::Network> network;
+  // Prints each library warning on stderr as "globe: WARNING".
+  core::WarningSink warnings;
+};
+
+// nullopt (after printing why) on a bad --globe.
+std::optional<CommandContext> makeCommandContext(const CommonArguments& arguments);
+
+// The context's globe, sea, network and warnings and the layer options (--layer, --lighting,
+// --no-sky, --nominal-lod) into `scene`; false (after printing "globe COMMAND: why") on a bad
+// --layer.
+bool applySceneArguments(const char* command, const CommonArguments& arguments,
+                         const CommandContext& context, scene::SceneOptions& scene);
+
+}  // namespace globe::app

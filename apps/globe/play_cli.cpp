@@ -1,0 +1,80 @@
+// `globe play PYRAMID PATH --out DIR`: its options, their conversion into PlayOptions, and the
+// summary it prints.
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "apps/globe/camera_argument.hpp"
+#include "apps/globe/play_command.hpp"
+#include "apps/globe/subcommands.hpp"
+
+namespace globe::app {
+namespace {
+
+struct PlayArguments {
+  std::string pyramid;
+  std::string path;
+  std::string out;
+  std::string size = "1280x720";
+  std::string video;
+  std::string fps = "30";  // as text: checked and named by parseNumberArgument
+  bool noFrames = false;
+  bool window = false;
+};
+
+int runPlayCommand(const PlayArguments& arguments, const CommonArguments& common,
+                   const CommandContext& context) {
+  auto size = parseSizeArgument(arguments.size);
+  auto fps = parseNumberArgument("--fps", arguments.fps, 0, 1000, true);
+  if (!size || !fps) {
+    std::fprintf(stderr, "globe play: %s\n", (!size ? size.error() : fps.error()).c_str());
+    return 2;
+  }
+  PlayOptions options;
+  options.pyramid = arguments.pyramid;
+  options.pathFile = arguments.path;
+  options.outputDir = arguments.out;
+  options.framesPerSecond = *fps;
+  options.widthPixels = size->first;
+  options.heightPixels = size->second;
+  options.writeFrames = !arguments.noFrames;
+  options.window = arguments.window;
+  if (!arguments.video.empty()) options.video = arguments.video;
+  if (!applySceneArguments("play", common, context, options.scene)) return 2;
+  auto report = runPlay(options);
+  if (!report) {
+    std::fprintf(stderr, "globe play: %s\n", report.error().c_str());
+    return 1;
+  }
+  std::fputs(report->summaryText.c_str(), stdout);
+  return 0;
+}
+
+}  // namespace
+
+Subcommand addPlayCommand(CLI::App& app, CommonArguments& common) {
+  CLI::App* play = app.add_subcommand(
+      "play",
+      "play a camera path (.json or KML tour) through the collision controller, headless "
+      "(OSMesa): frames, log.csv, timing.csv, summary.txt in --out");
+  auto arguments = std::make_shared<PlayArguments>();
+  addPyramidArgument(*play, arguments->pyramid);
+  play->add_option("PATH", arguments->path, "camera path: .json keyframes or a .kml gx:Tour")
+      ->required();
+  play->add_option("--out", arguments->out, "output directory")->required();
+  play->add_option("--fps", arguments->fps, "frames per second of path time (0..1000]")
+      ->capture_default_str();
+  play->add_option("--size", arguments->size, "WxH pixels")->capture_default_str();
+  play->add_flag("--no-frames", arguments->noFrames, "write the logs only, no PNG frames");
+  play->add_flag("--window", arguments->window, "show the playback in a GLFW window (same loop)");
+  play->add_option("--video", arguments->video, "encode the frames into this MP4 with ffmpeg");
+  addGlobeOption(*play, common);
+  addNetworkOptions(*play, common);
+  addSeaFloorOption(*play, common);
+  addLayerOptions(*play, common);
+  return {play, [arguments, &common](const CommandContext& context) {
+            return runPlayCommand(*arguments, common, context);
+          }};
+}
+
+}  // namespace globe::app

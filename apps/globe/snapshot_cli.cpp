@@ -1,0 +1,91 @@
+// `globe snapshot PYRAMID --camera ... -o PNG`: its options, their conversion into
+// SnapshotOptions, and what it prints.
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "apps/globe/camera_argument.hpp"
+#include "apps/globe/snapshot_command.hpp"
+#include "apps/globe/subcommands.hpp"
+
+namespace globe::app {
+namespace {
+
+struct SnapshotArguments {
+  std::string pyramid;
+  std::string camera;
+  std::string size = "1280x720";
+  std::string output;
+  std::string imagery;
+  bool aboveTerrain = false;
+  std::string sse = "2";  // numbers as text: checked and named by parseNumberArgument
+  uint32_t maxLoadLevel = geo::kMaxLevel;
+};
+
+int runSnapshotCommand(const SnapshotArguments& arguments, const CommonArguments& common,
+                       const CommandContext& context) {
+  auto pose = parseCameraArgument(arguments.camera);
+  auto size = parseSizeArgument(arguments.size);
+  auto sse = parseNumberArgument("--sse", arguments.sse, 0.1, 10000);
+  if (!pose || !size || !sse) {
+    std::fprintf(stderr, "globe snapshot: %s\n",
+                 (!pose   ? pose.error()
+                  : !size ? size.error()
+                          : sse.error())
+                     .c_str());
+    return 2;
+  }
+  SnapshotOptions options;
+  options.pyramid = arguments.pyramid;
+  options.pose = *pose;
+  options.heightAboveTerrain = arguments.aboveTerrain;
+  options.widthPixels = size->first;
+  options.heightPixels = size->second;
+  options.output = arguments.output;
+  if (!arguments.imagery.empty()) options.imagery = arguments.imagery;
+  options.scene.maximumScreenSpaceErrorPixels = *sse;
+  options.scene.maximumLoadLevel = arguments.maxLoadLevel;
+  if (!applySceneArguments("snapshot", common, context, options.scene)) return 2;
+  auto report = runSnapshot(options);
+  if (!report) {
+    std::fprintf(stderr, "globe snapshot: %s\n", report.error().c_str());
+    return 1;
+  }
+  std::printf("%s: %u tiles drawn, %llu triangles, %llu tile loads, %.2f s\n",
+              arguments.output.c_str(), report->tilesDrawn,
+              static_cast<unsigned long long>(report->triangles),
+              static_cast<unsigned long long>(report->tileLoads), report->seconds);
+  return 0;
+}
+
+}  // namespace
+
+Subcommand addSnapshotCommand(CLI::App& app, CommonArguments& common) {
+  CLI::App* snapshot = app.add_subcommand(
+      "snapshot", "render one view headless (OSMesa) once every tile it needs is loaded");
+  auto arguments = std::make_shared<SnapshotArguments>();
+  addPyramidArgument(*snapshot, arguments->pyramid);
+  snapshot
+      ->add_option("--camera", arguments->camera,
+                   "LON,LAT,HEIGHT[,HEADING,PITCH,ROLL]: degrees, metres above the ellipsoid; "
+                   "heading 0 = north, pitch -90 = straight down (default)")
+      ->required();
+  snapshot->add_option("--size", arguments->size, "WxH pixels")->capture_default_str();
+  snapshot->add_option("-o,--output", arguments->output, "PNG file to write")->required();
+  snapshot->add_flag("--above-terrain", arguments->aboveTerrain,
+                     "HEIGHT is above the terrain, not the ellipsoid");
+  addImageryOption(*snapshot, arguments->imagery);
+  snapshot->add_option("--sse", arguments->sse, "maximum screen-space error in pixels (0.1..10000)")
+      ->capture_default_str();
+  snapshot->add_option("--max-load-level", arguments->maxLoadLevel,
+                       "never load tiles deeper than this (shows a view mid-refinement)");
+  addGlobeOption(*snapshot, common);
+  addNetworkOptions(*snapshot, common);
+  addSeaFloorOption(*snapshot, common);
+  addLayerOptions(*snapshot, common);
+  return {snapshot, [arguments, &common](const CommandContext& context) {
+            return runSnapshotCommand(*arguments, common, context);
+          }};
+}
+
+}  // namespace globe::app
