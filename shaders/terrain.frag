@@ -1,6 +1,7 @@
 // Terrain fragment shader: the interpolated lit land or sea colour (terrain.vert), by the sea flag,
 // times the draped imagery when GLOBE_IMAGERY is defined, then GLOBE_LAYERS (1..4) tiled imagery
-// layers composited over it, bottom first, and the logarithmic depth (per
+// layers composited over it, bottom first (with GLOBE_LIGHT_IMAGERY each lit by its own weight of
+// the terrain's light), and the logarithmic depth (per
 // fragment, or per vertex in terrain.vert when GLOBE_VERTEX_LOG_DEPTH is defined).
 #version 330 core
 
@@ -23,6 +24,10 @@ uniform sampler2D u_imagery;   // global equirectangular, row 0 at +90 deg
 in vec2 v_layerUv[GLOBE_LAYERS];  // imagery uv of each layer (terrain.vert)
 #ifdef GLOBE_LIGHT_IMAGERY
 in vec2 v_light;                  // land light, sea light: --lighting shades the imagery too
+// How much of that light each layer takes on this tile, w of mix(1, light, w): by how much
+// coarser its texel is than the tile's samples (terrain/relief_shading.hpp), computed per tile
+// on the CPU.
+uniform float u_layerLight[GLOBE_LAYERS];
 #endif
 // Imagery tiles, premultiplied alpha (render/imagery_textures.cpp), row 0 = v 0. Four samplers
 // rather than an array: GLSL 3.30 indexes sampler arrays only with constant expressions.
@@ -54,6 +59,9 @@ out vec4 o_color;
 // not bleed their (meaningless) colour in.
 vec3 drape(vec3 color, sampler2D layer, int k, float light) {
   vec4 texel = texture(layer, v_layerUv[k]) * u_layerOpacity[k];
+#ifdef GLOBE_LIGHT_IMAGERY
+  light = mix(1.0, light, u_layerLight[k]);
+#endif
   return texel.rgb * light + color * (1.0 - texel.a);
 }
 #endif

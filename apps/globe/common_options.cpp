@@ -50,8 +50,15 @@ void addLayerOptions(CLI::App& command, CommonArguments& arguments) {
   command.add_option("--layer", arguments.layerTexts,
                      "imagery layer directory made by `globe-tiler imagery`, optionally "
                      "DIR,OPACITY (0..1); repeat for more, bottom layer first");
-  command.add_flag("--lighting", arguments.lighting,
-                   "hill-shade the imagery too (off by default: imagery has its own shadows)");
+  // A bare --lighting (before layers could be lit by resolution: the only way to light them)
+  // still means on.
+  command
+      .add_option("--lighting", arguments.lighting,
+                  "hill-shading on imagery: auto (full where its texels are coarser than the "
+                  "terrain's samples, gentle where they carry their own shadows), on (full), off "
+                  "(the imagery's own shading only); a bare --lighting is on")
+      ->expected(0, 1)
+      ->type_name("[auto|on|off]");  // checked in applySceneArguments: a bad value exits 2
   command.add_flag("--no-sky", arguments.noSky,
                    "black space instead of the sky, and no distance fog");
   command.add_flag("--nominal-lod", arguments.nominalLod,
@@ -96,7 +103,16 @@ bool applySceneArguments(const char* command, const CommonArguments& arguments,
     }
     scene.layers.push_back(*layer);
   }
-  scene.lightImagery = arguments.lighting;
+  // A bare --lighting parses as "".
+  const auto lighting = arguments.lighting.empty()
+                            ? terrain::ImageryLighting::On
+                            : terrain::parseImageryLighting(arguments.lighting);
+  if (!lighting) {
+    std::fprintf(stderr, "globe %s: --lighting must be auto, on or off, not '%s'\n", command,
+                 arguments.lighting.c_str());
+    return false;
+  }
+  scene.imageryLighting = *lighting;
   scene.measuredLod = !arguments.nominalLod;
   scene.sky = !arguments.noSky;
   return true;

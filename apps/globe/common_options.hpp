@@ -25,7 +25,7 @@ struct CommonArguments {
   std::string globeName = "wgs84";
   bool seaFloor = false;
   std::vector<std::string> layerTexts;
-  bool lighting = false;
+  std::string lighting = "auto";  // --lighting auto | on | off; bare: on
   bool nominalLod = false;
   bool noSky = false;
   std::string cacheDirectory;

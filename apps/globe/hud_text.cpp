@@ -36,6 +36,16 @@ std::string terrainStatus(const camera::CollisionState& collision) {
          meters(collision.clearanceMeters);
 }
 
+std::string imageryStatus(const HudState& s) {
+  if (s.layers.empty()) return {};
+  std::string text = "lighting " + std::string(terrain::toString(s.lighting)) + "  layers";
+  for (size_t k = 0; k < s.layers.size(); ++k) {
+    text += format("%s%s%zu %s %.0f%%", k == 0 ? " " : "  ", k == s.selectedLayer ? ">" : "",
+                   k + 1, s.layers[k].shown ? "on" : "off", 100.0 * s.layers[k].opacity);
+  }
+  return text;
+}
+
 std::vector<std::string> hudStatusLines(const HudState& s, bool withFrameTime) {
   std::vector<std::string> lines;
   std::string mode = std::string(camera::toString(s.mode)) + (s.flyingTo ? " (flying to)" : "");
@@ -66,6 +76,7 @@ std::vector<std::string> hudStatusLines(const HudState& s, bool withFrameTime) {
     tiles += format("  frame %.1f ms (%.0f fps)", s.frameMilliseconds, 1000 / s.frameMilliseconds);
   }
   lines.push_back(tiles);
+  if (std::string imagery = imageryStatus(s); !imagery.empty()) lines.push_back(std::move(imagery));
   if (s.recording) lines.push_back(format("REC  %zu keyframes  (P stops)", s.keyframes));
   lines.push_back("H: help");
   return lines;
@@ -104,6 +115,9 @@ std::vector<std::string> hudHelpLines() {
       "R            back to the start camera",
       "G            go to a place or \"lat, lon\" (type, then Enter)",
       "N            north up (or click the compass rose, top right)",
+      "L            lighting on imagery: auto -> on -> off",
+      "1 - 4        show / hide layer 1-4 (and select it for [ ])",
+      "[ / ]        the selected layer's opacity -/+ 10%",
       "H / F1       this help",
       "Esc          quit",
   };

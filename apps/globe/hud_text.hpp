@@ -12,6 +12,7 @@
 #include "camera/camera_pose.hpp"
 #include "camera/navigator.hpp"
 #include "geo/cartographic.hpp"
+#include "terrain/relief_shading.hpp"
 
 namespace globe::app {
 
@@ -33,7 +34,19 @@ struct HudState {
   double metersPerPixel = std::numeric_limits<double>::quiet_NaN();
   std::optional<std::string> prompt;  // the go-to text being typed (G)
   std::string message;                // what the last go-to said (an error)
+  // The imagery controls (L, 1-4, [ ]): said only with layers.
+  struct Layer {
+    bool shown = true;
+    float opacity = 1.0f;
+  };
+  terrain::ImageryLighting lighting = terrain::ImageryLighting::Auto;
+  std::vector<Layer> layers;
+  size_t selectedLayer = 0;
 };
+
+// "lighting auto  layers >1 on 100%  2 off 40%" (> marks the layer [ and ] change); empty
+// without layers.
+std::string imageryStatus(const HudState& state);
 
 // "terrain H m  clearance C m", or "no terrain under the camera" (never a clearance above the
 // ellipsoid presented as one above the ground); the HUD and the window title both say this.

@@ -1,6 +1,9 @@
 // The scene's TileGpu over the GL terrain renderer, and drawing a scene's frame with it.
 #pragma once
 
+#include <array>
+#include <vector>
+
 #include "render/frame_stats.hpp"
 #include "render/terrain_renderer.hpp"
 #include "scene/terrain_scene.hpp"
@@ -33,11 +36,25 @@ class RendererGpu final : public scene::TileGpu {
   uint64_t imageryBytesResident() const override { return renderer_.imageryBytesResident(); }
 
   render::TerrainRenderer& renderer() { return renderer_; }
-  // Draws the scene's last update: its view, tiles and (with layers) drapes.
+  // Draws the scene's last update: its view, tiles and (with layers) drapes, the layers as
+  // setLayer says.
   render::FrameStats draw(const scene::TerrainScene& scene);
 
+  // The window's controls: how the imagery is lit, and each layer (index as in --layer) shown
+  // or not at this opacity (0..1) instead of the scene's. A hidden layer is still loaded.
+  void setImageryLighting(terrain::ImageryLighting lighting);
+  void setLayer(uint32_t layer, bool shown, float opacity);
+
  private:
+  struct LayerOverride {
+    bool set = false;
+    bool shown = true;
+    float opacity = 1.0f;
+    float sceneOpacity = 1.0f;  // --layer's
+  };
   render::TerrainRenderer& renderer_;
+  std::array<LayerOverride, terrain::kMaxDrapeLayers> layers_{};
+  std::vector<terrain::TileDrapes> drapes_;  // the scene's, overridden (reused each frame)
 };
 
 }  // namespace globe::app

@@ -179,6 +179,11 @@ Result<ViewReport> runView(const ViewOptions& options) {
   ViewInput input;
   input.navigator = &navigator;
   GLFWwindow* handle = (*window)->window();
+  input.imagery.lighting = options.scene.imageryLighting;
+  input.imagery.layerCount = static_cast<uint32_t>(
+      std::min<size_t>(options.scene.layers.size(), terrain::kMaxDrapeLayers));
+  for (uint32_t k = 0; k < input.imagery.layerCount; ++k)
+    input.imagery.opacity[k] = std::clamp(options.scene.layers[k].opacity, 0.0f, 1.0f);
   installViewCallbacks(handle, input);
   const auto setViewport = [&] {
     int windowWidth = 0, windowHeight = 0;  // events and picks take window pixels
@@ -288,6 +293,13 @@ Result<ViewReport> runView(const ViewOptions& options) {
         }
       }
       hudState.metersPerPixel = navigator.metersPerPixelAtCentre();
+      hudState.lighting = input.imagery.lighting;
+      hudState.selectedLayer = input.imagery.selected;
+      for (uint32_t k = 0; k < input.imagery.layerCount; ++k) {
+        hudState.layers.push_back({input.imagery.shown[k], input.imagery.opacity[k]});
+        gpu.setLayer(k, input.imagery.shown[k], input.imagery.opacity[k]);
+      }
+      gpu.setImageryLighting(input.imagery.lighting);
       std::vector<std::string> hudKey = hudStatusLines(hudState, false);
       // The compass and the scale bar change the HUD too (to the degree, to the pixel).
       const auto rounded = [](double value) {

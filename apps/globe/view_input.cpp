@@ -81,6 +81,30 @@ bool commonKey(GLFWwindow* window, ViewInput& input, int key) {
   }
 }
 
+// L, 1-4, [ and ] (ImageryControls); false when the key is not one of them or does nothing here
+// (a layer key without that layer). Only [ and ] repeat.
+bool imageryKey(ImageryControls& imagery, int key, bool press) {
+  if (key == GLFW_KEY_L && press) {
+    imagery.lighting = terrain::nextImageryLighting(imagery.lighting);
+    return true;
+  }
+  if (key >= GLFW_KEY_1 && key <= GLFW_KEY_4 && press) {
+    const auto layer = static_cast<uint32_t>(key - GLFW_KEY_1);
+    if (layer >= imagery.layerCount) return false;
+    imagery.shown[layer] = !imagery.shown[layer];
+    imagery.selected = layer;
+    return true;
+  }
+  if ((key == GLFW_KEY_LEFT_BRACKET || key == GLFW_KEY_RIGHT_BRACKET) && imagery.layerCount > 0) {
+    float& opacity = imagery.opacity[imagery.selected];
+    const float step = key == GLFW_KEY_RIGHT_BRACKET ? kOpacityStep : -kOpacityStep;
+    // On the steps' grid, so ten presses go from 0 to 1 exactly.
+    opacity = std::clamp(std::round((opacity + step) / kOpacityStep) * kOpacityStep, 0.0f, 1.0f);
+    return true;
+  }
+  return false;
+}
+
 bool orbitKey(ViewInput& input, int key) {
   camera::Navigator& navigator = *input.navigator;
   switch (key) {
@@ -180,6 +204,7 @@ void onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods
   if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
   const bool handled =
       (action == GLFW_PRESS && commonKey(window, input, key)) ||
+      imageryKey(input.imagery, key, action == GLFW_PRESS) ||
       (input.navigator->mode() == camera::NavigationMode::Orbit ? orbitKey(input, key)
                                                                 : flyKey(input, key));
   if (handled) input.changed = true;

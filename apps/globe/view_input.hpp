@@ -1,8 +1,11 @@
 // `globe view`'s input: GLFW key, mouse and scroll callbacks turned into the navigator's plain
 // events (camera::Navigator); the window's own actions (record, screenshot, help, the go-to
-// prompt) are left for the loop to take.
+// prompt) are left for the loop to take; the imagery controls (lighting, layers) are kept here
+// for the loop to hand to the renderer.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -10,10 +13,23 @@
 
 #include "camera/fly_controls.hpp"
 #include "camera/navigator.hpp"
+#include "terrain/relief_shading.hpp"
+#include "terrain/tile_drape.hpp"
 
 struct GLFWwindow;
 
 namespace globe::app {
+
+// L cycles the lighting on imagery (auto → on → off); 1-4 show or hide layer 1-4 and select it;
+// [ and ] lower and raise the selected layer's opacity by kOpacityStep.
+struct ImageryControls {
+  terrain::ImageryLighting lighting = terrain::ImageryLighting::Auto;
+  uint32_t layerCount = 0;  // --layer given (at most kMaxDrapeLayers)
+  std::array<bool, terrain::kMaxDrapeLayers> shown{true, true, true, true};
+  std::array<float, terrain::kMaxDrapeLayers> opacity{1.0f, 1.0f, 1.0f, 1.0f};
+  uint32_t selected = 0;  // the last toggled
+};
+inline constexpr float kOpacityStep = 0.1f;
 
 struct ViewInput {
   camera::Navigator* navigator = nullptr;  // every camera move goes to it
@@ -29,6 +45,8 @@ struct ViewInput {
   std::string promptMessage;
   // The compass (top right, window pixels): a click there, or N, turns the view north up.
   glm::dvec2 compassTopLeft{-1.0}, compassBottomRight{-1.0};
+
+  ImageryControls imagery;
 
   // One-shot requests, cleared by the loop when taken.
   bool recordToggleRequested = false;

@@ -24,6 +24,7 @@
 #include "render/shader_program.hpp"
 #include "render/sky_model.hpp"
 #include "render/sky_pass.hpp"
+#include "terrain/relief_shading.hpp"
 #include "terrain/skirt_edges.hpp"
 #include "terrain/texel_footprint.hpp"
 
@@ -51,7 +52,7 @@ struct TerrainRenderer::Impl {
     GLint sunDirection = -1, ambient = -1, hillShading = -1, imagery = -1;
     GLint logDepthScale = -1, coarserEdges = -1;
     GLint fogColor = -1, fogDensity = -1, fogMaximum = -1;
-    GLint layerTransform = -1, layerOpacity = -1;
+    GLint layerTransform = -1, layerOpacity = -1, layerLight = -1;
     std::array<GLint, terrain::kMaxDrapeLayers> layerSamplers{-1, -1, -1, -1};
   };
 
@@ -68,6 +69,7 @@ struct TerrainRenderer::Impl {
     std::array<GLuint, terrain::kMaxDrapeLayers> textures{};
     std::array<glm::vec4, terrain::kMaxDrapeLayers> transforms{};
     std::array<float, terrain::kMaxDrapeLayers> opacities{};
+    std::array<float, terrain::kMaxDrapeLayers> lightWeights{};  // w of mix(1, light, w)
     std::array<GLuint, terrain::kMaxDrapeLayers> samplers{};
     uint32_t count = 0;
     bool opaqueBase = false;  // layer 0 is opaque everywhere (texels and opacity)
@@ -121,8 +123,9 @@ struct TerrainRenderer::Impl {
     glm::dvec3 cameraEcefMeters{0.0};
     double pixelAngleRadians = 0.0;
   };
-  BoundDrapes resolveDrapes(const terrain::TileDrapes* drapes, const GpuTile& gpu,
-                            const Footprint& footprint, FrameStats& stats) const;
+  BoundDrapes resolveDrapes(const terrain::TileDrapes* drapes, const geo::TileId& tile,
+                            const GpuTile& gpu, const Footprint& footprint,
+                            FrameStats& stats) const;
   void bindDrapes(const BoundDrapes& drapes, const Uniforms& u) const;
   uint64_t gpuBytes() const {
     return tileBytes + indexBytes + imageryBytes + imageryTiles.bytesResident();
@@ -134,11 +137,13 @@ struct TerrainRenderer::Impl {
 // fragment, and the terrain's own colour is not needed (opaqueBase). Layers
 // whose texture is not resident are skipped (the ones above still draw) and counted.
 TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(
-    const terrain::TileDrapes* drapes, const GpuTile& gpu, const Footprint& footprint,
-    FrameStats& stats) const {
+    const terrain::TileDrapes* drapes, const geo::TileId& tile, const GpuTile& gpu,
+    const Footprint& footprint, FrameStats& stats) const {
   BoundDrapes bound;
   const uint32_t count = drapes == nullptr ? 0 : std::min(drapes->count, terrain::kMaxDrapeLayers);
   const geo::Ellipsoid wgs84 = geo::Ellipsoid::wgs84();
+  const double sampleSpacingMeters =
+      terrain::meridianSpacingMeters(tile, static_cast<int>(options.verticesPerSide) - 1, wgs84);
   for (uint32_t k = 0; k < count; ++k) {
     const terrain::TileDrape& drape = drapes->layers[k];
     const ResidentTexture resident = imageryTiles.find(drape.layer, drape.imageryTile);
@@ -156,6 +161,10 @@ TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(
     bound.textures[bound.count] = texture;
     bound.transforms[bound.count] = drape.uvTransform;
     bound.opacities[bound.count] = opacity;
+    bound.lightWeights[bound.count] = static_cast<float>(terrain::imageryLightWeight(
+        style.imageryLighting,
+        terrain::meridianSpacingMeters(drape.imageryTile, resident.heightPixels, wgs84),
+        sampleSpacingMeters));
     const double texelMeters = terrain::shortestTexelMeters(drape.imageryTile, resident.widthPixels,
                                                             resident.heightPixels, wgs84);
     const bool magnified =
@@ -208,6 +217,7 @@ Result<const TerrainRenderer::Impl::Program*> TerrainRenderer::Impl::program(
   u.fogMaximum = p.uniformLocation("u_fogMaximum");
   u.layerTransform = p.uniformLocation("u_layerTransform");
   u.layerOpacity = p.uniformLocation("u_layerOpacity");
+  u.layerLight = p.uniformLocation("u_layerLight");
   for (uint32_t k = 0; k < terrain::kMaxDrapeLayers; ++k) {
     u.layerSamplers[k] = p.uniformLocation(("u_layer" + std::to_string(k)).c_str());
   }
@@ -236,6 +246,7 @@ void TerrainRenderer::Impl::bindDrapes(const BoundDrapes& drapes, const Uniforms
     const auto n = static_cast<GLsizei>(drapes.count);
     glUniform4fv(u.layerTransform, n, glm::value_ptr(drapes.transforms[0]));
     glUniform1fv(u.layerOpacity, n, drapes.opacities.data());
+    if (u.layerLight >= 0) glUniform1fv(u.layerLight, n, drapes.lightWeights.data());
   }
 }
 
@@ -437,7 +448,7 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
         nearest >= kVertexDepthMinMeters && nearest >= kVertexDepthRadii * gpu.radiusMeters;
     const terrain::TileDrapes* tileDrapes = i < drapes.size() ? &drapes[i] : nullptr;
     impl.drawItems[far ? 1 : 0].push_back(
-        {nearest, &gpu, tile, 0, impl.resolveDrapes(tileDrapes, gpu, footprint, stats)});
+        {nearest, &gpu, tile, 0, impl.resolveDrapes(tileDrapes, tile, gpu, footprint, stats)});
   }
   // Skirts face the tiles that are really drawn (resident ones), known once all are listed.
   if (impl.options.skirts) {
@@ -504,8 +515,9 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
           current == nullptr) {
         currentLayers = item.drapes.count;
         currentOpaqueBase = item.drapes.opaqueBase;
-        auto found = impl.program(useImagery, currentLayers, variant == 1, style.lightImagery,
-                                  currentOpaqueBase);
+        auto found =
+            impl.program(useImagery, currentLayers, variant == 1,
+                         style.imageryLighting != terrain::ImageryLighting::Off, currentOpaqueBase);
         if (!found) {
           // Layers this GL cannot compile: the terrain without them, said once.
           if (!impl.programErrorReported) core::warn(impl.options.warn, found.error());

@@ -13,6 +13,7 @@
 #include "core/warnings.hpp"
 #include "geo/tile_id.hpp"
 #include "render/frame_stats.hpp"
+#include "terrain/relief_shading.hpp"
 #include "terrain/render_view.hpp"
 #include "terrain/tile_drape.hpp"
 #include "terrain/tile_mesh.hpp"
@@ -37,9 +38,10 @@ struct TerrainStyle {
   bool drapeImagery = true;  // use the imagery set by setImagery (if any) instead of the ramp
   bool hillShading = true;   // light land with the mesh normals; off: with the ellipsoid "up"
   float ambient = 0.3f;      // light on faces turned away from the sun, 0..1
-  // Drape layers (draw with drapes) times the terrain's light too; off: imagery keeps its own
-  // baked-in shading and shows its texels' colours exactly.
-  bool lightImagery = false;
+  // How much of the terrain's light drape layers (draw with drapes) take (terrain/relief_shading):
+  // Off: none, imagery keeps its own baked-in shading and shows its texels' colours exactly; On:
+  // all of it; Auto: by how much coarser the layer's texel is than the tile's samples.
+  terrain::ImageryLighting imageryLighting = terrain::ImageryLighting::Off;
   glm::vec3 backgroundRgb{0.0f, 0.0f, 0.0f};  // space, where the sky is off
   // The sky behind the terrain and distance fog over it (render/sky_model.hpp, shaders/sky.*),
   // from the camera's height; off: backgroundRgb (the tests that look for gaps keep it off).
@@ -79,8 +81,11 @@ struct TerrainStyle {
 // flat; the fragment picks land or sea by the interpolated flag, so coasts stay sharp.
 // Drape layers (draw with drapes, shaders built with GLOBE_LAYERS): over that colour (the global
 // image included, when set and drapeImagery is on), each layer bottom to top per fragment:
-// colour = mix(colour, texel.rgb · light, texel.a · opacity), light = 1 unless lightImagery
-// (then the land or sea light above). Imagery covers sea too. Texels are stored premultiplied.
+// colour = mix(colour, texel.rgb · mix(1, light, w), texel.a · opacity), light the land or sea
+// light above and w the layer's weight on this tile (imageryLighting: 0 Off, 1 On, Auto
+// terrain::reliefShadingWeight of the layer's imagery texel over the tile's sample spacing, both
+// in metres, in double, once per tile and layer). Imagery covers sea too. Texels are stored
+// premultiplied.
 // Skirts: only on the edges whose same-level neighbour is not drawn this frame
 // (terrain/skirt_edges.hpp); tiles of one level share their edge samples and their meshes overlap
 // by a hair (terrain::kSeamOverlapFraction), so no crack opens there.

@@ -23,6 +23,7 @@
 #include "streaming/tile_loader.hpp"
 #include "streaming/tile_store.hpp"
 #include "terrain/height_block.hpp"
+#include "terrain/relief_shading.hpp"
 #include "terrain/render_view.hpp"
 #include "terrain/rendering_tile_array.hpp"
 #include "terrain/tile_selection.hpp"
@@ -44,7 +45,9 @@ struct SceneOptions {
   std::vector<LayerOptions> layers;  // imagery draped over the terrain, bottom layer first
   ImageryBudget imageryBudget;
   uint32_t maximumImageryLoadLevel = geo::kMaxLevel;  // imagery deeper than this is never loaded
-  bool lightImagery = false;  // --lighting: hill-shade the imagery too (it has its own shadows)
+  // --lighting: how much hill-shading the imagery takes (render::TerrainStyle::imageryLighting);
+  // Auto: full where its texels are too coarse to carry the relief, gentle where they carry it.
+  terrain::ImageryLighting imageryLighting = terrain::ImageryLighting::Auto;
   // The tiler's measured geometric errors (terrain::SelectionOptions::measuredErrors), unless
   // --nominal-lod; under an imagery layer only where refining would not sharpen it
   // (ImageryLayers::nominalErrorRegions).

@@ -362,7 +362,7 @@ TEST_F(ImageryLayers, LightImageryDimsTheTexelsByTheTerrainLight) {
   EXPECT_TRUE(near(unlit.at(middle.x, middle.y), kWhite, 2));
 
   TerrainStyle style = renderer_->style();
-  style.lightImagery = true;
+  style.imageryLighting = terrain::ImageryLighting::On;
   renderer_->setStyle(style);
   const Image lit = drawDraped(view, {kTile}, drapes);
   savePng(lit, "imagery_layers_lit");
@@ -374,6 +374,34 @@ TEST_F(ImageryLayers, LightImageryDimsTheTexelsByTheTerrainLight) {
   renderer_->setStyle(style);
   const Image upLit = drawDraped(view, {kTile}, drapes);
   EXPECT_TRUE(near(upLit.at(middle.x, middle.y), {value, value, value, 255}, 4));
+}
+
+// Auto lighting: a layer as fine as the terrain (256 texels over 16 sample intervals) takes the
+// gentle floor of the light; one whose texels span 4 samples (4x4 over 16) takes all of it.
+TEST_F(ImageryLayers, AutoLightingWeighsTheLightByTheTexelOverTheSampleSpacing) {
+  uploadFlat(kTile);
+  uploadImagery(0, kTile, solidImage(kWhite));
+  const std::vector<uint8_t> coarse(4 * 4 * 4, 255);
+  ASSERT_TRUE(renderer_->uploadImageryTile(1, kTile, coarse, 4, 4).ok());
+  const geo::Cartographic centre = geo::GeographicTilingScheme::tileRectangle(kTile).center();
+  const LocalFrame frame = localFrame(geo::radiansToDegrees(centre.longitudeRadians),
+                                      geo::radiansToDegrees(centre.latitudeRadians));
+  const glm::dvec3 sun = glm::normalize(0.5 * frame.up + std::sqrt(0.75) * frame.east);
+  const terrain::RenderView view = viewOnto(kTile, 450e3, sun);
+  const glm::ivec2 middle = pixelAt(view, kTile, 0.5, 0.5);
+
+  TerrainStyle style = renderer_->style();
+  style.imageryLighting = terrain::ImageryLighting::Auto;
+  renderer_->setStyle(style);
+  const double light = style.ambient + (1.0 - style.ambient) * 0.5;
+  const auto lit = [&](double weight) {
+    const auto value = static_cast<uint8_t>(std::lround(255.0 * (1.0 + weight * (light - 1.0))));
+    return Rgba{value, value, value, 255};
+  };
+  const Image fine = drawDraped(view, {kTile}, {drapesOf({{0, kTile}})});
+  EXPECT_TRUE(near(fine.at(middle.x, middle.y), lit(terrain::kGentleReliefWeight), 4));
+  const Image coarseLit = drawDraped(view, {kTile}, {drapesOf({{1, kTile}})});
+  EXPECT_TRUE(near(coarseLit.at(middle.x, middle.y), lit(1.0), 4));
 }
 
 TEST_F(ImageryLayers, MissingTexturesAreSkippedAndCounted) {

@@ -413,9 +413,22 @@ TEST(HudText, HelpListsEveryKey) {
   std::string help;
   for (const auto& line : globe::app::hudHelpLines()) help += line + "\n";
   for (const char* key : {"F / Tab", "W/S", "A/D", "E/Q", "Shift", "double-click", "P ", "K / F12",
-                          "H / F1", "Esc", "R ", "scroll"}) {
+                          "H / F1", "Esc", "R ", "scroll", "L ", "1 - 4", "[ / ]"}) {
     EXPECT_NE(help.find(key), std::string::npos) << key;
   }
+}
+
+// With layers the HUD says the lighting and each layer's state; without, nothing about them.
+TEST(HudText, ImageryStatusShowsLightingAndLayers) {
+  globe::app::HudState state;
+  EXPECT_EQ(globe::app::imageryStatus(state), "");
+  state.lighting = globe::terrain::ImageryLighting::Off;
+  state.layers = {{true, 1.0f}, {false, 0.4f}};
+  state.selectedLayer = 1;
+  EXPECT_EQ(globe::app::imageryStatus(state), "lighting off  layers 1 on 100%  >2 off 40%");
+  std::string text;
+  for (const auto& line : globe::app::hudStatusLines(state)) text += line + "\n";
+  EXPECT_NE(text.find("lighting off"), std::string::npos) << text;
 }
 
 TEST(HudText, GlyphQuadsStayInsideTheirBox) {

@@ -55,6 +55,8 @@ Rendered renderNadir(const fs::path& pyramid, const std::vector<scene::LayerOpti
   options.hysteresis = false;
   options.layers = layers;
   options.maximumImageryLoadLevel = maximumImageryLoadLevel;
+  // The source's colours as they are: these tests look at where the imagery lands, not its light.
+  options.imageryLighting = terrain::ImageryLighting::Off;
   auto scene = scene::TerrainScene::open(pyramid, options);
   EXPECT_TRUE(scene) << scene.error();
   if (!scene || !renderer) return out;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -19,6 +20,7 @@
 #include "camera/orbit_controls.hpp"
 #include "formats/image_io.hpp"
 #include "geo/ecef.hpp"
+#include "tests/support/imagery_test_layers.hpp"
 #include "tests/support/test_constants.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 
@@ -373,6 +375,52 @@ TEST(GlobeViewWindow, FlyModeWFliesForwardAndStaysAboveTheTerrain) {
       std::stod(values.at("idle_ticks")) / std::stod(values.at("ticks_per_second"));
   std::printf("CPU during 2 s idle in fly mode: %.2f s\n", idleSeconds);
   EXPECT_LT(idleSeconds, 0.2) << run.output;
+}
+
+// The imagery keys change what is drawn: 1 hides the Blue Marble layer (the hypsometric ramp
+// shows), L L cycles the lighting auto -> on -> off (the mountains lose their shading). Each run
+// writes the terrain without the HUD on exit (--screenshot).
+TEST(GlobeViewWindow, LayerAndLightingKeysChangeTheFrame) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const auto dir = globe::testing::freshTempDir("view-imagery-keys");
+  const auto shotAfter = [&](const std::string& name, const std::string& keys) {
+    const auto png = dir / (name + ".png");
+    const ShellRun run = runUnderXvfb(
+        "view-imagery-keys-" + name,
+        globeView("--size 320x180 --log --layer " + globe::testing::blueMarbleLayer().string() +
+                  " --camera 138.60,35.20,6000,30,-15,0 --screenshot " + png.string() +
+                  " > log.txt &\n") +
+            "VIEW=$!\n" + kFindWindow + (keys.empty() ? "" : "xdotool key --window $WID " + keys) +
+            "\nsleep 1\nxdotool keydown --window $WID Escape\nwait $VIEW; echo exit=$?\n");
+    EXPECT_EQ(valuesOf(run.output)["exit"], "0") << run.output;
+    auto image = globe::formats::loadImageRgba(png);
+    EXPECT_TRUE(image) << image.error() << run.output;
+    return image ? *image : globe::formats::ImageRgba{};
+  };
+  // Pixels with a channel off by more than 4.
+  const auto differing = [](const globe::formats::ImageRgba& a,
+                            const globe::formats::ImageRgba& b) {
+    size_t count = 0;
+    for (size_t k = 0; k + 3 < std::min(a.pixels.size(), b.pixels.size()); k += 4) {
+      for (size_t c = 0; c < 3; ++c) {
+        if (std::abs(int(a.pixels[k + c]) - int(b.pixels[k + c])) > 4) {
+          ++count;
+          break;
+        }
+      }
+    }
+    return count;
+  };
+  const auto draped = shotAfter("auto", "");
+  const auto hidden = shotAfter("hidden", "1");
+  const auto unlit = shotAfter("off", "l l");
+  ASSERT_EQ(draped.pixels.size(), size_t{320 * 180 * 4});
+  const size_t pixels = 320 * 180;
+  std::printf("pixels changed: layer hidden %zu, lighting off %zu of %zu\n",
+              differing(draped, hidden), differing(draped, unlit), pixels);
+  EXPECT_GT(differing(draped, hidden), pixels / 4) << "the ramp instead of Blue Marble";
+  EXPECT_GT(differing(draped, unlit), pixels / 100) << "the relief's shading gone";
 }
 
 // H shows the help and K takes a screenshot with the HUD: its top-left corner has text where the

@@ -1,0 +1,48 @@
+// How strongly the terrain's hill-shading darkens a draped imagery layer. Imagery carries its own
+// shadows only at its own resolution: Blue Marble's 7 km texels over Mount Fuji's 90 m samples
+// show no relief at all unless the terrain's light is applied, while 30 m Landsat over the same
+// samples already has its shadows and would look doubly shaded. So the light is weighted by how
+// much finer the terrain is than the imagery texel drawn on it (as Google Earth does).
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+#include "geo/ellipsoid.hpp"
+#include "geo/tile_id.hpp"
+
+namespace globe::terrain {
+
+// --lighting: Auto weighs the light by resolution (reliefShadingWeight), On applies it fully
+// (weight 1), Off leaves the imagery's own shading alone (weight 0).
+enum class ImageryLighting { Off, Auto, On };
+
+std::optional<ImageryLighting> parseImageryLighting(std::string_view text);  // auto | on | off
+std::string_view toString(ImageryLighting lighting);
+ImageryLighting nextImageryLighting(ImageryLighting lighting);  // auto → on → off → auto
+
+// Full shading where the imagery texel is at least this many terrain samples across...
+inline constexpr double kFullReliefTexelRatio = 4.0;
+// ...the gentle floor where it is no larger than one sample: the imagery's own shadows show
+// there, the terrain's light only rounds the landforms a little.
+inline constexpr double kGentleReliefTexelRatio = 1.0;
+inline constexpr double kGentleReliefWeight = 0.3;
+
+// The weight w of the terrain's light on a layer (drawn light = mix(1, light, w)) for imagery
+// texels imageryTexelMeters across over terrain samples terrainSpacingMeters apart:
+// kGentleReliefWeight at a ratio <= 1, 1 at >= 4, linear in log(ratio) between. 1 where the
+// ratio is not a positive finite number (no known texel: shade rather than flatten).
+double reliefShadingWeight(double imageryTexelMeters, double terrainSpacingMeters);
+
+// The same for a mode: Off 0, On 1, Auto reliefShadingWeight.
+double imageryLightWeight(ImageryLighting lighting, double imageryTexelMeters,
+                          double terrainSpacingMeters);
+
+// The north-south spacing, in metres, of `intervals` equal steps across `tile` on the meridian
+// (radius of curvature b²/a): a terrain tile's sample spacing (verticesPerSide − 1 intervals) or
+// an imagery tile's texel (its height in pixels). North-south because east-west both shrink with
+// the latitude alike and vanish at the poles. 0 for an invalid tile or no intervals.
+double meridianSpacingMeters(const geo::TileId& tile, int intervals,
+                             const geo::Ellipsoid& ellipsoid);
+
+}  // namespace globe::terrain
