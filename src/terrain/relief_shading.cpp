@@ -4,8 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geo/tiling_scheme.hpp"
-
 namespace globe::terrain {
 
 std::optional<ImageryLighting> parseImageryLighting(std::string_view text) {
@@ -58,14 +56,6 @@ double imageryLightWeight(ImageryLighting lighting, double imageryTexelMeters,
       break;
   }
   return reliefShadingWeight(imageryTexelMeters, terrainSpacingMeters);
-}
-
-double meridianSpacingMeters(const geo::TileId& tile, int intervals,
-                             const geo::Ellipsoid& ellipsoid) {
-  if (!geo::GeographicTilingScheme::isValid(tile) || intervals <= 0) return 0.0;
-  const geo::GlobeRectangle rect = geo::GeographicTilingScheme::tileRectangle(tile);
-  const double a = ellipsoid.semiMajorAxisMeters, b = ellipsoid.semiMinorAxisMeters;
-  return (b * b / a) * rect.heightRadians() / intervals;
 }
 
 }  // namespace globe::terrain

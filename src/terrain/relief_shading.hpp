@@ -8,9 +8,6 @@
 #include <optional>
 #include <string_view>
 
-#include "geo/ellipsoid.hpp"
-#include "geo/tile_id.hpp"
-
 namespace globe::terrain {
 
 // --lighting: Auto weighs the light by resolution (reliefShadingWeight), On applies it fully
@@ -37,12 +34,5 @@ double reliefShadingWeight(double imageryTexelMeters, double terrainSpacingMeter
 // The same for a mode: Off 0, On 1, Auto reliefShadingWeight.
 double imageryLightWeight(ImageryLighting lighting, double imageryTexelMeters,
                           double terrainSpacingMeters);
-
-// The north-south spacing, in metres, of `intervals` equal steps across `tile` on the meridian
-// (radius of curvature b²/a): a terrain tile's sample spacing (verticesPerSide − 1 intervals) or
-// an imagery tile's texel (its height in pixels). North-south because east-west both shrink with
-// the latitude alike and vanish at the poles. 0 for an invalid tile or no intervals.
-double meridianSpacingMeters(const geo::TileId& tile, int intervals,
-                             const geo::Ellipsoid& ellipsoid);
 
 }  // namespace globe::terrain

@@ -11,13 +11,20 @@
 
 namespace globe::terrain {
 
-double shortestTexelMeters(const geo::TileId& tile, int widthPixels, int heightPixels,
-                           const geo::Ellipsoid& ellipsoid) {
-  if (!geo::GeographicTilingScheme::isValid(tile) || widthPixels <= 0 || heightPixels <= 0)
-    return 0.0;
+double meridianSpacingMeters(const geo::TileId& tile, int intervals,
+                             const geo::Ellipsoid& ellipsoid) {
+  if (!geo::GeographicTilingScheme::isValid(tile) || intervals <= 0) return 0.0;
   const geo::GlobeRectangle rect = geo::GeographicTilingScheme::tileRectangle(tile);
   const double a = ellipsoid.semiMajorAxisMeters, b = ellipsoid.semiMinorAxisMeters;
-  const double northSouth = (b * b / a) * rect.heightRadians() / heightPixels;
+  return (b * b / a) * rect.heightRadians() / intervals;
+}
+
+double shortestTexelMeters(const geo::TileId& tile, int widthPixels, int heightPixels,
+                           const geo::Ellipsoid& ellipsoid) {
+  const double northSouth = meridianSpacingMeters(tile, heightPixels, ellipsoid);
+  if (northSouth <= 0.0 || widthPixels <= 0) return 0.0;
+  const geo::GlobeRectangle rect = geo::GeographicTilingScheme::tileRectangle(tile);
+  const double a = ellipsoid.semiMajorAxisMeters;
   const double farthestLatitude =
       std::max(std::abs(rect.northRadians), std::abs(rect.southRadians));
   if (farthestLatitude >= std::numbers::pi / 2) return 0.0;  // cos(pi/2) is not quite 0

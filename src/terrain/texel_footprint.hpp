@@ -15,6 +15,13 @@
 
 namespace globe::terrain {
 
+// The north-south spacing, in metres, of `intervals` equal steps across `tile` on the meridian
+// (radius of curvature b²/a): a terrain tile's sample spacing (verticesPerSide − 1 intervals) or
+// an imagery tile's texel (its height in pixels). North-south because east-west both shrink with
+// the latitude alike and vanish at the poles. 0 for an invalid tile or no intervals.
+double meridianSpacingMeters(const geo::TileId& tile, int intervals,
+                             const geo::Ellipsoid& ellipsoid);
+
 // The shortest side, in metres, of one texel of a widthPixels x heightPixels texture covering
 // `tile` (geographic tiling scheme): north-south with the smallest meridian radius of curvature
 // b²/a, east-west on the smallest parallel radius a·cos(latitude) the tile reaches (0 for a tile

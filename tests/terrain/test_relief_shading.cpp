@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 
+#include "terrain/texel_footprint.hpp"
+
 namespace globe::terrain {
 namespace {
 
