@@ -295,6 +295,27 @@ std::vector<terrain::NominalErrorRegion> ImageryLayers::nominalErrorRegions(
   return regions;
 }
 
+bool ImageryLayers::sharperBelow(const geo::TileId& tile, uint32_t verticesPerSide,
+                                 double maximumScreenSpaceErrorPixels) {
+  if (tile.level >= geo::kMaxLevel) return false;
+  for (const auto& layer : layers_) {
+    if (!(layer->options.opacity > 0.0f)) continue;  // draws nothing
+    const formats::LayerManifest& manifest = layer->store->manifest();
+    auto imageryLevel = [&](uint32_t terrainLevel) {
+      return terrain::imageryLevelFor(terrainLevel, verticesPerSide, manifest.tileSizePixels,
+                                      maximumScreenSpaceErrorPixels, manifest.maxLevel());
+    };
+    const uint32_t childLevel = imageryLevel(tile.level + 1);
+    if (childLevel <= imageryLevel(tile.level)) continue;
+    for (const geo::TileId& child : tile.children()) {
+      const geo::TileId imageryTile = terrain::ancestorAt(child, childLevel);
+      if (layer->has(imageryTile).value_or(false)) return true;
+      if (imageryTile.level <= tile.level) break;  // one imagery tile for all four children
+    }
+  }
+  return false;
+}
+
 streaming::LoaderCounters ImageryLayers::counters() const {
   streaming::LoaderCounters sum;
   for (const auto& layer : layers_) {

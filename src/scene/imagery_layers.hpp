@@ -81,6 +81,13 @@ class ImageryLayers {
   std::vector<terrain::NominalErrorRegion> nominalErrorRegions(
       uint32_t verticesPerSide, double maximumScreenSpaceErrorPixels) const;
 
+  // Whether refining terrain tile `tile` into its children sharpens some visible layer there: a
+  // layer has the imagery tile the children take (terrain::imageryLevelFor), and it is deeper than
+  // the one `tile` takes. Where a layer's index is not read yet, no for now (it is read in the
+  // background and the answer comes a later frame).
+  bool sharperBelow(const geo::TileId& tile, uint32_t verticesPerSide,
+                    double maximumScreenSpaceErrorPixels);
+
   // Loader counters summed over the layers.
   streaming::LoaderCounters counters() const;
   // Blocks until some layer's load completes or the timeout passes.

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <thread>
 
 #include "geo/ecef.hpp"
@@ -9,6 +11,7 @@
 #include "geo/tiling_scheme.hpp"
 #include "terrain/block_grid.hpp"
 #include "terrain/tile_mesh.hpp"
+#include "terrain/upsampled_block.hpp"
 
 namespace globe::scene {
 namespace {
@@ -16,15 +19,57 @@ namespace {
 // Levels requested ahead of the refinement from a remote pyramid (SelectionOptions).
 constexpr uint32_t kRemoteLookaheadLevels = 3;
 
+// Refinement past the pyramid's data for imagery (SceneOptions::refineForImagery).
+struct Upsampling {
+  ImageryLayers& imagery;
+  std::unordered_map<geo::TileId, terrain::TileSummary>& tiles;  // TerrainScene::upsampled_
+  uint32_t verticesPerSide;
+  double maximumScreenSpaceErrorPixels;
+};
+
 // The pyramid index says what exists; the loader's cache says what is drawable. With
 // `notOpen`, a tile whose pack index was not read yet reads as a leaf's child would (its parent
-// is drawn) and is listed there, so that a server's round trip never blocks the frame.
+// is drawn) and is listed there, so that a server's round trip never blocks the frame. With
+// `upsampling`, a leaf's children exist where they sharpen a layer, and theirs in turn: their
+// summary is their parent's height bounds, with no measured error (the nominal one refines them).
 class SceneCatalog final : public terrain::TileCatalog {
  public:
   SceneCatalog(streaming::TileStore& store, const streaming::TileLoader& loader,
-               std::vector<geo::TileId>* notOpen)
-      : store_(store), loader_(loader), notOpen_(notOpen) {}
+               std::vector<geo::TileId>* notOpen, Upsampling* upsampling)
+      : store_(store), loader_(loader), notOpen_(notOpen), upsampling_(upsampling) {}
   std::optional<terrain::TileSummary> find(const geo::TileId& tile) const override {
+    bool notYetOpen = false;
+    if (auto summary = inPyramid(tile, notYetOpen)) return summary;
+    if (notYetOpen || upsampling_ == nullptr || tile.level == 0) return std::nullopt;
+    if (auto known = upsampling_->tiles.find(tile); known != upsampling_->tiles.end()) {
+      return known->second;
+    }
+    // The parent is a leaf of the pyramid, or itself made from its parent.
+    const geo::TileId parent = tile.parent();
+    std::optional<terrain::TileSummary> parentSummary;
+    if (auto known = upsampling_->tiles.find(parent); known != upsampling_->tiles.end()) {
+      parentSummary = known->second;
+    } else {
+      parentSummary = inPyramid(parent, notYetOpen);
+    }
+    if (!parentSummary || !upsampling_->imagery.sharperBelow(
+                              parent, upsampling_->verticesPerSide,
+                              upsampling_->maximumScreenSpaceErrorPixels)) {
+      return std::nullopt;
+    }
+    if (upsampling_->tiles.size() >= kUpsampledEntries) upsampling_->tiles.clear();
+    const terrain::TileSummary summary{parentSummary->subtreeHeightRange,
+                                       std::numeric_limits<double>::quiet_NaN()};
+    upsampling_->tiles.emplace(tile, summary);
+    return summary;
+  }
+  bool isResident(const geo::TileId& tile) const override { return loader_.isResident(tile); }
+
+ private:
+  // Bounded: a long flight finds ever new tiles (the chain from a leaf is found again top-down).
+  static constexpr size_t kUpsampledEntries = 1u << 16;
+
+  std::optional<terrain::TileSummary> inPyramid(const geo::TileId& tile, bool& notYetOpen) const {
     if (notOpen_ != nullptr) {
       formats::PackEntry e;
       switch (store_.peekEntry(tile, &e)) {
@@ -34,6 +79,7 @@ class SceneCatalog final : public terrain::TileCatalog {
           return std::nullopt;
         case streaming::TileStore::Peek::NotOpen:
           notOpen_->push_back(tile);
+          notYetOpen = true;
           return std::nullopt;
       }
     }
@@ -41,12 +87,11 @@ class SceneCatalog final : public terrain::TileCatalog {
     if (!entry || !*entry) return std::nullopt;  // an unreadable pack draws its parent instead
     return terrain::TileSummary{(*entry)->subtreeRange, (*entry)->geometricErrorMeters};
   }
-  bool isResident(const geo::TileId& tile) const override { return loader_.isResident(tile); }
 
- private:
   streaming::TileStore& store_;
   const streaming::TileLoader& loader_;
   std::vector<geo::TileId>* notOpen_;
+  Upsampling* upsampling_;
 };
 
 // Bilinear height inside a block at a position of its tile (water: 0 m, or its sea floor).
@@ -190,7 +235,13 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
       }
     }
   }
-  const SceneCatalog catalog(*store_, *loader_, store_->remote() ? &notOpen : nullptr);
+  std::optional<Upsampling> upsampling;
+  if (imagery_ && options_.refineForImagery) {
+    upsampling.emplace(Upsampling{*imagery_, upsampled_, store_->manifest().verticesPerSide,
+                                  options_.maximumScreenSpaceErrorPixels});
+  }
+  const SceneCatalog catalog(*store_, *loader_, store_->remote() ? &notOpen : nullptr,
+                             upsampling ? &*upsampling : nullptr);
   terrain::SelectionResult selection =
       terrain::selectTiles(selectionView, catalog, selectionOptions,
                            options_.hysteresis ? tiles_ : std::vector<geo::TileId>{});
@@ -198,10 +249,22 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   cache_.touch(selection.tiles);
   std::vector<streaming::LoadRequest> requests;
   for (const terrain::TileRequest& r : selection.requests) {
-    if (r.tile.level <= options_.maximumLoadLevel &&
-        loader_->state(r.tile) != streaming::TileState::Failed) {
-      requests.push_back({r.tile, r.priority});
+    if (r.tile.level > options_.maximumLoadLevel ||
+        loader_->state(r.tile) == streaming::TileState::Failed) {
+      continue;
     }
+    if (upsampled_.contains(r.tile)) {
+      // Made now from the parent's block, drawn from the next frame; a lookahead tile whose
+      // parent is not here yet waits for it.
+      if (auto parent = loader_->isResident(r.tile.parent()) ? loader_->get(r.tile.parent())
+                                                              : nullptr) {
+        cache_.insert(r.tile, std::make_shared<const terrain::HeightBlock>(
+                                  terrain::upsampleBlock(*parent, r.tile, ellipsoid_)));
+        ++info.upsampled;
+      }
+      continue;
+    }
+    requests.push_back({r.tile, r.priority});
   }
   loader_->request(requests);
   openPacksInBackground(notOpen);
@@ -265,7 +328,8 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   info.tilesSelected = tiles_.size();
   info.requests = requests.size();
   info.arrived += packOpens_.takeFinished();
-  info.complete = requests.empty() && loader_->counters().inFlight == 0 && notOpen.empty() &&
+  info.complete = requests.empty() && info.upsampled == 0 &&
+                  loader_->counters().inFlight == 0 && notOpen.empty() &&
                   packOpens_.pending() == 0 && info.imagery.complete;
   return info;
 }

@@ -53,6 +53,10 @@ struct SceneOptions {
   // (ImageryLayers::nominalErrorRegions).
   bool measuredLod = true;
   bool sky = true;  // the sky and distance fog (render/sky_model.hpp); --no-sky: black space
+  // Past the pyramid's finest data, terrain tiles made from their parent's surface
+  // (terrain/upsampled_block.hpp) where a layer's imagery is finer, so imagery is drawn at its
+  // own resolution; off: imagery stops one level above the pyramid's deepest tile there.
+  bool refineForImagery = true;
   // Failed loads (a server down, a 503) are tried again this long after the last try; 0: never
   // (snapshots and playback, whose result must not depend on when a server came back).
   double retryFailedLoadsSeconds = 0;
@@ -67,6 +71,7 @@ struct SceneOptions {
 
 struct FrameInfo {
   terrain::SelectionCounters selection;
+  size_t upsampled = 0;            // blocks made from their parent's surface this frame
   size_t tilesSelected = 0;
   size_t requests = 0;             // wanted and loadable
   size_t arrived = 0;              // blocks that arrived this frame
@@ -144,6 +149,9 @@ class TerrainScene {
   terrain::RenderView view_;
   uint64_t frame_ = 0;
   std::unordered_map<geo::TileId, uint64_t> gpuLastUsedFrame_;
+  // Tiles past the pyramid's data that the selection may refine into (options.refineForImagery),
+  // with their summaries (their parent's height bounds): filled as the selection finds them.
+  std::unordered_map<geo::TileId, terrain::TileSummary> upsampled_;
 };
 
 }  // namespace globe::scene

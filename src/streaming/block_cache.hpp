@@ -11,7 +11,9 @@ namespace globe::streaming {
 template <>
 struct PayloadBytes<terrain::HeightBlock> {
   static size_t of(const terrain::HeightBlock& block) {
-    return (block.heights.size() + block.apron.size()) * sizeof(int16_t);
+    return (block.heights.size() + block.apron.size()) * sizeof(int16_t) +
+           (block.exactSurfaceMeters.size() + block.exactApronSurfaceMeters.size()) *
+               sizeof(double);
   }
 };
 

@@ -1,6 +1,7 @@
 #include "terrain/height_block.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace globe::terrain {
 
@@ -22,6 +23,11 @@ HeightRange surfaceHeightRange(const HeightBlock& block) {
     const auto high = static_cast<int16_t>(surfaceHeightMeters(sample, SeaSurface::Water));
     range.minimumMeters = std::min(range.minimumMeters, low);
     range.maximumMeters = std::max(range.maximumMeters, high);
+  }
+  // An upsampled block's exact heights lie between its rounded samples': widened to whole metres.
+  for (double meters : block.exactSurfaceMeters) {
+    range.minimumMeters = std::min(range.minimumMeters, static_cast<int16_t>(std::floor(meters)));
+    range.maximumMeters = std::max(range.maximumMeters, static_cast<int16_t>(std::ceil(meters)));
   }
   if (block.heights.empty()) range = HeightRange{};
   return range;

@@ -91,14 +91,34 @@ struct HeightBlock {
   SeaSurface sea = SeaSurface::Water;  // the surface the view asked for, set when loaded
   // apronSampleCount(verticesPerSide) samples, or empty (pyramids from before pack version 3).
   std::vector<int16_t> apron{};
+  // A block made from its parent's surface (terrain/upsampled_block.hpp) keeps that surface's
+  // heights exactly, which int16 samples cannot: the surface heights (metres, `sea` applied) of
+  // the grid and of the apron, in the orders above. Empty for blocks read from a pyramid.
+  std::vector<double> exactSurfaceMeters{};
+  std::vector<double> exactApronSurfaceMeters{};
 
   int16_t at(uint32_t row, uint32_t column) const {
     return heights[static_cast<size_t>(row) * verticesPerSide + column];
   }
   double surfaceHeightMetersAt(uint32_t row, uint32_t column) const {
+    if (!exactSurfaceMeters.empty()) {
+      return exactSurfaceMeters[static_cast<size_t>(row) * verticesPerSide + column];
+    }
     return surfaceHeightMeters(at(row, column), sea);
   }
   bool hasApron() const { return apron.size() == apronSampleCount(verticesPerSide); }
+  // The surface height at (row, column) in [-kApronWidth, N+kApronWidth-1] (requires hasApron()
+  // outside the block).
+  double surfaceHeightMetersWithApron(int row, int column) const {
+    const auto n = static_cast<int>(verticesPerSide);
+    if (row >= 0 && row < n && column >= 0 && column < n) {
+      return surfaceHeightMetersAt(static_cast<uint32_t>(row), static_cast<uint32_t>(column));
+    }
+    if (!exactApronSurfaceMeters.empty()) {
+      return exactApronSurfaceMeters[apronIndex(row, column, verticesPerSide)];
+    }
+    return surfaceHeightMeters(apron[apronIndex(row, column, verticesPerSide)], sea);
+  }
   // Sample (row, column) for row and column in [-kApronWidth, N+kApronWidth-1]: the block
   // inside, the apron around it (requires hasApron()).
   int16_t atWithApron(int row, int column) const {

@@ -94,7 +94,7 @@ TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
     for (uint32_t j = 0; j < n; ++j) {
       const int16_t sample = block.at(i, j);
       Vertex& vertex = vertices[gridVertexIndex(i, j, n)];
-      vertex.heightMeters = surfaceHeightMeters(sample, block.sea);
+      vertex.heightMeters = block.surfaceHeightMetersAt(i, j);
       vertex.colorHeightMeters = seaFloorMeters(sample);
       vertex.positionEcef = vertexEcef(ellipsoid, longitudes[j], latitudes[i], vertex.heightMeters);
       vertex.sea = isWater(sample) ? 1.0f : 0.0f;
@@ -115,7 +115,7 @@ TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
     }
     const BlockGrid::Vertex where = grid.wrappedVertex(row, column);
     return vertexEcef(ellipsoid, where.longitudeDegrees, where.latitudeDegrees,
-                      surfaceHeightMeters(block.atWithApron(row, column), block.sea));
+                      block.surfaceHeightMetersWithApron(row, column));
   };
   // The normal at (row, column) from neighbours `step` vertices away: 1 for this level's, 2 for
   // the next coarser level's (every other vertex is its). Never past the apron.
