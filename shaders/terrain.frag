@@ -24,9 +24,12 @@ uniform sampler2D u_imagery;   // global equirectangular, row 0 at +90 deg
 in vec2 v_layerUv[GLOBE_LAYERS];  // imagery uv of each layer (terrain.vert)
 #ifdef GLOBE_LIGHT_IMAGERY
 in vec2 v_light;                  // land light, sea light: --lighting shades the imagery too
-// How much of that light each layer takes on this tile, w of mix(1, light, w): by how much
-// coarser its texel is than the tile's samples (terrain/relief_shading.hpp), computed per tile
-// on the CPU.
+// The light splits into level ground's (the sea light: the globe's own shading) and the relief's
+// (land light / level ground's, 1 on level ground and water). Level ground's is applied at
+// u_levelLight to every layer; the relief at each layer's weight w (terrain/relief_shading.hpp,
+// per tile on the CPU): by how much coarser its texel is than the terrain's samples. Where w
+// changes (where the sources do), level ground and water keep their brightness: no step.
+uniform float u_levelLight;
 uniform float u_layerLight[GLOBE_LAYERS];
 #endif
 // Imagery tiles, premultiplied alpha (render/imagery_textures.cpp), row 0 = v 0. Four samplers
@@ -57,12 +60,13 @@ out vec4 o_color;
 // "Over" with a premultiplied texel: colour·(1 − a) + rgb, a = alpha · opacity, which is
 // mix(colour, straight rgb, a). Premultiplied so that filtering next to transparent texels does
 // not bleed their (meaningless) colour in.
-vec3 drape(vec3 color, sampler2D layer, int k, float light) {
+// light: level ground's shading times the relief's (1 without --lighting), relief: the relief's.
+vec3 drape(vec3 color, sampler2D layer, int k, float level, float relief) {
   vec4 texel = texture(layer, v_layerUv[k]) * u_layerOpacity[k];
 #ifdef GLOBE_LIGHT_IMAGERY
-  light = mix(1.0, light, u_layerLight[k]);
+  level *= mix(1.0, relief, u_layerLight[k]);
 #endif
-  return texel.rgb * light + color * (1.0 - texel.a);
+  return texel.rgb * level + color * (1.0 - texel.a);
 }
 #endif
 
@@ -77,19 +81,21 @@ void main() {
 #endif
 #ifdef GLOBE_LAYERS
 #ifdef GLOBE_LIGHT_IMAGERY
-  float light = v_sea > 0.5 ? v_light.y : v_light.x;
+  float level = mix(1.0, v_light.y, u_levelLight);
+  float relief = v_sea > 0.5 ? 1.0 : v_light.x / max(v_light.y, 1e-3);
 #else
-  float light = 1.0;  // imagery keeps its own (baked-in) shading
+  float level = 1.0;  // imagery keeps its own (baked-in) shading
+  float relief = 1.0;
 #endif
-  color = drape(color, u_layer0, 0, light);
+  color = drape(color, u_layer0, 0, level, relief);
 #if GLOBE_LAYERS > 1
-  color = drape(color, u_layer1, 1, light);
+  color = drape(color, u_layer1, 1, level, relief);
 #endif
 #if GLOBE_LAYERS > 2
-  color = drape(color, u_layer2, 2, light);
+  color = drape(color, u_layer2, 2, level, relief);
 #endif
 #if GLOBE_LAYERS > 3
-  color = drape(color, u_layer3, 3, light);
+  color = drape(color, u_layer3, 3, level, relief);
 #endif
 #endif
   o_color = vec4(mix(color, u_fogColor, v_fog), 1.0);

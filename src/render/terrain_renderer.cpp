@@ -52,7 +52,7 @@ struct TerrainRenderer::Impl {
     GLint sunDirection = -1, ambient = -1, hillShading = -1, imagery = -1;
     GLint logDepthScale = -1, coarserEdges = -1;
     GLint fogColor = -1, fogDensity = -1, fogMaximum = -1;
-    GLint layerTransform = -1, layerOpacity = -1, layerLight = -1;
+    GLint layerTransform = -1, layerOpacity = -1, layerLight = -1, levelLight = -1;
     std::array<GLint, terrain::kMaxDrapeLayers> layerSamplers{-1, -1, -1, -1};
   };
 
@@ -161,10 +161,15 @@ TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(
     bound.textures[bound.count] = texture;
     bound.transforms[bound.count] = drape.uvTransform;
     bound.opacities[bound.count] = opacity;
-    bound.lightWeights[bound.count] = static_cast<float>(terrain::imageryLightWeight(
-        style.imageryLighting,
-        terrain::meridianSpacingMeters(drape.imageryTile, resident.heightPixels, wgs84),
-        sampleSpacingMeters));
+    const bool native =
+        std::isfinite(drape.nativeTexelDegrees) && std::isfinite(drape.terrainStepDegrees);
+    bound.lightWeights[bound.count] = static_cast<float>(
+        native ? terrain::imageryLightWeight(style.imageryLighting, drape.nativeTexelDegrees,
+                                             drape.terrainStepDegrees)
+               : terrain::imageryLightWeight(style.imageryLighting,
+                                             terrain::meridianSpacingMeters(
+                                                 drape.imageryTile, resident.heightPixels, wgs84),
+                                             sampleSpacingMeters));
     const double texelMeters = terrain::shortestTexelMeters(drape.imageryTile, resident.widthPixels,
                                                             resident.heightPixels, wgs84);
     const bool magnified =
@@ -218,6 +223,7 @@ Result<const TerrainRenderer::Impl::Program*> TerrainRenderer::Impl::program(
   u.layerTransform = p.uniformLocation("u_layerTransform");
   u.layerOpacity = p.uniformLocation("u_layerOpacity");
   u.layerLight = p.uniformLocation("u_layerLight");
+  u.levelLight = p.uniformLocation("u_levelLight");
   for (uint32_t k = 0; k < terrain::kMaxDrapeLayers; ++k) {
     u.layerSamplers[k] = p.uniformLocation(("u_layer" + std::to_string(k)).c_str());
   }
@@ -537,6 +543,10 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
         glUniform1f(u.fogDensity, sky.fogDensityPerMeter);
         glUniform1f(u.fogMaximum, sky.fogMaximum);
         glUniform1i(u.hillShading, style.hillShading ? 1 : 0);
+        if (u.levelLight >= 0) {
+          glUniform1f(u.levelLight,
+                      static_cast<float>(terrain::levelGroundLightWeight(style.imageryLighting)));
+        }
         if (u.imagery >= 0) glUniform1i(u.imagery, 0);
         glUniform1f(u.logDepthScale, logDepthScale);
         // Units 1..4 (unit 0 holds the global image).

@@ -81,11 +81,13 @@ struct TerrainStyle {
 // flat; the fragment picks land or sea by the interpolated flag, so coasts stay sharp.
 // Drape layers (draw with drapes, shaders built with GLOBE_LAYERS): over that colour (the global
 // image included, when set and drapeImagery is on), each layer bottom to top per fragment:
-// colour = mix(colour, texel.rgb · mix(1, light, w), texel.a · opacity), light the land or sea
-// light above and w the layer's weight on this tile (imageryLighting: 0 Off, 1 On, Auto
-// terrain::reliefShadingWeight of the layer's imagery texel over the tile's sample spacing, both
-// in metres, in double, once per tile and layer). Imagery covers sea too. Texels are stored
-// premultiplied.
+// colour = mix(colour, texel.rgb · mix(1, level, v) · mix(1, land / level, w), texel.a ·
+// opacity), with `level` the sea light above (level ground's), land / level the relief's light (1
+// over water), v = terrain::levelGroundLightWeight(imageryLighting) and w the layer's weight on
+// this tile (imageryLighting: 0 Off, 1 On, Auto terrain::reliefShadingWeight of the data's own
+// texel over its own sample step, TileDrape::nativeTexelDegrees and terrainStepDegrees; without
+// them, of the drawn imagery tile's texel over the tile's vertex spacing; in double, once per
+// tile and layer). Imagery covers sea too. Texels are stored premultiplied.
 // Skirts: only on the edges whose same-level neighbour is not drawn this frame
 // (terrain/skirt_edges.hpp); tiles of one level share their edge samples and their meshes overlap
 // by a hair (terrain::kSeamOverlapFraction), so no crack opens there.

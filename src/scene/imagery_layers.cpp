@@ -11,6 +11,7 @@
 
 #include "geo/ecef.hpp"
 #include "geo/tiling_scheme.hpp"
+#include "scene/native_resolution.hpp"
 #include "streaming/background_pack_opens.hpp"
 #include "terrain/imagery_level.hpp"
 
@@ -28,6 +29,7 @@ struct ImageryLayers::Layer {
   streaming::BackgroundPackOpens opening;
   std::unordered_map<geo::TileId, uint64_t> textureLastUsedFrame;  // textures on the GPU
   std::unordered_map<geo::TileId, bool> present;  // the layer's index, asked once per tile
+  std::unordered_map<geo::TileId, double> nativeTexelDegrees;  // per terrain tile, found once
 
   Layer(LayerOptions layerOptions, std::unique_ptr<streaming::ImageryStore> layerStore,
         core::TaskRunner& taskRunner, size_t decodedBytes)
@@ -69,6 +71,14 @@ struct ImageryLayers::Layer {
                  [store = store, tile] {
                    (void)store->hasTile(tile);  // opens the pack: an error is the store's to report
                  });
+  }
+  // The finest source texel at a terrain tile (native_resolution.hpp), found once per tile.
+  double nativeTexelAt(const geo::TileId& tile) {
+    if (auto it = nativeTexelDegrees.find(tile); it != nativeTexelDegrees.end()) return it->second;
+    if (nativeTexelDegrees.size() >= kPresentEntries) nativeTexelDegrees.clear();
+    const double degrees = finestTexelDegreesAt(store->manifest().sources, tile);
+    nativeTexelDegrees.emplace(tile, degrees);
+    return degrees;
   }
   static constexpr size_t kPresentEntries = 1u << 16;
 };
@@ -223,8 +233,10 @@ Result<ImageryFrame> ImageryLayers::update(std::span<const geo::TileId> tiles,
       if (drawn != want) ++frame.fallbacks;
       layer.textureLastUsedFrame[drawn] = frame_;
       terrain::TileDrapes& tileDrapes = drapes[i];
-      tileDrapes.layers[tileDrapes.count++] = terrain::TileDrape{
-          index, drawn, terrain::uvTransformInAncestor(tile, drawn), layer.options.opacity};
+      terrain::TileDrape& drape = tileDrapes.layers[tileDrapes.count++];
+      drape = terrain::TileDrape{index, drawn, terrain::uvTransformInAncestor(tile, drawn),
+                                 layer.options.opacity};
+      drape.nativeTexelDegrees = layer.nativeTexelAt(tile);
       ++frame.drapes;
     }
     layer.cache.touch(wantedTiles);

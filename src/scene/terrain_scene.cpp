@@ -9,6 +9,7 @@
 #include "geo/ecef.hpp"
 #include "geo/frustum.hpp"
 #include "geo/tiling_scheme.hpp"
+#include "scene/native_resolution.hpp"
 #include "terrain/block_grid.hpp"
 #include "terrain/tile_mesh.hpp"
 #include "terrain/upsampled_block.hpp"
@@ -52,9 +53,9 @@ class SceneCatalog final : public terrain::TileCatalog {
     } else {
       parentSummary = inPyramid(parent, notYetOpen);
     }
-    if (!parentSummary || !upsampling_->imagery.sharperBelow(
-                              parent, upsampling_->verticesPerSide,
-                              upsampling_->maximumScreenSpaceErrorPixels)) {
+    if (!parentSummary ||
+        !upsampling_->imagery.sharperBelow(parent, upsampling_->verticesPerSide,
+                                           upsampling_->maximumScreenSpaceErrorPixels)) {
       return std::nullopt;
     }
     if (upsampling_->tiles.size() >= kUpsampledEntries) upsampling_->tiles.clear();
@@ -256,8 +257,8 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
     if (upsampled_.contains(r.tile)) {
       // Made now from the parent's block, drawn from the next frame; a lookahead tile whose
       // parent is not here yet waits for it.
-      if (auto parent = loader_->isResident(r.tile.parent()) ? loader_->get(r.tile.parent())
-                                                              : nullptr) {
+      if (auto parent =
+              loader_->isResident(r.tile.parent()) ? loader_->get(r.tile.parent()) : nullptr) {
         cache_.insert(r.tile, std::make_shared<const terrain::HeightBlock>(
                                   terrain::upsampleBlock(*parent, r.tile, ellipsoid_)));
         ++info.upsampled;
@@ -328,9 +329,8 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   info.tilesSelected = tiles_.size();
   info.requests = requests.size();
   info.arrived += packOpens_.takeFinished();
-  info.complete = requests.empty() && info.upsampled == 0 &&
-                  loader_->counters().inFlight == 0 && notOpen.empty() &&
-                  packOpens_.pending() == 0 && info.imagery.complete;
+  info.complete = requests.empty() && info.upsampled == 0 && loader_->counters().inFlight == 0 &&
+                  notOpen.empty() && packOpens_.pending() == 0 && info.imagery.complete;
   return info;
 }
 
@@ -362,11 +362,26 @@ void TerrainScene::updateImagery(const glm::dvec3& cameraEcefMeters, TileGpu& gp
       options_.maximumImageryLoadLevel, cameraEcefMeters, ellipsoid_, gpu, drapes_);
   if (frame) {
     info.imagery = *frame;
+    // The terrain's own step where each tile is, for the relief weight (TileDrape).
+    for (size_t i = 0; i < tiles_.size(); ++i) {
+      if (drapes_[i].count == 0) continue;
+      const double step = terrainStepDegreesAt(tiles_[i]);
+      for (uint32_t k = 0; k < drapes_[i].count; ++k)
+        drapes_[i].layers[k].terrainStepDegrees = step;
+    }
     return;
   }
   // A texture that cannot be uploaded: the terrain's own colours rather than no picture.
   core::warn(options_.warnings, "imagery: " + frame.error());
   drapes_.assign(tiles_.size(), terrain::TileDrapes{});
+}
+
+double TerrainScene::terrainStepDegreesAt(const geo::TileId& tile) {
+  if (auto it = terrainStepDegrees_.find(tile); it != terrainStepDegrees_.end()) return it->second;
+  if (terrainStepDegrees_.size() >= kTerrainStepEntries) terrainStepDegrees_.clear();
+  const double degrees = finestStepDegreesAt(store_->manifest().sources, tile);
+  terrainStepDegrees_.emplace(tile, degrees);
+  return degrees;
 }
 
 void TerrainScene::waitForLoads(std::chrono::milliseconds timeout) const {

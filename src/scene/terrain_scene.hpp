@@ -71,7 +71,7 @@ struct SceneOptions {
 
 struct FrameInfo {
   terrain::SelectionCounters selection;
-  size_t upsampled = 0;            // blocks made from their parent's surface this frame
+  size_t upsampled = 0;  // blocks made from their parent's surface this frame
   size_t tilesSelected = 0;
   size_t requests = 0;             // wanted and loadable
   size_t arrived = 0;              // blocks that arrived this frame
@@ -127,6 +127,9 @@ class TerrainScene {
   void openPacksInBackground(const std::vector<geo::TileId>& tiles);
   Result<void> uploadIfNeeded(const geo::TileId& tile, const terrain::HeightBlock& block,
                               TileGpu& gpu);
+  // The pyramid's finest source step at the tile (scene/native_resolution.hpp), found once.
+  double terrainStepDegreesAt(const geo::TileId& tile);
+  static constexpr size_t kTerrainStepEntries = 1u << 16;
 
   SceneOptions options_;
   geo::Ellipsoid ellipsoid_;
@@ -152,6 +155,7 @@ class TerrainScene {
   // Tiles past the pyramid's data that the selection may refine into (options.refineForImagery),
   // with their summaries (their parent's height bounds): filled as the selection finds them.
   std::unordered_map<geo::TileId, terrain::TileSummary> upsampled_;
+  std::unordered_map<geo::TileId, double> terrainStepDegrees_;  // terrainStepDegreesAt's answers
 };
 
 }  // namespace globe::scene

@@ -12,8 +12,9 @@ namespace globe::terrain {
 //   -9999                  water, floor depth unknown (GTOPO30's no data: sea)
 //   -32767 .. -20001       water over a sea floor at (sample + 20000) metres, -12767..-1 m
 //   anything else          land at that height, below sea level included (Dead Sea, polders)
-// The tiler decides which samples are water (sea connected to open sea, see docs/conditioning.md); the viewer
-// draws water as a surface at 0 m (MSL) and collides with it, unless the sea floor is asked for.
+// The tiler decides which samples are water (sea connected to open sea, see docs/conditioning.md);
+// the viewer draws water as a surface at 0 m (MSL) and collides with it, unless the sea floor is
+// asked for.
 inline constexpr int16_t kNoDataHeight = -9999;
 inline constexpr int16_t kSeaFloorCodeOffset = -20000;
 inline constexpr int16_t kDeepestSeaFloorMeters = -12767;

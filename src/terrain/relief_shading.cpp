@@ -45,6 +45,18 @@ double reliefShadingWeight(double imageryTexelMeters, double terrainSpacingMeter
   return kGentleReliefWeight + (1.0 - kGentleReliefWeight) * std::clamp(along, 0.0, 1.0);
 }
 
+double levelGroundLightWeight(ImageryLighting lighting) {
+  switch (lighting) {
+    case ImageryLighting::Off:
+      return 0.0;
+    case ImageryLighting::On:
+      return 1.0;
+    case ImageryLighting::Auto:
+      break;
+  }
+  return kGentleReliefWeight;
+}
+
 double imageryLightWeight(ImageryLighting lighting, double imageryTexelMeters,
                           double terrainSpacingMeters) {
   switch (lighting) {

@@ -31,7 +31,11 @@ inline constexpr double kGentleReliefWeight = 0.3;
 // ratio is not a positive finite number (no known texel: shade rather than flatten).
 double reliefShadingWeight(double imageryTexelMeters, double terrainSpacingMeters);
 
-// The same for a mode: Off 0, On 1, Auto reliefShadingWeight.
+// How much of level ground's light (the globe's own shading, apart from the relief's) imagery
+// takes: Off 0, On 1, Auto kGentleReliefWeight everywhere, so that it never steps between tiles.
+double levelGroundLightWeight(ImageryLighting lighting);
+
+// The relief's weight for a mode: Off 0, On 1, Auto reliefShadingWeight.
 double imageryLightWeight(ImageryLighting lighting, double imageryTexelMeters,
                           double terrainSpacingMeters);
 

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 
 #include <glm/vec4.hpp>
 
@@ -22,6 +23,12 @@ struct TileDrape {
   // 0.5).
   glm::vec4 uvTransform{0.0f, 0.0f, 1.0f, 1.0f};
   float opacity = 1.0f;  // multiplies the texel alpha
+  // The data's own resolutions where the tile is (its centre): the layer's finest source texel
+  // and the terrain's finest source step, in degrees. --lighting auto weighs the light by their
+  // ratio (relief_shading.hpp), which changes only where the sources do, not from tile to tile
+  // with the levels drawn. NaN: not known, the drawn tiles' texel and vertex spacing instead.
+  double nativeTexelDegrees = std::numeric_limits<double>::quiet_NaN();
+  double terrainStepDegrees = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Per drawn terrain tile, bottom layer first; layers[count..] are ignored.

@@ -54,8 +54,8 @@ class ParentSurface {
       return {0.0, 0.0, geo::cartographicToEcef(ellipsoid_, pole).z};
     }
     return geo::cartographicToEcef(
-        ellipsoid_, geo::Cartographic::fromDegrees(place.longitudeDegrees, place.latitudeDegrees,
-                                                   height));
+        ellipsoid_,
+        geo::Cartographic::fromDegrees(place.longitudeDegrees, place.latitudeDegrees, height));
   }
 
  private:
@@ -103,7 +103,7 @@ Point onParentSurface(const ParentSurface& parent, int rowTwice, int columnTwice
   // and the diagonal, north-east half {(r,c), (r+1,c+1), (r,c+1)} for a row edge. At the border
   // of a block without apron, the other triangle on that edge.
   int thirdRow = row + 1, thirdColumn = column + 1;  // a column edge or a row edge
-  if (midRow && midColumn) thirdColumn = column;       // the diagonal
+  if (midRow && midColumn) thirdColumn = column;     // the diagonal
   if (!parent.has(thirdRow, thirdColumn)) {
     if (!midColumn) {  // north-east half of the quad to the west
       thirdRow = row;

@@ -54,8 +54,8 @@ Gap compare(const geo::TileId& parentTile) {
     const terrain::ArrayTile array = terrain::makeArrayTile(child, up);
     for (uint32_t i = 1; i < kN; i += 2) {
       for (uint32_t j = 1; j < kN; j += 2) {
-        const double mean = 0.5 * (up.surfaceHeightMetersAt(i - 1, j - 1) +
-                                   up.surfaceHeightMetersAt(i + 1, j + 1));
+        const double mean =
+            0.5 * (up.surfaceHeightMetersAt(i - 1, j - 1) + up.surfaceHeightMetersAt(i + 1, j + 1));
         gap.meanMeters = std::max(gap.meanMeters, std::abs(mean - up.surfaceHeightMetersAt(i, j)));
       }
     }

@@ -376,32 +376,81 @@ TEST_F(ImageryLayers, LightImageryDimsTheTexelsByTheTerrainLight) {
   EXPECT_TRUE(near(upLit.at(middle.x, middle.y), {value, value, value, 255}, 4));
 }
 
-// Auto lighting: a layer as fine as the terrain (256 texels over 16 sample intervals) takes the
-// gentle floor of the light; one whose texels span 4 samples (4x4 over 16) takes all of it.
-TEST_F(ImageryLayers, AutoLightingWeighsTheLightByTheTexelOverTheSampleSpacing) {
-  uploadFlat(kTile);
-  uploadImagery(0, kTile, solidImage(kWhite));
-  const std::vector<uint8_t> coarse(4 * 4 * 4, 255);
-  ASSERT_TRUE(renderer_->uploadImageryTile(1, kTile, coarse, 4, 4).ok());
-  const geo::Cartographic centre = geo::GeographicTilingScheme::tileRectangle(kTile).center();
-  const LocalFrame frame = localFrame(geo::radiansToDegrees(centre.longitudeRadians),
-                                      geo::radiansToDegrees(centre.latitudeRadians));
-  const glm::dvec3 sun = glm::normalize(0.5 * frame.up + std::sqrt(0.75) * frame.east);
-  const terrain::RenderView view = viewOnto(kTile, 450e3, sun);
-  const glm::ivec2 middle = pixelAt(view, kTile, 0.5, 0.5);
-
-  TerrainStyle style = renderer_->style();
-  style.imageryLighting = terrain::ImageryLighting::Auto;
-  renderer_->setStyle(style);
-  const double light = style.ambient + (1.0 - style.ambient) * 0.5;
-  const auto lit = [&](double weight) {
-    const auto value = static_cast<uint8_t>(std::lround(255.0 * (1.0 + weight * (light - 1.0))));
-    return Rgba{value, value, value, 255};
+// Auto lighting splits the light into level ground's (the sea light) and the relief's (land light
+// over level ground's). Level ground's is applied at the gentle weight to every layer, so a flat
+// tile looks the same under fine and coarse imagery: no step where the weight changes. The
+// relief's goes by the layer's texel over the terrain's samples: a layer as fine as the terrain
+// (256 texels over 16 sample intervals) takes the gentle floor of it, one whose texels span 4
+// samples (4x4 over 16) all of it. Expected values from the same tiles drawn with --lighting on
+// (light = level · relief there).
+TEST_F(ImageryLayers, AutoLightingWeighsTheReliefByTheTexelOverTheSampleSpacing) {
+  std::vector<uint8_t> coarse;
+  for (int texel = 0; texel < 4 * 4; ++texel)
+    coarse.insert(coarse.end(), kWhite.begin(), kWhite.end());
+  const auto drawBoth = [&](const geo::TileId& tile, bool ramp) {
+    if (ramp) {
+      terrain::HeightBlock block;
+      block.verticesPerSide = 17;
+      block.heights.resize(17 * 17);
+      for (uint32_t i = 0; i < 17 * 17; ++i) {  // rising 150 m per interval eastwards
+        block.heights[i] = static_cast<int16_t>(kGroundMeters + 150.0 * (i % 17));
+      }
+      const double skirt = terrain::recommendedSkirtDepthMeters(tile.level, 17, kWgs84);
+      ASSERT_TRUE(
+          renderer_->uploadTile(tile, terrain::buildTileMesh(tile, block, kWgs84, skirt)).ok());
+    } else {
+      uploadFlat(tile);
+    }
+    uploadImagery(0, tile, solidImage(kWhite));
+    ASSERT_TRUE(renderer_->uploadImageryTile(1, tile, coarse, 4, 4).ok());
   };
-  const Image fine = drawDraped(view, {kTile}, {drapesOf({{0, kTile}})});
-  EXPECT_TRUE(near(fine.at(middle.x, middle.y), lit(terrain::kGentleReliefWeight), 4));
-  const Image coarseLit = drawDraped(view, {kTile}, {drapesOf({{1, kTile}})});
-  EXPECT_TRUE(near(coarseLit.at(middle.x, middle.y), lit(1.0), 4));
+  struct Lit {
+    double on, fine, coarse;
+  };
+  const auto measure = [&](const geo::TileId& tile, double altitudeMeters) {
+    const geo::Cartographic centre = geo::GeographicTilingScheme::tileRectangle(tile).center();
+    const LocalFrame frame = localFrame(geo::radiansToDegrees(centre.longitudeRadians),
+                                        geo::radiansToDegrees(centre.latitudeRadians));
+    const glm::dvec3 sun = glm::normalize(0.5 * frame.up + std::sqrt(0.75) * frame.east);
+    const terrain::RenderView view = viewOnto(tile, altitudeMeters, sun);
+    const glm::ivec2 middle = pixelAt(view, tile, 0.5, 0.5);
+    TerrainStyle style = renderer_->style();
+    Lit lit{};
+    for (const auto mode : {terrain::ImageryLighting::On, terrain::ImageryLighting::Auto}) {
+      style.imageryLighting = mode;
+      renderer_->setStyle(style);
+      const Image fine = drawDraped(view, {tile}, {drapesOf({{0, tile}})});
+      const Image coarseImage = drawDraped(view, {tile}, {drapesOf({{1, tile}})});
+      const double f = fine.at(middle.x, middle.y)[0], c = coarseImage.at(middle.x, middle.y)[0];
+      if (mode == terrain::ImageryLighting::On) {
+        EXPECT_NEAR(f, c, 1.0) << "on: the same light whatever the texel";
+        lit.on = f;
+      } else {
+        lit.fine = f;
+        lit.coarse = c;
+      }
+    }
+    return lit;
+  };
+  const double ambient = renderer_->style().ambient;
+  const double white = kWhite[0];
+  const double levelLight = white * (ambient + (1.0 - ambient) * 0.5);  // sun 60° from zenith
+  const auto levelShare = [&](double w) { return white + w * (levelLight - white); };
+
+  drawBoth(kTile, false);
+  const Lit flat = measure(kTile, 450e3);
+  EXPECT_NEAR(flat.on, levelLight, 4.0);
+  EXPECT_NEAR(flat.fine, levelShare(terrain::kGentleReliefWeight), 4.0);
+  EXPECT_NEAR(flat.coarse, flat.fine, 1.0) << "level ground: no step where the weight changes";
+
+  const geo::TileId rampTile{10, 1024, 448};
+  drawBoth(rampTile, true);
+  const Lit ramp = measure(rampTile, 40e3);
+  const double relief = ramp.on / levelLight;  // the ramp faces away from the eastern sun
+  ASSERT_LT(relief, 0.9) << "the test needs a slope the light shows";
+  const double level = levelShare(terrain::kGentleReliefWeight);
+  EXPECT_NEAR(ramp.fine, level * (1.0 + terrain::kGentleReliefWeight * (relief - 1.0)), 4.0);
+  EXPECT_NEAR(ramp.coarse, level * relief, 4.0);
 }
 
 TEST_F(ImageryLayers, MissingTexturesAreSkippedAndCounted) {

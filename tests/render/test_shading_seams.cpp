@@ -1,6 +1,6 @@
 // No lighting seams at tile edges: nadir views of rough real terrain (Mount Fuji's and Zion's
 // SRTM, bundled) rendered by the real `globe snapshot` from 20, 50 and 120 km, with tiles of
-// several levels on screen, score at most 2.0 on the seam score (tests/render/seam_score.hpp).
+// several levels on screen, score at most 2.0 on the seam score (tools/bench_render/seam_score.hpp).
 // Before tiles carried their apron (one-sided normals on their edges) these views scored 3.1-4.8.
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <string>
 
 #include "formats/image_io.hpp"
-#include "tests/render/seam_score.hpp"
+#include "tools/bench_render/seam_score.hpp"
 #include "tests/support/imagery_test_layers.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 
@@ -55,7 +55,7 @@ TEST_P(ShadingSeams, NadirViewScoresAtMostTwo) {
     rgba->heightPixels = view.scoredRows;
     rgba->pixels.resize(size_t{4} * rgba->widthPixels * view.scoredRows);
   }
-  const testing::SeamScore s = testing::seamScore(*rgba);
+  const bench::SeamScore s = bench::seamScore(*rgba);
   EXPECT_LE(s.score, 2.0) << view.name << ": column " << s.worstColumn << " scores " << s.columns
                           << ", row " << s.worstRow << " scores " << s.rows << " (" << image << ")";
   EXPECT_GT(s.score, 1.0) << "a real view has some variation between its columns";
@@ -79,14 +79,14 @@ TEST(SeamScore, FindsAFaintStraightStep) {
       }
     }
   }
-  EXPECT_LT(testing::seamScore(image).score, 1.8);
+  EXPECT_LT(bench::seamScore(image).score, 1.8);
   formats::ImageRgba stepped = image;
   for (int y = 0; y < kH; ++y) {
     for (int x = 120; x < kW; ++x) {
       for (int c = 0; c < 3; ++c) stepped.pixels[(static_cast<size_t>(y) * kW + x) * 4 + c] += 6;
     }
   }
-  const testing::SeamScore s = testing::seamScore(stepped);
+  const bench::SeamScore s = bench::seamScore(stepped);
   EXPECT_GT(s.score, 2.0);  // fails the views' bound
   EXPECT_EQ(s.worstColumn, 119);
 }

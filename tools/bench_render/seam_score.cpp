@@ -1,10 +1,10 @@
-#include "tests/render/seam_score.hpp"
+#include "tools/bench_render/seam_score.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-namespace globe::testing {
+namespace globe::bench {
 namespace {
 
 constexpr int kNeighbours = 12;
@@ -15,8 +15,15 @@ double luma(const formats::ImageRgba& image, int x, int y) {
   return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
 }
 
-// The worst ratio over the steps between neighbouring columns (or rows when transposed).
-std::pair<double, int> worstLine(const formats::ImageRgba& image, bool transposed) {
+struct WorstLine {
+  double ratio = 0;
+  int where = 0;
+  double excessLevels = 0;
+};
+
+// The worst ratio over the steps between neighbouring columns (or rows when transposed), and the
+// largest excess of a step over its neighbours' median.
+WorstLine worstLine(const formats::ImageRgba& image, bool transposed) {
   const int lines = transposed ? image.heightPixels : image.widthPixels;
   const int along = transposed ? image.widthPixels : image.heightPixels;
   std::vector<double> steps(static_cast<size_t>(std::max(lines - 1, 0)));
@@ -28,8 +35,7 @@ std::pair<double, int> worstLine(const formats::ImageRgba& image, bool transpose
     }
     steps[static_cast<size_t>(k)] = sum / along;
   }
-  double worst = 0;
-  int where = 0;
+  WorstLine worst;
   std::vector<double> around;
   for (int k = 0; k < static_cast<int>(steps.size()); ++k) {
     around.clear();
@@ -40,21 +46,27 @@ std::pair<double, int> worstLine(const formats::ImageRgba& image, bool transpose
     if (around.empty()) continue;
     auto middle = around.begin() + static_cast<std::ptrdiff_t>(around.size() / 2);
     std::nth_element(around.begin(), middle, around.end());
+    worst.excessLevels = std::max(worst.excessLevels, steps[static_cast<size_t>(k)] - *middle);
     if (*middle <= 0) continue;
     const double ratio = steps[static_cast<size_t>(k)] / *middle;
-    if (ratio > worst) worst = ratio, where = k;
+    if (ratio > worst.ratio) worst.ratio = ratio, worst.where = k;
   }
-  return {worst, where};
+  return worst;
 }
 
 }  // namespace
 
 SeamScore seamScore(const formats::ImageRgba& image) {
   SeamScore s;
-  std::tie(s.columns, s.worstColumn) = worstLine(image, false);
-  std::tie(s.rows, s.worstRow) = worstLine(image, true);
+  const WorstLine columns = worstLine(image, false);
+  const WorstLine rows = worstLine(image, true);
+  s.columns = columns.ratio;
+  s.worstColumn = columns.where;
+  s.rows = rows.ratio;
+  s.worstRow = rows.where;
   s.score = std::max(s.columns, s.rows);
+  s.excessStepLevels = std::max(columns.excessLevels, rows.excessLevels);
   return s;
 }
 
-}  // namespace globe::testing
+}  // namespace globe::bench

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Frame time with the bundled imagery layers (Blue Marble + Zion) of this build against a
+# baseline build (an earlier commit built beside it), on the same pyramid, layers and views:
+# RUNS alternating runs of each build's globe-bench-drape (5 rounds of 3 frames per run), then
+# per view the median over the runs of each build's "with imagery" median, and their ratio.
+# Prints a Markdown table.
+#
+#   tools/bench_drape/versus_baseline.sh BUILD BASELINE_BUILD [RUNS]
+set -euo pipefail
+ROOT=$(cd "$(dirname "$0")/../.." && pwd)
+BUILD=${1:?BUILD}
+BASELINE=${2:?BASELINE_BUILD}
+RUNS=${3:-5}
+TILER=$BUILD/apps/globe-tiler/globe-tiler
+for exe in "$TILER" "$BUILD/tools/bench_drape/globe-bench-drape" \
+  "$BASELINE/tools/bench_drape/globe-bench-drape"; do
+  [ -x "$exe" ] || { echo "build it first: $exe" >&2; exit 1; }
+done
+WORK=$(mktemp -d)
+trap 'rm -rf "$WORK"' EXIT
+D=$ROOT/data
+"$TILER" -q -o "$WORK/pyramid" "$D/dem/ETOPO20.DEM" "$D/dem/W002N52.DEM" "$D/dem/E138N35_FUJI.DEM" \
+  "$D/dem/zion-srtm3.tif" > /dev/null
+"$TILER" imagery -q -o "$WORK/blue-marble" --bounds -180,-90,180,90 \
+  "$D/imagery/world.topo.bathy.200412.3x5400x2700.jpg" > /dev/null
+"$TILER" imagery -q -o "$WORK/zion" "$D/imagery/zion-landsat8-rgb.tif" > /dev/null
+ARGS=(--pyramid "$WORK/pyramid" --layer "$WORK/blue-marble" --layer "$WORK/zion"
+      --view fuji_oblique=138.60,35.20,6000,30,-15,0 --view zion_oblique=-112.93,37.16,4500,330,-20,0
+      --view zion_nadir=-112.98,37.27,9000 --view globe=138,30,20000000 --rounds 5 --frames 3)
+for run in $(seq "$RUNS"); do
+  for side in base new; do
+    build=$BUILD
+    [ "$side" = base ] && build=$BASELINE
+    "$build/tools/bench_drape/globe-bench-drape" "${ARGS[@]}" --out "$WORK/$side-$run.md" > /dev/null
+    # view, with-imagery median ms, triangles with
+    awk -F'|' 'NR > 2 { gsub(/ /, "", $2); print $2, $6, $10 }' "$WORK/$side-$run.md" \
+      >> "$WORK/$side.txt"
+  done
+done
+median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+echo "| view | baseline ms | this build ms | ratio | triangles (baseline → this) |"
+echo "|---|---|---|---|---|"
+for view in $(awk '{ print $1 }' "$WORK/new.txt" | sort -u); do
+  b=$(awk -v v="$view" '$1 == v { print $2 }' "$WORK/base.txt" | median)
+  n=$(awk -v v="$view" '$1 == v { print $2 }' "$WORK/new.txt" | median)
+  tb=$(awk -v v="$view" '$1 == v { print $3 }' "$WORK/base.txt" | head -1)
+  tn=$(awk -v v="$view" '$1 == v { print $3 }' "$WORK/new.txt" | head -1)
+  awk -v v="$view" -v b="$b" -v n="$n" -v tb="$tb" -v tn="$tn" \
+    'BEGIN { printf "| %s | %.1f | %.1f | %.2f | %s → %s |\n", v, b, n, n / b, tb, tn }'
+done
+echo
+echo "$RUNS alternating runs per build; baseline $(git -C "$BASELINE/.." log -1 --format=%h 2>/dev/null || echo "$BASELINE"), this build $(git -C "$ROOT" log -1 --format=%h)."
