@@ -59,16 +59,21 @@ std::string layerManifestToJson(const LayerManifest& manifest) {
                        {"bands", s.bands},
                        {"stretch", s.stretch}});
   }
+  const bool edges = manifest.pixelGrid == ImageryPixelGrid::Edges;
   const json j = {
       {"format", "globe-imagery-layer"},
-      {"formatVersion", kLayerFormatVersion},
+      // Version 1 where version 1 readers draw the layer right (area pixels).
+      {"formatVersion", edges ? kLayerFormatVersion : 1},
       {"kind", "imagery"},
       {"tilingScheme",
        {{"name", "geographic"},
         {"level0", "2x1 tiles of 180x180 degrees; x eastwards from -180, y southwards from +90"},
+        {"pixelGrid", edges ? "edges" : "area"},
         {"pixelConvention",
-         "pixel-is-area: pixel (r,c) covers lon [west + c*w/S, west + (c+1)*w/S], lat "
-         "[north - (r+1)*h/S, north - r*h/S], row 0 at the north edge"}}},
+         edges ? "samples at the edges: pixel (r,c) is the sample at lon west + c*w/(S-1), lat "
+                 "north - r*h/(S-1); the first and last rows and columns lie on the tile's edges"
+               : "pixel-is-area: pixel (r,c) covers lon [west + c*w/S, west + (c+1)*w/S], lat "
+                 "[north - (r+1)*h/S, north - r*h/S], row 0 at the north edge"}}},
       {"tileSizePixels", manifest.tileSizePixels},
       {"packTilesPerSide", manifest.packTilesPerSide},
       {"packFiles", "L<level>/<packX>_<packY>.pack (GLOBEIM1: header, index, JPEG/PNG payloads)"},
@@ -90,11 +95,19 @@ Result<LayerManifest> layerManifestFromJson(std::string_view text,
         j.value("kind", "") != "imagery") {
       return makeError(path.string() + ": not a globe imagery layer manifest");
     }
-    if (u32Of(j.at("formatVersion"), "formatVersion") != kLayerFormatVersion) {
+    const uint32_t version = u32Of(j.at("formatVersion"), "formatVersion");
+    if (version < 1 || version > kLayerFormatVersion) {
       return makeError(path.string() + ": layer format version " + j.at("formatVersion").dump() +
-                       " (this globe reads " + std::to_string(kLayerFormatVersion) + ")");
+                       " (this globe reads 1.." + std::to_string(kLayerFormatVersion) + ")");
     }
     LayerManifest m;
+    if (version >= 2) {
+      const std::string grid = j.at("tilingScheme").value("pixelGrid", "");
+      if (grid != "edges" && grid != "area") {
+        return makeError(path.string() + ": tilingScheme.pixelGrid must be \"edges\" or \"area\"");
+      }
+      m.pixelGrid = grid == "edges" ? ImageryPixelGrid::Edges : ImageryPixelGrid::Area;
+    }
     m.tileSizePixels = u32Of(j.at("tileSizePixels"), "tileSizePixels");
     if (m.tileSizePixels != 256) {
       return makeError(path.string() + ": tileSizePixels " + std::to_string(m.tileSizePixels) +

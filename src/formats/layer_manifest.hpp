@@ -17,7 +17,20 @@
 namespace globe::formats {
 
 inline constexpr const char* kLayerManifestFileName = "layer.json";
-inline constexpr uint32_t kLayerFormatVersion = 1;
+// Version 2 added the edge-sample pixel grid (ImageryPixelGrid::Edges); version 1 layers are read
+// as pixel-is-area.
+inline constexpr uint32_t kLayerFormatVersion = 2;
+
+// Where a tile's pixels sample the ground (S = tileSizePixels, w and h the tile's size).
+enum class ImageryPixelGrid : uint8_t {
+  // Pixel (r, c) covers lon [west + c·w/S, west + (c+1)·w/S] (TMS trees, version 1 layers):
+  // two neighbouring tiles' textures meet between their edge pixels, which no filter blends.
+  Area,
+  // Pixel (r, c) is the sample at lon west + c·w/(S−1), lat north − r·h/(S−1): the first and last
+  // rows and columns lie on the tile's edges, the same samples as the neighbour's, so bilinear
+  // filtering is continuous from one tile's texture into the next (no colour step at tile edges).
+  Edges,
+};
 
 struct ImageryLevelInfo {
   uint32_t level = 0;
@@ -46,6 +59,7 @@ struct LayerManifest {
   std::vector<ImagerySourceInfo> sources;
   BoundsDegrees bounds;         // of every level's tiles
   std::string planFingerprint;  // what globe-tiler imagery was asked to do (resume check)
+  ImageryPixelGrid pixelGrid = ImageryPixelGrid::Area;
 
   uint32_t maxLevel() const { return levels.empty() ? 0 : levels.back().level; }
   uint64_t tileCount() const;

@@ -51,6 +51,10 @@ struct ImageryInput {
   std::string tmsExtension;
   uint32_t tmsMaxLevel = 0;
 
+  // Where tile pixels sample it: the layer's grid (every input of a layer the same; Edges unless
+  // a TMS tree is re-packed, whose tiles are pixel-is-area).
+  formats::ImageryPixelGrid pixelGrid = formats::ImageryPixelGrid::Area;
+
   formats::BoundsDegrees extent;  // after warping to longitude/latitude, within ±180°
   // A footprint across ±180° (a 0..360° image, a scene over the antimeridian): the part beyond,
   // brought onto the globe; the source is read there at longitude + wrapShiftDegrees.

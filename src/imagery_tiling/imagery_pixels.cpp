@@ -83,6 +83,54 @@ formats::ImageRgba averageChildren(
   return parent;
 }
 
+formats::ImageRgba downsampleEdgeSampledChildren(
+    const std::array<std::optional<formats::ImageRgba>, 4>& children) {
+  constexpr int size = kImageryTileSizePixels;
+  constexpr int grid = 2 * size - 1;
+  // The stitched grid, straight RGBA; absent children leave it transparent.
+  std::vector<uint8_t> samples(size_t{grid} * grid * 4, 0);
+  for (size_t q = 0; q < 4; ++q) {
+    if (!children[q]) continue;
+    const int rowOffset = q >= 2 ? size - 1 : 0;
+    const int columnOffset = q % 2 == 1 ? size - 1 : 0;
+    for (int r = 0; r < size; ++r) {
+      std::copy_n(&children[q]->pixels[size_t(r) * size * 4], size_t{size} * 4,
+                  &samples[(size_t(rowOffset + r) * grid + columnOffset) * 4]);
+    }
+  }
+  formats::ImageRgba parent = transparentTile();
+  constexpr std::array<uint32_t, 3> kTaps{1, 2, 1};
+  for (int r = 0; r < size; ++r) {
+    for (int c = 0; c < size; ++c) {
+      uint32_t weights = 0, alpha = 0;
+      std::array<uint32_t, 3> colour{};
+      // On the grid's border only along it: the neighbouring parent filters the same samples
+      // for its own edge, so the two keep sharing them.
+      const bool borderRow = r == 0 || r == size - 1, borderColumn = c == 0 || c == size - 1;
+      for (int dy = -1; dy <= 1; ++dy) {
+        if (borderRow && dy != 0) continue;
+        const int y = 2 * r + dy;
+        for (int dx = -1; dx <= 1; ++dx) {
+          if (borderColumn && dx != 0) continue;
+          const int x = 2 * c + dx;
+          const uint32_t w = kTaps[size_t(dy + 1)] * kTaps[size_t(dx + 1)];
+          const uint8_t* p = &samples[(size_t(y) * grid + x) * 4];
+          weights += w;
+          alpha += w * p[3];
+          for (int k = 0; k < 3; ++k) colour[size_t(k)] += w * p[3] * p[k];
+        }
+      }
+      if (alpha == 0) continue;
+      uint8_t* out = &parent.pixels[(size_t(r) * size + c) * 4];
+      for (int k = 0; k < 3; ++k) {
+        out[k] = static_cast<uint8_t>((colour[size_t(k)] + alpha / 2) / alpha);
+      }
+      out[3] = static_cast<uint8_t>((alpha + weights / 2) / weights);
+    }
+  }
+  return parent;
+}
+
 Result<std::vector<std::byte>> encodeTile(const formats::ImageRgba& tile, int jpegQuality) {
   return fullyOpaque(tile) ? encodeJpegFast(tile, jpegQuality) : encodePngFast(tile);
 }

@@ -26,6 +26,14 @@ void compositeOver(formats::ImageRgba& top, const formats::ImageRgba& under);
 formats::ImageRgba averageChildren(
     const std::array<std::optional<formats::ImageRgba>, 4>& children);
 
+// The same for tiles whose pixels are samples at the edges (formats::ImageryPixelGrid::Edges):
+// the children's samples make one (2S−1)² grid, their shared edges being the same samples, and
+// the parent's sample (r, c) lies on its (2r, 2c): a [1 2 1] filter each way around it, weighted
+// by alpha; on the grid's border only along the border, so that neighbouring parents, which share
+// those samples, compute the same edge. Integer arithmetic: the same bytes everywhere.
+formats::ImageRgba downsampleEdgeSampledChildren(
+    const std::array<std::optional<formats::ImageRgba>, 4>& children);
+
 // JPEG when every pixel is opaque, PNG (RGBA) otherwise.
 Result<std::vector<std::byte>> encodeTile(const formats::ImageRgba& tile, int jpegQuality);
 

@@ -25,6 +25,8 @@ constexpr int kGrid = kSize / kGridStep + 1;
 constexpr double kMaxGridErrorPixels = 0.125;  // as gdalwarp's approximate transformer
 // Source windows above this are read reduced (GDAL averages, using overviews where present).
 constexpr int kMaxWindowPixels = 2048;
+// How far outside a raster an edge sample may land through the transform's rounding.
+constexpr double kEdgeTolerancePixels = 1e-6;
 
 // An RGBA window of source pixels, row 0 at the top.
 struct Window {
@@ -138,9 +140,18 @@ class RasterReader final : public ImageryReader {
     // The source window every pixel centre falls in, plus one pixel for the bilinear neighbours.
     double minX = std::numeric_limits<double>::max(), minY = minX;
     double maxX = std::numeric_limits<double>::lowest(), maxY = maxX;
+    // Pixel-is-area: a tile pixel whose sample falls inside the raster's area is drawn; edge
+    // samples on the area's far edges too (they are its neighbours' samples as well).
+    const bool edges = input_.pixelGrid == formats::ImageryPixelGrid::Edges;
+    // (within kEdgeTolerancePixels: the transform's rounding must not drop an edge sample)
+    const auto inside = [&](double x, double y) {
+      return edges ? x >= -kEdgeTolerancePixels && x <= columns_ + kEdgeTolerancePixels &&
+                         y >= -kEdgeTolerancePixels && y <= rows_ + kEdgeTolerancePixels
+                   : x >= 0 && x < columns_ && y >= 0 && y < rows_;
+    };
     for (size_t i = 0; i < sourceX_.size(); ++i) {
       const double x = sourceX_[i], y = sourceY_[i];
-      if (!(x >= 0 && x < columns_ && y >= 0 && y < rows_)) continue;
+      if (!inside(x, y)) continue;
       minX = std::min(minX, x), maxX = std::max(maxX, x);
       minY = std::min(minY, y), maxY = std::max(maxY, y);
     }
@@ -160,28 +171,68 @@ class RasterReader final : public ImageryReader {
     const double scaleX = double(window_.width) / windowWidth;
     const double scaleY = double(window_.height) / windowHeight;
     bool covered = false;
+    std::vector<size_t> seam;  // samples on a whole-globe raster's first or last column edge
     for (size_t i = 0; i < sourceX_.size(); ++i) {
       const double x = sourceX_[i], y = sourceY_[i];
-      // Pixel-is-area: a tile pixel whose centre falls inside the raster's area is drawn.
-      if (!(x >= 0 && x < columns_ && y >= 0 && y < rows_)) continue;
+      if (!inside(x, y)) continue;
       uint8_t* pixel = &out.pixels[i * 4];
       if (pixel[3] != 0) continue;  // drawn from the other part of the footprint
+      if (edges && wrapsAround() &&
+          (x <= kEdgeTolerancePixels || x >= columns_ - kEdgeTolerancePixels)) {
+        seam.push_back(i);
+        continue;
+      }
       sampleInto(window_, (x - x0) * scaleX, (y - y0) * scaleY, pixel);
       covered = covered || pixel[3] != 0;
+    }
+    if (seam.empty()) return covered;
+    // There the raster's last column meets its first: the sample is the mean of the two, as a
+    // filter across the seam gives, in the tiles on both sides alike (no line along it).
+    std::array<Window, 2> ends;
+    for (int side = 0; side < 2; ++side) {
+      window_.width = 1;
+      window_.height = (windowHeight + reduce - 1) / reduce;
+      if (auto read = readWindow(side == 0 ? 0 : columns_ - 1, y0, 1, windowHeight); !read) {
+        return Error{read.error()};
+      }
+      ends[size_t(side)] = window_;
+    }
+    for (size_t i : seam) {
+      std::array<uint8_t, 4> first{}, last{};
+      sampleInto(ends[0], 0.5, (sourceY_[i] - y0) * scaleY, first.data());
+      sampleInto(ends[1], 0.5, (sourceY_[i] - y0) * scaleY, last.data());
+      uint8_t* pixel = &out.pixels[i * 4];
+      const uint32_t alpha = uint32_t{first[3]} + last[3];
+      if (alpha == 0) continue;
+      for (int c = 0; c < 3; ++c) {
+        pixel[c] =
+            static_cast<uint8_t>((first[c] * first[3] + last[c] * last[3] + alpha / 2) / alpha);
+      }
+      pixel[3] = static_cast<uint8_t>((alpha + 1) / 2);
+      covered = true;
     }
     return covered;
   }
 
-  // Source pixel coordinates of every tile pixel centre (NaN where the transform fails).
+  // A raster in longitude/latitude 360° wide: its first and last columns are neighbours.
+  bool wrapsAround() const {
+    return !transformer_ && std::abs(columns_ / inverse_[1] - 360.0) < 1e-6;
+  }
+
+  // Source pixel coordinates of every tile pixel's sample (NaN where the transform fails): pixel
+  // k samples at (k + offset)·texel from the west (north) edge: the centre of its area, or with
+  // edge samples k/(S−1) of the tile.
   void sourceCoordinates(const TileFrameDegrees& frame) {
-    const double texel = frame.size / kSize;
+    const bool edges = input_.pixelGrid == formats::ImageryPixelGrid::Edges;
+    const double texel = frame.size / (edges ? kSize - 1 : kSize);
+    const double offset = edges ? 0.0 : 0.5;
     sourceX_.resize(size_t{kSize} * kSize);
     sourceY_.resize(size_t{kSize} * kSize);
     if (!transformer_) {
       for (int r = 0; r < kSize; ++r) {
-        const double lat = frame.north - (r + 0.5) * texel;
+        const double lat = frame.north - (r + offset) * texel;
         for (int c = 0; c < kSize; ++c) {
-          const double lon = frame.west + (c + 0.5) * texel;
+          const double lon = frame.west + (c + offset) * texel;
           const size_t i = size_t(r) * kSize + c;
           sourceX_[i] = inverse_[0] + inverse_[1] * lon;
           sourceY_[i] = inverse_[3] + inverse_[5] * lat;
@@ -220,14 +271,14 @@ class RasterReader final : public ImageryReader {
             std::abs((gx[a] + gx[b] + gx[d] + gx[e]) / 4 - gx[centre]) <= kMaxGridErrorPixels &&
             std::abs((gy[a] + gy[b] + gy[d] + gy[e]) / 4 - gy[centre]) <= kMaxGridErrorPixels;
         for (int r = j * kGridStep; r < (j + 1) * kGridStep; ++r) {
-          const double ty = (r + 0.5) / kGridStep - j;
+          const double ty = (r + offset) / kGridStep - j;
           for (int c = i * kGridStep; c < (i + 1) * kGridStep; ++c) {
             const size_t k = size_t(r) * kSize + c;
             if (!good) {
               exactPixels_.push_back(k);
               continue;
             }
-            const double tx = (c + 0.5) / kGridStep - i;
+            const double tx = (c + offset) / kGridStep - i;
             sourceX_[k] =
                 (1 - ty) * ((1 - tx) * gx[a] + tx * gx[b]) + ty * ((1 - tx) * gx[d] + tx * gx[e]);
             sourceY_[k] =
@@ -241,8 +292,8 @@ class RasterReader final : public ImageryReader {
     std::vector<int> pixelOk(x.size(), 0);
     for (size_t n = 0; n < exactPixels_.size(); ++n) {
       const size_t k = exactPixels_[n];
-      x[n] = frame.west + (double(k % kSize) + 0.5) * texel;
-      y[n] = frame.north - (double(k / kSize) + 0.5) * texel;
+      x[n] = frame.west + (double(k % kSize) + offset) * texel;
+      y[n] = frame.north - (double(k / kSize) + offset) * texel;
     }
     GDALGenImgProjTransform(transformer_, TRUE, static_cast<int>(x.size()), x.data(), y.data(),
                             z.data(), pixelOk.data());

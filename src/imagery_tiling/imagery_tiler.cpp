@@ -32,7 +32,9 @@ namespace fs = std::filesystem;
 constexpr const char* kImageryPlanFileName = "imagery-plan.json";
 constexpr uint64_t kMaxImagePackBytes = uint64_t{1} << 34;
 // Names the sampling and compositing rules: a layer resumed under other rules would mix them.
+// Version 1: pixel-is-area tiles (a layer re-packing a TMS tree keeps them); 2: edge samples.
 constexpr const char* kRulesVersion = "bilinear-premultiplied-finest-over 1";
+constexpr const char* kEdgeSampledRulesVersion = "bilinear-premultiplied-finest-over 2 edges";
 
 std::string boundsText(const formats::BoundsDegrees& b) {
   char text[128];
@@ -60,10 +62,13 @@ std::string planFingerprint(const ImageryTilerOptions& options,
                     {"bands", input.info.bands},
                     {"stretch", input.info.stretch}});
   }
-  const nlohmann::json plan = {{"inputs", list},
-                               {"packTilesPerSide", options.packTilesPerSide},
-                               {"jpegQuality", options.jpegQuality},
-                               {"rules", kRulesVersion}};
+  const nlohmann::json plan = {
+      {"inputs", list},
+      {"packTilesPerSide", options.packTilesPerSide},
+      {"jpegQuality", options.jpegQuality},
+      {"rules", inputs.empty() || inputs[0].pixelGrid == formats::ImageryPixelGrid::Area
+                    ? kRulesVersion
+                    : kEdgeSampledRulesVersion}};
   return plan.dump(1) + "\n";
 }
 
@@ -231,7 +236,11 @@ struct TileMaker {
         quadrants[q] = std::move(*child);
         any = any || quadrants[q].has_value();
       }
-      if (any) image = averageChildren(quadrants);
+      if (any) {
+        image = inputs.empty() || inputs[0].pixelGrid == formats::ImageryPixelGrid::Area
+                    ? averageChildren(quadrants)
+                    : downsampleEdgeSampledChildren(quadrants);
+      }
     }
     // Inputs whose finest level is this one or coarser paint here, finest first, each under
     // what is already there; finer inputs came in through the children.
@@ -287,6 +296,14 @@ Result<ImageryTilerReport> runImageryTiler(const ImageryTilerOptions& options) {
   }
   auto described = describeImageryInputs(options.inputs, options.input);
   if (!described) return Error{described.error()};
+  // Samples at the tiles' edges (no colour step between tiles), unless a TMS tree's own
+  // pixel-is-area tiles are re-packed into the layer.
+  const bool anyTms = std::any_of(described->begin(), described->end(), [](const ImageryInput& i) {
+    return i.kind == ImageryInput::Kind::Tms;
+  });
+  const formats::ImageryPixelGrid pixelGrid =
+      anyTms ? formats::ImageryPixelGrid::Area : formats::ImageryPixelGrid::Edges;
+  for (ImageryInput& input : *described) input.pixelGrid = pixelGrid;
   const std::vector<ImageryInput>& inputs = *described;
   std::vector<formats::BoundsDegrees> extents;
   std::vector<uint32_t> finestLevels;
@@ -321,6 +338,7 @@ Result<ImageryTilerReport> runImageryTiler(const ImageryTilerOptions& options) {
   const TileMaker maker{inputs, finestFirst, plan, options.jpegQuality};
   formats::LayerManifest manifest;
   manifest.packTilesPerSide = options.packTilesPerSide;
+  manifest.pixelGrid = pixelGrid;
   manifest.levels.resize(plan.maxLevel() + 1);
   manifest.bounds = {180, 90, -180, -90};
   for (const ImageryInput& input : inputs) manifest.sources.push_back(input.info);

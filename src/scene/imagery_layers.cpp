@@ -234,8 +234,11 @@ Result<ImageryFrame> ImageryLayers::update(std::span<const geo::TileId> tiles,
       layer.textureLastUsedFrame[drawn] = frame_;
       terrain::TileDrapes& tileDrapes = drapes[i];
       terrain::TileDrape& drape = tileDrapes.layers[tileDrapes.count++];
-      drape = terrain::TileDrape{index, drawn, terrain::uvTransformInAncestor(tile, drawn),
-                                 layer.options.opacity};
+      glm::vec4 transform = terrain::uvTransformInAncestor(tile, drawn);
+      if (layer.store->manifest().pixelGrid == formats::ImageryPixelGrid::Edges) {
+        transform = terrain::edgeSampledTransform(transform, tileSize);
+      }
+      drape = terrain::TileDrape{index, drawn, transform, layer.options.opacity};
       drape.nativeTexelDegrees = layer.nativeTexelAt(tile);
       ++frame.drapes;
     }

@@ -39,4 +39,11 @@ glm::vec4 uvTransformInAncestor(const geo::TileId& tile, const geo::TileId& ance
           scale, scale};
 }
 
+glm::vec4 edgeSampledTransform(const glm::vec4& transform, uint32_t tileSizePixels) {
+  const float size = static_cast<float>(std::max<uint32_t>(tileSizePixels, 2));
+  const float inner = (size - 1.0f) / size;
+  return {0.5f / size + transform.x * inner, 0.5f / size + transform.y * inner, transform.z * inner,
+          transform.w * inner};
+}
+
 }  // namespace globe::terrain

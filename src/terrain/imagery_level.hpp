@@ -31,4 +31,10 @@ geo::TileId ancestorAt(const geo::TileId& tile, uint32_t level);
 // uv · zw. Exact in float: offsets and scales are multiples of powers of two.
 glm::vec4 uvTransformInAncestor(const geo::TileId& tile, const geo::TileId& ancestor);
 
+// The same transform for a texture whose pixels are samples at the tile's edges
+// (formats::ImageryPixelGrid::Edges): imagery uv u lies at texture coordinate
+// (0.5 + u·(S−1)) / S, between the first and the last texel's centres, so the tile's edge is
+// drawn from its edge samples, which the neighbour's texture has too.
+glm::vec4 edgeSampledTransform(const glm::vec4& transform, uint32_t tileSizePixels);
+
 }  // namespace globe::terrain

@@ -51,7 +51,6 @@ Gap compare(const geo::TileId& parentTile) {
       }
     }
     // The child's vertex halfway along each parent cell's diagonal, against the mean of its ends.
-    const terrain::ArrayTile array = terrain::makeArrayTile(child, up);
     for (uint32_t i = 1; i < kN; i += 2) {
       for (uint32_t j = 1; j < kN; j += 2) {
         const double mean =

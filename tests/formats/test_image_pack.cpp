@@ -158,6 +158,34 @@ TEST(LayerManifest, JsonRoundTrip) {
   EXPECT_EQ(back->planFingerprint, m.planFingerprint);
 }
 
+// Version 2 carries the pixel grid; area layers are still written as version 1 (older readers
+// draw them right) and version 1 reads as area.
+TEST(LayerManifest, ThePixelGridRoundTripsAndVersionOneReadsAsArea) {
+  LayerManifest m;
+  m.levels.push_back({0, 1, {-180, -90, 0, 90}, {{0, 0, 0}}});
+  for (const ImageryPixelGrid grid : {ImageryPixelGrid::Area, ImageryPixelGrid::Edges}) {
+    m.pixelGrid = grid;
+    const std::string text = layerManifestToJson(m);
+    EXPECT_NE(text.find(grid == ImageryPixelGrid::Edges ? "\"formatVersion\": 2"
+                                                        : "\"formatVersion\": 1"),
+              std::string::npos);
+    auto back = layerManifestFromJson(text, "layer.json");
+    ASSERT_TRUE(back) << back.error();
+    EXPECT_EQ(back->pixelGrid, grid);
+  }
+  m.pixelGrid = ImageryPixelGrid::Edges;
+  std::string text = layerManifestToJson(m);
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"\"pixelGrid\": \"edges\"",
+                                                                     "\"pixelGrid\": \"corners\""},
+                                 {"\"formatVersion\": 2", "\"formatVersion\": 3"}}) {
+    std::string bad = text;
+    bad.replace(bad.find(from), from.size(), to);
+    auto parsed = layerManifestFromJson(bad, "x/layer.json");
+    ASSERT_FALSE(parsed) << to;
+    EXPECT_NE(parsed.error().find("x/layer.json"), std::string::npos) << parsed.error();
+  }
+}
+
 TEST(LayerManifest, BadManifestsAreRefusedNamingTheFile) {
   LayerManifest m;
   m.levels.push_back({0, 1, {-180, -90, 0, 90}, {{0, 0, 0}}});

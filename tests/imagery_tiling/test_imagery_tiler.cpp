@@ -110,9 +110,11 @@ class SourceProbe {
 struct PixelCentre {
   double lon, lat;
 };
+// Where a pixel of a layer tile samples the ground: layers the tiler makes from rasters sample at
+// the tiles' edges (formats::ImageryPixelGrid::Edges), 255 intervals across.
 PixelCentre centreOf(const geo::TileId& tile, int row, int column) {
   const TileFrameDegrees f = tileFrameDegrees(tile);
-  return {f.west + (column + 0.5) * f.size / 256, f.north - (row + 0.5) * f.size / 256};
+  return {f.west + column * f.size / 255, f.north - row * f.size / 255};
 }
 
 bool fullyOpaqueImage(const formats::ImageRgba& image) {
@@ -286,6 +288,53 @@ TEST(ImageryTiler, TmsTreeIsRepackedByteForByte) {
   }
 }
 
+// Tiles sample the ground at their edges (formats::ImageryPixelGrid::Edges): two neighbours'
+// facing edge columns are the same samples, at every level (the coarser ones filtered so that
+// they stay shared) and across ±180° of a whole-globe image (the mean of its first and last
+// columns on both sides), so the viewer's bilinear filter runs on from one tile into the next.
+// At JPEG quality 100 their luma agrees within its rounding (0.24-0.65 levels of 255 from level 4
+// to 0; 4:2:0 chroma still mixes an edge pixel's colour with its neighbour's); the columns next
+// to them differ 9-12 times more (2.8-5.9 levels).
+TEST(ImageryTiler, NeighboursShareTheirEdgeSamplesAtEveryLevel) {
+  ImageryTilerOptions options;
+  options.input.bounds = formats::BoundsDegrees{-180, -90, 180, 90};
+  options.jpegQuality = 100;
+  // The bundled 5400-wide Blue Marble: levels 0-4, 0-3 filtered from the level below.
+  const fs::path layer = layerOf(
+      {std::string(GLOBE_SOURCE_DIR) + "/data/imagery/world.topo.bathy.200412.3x5400x2700.jpg"},
+      "edges", options);
+  auto store = openStore(layer);
+  ASSERT_TRUE(store);
+  ASSERT_EQ(store->manifest().maxLevel(), 4u);
+  EXPECT_EQ(store->manifest().pixelGrid, formats::ImageryPixelGrid::Edges);
+  for (uint32_t level = 0; level <= store->manifest().maxLevel(); ++level) {
+    const auto tiles = tilesOf(*store, level);
+    double shared = 0, inside = 0;
+    int pairs = 0;
+    for (const auto& [tile, image] : tiles) {
+      const uint32_t columns = 2u << level;
+      const auto east = tiles.find({level, (tile.x + 1) % columns, tile.y});
+      ASSERT_NE(east, tiles.end());
+      const auto luma = [](const uint8_t* p) {
+        return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+      };
+      for (int row = 0; row < 256; ++row) {
+        shared += std::abs(luma(pixel(image, row, 255)) - luma(pixel(east->second, row, 0)));
+        inside += std::abs(luma(pixel(image, row, 254)) - luma(pixel(east->second, row, 1)));
+      }
+      ++pairs;
+    }
+    ASSERT_GT(pairs, 0);
+    const double samples = 256.0 * pairs;
+    EXPECT_LT(shared / samples, 1.0) << "level " << level;
+    EXPECT_GT(inside / samples, 5.0 * shared / samples) << "level " << level;
+  }
+  // A layer re-packing a TMS tree keeps its pixel-is-area tiles, as a version 1 layer.
+  auto tms = openStore(layerOf({fixture("NaturalEarthII-tms-l0-1")}, "tms-area"));
+  ASSERT_TRUE(tms);
+  EXPECT_EQ(tms->manifest().pixelGrid, formats::ImageryPixelGrid::Area);
+}
+
 TEST(ImageryTiler, FinestInputWinsAndItsNoDataShowsTheCoarser) {
   const std::string world = fixture("bmng_world_512x256.jpg");
   const std::string scene = fixture("rgb_byte_utm18_crop.tif");
@@ -444,8 +493,8 @@ std::array<int, 4> colourAt(streaming::ImageryStore& store, double lon, double l
   if (!bytes || !*bytes) return {-1, -1, -1, -1};
   auto image = formats::decodeImageRgba(**bytes, "tile");
   if (!image) return {-1, -1, -1, -1};
-  const int column = static_cast<int>((lon - f.west) / f.size * 256);
-  const int row = static_cast<int>((f.north - lat) / f.size * 256);
+  const int column = static_cast<int>(std::lround((lon - f.west) / f.size * 255));
+  const int row = static_cast<int>(std::lround((f.north - lat) / f.size * 255));
   const uint8_t* p = pixel(*image, row, column);
   return {p[0], p[1], p[2], p[3]};
 }

@@ -58,5 +58,19 @@ TEST(ImageryLevel, TheUvTransformPutsTheTileWhereItLiesInItsAncestor) {
   EXPECT_EQ(uvTransformInAncestor(tile, tile), glm::vec4(0, 0, 1, 1));
 }
 
+// Edge-sampled textures: the tile's edges land on the first and last texels' centres, so both
+// neighbours draw their shared edge from their (identical) edge samples.
+TEST(ImageryLevel, EdgeSampledTransformPutsTheEdgesOnTheEdgeTexelsCentres) {
+  const glm::vec4 whole = edgeSampledTransform({0.0f, 0.0f, 1.0f, 1.0f}, 256);
+  EXPECT_FLOAT_EQ(whole.x, 0.5f / 256.0f);
+  EXPECT_FLOAT_EQ(whole.x + whole.z, 255.5f / 256.0f);
+  const geo::TileId tile{7, 13, 5}, ancestor{4, 1, 0};
+  const glm::vec4 inside = edgeSampledTransform(uvTransformInAncestor(tile, ancestor), 256);
+  const glm::vec4 plain = uvTransformInAncestor(tile, ancestor);
+  // The same place of the ancestor, on the grid of its 255 intervals.
+  EXPECT_FLOAT_EQ((inside.x - 0.5f / 256.0f) / (255.0f / 256.0f), plain.x);
+  EXPECT_FLOAT_EQ(inside.z, plain.z * 255.0f / 256.0f);
+}
+
 }  // namespace
 }  // namespace globe::terrain

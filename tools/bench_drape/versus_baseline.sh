@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Frame time with the bundled imagery layers (Blue Marble + Zion) of this build against a
-# baseline build (an earlier commit built beside it), on the same pyramid, layers and views:
+# baseline build (an earlier commit built beside it), on the same data and views (each build's
+# pyramid and layers made by its own tiler):
 # RUNS alternating runs of each build's globe-bench-drape (5 rounds of 3 frames per run), then
 # per view the median over the runs of each build's "with imagery" median, and their ratio.
 # Prints a Markdown table.
@@ -12,26 +13,32 @@ BUILD=${1:?BUILD}
 BASELINE=${2:?BASELINE_BUILD}
 RUNS=${3:-5}
 TILER=$BUILD/apps/globe-tiler/globe-tiler
-for exe in "$TILER" "$BUILD/tools/bench_drape/globe-bench-drape" \
-  "$BASELINE/tools/bench_drape/globe-bench-drape"; do
+for exe in "$TILER" "$BASELINE/apps/globe-tiler/globe-tiler" \
+  "$BUILD/tools/bench_drape/globe-bench-drape" "$BASELINE/tools/bench_drape/globe-bench-drape"; do
   [ -x "$exe" ] || { echo "build it first: $exe" >&2; exit 1; }
 done
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 D=$ROOT/data
-"$TILER" -q -o "$WORK/pyramid" "$D/dem/ETOPO20.DEM" "$D/dem/W002N52.DEM" "$D/dem/E138N35_FUJI.DEM" \
-  "$D/dem/zion-srtm3.tif" > /dev/null
-"$TILER" imagery -q -o "$WORK/blue-marble" --bounds -180,-90,180,90 \
-  "$D/imagery/world.topo.bathy.200412.3x5400x2700.jpg" > /dev/null
-"$TILER" imagery -q -o "$WORK/zion" "$D/imagery/zion-landsat8-rgb.tif" > /dev/null
-ARGS=(--pyramid "$WORK/pyramid" --layer "$WORK/blue-marble" --layer "$WORK/zion"
-      --view fuji_oblique=138.60,35.20,6000,30,-15,0 --view zion_oblique=-112.93,37.16,4500,330,-20,0
-      --view zion_nadir=-112.98,37.27,9000 --view globe=138,30,20000000 --rounds 5 --frames 3)
+# Each build's own tiler: a layer's format is part of what may have changed.
+for side in base new; do
+  tiler=$BUILD/apps/globe-tiler/globe-tiler
+  [ "$side" = base ] && tiler=$BASELINE/apps/globe-tiler/globe-tiler
+  "$tiler" -q -o "$WORK/$side/pyramid" "$D/dem/ETOPO20.DEM" "$D/dem/W002N52.DEM" \
+    "$D/dem/E138N35_FUJI.DEM" "$D/dem/zion-srtm3.tif" > /dev/null
+  "$tiler" imagery -q -o "$WORK/$side/blue-marble" --bounds -180,-90,180,90 \
+    "$D/imagery/world.topo.bathy.200412.3x5400x2700.jpg" > /dev/null
+  "$tiler" imagery -q -o "$WORK/$side/zion" "$D/imagery/zion-landsat8-rgb.tif" > /dev/null
+done
+VIEWS=(--view fuji_oblique=138.60,35.20,6000,30,-15,0 --view zion_oblique=-112.93,37.16,4500,330,-20,0
+       --view zion_nadir=-112.98,37.27,9000 --view globe=138,30,20000000 --rounds 5 --frames 3)
 for run in $(seq "$RUNS"); do
   for side in base new; do
     build=$BUILD
     [ "$side" = base ] && build=$BASELINE
-    "$build/tools/bench_drape/globe-bench-drape" "${ARGS[@]}" --out "$WORK/$side-$run.md" > /dev/null
+    "$build/tools/bench_drape/globe-bench-drape" --pyramid "$WORK/$side/pyramid" \
+      --layer "$WORK/$side/blue-marble" --layer "$WORK/$side/zion" "${VIEWS[@]}" \
+      --out "$WORK/$side-$run.md" > /dev/null
     # view, with-imagery median ms, triangles with
     awk -F'|' 'NR > 2 { gsub(/ /, "", $2); print $2, $6, $10 }' "$WORK/$side-$run.md" \
       >> "$WORK/$side.txt"

@@ -18,7 +18,7 @@ OUT_MD=$ROOT/docs/performance/orthophoto.md
 GRADIENT=$BUILD/tools/bench_render/globe-image-gradient
 ERROR=$BUILD/tools/bench_render/globe-image-error
 for exe in "$BUILD/apps/globe-tiler/globe-tiler" "$BUILD/apps/globe/globe" "$GRADIENT" "$ERROR" \
-  ${BASELINE:+"$BASELINE/apps/globe/globe"}; do
+  ${BASELINE:+"$BASELINE/apps/globe/globe" "$BASELINE/apps/globe-tiler/globe-tiler"}; do
   [ -x "$exe" ] || { echo "build it first: $exe" >&2; exit 1; }
 done
 WORK=$(mktemp -d)
@@ -33,15 +33,13 @@ gdalwarp -q -t_srs "+proj=aeqd +lat_0=$LAT +lon_0=$LON +datum=WGS84 +units=m" \
 gdal_translate -q -of PNG "$WORK/source.tif" "$WORK/source.png"
 source_gradient=$("$GRADIENT" "$WORK/source.png")
 
-# The terrain and the layer, tiled once by BUILD's tiler: the rows differ in the viewer only.
-"$BUILD/apps/globe-tiler/globe-tiler" -q -o "$WORK/pyramid" "$ROOT/data/dem/ETOPO20.DEM"
-"$BUILD/apps/globe-tiler/globe-tiler" imagery -q -o "$WORK/naip" \
-  "$ROOT/data/imagery/naip-north-dakota-rgb.tif"
-
-row() {  # build label dir
+row() {  # build label dir: the terrain and the layer made by the build's own tiler
   local build=$1 label=$2 dir=$WORK/$3
   mkdir -p "$dir"
-  "$build/apps/globe/globe" snapshot "$WORK/pyramid" --layer "$WORK/naip" --lighting off --no-sky \
+  "$build/apps/globe-tiler/globe-tiler" -q -o "$dir/pyramid" "$ROOT/data/dem/ETOPO20.DEM" > /dev/null
+  "$build/apps/globe-tiler/globe-tiler" imagery -q -o "$dir/naip" \
+    "$ROOT/data/imagery/naip-north-dakota-rgb.tif" > /dev/null
+  "$build/apps/globe/globe" snapshot "$dir/pyramid" --layer "$dir/naip" --lighting off --no-sky \
     --camera "$LON,$LAT,$ABOVE,0,-90,0" --above-terrain --size "${W}x$H" -o "$dir/view.png" \
     > /dev/null
   local gradient mismatch

@@ -21,9 +21,8 @@ struct WorstLine {
   double excessLevels = 0;
 };
 
-// The worst ratio over the steps between neighbouring columns (or rows when transposed), and the
-// largest excess of a step over its neighbours' median.
-WorstLine worstLine(const formats::ImageRgba& image, bool transposed) {
+// The mean luma step between each column and the next (rows when transposed).
+std::vector<double> lineSteps(const formats::ImageRgba& image, bool transposed) {
   const int lines = transposed ? image.heightPixels : image.widthPixels;
   const int along = transposed ? image.widthPixels : image.heightPixels;
   std::vector<double> steps(static_cast<size_t>(std::max(lines - 1, 0)));
@@ -35,20 +34,33 @@ WorstLine worstLine(const formats::ImageRgba& image, bool transposed) {
     }
     steps[static_cast<size_t>(k)] = sum / along;
   }
-  WorstLine worst;
+  return steps;
+}
+
+// The median of the steps within kNeighbours of k, k excluded; NaN when there are none.
+double medianAround(const std::vector<double>& steps, int k) {
   std::vector<double> around;
+  for (int m = std::max(0, k - kNeighbours);
+       m <= std::min(static_cast<int>(steps.size()) - 1, k + kNeighbours); ++m) {
+    if (m != k) around.push_back(steps[static_cast<size_t>(m)]);
+  }
+  if (around.empty()) return std::nan("");
+  auto middle = around.begin() + static_cast<std::ptrdiff_t>(around.size() / 2);
+  std::nth_element(around.begin(), middle, around.end());
+  return *middle;
+}
+
+// The worst ratio over the steps between neighbouring columns (or rows when transposed), and the
+// largest excess of a step over its neighbours' median.
+WorstLine worstLine(const formats::ImageRgba& image, bool transposed) {
+  const std::vector<double> steps = lineSteps(image, transposed);
+  WorstLine worst;
   for (int k = 0; k < static_cast<int>(steps.size()); ++k) {
-    around.clear();
-    for (int m = std::max(0, k - kNeighbours);
-         m <= std::min(static_cast<int>(steps.size()) - 1, k + kNeighbours); ++m) {
-      if (m != k) around.push_back(steps[static_cast<size_t>(m)]);
-    }
-    if (around.empty()) continue;
-    auto middle = around.begin() + static_cast<std::ptrdiff_t>(around.size() / 2);
-    std::nth_element(around.begin(), middle, around.end());
-    worst.excessLevels = std::max(worst.excessLevels, steps[static_cast<size_t>(k)] - *middle);
-    if (*middle <= 0) continue;
-    const double ratio = steps[static_cast<size_t>(k)] / *middle;
+    const double median = medianAround(steps, k);
+    if (std::isnan(median)) continue;
+    worst.excessLevels = std::max(worst.excessLevels, steps[static_cast<size_t>(k)] - median);
+    if (median <= 0) continue;
+    const double ratio = steps[static_cast<size_t>(k)] / median;
     if (ratio > worst.ratio) worst.ratio = ratio, worst.where = k;
   }
   return worst;
@@ -67,6 +79,12 @@ SeamScore seamScore(const formats::ImageRgba& image) {
   s.score = std::max(s.columns, s.rows);
   s.excessStepLevels = std::max(columns.excessLevels, rows.excessLevels);
   return s;
+}
+
+LineStep columnStep(const formats::ImageRgba& image, int column) {
+  const std::vector<double> steps = lineSteps(image, false);
+  if (column < 0 || column >= static_cast<int>(steps.size())) return {};
+  return {steps[static_cast<size_t>(column)], medianAround(steps, column)};
 }
 
 }  // namespace globe::bench

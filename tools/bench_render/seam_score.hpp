@@ -23,4 +23,12 @@ struct SeamScore {
 
 SeamScore seamScore(const formats::ImageRgba& image);
 
+// The mean luma step (levels of 255) between `column` and the next one, and the median of the
+// same step over its 24 neighbouring columns: a known boundary's step against its surroundings.
+struct LineStep {
+  double stepLevels = 0;
+  double neighboursLevels = 0;
+};
+LineStep columnStep(const formats::ImageRgba& image, int column);
+
 }  // namespace globe::bench
