@@ -27,10 +27,11 @@ in vec2 v_light;                  // land light, sea light: --lighting shades th
 // The light splits into level ground's (the sea light: the globe's own shading) and the relief's
 // (land light / level ground's, 1 on level ground and water). Level ground's is applied at
 // u_levelLight to every layer; the relief at each layer's weight w (terrain/relief_shading.hpp,
-// per tile on the CPU): by how much coarser its texel is than the terrain's samples. Where w
-// changes (where the sources do), level ground and water keep their brightness: no step.
+// at the tile's corners on the CPU, interpolated in terrain.vert): by how much coarser its texel
+// is than the terrain's samples. Where w changes (where the sources do) it changes across a
+// tile, and level ground and water keep their brightness: no step.
 uniform float u_levelLight;
-uniform float u_layerLight[GLOBE_LAYERS];
+in vec4 v_layerLight;
 #endif
 // Imagery tiles, premultiplied alpha (render/imagery_textures.cpp), row 0 = v 0. Four samplers
 // rather than an array: GLSL 3.30 indexes sampler arrays only with constant expressions.
@@ -64,7 +65,7 @@ out vec4 o_color;
 vec3 drape(vec3 color, sampler2D layer, int k, float level, float relief) {
   vec4 texel = texture(layer, v_layerUv[k]) * u_layerOpacity[k];
 #ifdef GLOBE_LIGHT_IMAGERY
-  level *= mix(1.0, relief, u_layerLight[k]);
+  level *= mix(1.0, relief, v_layerLight[k]);
 #endif
   return texel.rgb * level + color * (1.0 - texel.a);
 }

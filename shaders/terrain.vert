@@ -54,6 +54,10 @@ uniform vec4 u_layerTransform[GLOBE_LAYERS];  // imagery uv = xy + tile uv · zw
 out vec2 v_layerUv[GLOBE_LAYERS];  // per vertex: a varying is cheaper than the FMA per fragment
 #ifdef GLOBE_LIGHT_IMAGERY
 out vec2 v_light;                  // land light, sea light
+// Each layer's weight of the relief's light (terrain.frag) at the tile's corners: north-west,
+// north-east, south-west, south-east; interpolated across the tile, one component per layer.
+uniform vec4 u_layerLight[GLOBE_LAYERS];
+out vec4 v_layerLight;
 #endif
 #endif
 out float v_logDepth;  // 1 + eye distance w
@@ -120,6 +124,11 @@ void main() {
   }
 #ifdef GLOBE_LIGHT_IMAGERY
   v_light = vec2(landLight, upLight);
+  v_layerLight = vec4(1.0);
+  for (int k = 0; k < GLOBE_LAYERS; ++k) {
+    vec4 c = u_layerLight[k];
+    v_layerLight[k] = mix(mix(c.x, c.y, a_uv.x), mix(c.z, c.w, a_uv.x), a_uv.y);
+  }
 #endif
 #endif
 #ifdef GLOBE_SEA_FLAG

@@ -69,7 +69,8 @@ struct TerrainRenderer::Impl {
     std::array<GLuint, terrain::kMaxDrapeLayers> textures{};
     std::array<glm::vec4, terrain::kMaxDrapeLayers> transforms{};
     std::array<float, terrain::kMaxDrapeLayers> opacities{};
-    std::array<float, terrain::kMaxDrapeLayers> lightWeights{};  // w of mix(1, light, w)
+    // w of mix(1, relief, w) per layer, at the tile's corners (NW, NE, SW, SE)
+    std::array<glm::vec4, terrain::kMaxDrapeLayers> lightWeights{};
     std::array<GLuint, terrain::kMaxDrapeLayers> samplers{};
     uint32_t count = 0;
     bool opaqueBase = false;  // layer 0 is opaque everywhere (texels and opacity)
@@ -161,15 +162,20 @@ TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(
     bound.textures[bound.count] = texture;
     bound.transforms[bound.count] = drape.uvTransform;
     bound.opacities[bound.count] = opacity;
-    const bool native =
-        std::isfinite(drape.nativeTexelDegrees) && std::isfinite(drape.terrainStepDegrees);
-    bound.lightWeights[bound.count] = static_cast<float>(
-        native ? terrain::imageryLightWeight(style.imageryLighting, drape.nativeTexelDegrees,
-                                             drape.terrainStepDegrees)
-               : terrain::imageryLightWeight(style.imageryLighting,
-                                             terrain::meridianSpacingMeters(
-                                                 drape.imageryTile, resident.heightPixels, wgs84),
-                                             sampleSpacingMeters));
+    // Per corner from the data's own resolutions; where they are not known, from the drawn
+    // imagery tile's texel over this tile's vertex spacing.
+    const double drawnWeight = terrain::imageryLightWeight(
+        style.imageryLighting,
+        terrain::meridianSpacingMeters(drape.imageryTile, resident.heightPixels, wgs84),
+        sampleSpacingMeters);
+    for (int corner = 0; corner < 4; ++corner) {
+      const double step = drape.terrainStepDegrees[static_cast<size_t>(corner)];
+      const bool native = std::isfinite(drape.nativeTexelDegrees) && std::isfinite(step);
+      bound.lightWeights[bound.count][corner] =
+          static_cast<float>(native ? terrain::imageryLightWeight(style.imageryLighting,
+                                                                  drape.nativeTexelDegrees, step)
+                                    : drawnWeight);
+    }
     const double texelMeters = terrain::shortestTexelMeters(drape.imageryTile, resident.widthPixels,
                                                             resident.heightPixels, wgs84);
     const bool magnified =
@@ -252,7 +258,9 @@ void TerrainRenderer::Impl::bindDrapes(const BoundDrapes& drapes, const Uniforms
     const auto n = static_cast<GLsizei>(drapes.count);
     glUniform4fv(u.layerTransform, n, glm::value_ptr(drapes.transforms[0]));
     glUniform1fv(u.layerOpacity, n, drapes.opacities.data());
-    if (u.layerLight >= 0) glUniform1fv(u.layerLight, n, drapes.lightWeights.data());
+    if (u.layerLight >= 0) {
+      glUniform4fv(u.layerLight, n, glm::value_ptr(drapes.lightWeights[0]));
+    }
   }
 }
 

@@ -30,8 +30,7 @@ bool holds(const formats::BoundsDegrees& b, const Centre& c) {
 }
 
 template <class Source, class Step>
-double finestAt(std::span<const Source> sources, const geo::TileId& tile, Step step) {
-  const Centre centre = centreOf(tile);
+double finestAt(std::span<const Source> sources, const Centre& centre, Step step) {
   double finest = std::numeric_limits<double>::quiet_NaN();
   for (const Source& source : sources) {
     const double degrees = step(source);
@@ -43,13 +42,31 @@ double finestAt(std::span<const Source> sources, const geo::TileId& tile, Step s
 
 }  // namespace
 
+double finestStepDegreesAt(std::span<const formats::SourceInfo> sources, double longitudeDegrees,
+                           double latitudeDegrees) {
+  return finestAt(sources, Centre{longitudeDegrees, latitudeDegrees},
+                  [](const formats::SourceInfo& s) { return s.stepDegrees; });
+}
+
 double finestStepDegreesAt(std::span<const formats::SourceInfo> sources, const geo::TileId& tile) {
-  return finestAt(sources, tile, [](const formats::SourceInfo& s) { return s.stepDegrees; });
+  const Centre centre = centreOf(tile);
+  return finestStepDegreesAt(sources, centre.longitudeDegrees, centre.latitudeDegrees);
+}
+
+std::array<double, 4> finestStepDegreesAtCorners(std::span<const formats::SourceInfo> sources,
+                                                 const geo::TileId& tile) {
+  const auto rect = geo::GeographicTilingScheme::tileRectangle(tile);
+  const double west = geo::radiansToDegrees(rect.westRadians);
+  const double east = geo::radiansToDegrees(rect.westRadians + rect.widthRadians());
+  const double south = geo::radiansToDegrees(rect.southRadians);
+  const double north = geo::radiansToDegrees(rect.southRadians + rect.heightRadians());
+  return {finestStepDegreesAt(sources, west, north), finestStepDegreesAt(sources, east, north),
+          finestStepDegreesAt(sources, west, south), finestStepDegreesAt(sources, east, south)};
 }
 
 double finestTexelDegreesAt(std::span<const formats::ImagerySourceInfo> sources,
                             const geo::TileId& tile) {
-  return finestAt(sources, tile,
+  return finestAt(sources, centreOf(tile),
                   [](const formats::ImagerySourceInfo& s) { return s.pixelDegrees; });
 }
 

@@ -365,7 +365,7 @@ void TerrainScene::updateImagery(const glm::dvec3& cameraEcefMeters, TileGpu& gp
     // The terrain's own step where each tile is, for the relief weight (TileDrape).
     for (size_t i = 0; i < tiles_.size(); ++i) {
       if (drapes_[i].count == 0) continue;
-      const double step = terrainStepDegreesAt(tiles_[i]);
+      const std::array<double, 4> step = terrainStepDegreesAt(tiles_[i]);
       for (uint32_t k = 0; k < drapes_[i].count; ++k)
         drapes_[i].layers[k].terrainStepDegrees = step;
     }
@@ -376,10 +376,11 @@ void TerrainScene::updateImagery(const glm::dvec3& cameraEcefMeters, TileGpu& gp
   drapes_.assign(tiles_.size(), terrain::TileDrapes{});
 }
 
-double TerrainScene::terrainStepDegreesAt(const geo::TileId& tile) {
+std::array<double, 4> TerrainScene::terrainStepDegreesAt(const geo::TileId& tile) {
   if (auto it = terrainStepDegrees_.find(tile); it != terrainStepDegrees_.end()) return it->second;
   if (terrainStepDegrees_.size() >= kTerrainStepEntries) terrainStepDegrees_.clear();
-  const double degrees = finestStepDegreesAt(store_->manifest().sources, tile);
+  const std::array<double, 4> degrees =
+      finestStepDegreesAtCorners(store_->manifest().sources, tile);
   terrainStepDegrees_.emplace(tile, degrees);
   return degrees;
 }

@@ -3,6 +3,7 @@
 // `play`, the soak and the benchmarks; the caller draws view(), tiles() and drapes().
 #pragma once
 
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <memory>
@@ -127,8 +128,9 @@ class TerrainScene {
   void openPacksInBackground(const std::vector<geo::TileId>& tiles);
   Result<void> uploadIfNeeded(const geo::TileId& tile, const terrain::HeightBlock& block,
                               TileGpu& gpu);
-  // The pyramid's finest source step at the tile (scene/native_resolution.hpp), found once.
-  double terrainStepDegreesAt(const geo::TileId& tile);
+  // The pyramid's finest source step at the tile's corners (scene/native_resolution.hpp), found
+  // once per tile.
+  std::array<double, 4> terrainStepDegreesAt(const geo::TileId& tile);
   static constexpr size_t kTerrainStepEntries = 1u << 16;
 
   SceneOptions options_;
@@ -155,7 +157,8 @@ class TerrainScene {
   // Tiles past the pyramid's data that the selection may refine into (options.refineForImagery),
   // with their summaries (their parent's height bounds): filled as the selection finds them.
   std::unordered_map<geo::TileId, terrain::TileSummary> upsampled_;
-  std::unordered_map<geo::TileId, double> terrainStepDegrees_;  // terrainStepDegreesAt's answers
+  // terrainStepDegreesAt's answers
+  std::unordered_map<geo::TileId, std::array<double, 4>> terrainStepDegrees_;
 };
 
 }  // namespace globe::scene

@@ -23,12 +23,16 @@ struct TileDrape {
   // 0.5).
   glm::vec4 uvTransform{0.0f, 0.0f, 1.0f, 1.0f};
   float opacity = 1.0f;  // multiplies the texel alpha
-  // The data's own resolutions where the tile is (its centre): the layer's finest source texel
-  // and the terrain's finest source step, in degrees. --lighting auto weighs the light by their
-  // ratio (relief_shading.hpp), which changes only where the sources do, not from tile to tile
-  // with the levels drawn. NaN: not known, the drawn tiles' texel and vertex spacing instead.
+  // The data's own resolutions: the layer's finest source texel where the tile is (its centre),
+  // and the terrain's finest source step at the tile's corners (north-west, north-east,
+  // south-west, south-east), in degrees. --lighting auto weighs the light by their ratio
+  // (relief_shading.hpp), per corner, interpolated across the tile: it changes only where the
+  // sources do, never from tile to tile with the levels drawn, and there over a tile rather than
+  // at an edge. NaN: not known, the drawn tiles' texel and vertex spacing instead.
   double nativeTexelDegrees = std::numeric_limits<double>::quiet_NaN();
-  double terrainStepDegrees = std::numeric_limits<double>::quiet_NaN();
+  std::array<double, 4> terrainStepDegrees{
+      std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(),
+      std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
 };
 
 // Per drawn terrain tile, bottom layer first; layers[count..] are ignored.

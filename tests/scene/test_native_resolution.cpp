@@ -41,6 +41,25 @@ TEST(NativeResolution, TheFinestSourceAtTheTilesCentreAtEveryLevel) {
   EXPECT_TRUE(std::isnan(finestStepDegreesAt({}, tileAt(10.0, 50.0, 12))));
 }
 
+// Corners: neighbouring tiles agree on their shared corners (so the weight interpolated across
+// them is continuous), and a tile whose east edge is a source's west edge has the fine step on
+// its eastern corners only: the change runs across that tile.
+TEST(NativeResolution, CornersAreSharedAndTheChangeRunsAcrossATile) {
+  const std::vector<formats::SourceInfo> sources{
+      source(1.0 / 3.0, {-180, -90, 180, 90}),
+      source(1.0 / 120.0, {-2.0, 52.0, 0.0, 54.0}),  // W002N52
+  };
+  const geo::TileId west = tileAt(-0.01, 52.9, 12);
+  const geo::TileId east{west.level, west.x + 1, west.y};
+  const auto w = finestStepDegreesAtCorners(sources, west);
+  const auto e = finestStepDegreesAtCorners(sources, east);
+  EXPECT_EQ(w[1], e[0]);  // north-east of the west tile is north-west of the east one
+  EXPECT_EQ(w[3], e[2]);
+  EXPECT_DOUBLE_EQ(e[0], 1.0 / 120.0);  // on 0°: inside W002N52 (extents are closed)
+  EXPECT_DOUBLE_EQ(e[1], 1.0 / 3.0);
+  EXPECT_DOUBLE_EQ(w[0], 1.0 / 120.0);
+}
+
 TEST(NativeResolution, ExtentsAcrossTheAntimeridian) {
   std::vector<formats::ImagerySourceInfo> sources(2);
   sources[0].pixelDegrees = 0.001;

@@ -4,7 +4,7 @@
 # pyramid and layers made by its own tiler):
 # RUNS alternating runs of each build's globe-bench-drape (5 rounds of 3 frames per run), then
 # per view the median over the runs of each build's "with imagery" median, and their ratio.
-# Prints a Markdown table.
+# Writes docs/performance/imagery-versus-baseline.md.
 #
 #   tools/bench_drape/versus_baseline.sh BUILD BASELINE_BUILD [RUNS]
 set -euo pipefail
@@ -45,15 +45,27 @@ for run in $(seq "$RUNS"); do
   done
 done
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
-echo "| view | baseline ms | this build ms | ratio | triangles (baseline → this) |"
-echo "|---|---|---|---|---|"
-for view in $(awk '{ print $1 }' "$WORK/new.txt" | sort -u); do
-  b=$(awk -v v="$view" '$1 == v { print $2 }' "$WORK/base.txt" | median)
-  n=$(awk -v v="$view" '$1 == v { print $2 }' "$WORK/new.txt" | median)
-  tb=$(awk -v v="$view" '$1 == v { print $3 }' "$WORK/base.txt" | head -1)
-  tn=$(awk -v v="$view" '$1 == v { print $3 }' "$WORK/new.txt" | head -1)
-  awk -v v="$view" -v b="$b" -v n="$n" -v tb="$tb" -v tn="$tn" \
-    'BEGIN { printf "| %s | %.1f | %.1f | %.2f | %s → %s |\n", v, b, n, n / b, tb, tn }'
-done
-echo
-echo "$RUNS alternating runs per build; baseline $(git -C "$BASELINE/.." log -1 --format=%h 2>/dev/null || echo "$BASELINE"), this build $(git -C "$ROOT" log -1 --format=%h)."
+{
+  echo "# Frame time with imagery against an earlier commit"
+  echo
+  echo "Steady frames (update + draw + glFinish, 1280×720, OSMesa llvmpipe) of four views with the"
+  echo "bundled Blue Marble and Zion layers, this build against a baseline build of an earlier commit"
+  echo "beside it, each over the pyramid and layers its own tiler made: $RUNS alternating runs of"
+  echo "each build's \`globe-bench-drape\` (5 rounds of 3 frames), per view the median of the runs'"
+  echo "medians. Made by \`tools/bench_drape/versus_baseline.sh BUILD BASELINE_BUILD $RUNS\` on $(date -u +%Y-%m-%d)."
+  echo
+  echo "| view | baseline ms | this build ms | ratio | triangles (baseline → this) |"
+  echo "|---|---|---|---|---|"
+  for view in $(awk '{ print $1 }' "$WORK/new.txt" | sort -u); do
+    b=$(awk -v v="$view" '$1 == v { print $2 }' "$WORK/base.txt" | median)
+    n=$(awk -v v="$view" '$1 == v { print $2 }' "$WORK/new.txt" | median)
+    tb=$(awk -v v="$view" '$1 == v { print $3 }' "$WORK/base.txt" | head -1)
+    tn=$(awk -v v="$view" '$1 == v { print $3 }' "$WORK/new.txt" | head -1)
+    awk -v v="$view" -v b="$b" -v n="$n" -v tb="$tb" -v tn="$tn" \
+      'BEGIN { printf "| %s | %.1f | %.1f | %.2f | %s → %s |\n", v, b, n, n / b, tb, tn }'
+  done
+  echo
+  echo "- baseline $(git -C "$BASELINE/.." log -1 --format=%h 2>/dev/null || echo "$BASELINE"), this build $(git -C "$ROOT" log -1 --format=%h)$(git -C "$ROOT" diff --quiet -- src shaders || echo " + uncommitted changes")"
+  echo "- machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) cores; GL: llvmpipe"
+} > "$ROOT/docs/performance/imagery-versus-baseline.md"
+cat "$ROOT/docs/performance/imagery-versus-baseline.md"
