@@ -22,6 +22,8 @@ struct ImageryStretch {
   double maximum = 255;
 };
 
+inline constexpr double kFootprintFadePixels = 4.0;
+
 struct ImageryInputOptions {
   // Georeference (EPSG:4326, pixel-is-area) for inputs that have none, e.g. a plate carrée JPEG;
   // an error when every input has its own.
@@ -54,6 +56,10 @@ struct ImageryInput {
   // Where tile pixels sample it: the layer's grid (every input of a layer the same; Edges unless
   // a TMS tree is re-packed, whose tiles are pixel-is-area).
   formats::ImageryPixelGrid pixelGrid = formats::ImageryPixelGrid::Area;
+  // Raster edges (x = 0, x = columns, y = 0, y = rows) where the layer's footprint ends: alpha
+  // fades to 0 over kFootprintFadePixels source pixels towards them, so the layer blends into
+  // what lies under it instead of cutting (chooseFootprintFades).
+  std::array<bool, 4> fadeEdges{};
 
   formats::BoundsDegrees extent;  // after warping to longitude/latitude, within ±180°
   // A footprint across ±180° (a 0..360° image, a scene over the antimeridian): the part beyond,

@@ -10,6 +10,7 @@
 #include <map>
 #include <string>
 
+#include "imagery_tiling/footprint_fade.hpp"
 #include "imagery_tiling/gdal_dataset.hpp"
 #include "imagery_tiling/imagery_pixels.hpp"
 #include "transport/atomic_file.hpp"
@@ -171,6 +172,8 @@ class RasterReader final : public ImageryReader {
     const double scaleX = double(window_.width) / windowWidth;
     const double scaleY = double(window_.height) / windowHeight;
     bool covered = false;
+    const bool fades = std::any_of(input_.fadeEdges.begin(), input_.fadeEdges.end(),
+                                   [](bool edge) { return edge; });
     std::vector<size_t> seam;  // samples on a whole-globe raster's first or last column edge
     for (size_t i = 0; i < sourceX_.size(); ++i) {
       const double x = sourceX_[i], y = sourceY_[i];
@@ -183,6 +186,13 @@ class RasterReader final : public ImageryReader {
         continue;
       }
       sampleInto(window_, (x - x0) * scaleX, (y - y0) * scaleY, pixel);
+      if (fades && pixel[3] != 0) {
+        const double fade = footprintFade(input_, x, y, columns_, rows_);
+        if (fade < 1.0) {
+          pixel[3] = static_cast<uint8_t>(std::lround(pixel[3] * fade));
+          if (pixel[3] == 0) std::fill_n(pixel, 4, uint8_t{0});
+        }
+      }
       covered = covered || pixel[3] != 0;
     }
     if (seam.empty()) return covered;

@@ -18,6 +18,7 @@
 #include "formats/image_pack.hpp"
 #include "formats/layer_manifest.hpp"
 #include "formats/pyramid_manifest.hpp"
+#include "imagery_tiling/footprint_fade.hpp"
 #include "imagery_tiling/imagery_pixels.hpp"
 #include "imagery_tiling/imagery_plan.hpp"
 #include "imagery_tiling/imagery_reader.hpp"
@@ -34,7 +35,8 @@ constexpr uint64_t kMaxImagePackBytes = uint64_t{1} << 34;
 // Names the sampling and compositing rules: a layer resumed under other rules would mix them.
 // Version 1: pixel-is-area tiles (a layer re-packing a TMS tree keeps them); 2: edge samples.
 constexpr const char* kRulesVersion = "bilinear-premultiplied-finest-over 1";
-constexpr const char* kEdgeSampledRulesVersion = "bilinear-premultiplied-finest-over 2 edges";
+constexpr const char* kEdgeSampledRulesVersion =
+    "bilinear-premultiplied-finest-over 2 edges, footprints fade over 4 pixels";
 
 std::string boundsText(const formats::BoundsDegrees& b) {
   char text[128];
@@ -304,6 +306,7 @@ Result<ImageryTilerReport> runImageryTiler(const ImageryTilerOptions& options) {
   const formats::ImageryPixelGrid pixelGrid =
       anyTms ? formats::ImageryPixelGrid::Area : formats::ImageryPixelGrid::Edges;
   for (ImageryInput& input : *described) input.pixelGrid = pixelGrid;
+  chooseFootprintFades(*described);
   const std::vector<ImageryInput>& inputs = *described;
   std::vector<formats::BoundsDegrees> extents;
   std::vector<uint32_t> finestLevels;

@@ -16,6 +16,7 @@
 
 #include "core/crc32.hpp"
 #include "formats/image_io.hpp"
+#include "imagery_tiling/footprint_fade.hpp"
 #include "imagery_tiling/imagery_encoding.hpp"
 #include "imagery_tiling/imagery_reader.hpp"
 #include "imagery_tiling/imagery_tiler.hpp"
@@ -63,8 +64,9 @@ class SourceProbe {
 
   struct Sample {
     double rgb[3] = {0, 0, 0};
-    int validNeighbours = 0;  // of the 4 (a neighbour is valid when any band is not 0)
-    bool inside = false;      // the point lies inside the raster's area
+    int validNeighbours = 0;        // of the 4 (a neighbour is valid when any band is not 0)
+    bool inside = false;            // the point lies inside the raster's area
+    double edgeDistancePixels = 0;  // to the raster's nearest edge, in its pixels
   };
 
   Sample at(double lon, double lat, const std::vector<int>& bands = {1, 2, 3}) const {
@@ -74,6 +76,7 @@ class SourceProbe {
     const double column = (x - geo_[0]) / geo_[1], row = (y - geo_[3]) / geo_[5];
     const int columns = GDALGetRasterXSize(dataset_), rows = GDALGetRasterYSize(dataset_);
     s.inside = column >= 0 && column < columns && row >= 0 && row < rows;
+    s.edgeDistancePixels = std::min(std::min(column, columns - column), std::min(row, rows - row));
     if (!s.inside) return s;
     const double fx = column - 0.5, fy = row - 0.5;
     const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
@@ -141,7 +144,7 @@ TEST(ImageryTiler, ProjectedInputMatchesTheSourceThroughGdal) {
   EXPECT_EQ(store->manifest().sources[0].crs, "EPSG:32618");
   const SourceProbe probe(input);
   double errorSum = 0, worst = 0;
-  int compared = 0, transparentNoData = 0, outsideTransparent = 0;
+  int compared = 0, transparentNoData = 0, outsideTransparent = 0, faded = 0;
   for (const auto& [tile, image] : tilesOf(*store, finest)) {
     for (int row = 3; row < 256; row += 11) {
       for (int column = 5; column < 256; column += 11) {
@@ -159,6 +162,13 @@ TEST(ImageryTiler, ProjectedInputMatchesTheSourceThroughGdal) {
           continue;
         }
         if (s.validNeighbours < 4) continue;  // the edge of the scene: partly transparent
+        if (s.edgeDistancePixels < kFootprintFadePixels) {
+          // The footprint's edge fades over 4 source pixels (imagery_tiling/footprint_fade.hpp).
+          const double t = s.edgeDistancePixels / kFootprintFadePixels;
+          EXPECT_NEAR(p[3], 255.0 * t * t * (3 - 2 * t), 2.0);
+          ++faded;
+          continue;
+        }
         EXPECT_EQ(p[3], 255);
         for (int b = 0; b < 3; ++b) {
           const double error = std::abs(p[b] - s.rgb[b]);
@@ -172,6 +182,7 @@ TEST(ImageryTiler, ProjectedInputMatchesTheSourceThroughGdal) {
   ASSERT_GT(compared, 500);
   EXPECT_GT(transparentNoData, 50);
   EXPECT_GT(outsideTransparent, 50);
+  EXPECT_GT(faded, 10);
   EXPECT_LT(errorSum / (3 * compared), 3.0);  // JPEG at quality 85
   EXPECT_LT(worst, 48.0);
 }
@@ -190,10 +201,11 @@ TEST(ImageryTiler, FourthBandThatIsNotAlphaStaysOpaque) {
     for (int row = 0; row < 256; row += 3) {
       for (int column = 0; column < 256; column += 3) {
         const uint8_t* p = pixel(image, row, column);
-        opaque += p[3] == 255;
-        partial += p[3] > 0 && p[3] < 255;
         const PixelCentre c = centreOf(tile, row, column);
         const auto s = probe.at(c.lon, c.lat);
+        if (s.edgeDistancePixels < kFootprintFadePixels) continue;  // the footprint's fade
+        opaque += p[3] == 255;
+        partial += p[3] > 0 && p[3] < 255;
         if (p[3] == 255 && s.validNeighbours == 4) {
           for (int b = 0; b < 3; ++b) errorSum += std::abs(p[b] - s.rgb[b]);
           ++compared;
