@@ -72,6 +72,14 @@ struct ImageryLayers::Layer {
                    (void)store->hasTile(tile);  // opens the pack: an error is the store's to report
                  });
   }
+  // The imagery level a terrain tile of this level takes (terrain/imagery_level.hpp).
+  uint32_t imageryLevel(uint32_t terrainLevel, uint32_t verticesPerSide,
+                        double maximumScreenSpaceErrorPixels) const {
+    const formats::LayerManifest& manifest = store->manifest();
+    return terrain::imageryLevelFor(terrainLevel, verticesPerSide, manifest.tileSizePixels,
+                                    maximumScreenSpaceErrorPixels, manifest.maxLevel());
+  }
+
   // The finest source texel at a terrain tile (native_resolution.hpp), found once per tile.
   double nativeTexelAt(const geo::TileId& tile) {
     if (auto it = nativeTexelDegrees.find(tile); it != nativeTexelDegrees.end()) return it->second;
@@ -184,13 +192,12 @@ Result<ImageryFrame> ImageryLayers::update(std::span<const geo::TileId> tiles,
       core::warn(warnings_, "imagery " + error + "; drawing coarser tiles there");
     }
     const uint32_t tileSize = layer.store->manifest().tileSizePixels;
-    const uint32_t maxLevel = layer.store->manifest().maxLevel();
     std::vector<streaming::LoadRequest> wanted;
     std::vector<geo::TileId> wantedTiles;
     for (size_t i = 0; i < tiles.size(); ++i) {
       const geo::TileId& tile = tiles[i];
-      const uint32_t level = terrain::imageryLevelFor(tile.level, verticesPerSide, tileSize,
-                                                      maximumScreenSpaceErrorPixels, maxLevel);
+      const uint32_t level =
+          layer.imageryLevel(tile.level, verticesPerSide, maximumScreenSpaceErrorPixels);
       // The tile this terrain tile wants: the deepest the layer has at or above that level.
       geo::TileId want = terrain::ancestorAt(tile, level);
       bool unknown = false;  // a pack index still on its way: a coarser tile for now
@@ -277,8 +284,7 @@ std::vector<terrain::NominalErrorRegion> ImageryLayers::nominalErrorRegions(
     if (!(layer->options.opacity > 0.0f)) continue;  // draws nothing
     const formats::LayerManifest& manifest = layer->store->manifest();
     auto imageryLevel = [&](uint32_t terrainLevel) {
-      return terrain::imageryLevelFor(terrainLevel, verticesPerSide, manifest.tileSizePixels,
-                                      maximumScreenSpaceErrorPixels, manifest.maxLevel());
+      return layer->imageryLevel(terrainLevel, verticesPerSide, maximumScreenSpaceErrorPixels);
     };
     std::optional<uint32_t> deepest;
     for (uint32_t level = 0; level < geo::kMaxLevel; ++level) {
@@ -315,13 +321,12 @@ bool ImageryLayers::sharperBelow(const geo::TileId& tile, uint32_t verticesPerSi
   if (tile.level >= geo::kMaxLevel) return false;
   for (const auto& layer : layers_) {
     if (!(layer->options.opacity > 0.0f)) continue;  // draws nothing
-    const formats::LayerManifest& manifest = layer->store->manifest();
-    auto imageryLevel = [&](uint32_t terrainLevel) {
-      return terrain::imageryLevelFor(terrainLevel, verticesPerSide, manifest.tileSizePixels,
-                                      maximumScreenSpaceErrorPixels, manifest.maxLevel());
-    };
-    const uint32_t childLevel = imageryLevel(tile.level + 1);
-    if (childLevel <= imageryLevel(tile.level)) continue;
+    const uint32_t childLevel =
+        layer->imageryLevel(tile.level + 1, verticesPerSide, maximumScreenSpaceErrorPixels);
+    if (childLevel <=
+        layer->imageryLevel(tile.level, verticesPerSide, maximumScreenSpaceErrorPixels)) {
+      continue;
+    }
     for (const geo::TileId& child : tile.children()) {
       const geo::TileId imageryTile = terrain::ancestorAt(child, childLevel);
       if (layer->has(imageryTile).value_or(false)) return true;

@@ -59,15 +59,10 @@ double levelGroundLightWeight(ImageryLighting lighting) {
 
 double imageryLightWeight(ImageryLighting lighting, double imageryTexelMeters,
                           double terrainSpacingMeters) {
-  switch (lighting) {
-    case ImageryLighting::Off:
-      return 0.0;
-    case ImageryLighting::On:
-      return 1.0;
-    case ImageryLighting::Auto:
-      break;
+  if (lighting == ImageryLighting::Auto) {
+    return reliefShadingWeight(imageryTexelMeters, terrainSpacingMeters);
   }
-  return reliefShadingWeight(imageryTexelMeters, terrainSpacingMeters);
+  return levelGroundLightWeight(lighting);  // Off 0, On 1
 }
 
 }  // namespace globe::terrain
