@@ -1,5 +1,6 @@
 #include "imagery_tiling/imagery_pixels.hpp"
 
+#include <algorithm>
 #include <cstdint>
 
 #include "imagery_tiling/imagery_encoding.hpp"
