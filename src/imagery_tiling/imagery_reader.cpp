@@ -174,14 +174,14 @@ class RasterReader final : public ImageryReader {
     bool covered = false;
     const bool fades = std::any_of(input_.fadeEdges.begin(), input_.fadeEdges.end(),
                                    [](bool edge) { return edge; });
+    const bool wrapSeam = edges && wrapsAround();
     std::vector<size_t> seam;  // samples on a whole-globe raster's first or last column edge
     for (size_t i = 0; i < sourceX_.size(); ++i) {
       const double x = sourceX_[i], y = sourceY_[i];
       if (!inside(x, y)) continue;
       uint8_t* pixel = &out.pixels[i * 4];
       if (pixel[3] != 0) continue;  // drawn from the other part of the footprint
-      if (edges && wrapsAround() &&
-          (x <= kEdgeTolerancePixels || x >= columns_ - kEdgeTolerancePixels)) {
+      if (wrapSeam && (x <= kEdgeTolerancePixels || x >= columns_ - kEdgeTolerancePixels)) {
         seam.push_back(i);
         continue;
       }

@@ -164,17 +164,16 @@ TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(
     bound.opacities[bound.count] = opacity;
     // Per corner from the data's own resolutions; where they are not known, from the drawn
     // imagery tile's texel over this tile's vertex spacing.
-    const double drawnWeight = terrain::imageryLightWeight(
-        style.imageryLighting,
-        terrain::meridianSpacingMeters(drape.imageryTile, resident.heightPixels, wgs84),
-        sampleSpacingMeters);
     for (int corner = 0; corner < 4; ++corner) {
       const double step = drape.terrainStepDegrees[static_cast<size_t>(corner)];
       const bool native = std::isfinite(drape.nativeTexelDegrees) && std::isfinite(step);
-      bound.lightWeights[bound.count][corner] =
-          static_cast<float>(native ? terrain::imageryLightWeight(style.imageryLighting,
-                                                                  drape.nativeTexelDegrees, step)
-                                    : drawnWeight);
+      bound.lightWeights[bound.count][corner] = static_cast<float>(
+          native
+              ? terrain::imageryLightWeight(style.imageryLighting, drape.nativeTexelDegrees, step)
+              : terrain::imageryLightWeight(
+                    style.imageryLighting,
+                    terrain::meridianSpacingMeters(drape.imageryTile, resident.heightPixels, wgs84),
+                    sampleSpacingMeters));
     }
     const double texelMeters = terrain::shortestTexelMeters(drape.imageryTile, resident.widthPixels,
                                                             resident.heightPixels, wgs84);

@@ -9,19 +9,19 @@
 namespace globe::scene {
 namespace {
 
-struct Centre {
+struct PointDegrees {
   double longitudeDegrees, latitudeDegrees;
 };
 
-Centre centreOf(const geo::TileId& tile) {
+PointDegrees centreOf(const geo::TileId& tile) {
   const auto rect = geo::GeographicTilingScheme::tileRectangle(tile);
   return {geo::radiansToDegrees(rect.westRadians + rect.widthRadians() / 2),
           geo::radiansToDegrees(rect.southRadians + rect.heightRadians() / 2)};
 }
 
-bool holds(const formats::BoundsDegrees& b, const Centre& c) {
+bool holds(const formats::BoundsDegrees& b, const PointDegrees& c) {
   if (!(c.latitudeDegrees >= b.south && c.latitudeDegrees <= b.north)) return false;
-  // The centre's longitude, moved by whole turns to the first one at or east of the west edge.
+  // The longitude, moved by whole turns to the first one at or east of the west edge.
   double lon = c.longitudeDegrees;
   while (lon < b.west) lon += 360.0;
   while (lon - 360.0 >= b.west) lon -= 360.0;
@@ -30,11 +30,11 @@ bool holds(const formats::BoundsDegrees& b, const Centre& c) {
 }
 
 template <class Source, class Step>
-double finestAt(std::span<const Source> sources, const Centre& centre, Step step) {
+double finestAt(std::span<const Source> sources, const PointDegrees& point, Step step) {
   double finest = std::numeric_limits<double>::quiet_NaN();
   for (const Source& source : sources) {
     const double degrees = step(source);
-    if (!(degrees > 0.0) || !std::isfinite(degrees) || !holds(source.bounds, centre)) continue;
+    if (!(degrees > 0.0) || !std::isfinite(degrees) || !holds(source.bounds, point)) continue;
     if (!(degrees >= finest)) finest = degrees;  // NaN compares false: the first one wins
   }
   return finest;
@@ -44,12 +44,12 @@ double finestAt(std::span<const Source> sources, const Centre& centre, Step step
 
 double finestStepDegreesAt(std::span<const formats::SourceInfo> sources, double longitudeDegrees,
                            double latitudeDegrees) {
-  return finestAt(sources, Centre{longitudeDegrees, latitudeDegrees},
+  return finestAt(sources, PointDegrees{longitudeDegrees, latitudeDegrees},
                   [](const formats::SourceInfo& s) { return s.stepDegrees; });
 }
 
 double finestStepDegreesAt(std::span<const formats::SourceInfo> sources, const geo::TileId& tile) {
-  const Centre centre = centreOf(tile);
+  const PointDegrees centre = centreOf(tile);
   return finestStepDegreesAt(sources, centre.longitudeDegrees, centre.latitudeDegrees);
 }
 

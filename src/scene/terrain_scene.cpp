@@ -39,12 +39,15 @@ class SceneCatalog final : public terrain::TileCatalog {
                std::vector<geo::TileId>* notOpen, Upsampling* upsampling)
       : store_(store), loader_(loader), notOpen_(notOpen), upsampling_(upsampling) {}
   std::optional<terrain::TileSummary> find(const geo::TileId& tile) const override {
+    // A tile made from its parent is never the pyramid's: no pack lookup for it.
+    if (upsampling_ != nullptr) {
+      if (auto known = upsampling_->tiles.find(tile); known != upsampling_->tiles.end()) {
+        return known->second;
+      }
+    }
     bool notYetOpen = false;
     if (auto summary = inPyramid(tile, notYetOpen)) return summary;
     if (notYetOpen || upsampling_ == nullptr || tile.level == 0) return std::nullopt;
-    if (auto known = upsampling_->tiles.find(tile); known != upsampling_->tiles.end()) {
-      return known->second;
-    }
     // The parent is a leaf of the pyramid, or itself made from its parent.
     const geo::TileId parent = tile.parent();
     std::optional<terrain::TileSummary> parentSummary;

@@ -48,6 +48,17 @@ glm::dvec3 tileVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGrid
                     heightMeters);
 }
 
+glm::dvec3 levelVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGrid& grid, int row,
+                                 int column, double heightMeters) {
+  const auto last = static_cast<int>(grid.verticesPerSide) - 1;
+  if (row >= 0 && row <= last && column >= 0 && column <= last) {
+    return tileVertexEcefMeters(ellipsoid, grid, static_cast<uint32_t>(row),
+                                static_cast<uint32_t>(column), heightMeters);
+  }
+  const BlockGrid::Vertex where = grid.wrappedVertex(row, column);
+  return vertexEcef(ellipsoid, where.longitudeDegrees, where.latitudeDegrees, heightMeters);
+}
+
 // The drawn edges reach a hair past the tile's rectangle, so the edges of two tiles of one level
 // overlap instead of meeting: through two tiles' float transforms their shared vertices round to
 // slightly different pixels, and a pixel centre could fall through the sliver between them.
@@ -113,9 +124,8 @@ TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
       return vertices[gridVertexIndex(static_cast<uint32_t>(row), static_cast<uint32_t>(column), n)]
           .positionEcef;
     }
-    const BlockGrid::Vertex where = grid.wrappedVertex(row, column);
-    return vertexEcef(ellipsoid, where.longitudeDegrees, where.latitudeDegrees,
-                      block.surfaceHeightMetersWithApron(row, column));
+    return levelVertexEcefMeters(ellipsoid, grid, row, column,
+                                 block.surfaceHeightMetersWithApron(row, column));
   };
   // The normal at (row, column) from neighbours `step` vertices away: 1 for this level's, 2 for
   // the next coarser level's (every other vertex is its). Never past the apron.

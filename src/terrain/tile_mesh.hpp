@@ -78,6 +78,12 @@ struct TileMesh {
 glm::dvec3 tileVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGrid& grid,
                                 uint32_t row, uint32_t column, double heightMeters);
 
+// The same for a vertex of the tile's level in or around it, row and column in
+// [-kApronWidth, N+kApronWidth-1]: outside the tile at BlockGrid::wrappedVertex's place (the
+// vertex the neighbour holds, across ±180° and the poles too).
+glm::dvec3 levelVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGrid& grid, int row,
+                                 int column, double heightMeters);
+
 // Where buildTileMesh draws grid vertex (row, column): tileVertexEcefMeters inside the tile; on
 // its edges moved outwards by kSeamOverlapFraction of the latitude spacing (in metres; in
 // longitude at most a quarter cell, near the poles; never past a pole), so that neighbouring

@@ -7,6 +7,7 @@
 
 #include "geo/ecef.hpp"
 #include "terrain/block_grid.hpp"
+#include "terrain/tile_mesh.hpp"
 
 namespace globe::terrain {
 namespace {
@@ -45,17 +46,9 @@ class ParentSurface {
     return block_.surfaceHeightMetersWithApron(row, column);
   }
   int16_t sample(int row, int column) const { return block_.atWithApron(row, column); }
-  // Where the parent's mesh puts the vertex (the grid's own place, as tile_mesh builds it).
+  // Where the parent's mesh puts the vertex.
   glm::dvec3 ecefMeters(int row, int column) const {
-    const BlockGrid::Vertex place = placeOf(grid_, row, column);
-    const double height = heightMeters(row, column);
-    if (std::abs(place.latitudeDegrees) == 90.0) {
-      const auto pole = geo::Cartographic::fromDegrees(0.0, place.latitudeDegrees, height);
-      return {0.0, 0.0, geo::cartographicToEcef(ellipsoid_, pole).z};
-    }
-    return geo::cartographicToEcef(
-        ellipsoid_,
-        geo::Cartographic::fromDegrees(place.longitudeDegrees, place.latitudeDegrees, height));
+    return levelVertexEcefMeters(ellipsoid_, grid_, row, column, heightMeters(row, column));
   }
 
  private:

@@ -13,12 +13,7 @@ OUT_MD=$ROOT/docs/performance/imagery-frame-time.md
 for exe in "$TILER" "$BENCH"; do [ -x "$exe" ] || { echo "build it first: $exe" >&2; exit 1; }; done
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
-D=$ROOT/data
-"$TILER" -q -o "$WORK/pyramid" "$D/dem/ETOPO20.DEM" "$D/dem/W002N52.DEM" "$D/dem/E138N35_FUJI.DEM" \
-  "$D/dem/zion-srtm3.tif"
-"$TILER" imagery -q -o "$WORK/blue-marble" --bounds -180,-90,180,90 \
-  "$D/imagery/world.topo.bathy.200412.3x5400x2700.jpg"
-"$TILER" imagery -q -o "$WORK/zion" "$D/imagery/zion-landsat8-rgb.tif"
+"$ROOT/tools/bench/tile_bundled.sh" "$TILER" "$WORK"
 ARGS=(--pyramid "$WORK/pyramid" --layer "$WORK/blue-marble" --layer "$WORK/zion"
       --view fuji_oblique=138.60,35.20,6000,30,-15,0 --view zion_oblique=-112.93,37.16,4500,330,-20,0
       --view zion_nadir=-112.98,37.27,9000 --view globe=138,30,20000000 --rounds 25 --frames 3)

@@ -19,17 +19,9 @@ for exe in "$TILER" "$BASELINE/apps/globe-tiler/globe-tiler" \
 done
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
-D=$ROOT/data
 # Each build's own tiler: a layer's format is part of what may have changed.
-for side in base new; do
-  tiler=$BUILD/apps/globe-tiler/globe-tiler
-  [ "$side" = base ] && tiler=$BASELINE/apps/globe-tiler/globe-tiler
-  "$tiler" -q -o "$WORK/$side/pyramid" "$D/dem/ETOPO20.DEM" "$D/dem/W002N52.DEM" \
-    "$D/dem/E138N35_FUJI.DEM" "$D/dem/zion-srtm3.tif" > /dev/null
-  "$tiler" imagery -q -o "$WORK/$side/blue-marble" --bounds -180,-90,180,90 \
-    "$D/imagery/world.topo.bathy.200412.3x5400x2700.jpg" > /dev/null
-  "$tiler" imagery -q -o "$WORK/$side/zion" "$D/imagery/zion-landsat8-rgb.tif" > /dev/null
-done
+"$ROOT/tools/bench/tile_bundled.sh" "$BASELINE/apps/globe-tiler/globe-tiler" "$WORK/base"
+"$ROOT/tools/bench/tile_bundled.sh" "$TILER" "$WORK/new"
 VIEWS=(--view fuji_oblique=138.60,35.20,6000,30,-15,0 --view zion_oblique=-112.93,37.16,4500,330,-20,0
        --view zion_nadir=-112.98,37.27,9000 --view globe=138,30,20000000 --rounds 5 --frames 3)
 for run in $(seq "$RUNS"); do

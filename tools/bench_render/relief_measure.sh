@@ -18,11 +18,7 @@ for exe in "$TILER" "$GLOBE" "$GRADIENT"; do
 done
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
-D=$ROOT/data
-"$TILER" -q -o "$WORK/pyramid" "$D/dem/ETOPO20.DEM" "$D/dem/W002N52.DEM" "$D/dem/E138N35_FUJI.DEM" \
-  "$D/dem/zion-srtm3.tif"
-"$TILER" imagery -q -o "$WORK/blue-marble" --bounds -180,-90,180,90 \
-  "$D/imagery/world.topo.bathy.200412.3x5400x2700.jpg"
+"$ROOT/tools/bench/tile_bundled.sh" "$TILER" "$WORK"
 # The first-run views (tools/setup.sh, the golden tests).
 VIEWS=("Mount Fuji oblique=138.60,35.20,6000,30,-15,0" "Zion oblique=-112.93,37.16,4500,330,-20,0")
 MODES=(off auto on)

@@ -20,18 +20,11 @@ for exe in "$BUILD/apps/globe-tiler/globe-tiler" "$BUILD/apps/globe/globe" "$SEA
 done
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
-D=$ROOT/data
 # Each build's own tiler: the layers' pixel grid is part of what is measured.
-tile_all() {  # build dir
-  local tiler=$1/apps/globe-tiler/globe-tiler
-  "$tiler" -q -o "$2/pyramid" "$D/dem/ETOPO20.DEM" "$D/dem/W002N52.DEM" \
-    "$D/dem/E138N35_FUJI.DEM" "$D/dem/zion-srtm3.tif" > /dev/null
-  "$tiler" imagery -q -o "$2/blue-marble" --bounds -180,-90,180,90 \
-    "$D/imagery/world.topo.bathy.200412.3x5400x2700.jpg" > /dev/null
-  "$tiler" imagery -q -o "$2/zion" "$D/imagery/zion-landsat8-rgb.tif" > /dev/null
-}
-tile_all "$BUILD" "$WORK/new"
-if [ -n "$BASELINE" ]; then tile_all "$BASELINE" "$WORK/base"; fi
+"$ROOT/tools/bench/tile_bundled.sh" "$BUILD/apps/globe-tiler/globe-tiler" "$WORK/new"
+if [ -n "$BASELINE" ]; then
+  "$ROOT/tools/bench/tile_bundled.sh" "$BASELINE/apps/globe-tiler/globe-tiler" "$WORK/base"
+fi
 # Views whose centre column (319 | 320 of 640) lies on a tile edge.
 VIEWS=(
   "Blue Marble tile edge at ±180° (Fiji), 150 km=180.0,-16.5,150000"
