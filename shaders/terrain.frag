@@ -1,4 +1,5 @@
-// Terrain fragment shader: the interpolated lit land or sea colour (terrain.vert), by the sea flag,
+// Terrain fragment shader: the interpolated lit land or sea colour (terrain.vert), by the sea flag
+// (or, with GLOBE_WATER_MASK, where a water mask decides, by the mask),
 // times the draped imagery when GLOBE_IMAGERY is defined, then GLOBE_LAYERS (1..4) tiled imagery
 // layers composited over it, bottom first (with GLOBE_LIGHT_IMAGERY each lit by its own weight of
 // the terrain's light), and the logarithmic depth (per
@@ -49,6 +50,13 @@ uniform sampler2D u_layer3;
 #endif
 uniform float u_layerOpacity[GLOBE_LAYERS];
 #endif
+#ifdef GLOBE_WATER_MASK
+// Premultiplied (water fraction · a, a): a = 0 where no land polygons decide (outside the mask's
+// layers), so the sea flag stays.
+uniform sampler2D u_waterMask;
+in vec2 v_maskUv;
+in float v_maskWeight;
+#endif
 in float v_logDepth;
 in float v_fog;          // terrain.vert: distance fog towards the horizon's colour
 uniform vec3 u_fogColor;
@@ -71,11 +79,30 @@ vec3 drape(vec3 color, sampler2D layer, int k, float level, float relief) {
 }
 #endif
 
+#ifdef GLOBE_SEA_FLAG
+// How much of the fragment is water, 0 or 1: the sea flag thresholded at 1/2. With a water mask,
+// the flag and the mask's water fraction mixed by the mask's weight, thresholded over about a
+// pixel: coasts as sharp as the screen allows when near, a mip level's coverage when far.
+float seaAmount() {
+#ifdef GLOBE_WATER_MASK
+  vec4 mask = texture(u_waterMask, v_maskUv);
+  float sea = v_sea * (1.0 - v_maskWeight * mask.a) + v_maskWeight * mask.r;
+  float width = max(fwidth(sea), 1e-3);
+  return clamp((sea - 0.5) / width + 0.5, 0.0, 1.0);
+#else
+  return v_sea > 0.5 ? 1.0 : 0.0;
+#endif
+}
+#endif
+
 void main() {
+#ifdef GLOBE_SEA_FLAG
+  float sea = seaAmount();
+#endif
 #ifdef GLOBE_OPAQUE_BASE
   vec3 color = vec3(0.0);  // covered by layer 0 (alpha 1, opacity 1) in every fragment
 #else
-  vec3 color = v_sea > 0.5 ? v_seaColor : v_landColor;
+  vec3 color = mix(v_landColor, v_seaColor, sea);
 #endif
 #if defined(GLOBE_IMAGERY) && !defined(GLOBE_OPAQUE_BASE)
   color *= texture(u_imagery, v_imageryUv).rgb;
@@ -83,7 +110,7 @@ void main() {
 #ifdef GLOBE_LAYERS
 #ifdef GLOBE_LIGHT_IMAGERY
   float level = mix(1.0, v_light.y, u_levelLight);
-  float relief = v_sea > 0.5 ? 1.0 : v_light.x / max(v_light.y, 1e-3);
+  float relief = mix(v_light.x / max(v_light.y, 1e-3), 1.0, sea);
 #else
   float level = 1.0;  // imagery keeps its own (baked-in) shading
   float relief = 1.0;

@@ -6,6 +6,7 @@
 // colours are the light only and the image gives the colour in terrain.frag. With GLOBE_LAYERS = n
 // (n tiled imagery layers, composited over that colour in terrain.frag), each layer's imagery uv
 // travels as a varying, and with GLOBE_LIGHT_IMAGERY (--lighting) the land and sea light too.
+// With GLOBE_WATER_MASK, the water mask's uv and weight (terrain.frag decides land and water).
 //
 // Colour and light are computed here, not per fragment: llvmpipe shades several fragments per
 // vertex even near the ground, and the normals are per vertex anyway, so per-fragment lighting
@@ -59,6 +60,12 @@ out vec2 v_light;                  // land light, sea light
 uniform vec4 u_layerLight[GLOBE_LAYERS];
 out vec4 v_layerLight;
 #endif
+#endif
+#ifdef GLOBE_WATER_MASK
+uniform vec4 u_waterMaskTransform;  // water-mask uv = xy + tile uv · zw
+uniform vec4 u_waterMaskWeight;     // the mask's weight at the corners NW, NE, SW, SE
+out vec2 v_maskUv;
+out float v_maskWeight;             // 0: the sea flag decides, 1: the mask (terrain.frag)
 #endif
 out float v_logDepth;  // 1 + eye distance w
 out float v_fog;       // how much of the fog colour covers the terrain here
@@ -133,5 +140,10 @@ void main() {
 #endif
 #ifdef GLOBE_SEA_FLAG
   v_sea = a_sea;
+#endif
+#ifdef GLOBE_WATER_MASK
+  v_maskUv = u_waterMaskTransform.xy + a_uv * u_waterMaskTransform.zw;
+  vec4 w = u_waterMaskWeight;
+  v_maskWeight = mix(mix(w.x, w.y, a_uv.x), mix(w.z, w.w, a_uv.x), a_uv.y);
 #endif
 }

@@ -2,7 +2,8 @@
 # One-command set-up: installs the Debian packages, builds globe, tiles the bundled real data
 # (whole-globe ETOPO20 + a GTOPO30 crop of eastern England + the Mount Fuji SRTM3 tile + Zion
 # National Park's SRTM 3") into ./pyramid and the bundled imagery (the 5400x2700 Blue Marble and
-# the Landsat 8 scene over Zion) into two imagery layers in ./layers, prints what they hold,
+# the Landsat 8 scene over Zion) into two imagery layers in ./layers and the bundled GSHHG land
+# polygons into a water mask (./layers/coast: true coasts over the coarse grid), prints what they hold,
 # renders views headless into out/, queries the height of Mount Fuji's summit and plays the
 # bundled demo flight over Zion with both layers into out/play (frames, log, video when ffmpeg is
 # installed; in a window as well when a display exists).
@@ -18,12 +19,15 @@ cmake --build build -j"$(nproc)" --target globe globe-tiler
 ./build/apps/globe-tiler/globe-tiler imagery -o layers/blue-marble --bounds -180,-90,180,90 \
   data/imagery/world.topo.bathy.200412.3x5400x2700.jpg
 ./build/apps/globe-tiler/globe-tiler imagery -o layers/zion data/imagery/zion-landsat8-rgb.tif
+./build/apps/globe-tiler/globe-tiler water-mask -o layers/coast data/coast/gshhg-l-land.fgb \
+  data/coast/gshhg-f-*.fgb
 ./build/apps/globe/globe info pyramid
-LAYERS=(--layer layers/blue-marble --layer layers/zion)
+LAYERS=(--layer layers/blue-marble --layer layers/zion --layer layers/coast)
 mkdir -p out
 ./build/apps/globe/globe snapshot pyramid --camera 138,30,20000000 "${LAYERS[@]}" -o out/globe.png
 ./build/apps/globe/globe snapshot pyramid --camera -112.93,37.16,4500,330,-20,0 "${LAYERS[@]}" -o out/zion.png
-./build/apps/globe/globe snapshot pyramid --camera 138.60,35.20,6000,30,-15,0 -o out/fuji_oblique.png
+./build/apps/globe/globe snapshot pyramid --camera 138.60,35.20,6000,30,-15,0 --layer layers/coast -o out/fuji_oblique.png
+./build/apps/globe/globe snapshot pyramid --camera 0.3,52.9,60000 --layer layers/coast -o out/wash.png
 echo "138.7275,35.3606" | ./build/apps/globe/globe query pyramid
 echo "Images in out/. Interactive: ./build/apps/globe/globe view pyramid ${LAYERS[*]} (needs a display)"
 PLAY=(./build/apps/globe/globe play pyramid data/paths/zion-demo.json "${LAYERS[@]}" --out out/play --size 640x360)

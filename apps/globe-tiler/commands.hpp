@@ -10,5 +10,7 @@ int runTileCommand(int argc, char** argv);
 int runExportCommand(int argc, char** argv);
 // globe-tiler imagery -o LAYER INPUT...: imagery to a layer.
 int runImageryCommand(int argc, char** argv);
+// globe-tiler water-mask -o LAYER POLYGONS...: land polygons to a water-mask layer.
+int runWaterMaskCommand(int argc, char** argv);
 
 }  // namespace globe::tiler_app

@@ -49,7 +49,9 @@ void addSeaFloorOption(CLI::App& command, CommonArguments& arguments) {
 void addLayerOptions(CLI::App& command, CommonArguments& arguments) {
   command.add_option("--layer", arguments.layerTexts,
                      "imagery layer directory made by `globe-tiler imagery`, optionally "
-                     "DIR,OPACITY (0..1); repeat for more, bottom layer first");
+                     "DIR,OPACITY (0..1); repeat for more, bottom layer first. A water mask made "
+                     "by `globe-tiler water-mask` (at most one) decides land and water where the "
+                     "terrain is coarser; its opacity scales that");
   // A bare --lighting (before layers could be lit by resolution: the only way to light them)
   // still means on.
   command

@@ -64,7 +64,7 @@ std::string layerManifestToJson(const LayerManifest& manifest) {
       {"format", "globe-imagery-layer"},
       // Version 1 where version 1 readers draw the layer right (area pixels).
       {"formatVersion", edges ? kLayerFormatVersion : 1},
-      {"kind", "imagery"},
+      {"kind", manifest.kind == LayerKind::WaterMask ? "water-mask" : "imagery"},
       {"tilingScheme",
        {{"name", "geographic"},
         {"level0", "2x1 tiles of 180x180 degrees; x eastwards from -180, y southwards from +90"},
@@ -77,7 +77,12 @@ std::string layerManifestToJson(const LayerManifest& manifest) {
       {"tileSizePixels", manifest.tileSizePixels},
       {"packTilesPerSide", manifest.packTilesPerSide},
       {"packFiles", "L<level>/<packX>_<packY>.pack (GLOBEIM1: header, index, JPEG/PNG payloads)"},
-      {"encoding", "JPEG where every pixel is opaque, PNG (RGBA) otherwise; absent = no data"},
+      {"encoding", manifest.kind == LayerKind::WaterMask
+                       ? "8-bit grey+alpha PNG: grey the water fraction around each sample (255 = "
+                         "water), alpha 0 where no input decides; absent = as the nearest present "
+                         "ancestor"
+                       : "JPEG where every pixel is opaque, PNG (RGBA) otherwise; absent = no "
+                         "data"},
       {"boundsDegrees", boundsToJson(manifest.bounds)},
       {"maxLevel", manifest.maxLevel()},
       {"planFingerprint", manifest.planFingerprint},
@@ -91,8 +96,9 @@ Result<LayerManifest> layerManifestFromJson(std::string_view text,
   const json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (j.is_discarded()) return makeError(path.string() + ": not valid JSON");
   try {
+    const std::string kind = j.is_object() ? j.value("kind", "") : "";
     if (!j.is_object() || j.value("format", "") != "globe-imagery-layer" ||
-        j.value("kind", "") != "imagery") {
+        (kind != "imagery" && kind != "water-mask")) {
       return makeError(path.string() + ": not a globe imagery layer manifest");
     }
     const uint32_t version = u32Of(j.at("formatVersion"), "formatVersion");
@@ -101,6 +107,7 @@ Result<LayerManifest> layerManifestFromJson(std::string_view text,
                        " (this globe reads 1.." + std::to_string(kLayerFormatVersion) + ")");
     }
     LayerManifest m;
+    m.kind = kind == "water-mask" ? LayerKind::WaterMask : LayerKind::Imagery;
     if (version >= 2) {
       const std::string grid = j.at("tilingScheme").value("pixelGrid", "");
       if (grid != "edges" && grid != "area") {
@@ -177,7 +184,7 @@ Result<LayerManifest> readLayerManifest(transport::ByteSource& source) {
   if (!bytes) return Error{bytes.error()};
   if (!*bytes) {
     return makeError(path + ": cannot open: not found (is " + source.location() +
-                     " an imagery layer made by globe-tiler imagery?)");
+                     " a layer made by globe-tiler imagery or water-mask?)");
   }
   return layerManifestFromJson(
       std::string_view(reinterpret_cast<const char*>((*bytes)->data()), (*bytes)->size()), path);

@@ -32,6 +32,16 @@ enum class ImageryPixelGrid : uint8_t {
   Edges,
 };
 
+// What a layer's tiles hold.
+enum class LayerKind : uint8_t {
+  Imagery,  // colour (JPEG or RGBA PNG), drawn over the terrain
+  // The water fraction around each sample (8-bit grey+alpha PNG, 255 = water, 0 = land; alpha 0
+  // where no input decides), from land polygons (globe-tiler water-mask): the viewer takes it as
+  // the sea flag per fragment where the terrain's sources are coarser. Tiles whose descendants are
+  // all water or all land end the tree: the viewer draws their ancestor, as for imagery.
+  WaterMask,
+};
+
 struct ImageryLevelInfo {
   uint32_t level = 0;
   uint64_t tileCount = 0;
@@ -60,6 +70,7 @@ struct LayerManifest {
   BoundsDegrees bounds;         // of every level's tiles
   std::string planFingerprint;  // what globe-tiler imagery was asked to do (resume check)
   ImageryPixelGrid pixelGrid = ImageryPixelGrid::Area;
+  LayerKind kind = LayerKind::Imagery;
 
   uint32_t maxLevel() const { return levels.empty() ? 0 : levels.back().level; }
   uint64_t tileCount() const;

@@ -96,23 +96,29 @@ Result<std::vector<std::byte>> encodeJpegFast(const formats::ImageRgba& image, i
   return out;
 }
 
-Result<std::vector<std::byte>> encodePngFast(const formats::ImageRgba& image) {
-  if (!wellFormed(image)) return makeError("cannot encode PNG: malformed RGBA image");
-  const auto stride = static_cast<size_t>(image.widthPixels) * 4;
-  const auto rows = static_cast<size_t>(image.heightPixels);
+namespace {
+
+// 8-bit PNG of `channels` 1 (grey), 2 (grey, alpha) or 4 (RGBA) bytes per pixel; a constant, so
+// that the filter loops vectorise as before.
+template <size_t channels>
+Result<std::vector<std::byte>> encodePngChannels(const uint8_t* pixels, int widthPixels,
+                                                 int heightPixels) {
+  const size_t stride = static_cast<size_t>(widthPixels) * channels;
+  const auto rows = static_cast<size_t>(heightPixels);
   std::vector<uint8_t> filtered(rows * (stride + 1));
   std::vector<uint8_t> candidate[5];
   for (auto& c : candidate) c.resize(stride);
   const std::vector<uint8_t> zeros(stride, 0);
   for (size_t r = 0; r < rows; ++r) {
-    const uint8_t* row = &image.pixels[r * stride];
+    const uint8_t* row = &pixels[r * stride];
     const uint8_t* above = r > 0 ? row - stride : zeros.data();
     // One tight loop per filter type (they vectorise); a and c are 0 for the first pixel.
     auto filter = [&](int type, auto predict) {
       uint8_t* out = candidate[type].data();
       uint32_t cost = 0;
       for (size_t i = 0; i < stride; ++i) {
-        const int a = i >= 4 ? row[i - 4] : 0, b = above[i], c = i >= 4 ? above[i - 4] : 0;
+        const int a = i >= channels ? row[i - channels] : 0, b = above[i],
+                  c = i >= channels ? above[i - channels] : 0;
         out[i] = static_cast<uint8_t>(row[i] - predict(a, b, c));
         cost += static_cast<uint32_t>(std::abs(static_cast<int8_t>(out[i])));
       }
@@ -147,17 +153,43 @@ Result<std::vector<std::byte>> encodePngFast(const formats::ImageRgba& image) {
   const uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   for (uint8_t b : signature) png.push_back(std::byte{b});
   std::byte header[13];
-  core::storeBigEndian32(&header[0], static_cast<uint32_t>(image.widthPixels));
-  core::storeBigEndian32(&header[4], static_cast<uint32_t>(image.heightPixels));
-  header[8] = std::byte{8};   // bits per channel
-  header[9] = std::byte{6};   // RGBA
-  header[10] = std::byte{0};  // deflate
-  header[11] = std::byte{0};  // adaptive filtering
-  header[12] = std::byte{0};  // not interlaced
+  core::storeBigEndian32(&header[0], static_cast<uint32_t>(widthPixels));
+  core::storeBigEndian32(&header[4], static_cast<uint32_t>(heightPixels));
+  header[8] = std::byte{8};                                          // bits per channel
+  header[9] = std::byte{channels == 1 ? 0 : channels == 2 ? 4 : 6};  // grey, grey+alpha, RGBA
+  header[10] = std::byte{0};                                         // deflate
+  header[11] = std::byte{0};                                         // adaptive filtering
+  header[12] = std::byte{0};                                         // not interlaced
   appendChunk(png, "IHDR", header);
   appendChunk(png, "IDAT", zlib);
   appendChunk(png, "IEND", {});
   return png;
+}
+
+}  // namespace
+
+Result<std::vector<std::byte>> encodePngFast(const formats::ImageRgba& image) {
+  if (!wellFormed(image)) return makeError("cannot encode PNG: malformed RGBA image");
+  return encodePngChannels<4>(image.pixels.data(), image.widthPixels, image.heightPixels);
+}
+
+Result<std::vector<std::byte>> encodePngGreyFast(std::span<const uint8_t> grey, int widthPixels,
+                                                 int heightPixels) {
+  if (widthPixels <= 0 || heightPixels <= 0 ||
+      grey.size() != static_cast<size_t>(widthPixels) * static_cast<size_t>(heightPixels)) {
+    return makeError("cannot encode PNG: malformed grey image");
+  }
+  return encodePngChannels<1>(grey.data(), widthPixels, heightPixels);
+}
+
+Result<std::vector<std::byte>> encodePngGreyAlphaFast(std::span<const uint8_t> greyAlpha,
+                                                      int widthPixels, int heightPixels) {
+  if (widthPixels <= 0 || heightPixels <= 0 ||
+      greyAlpha.size() !=
+          size_t{2} * static_cast<size_t>(widthPixels) * static_cast<size_t>(heightPixels)) {
+    return makeError("cannot encode PNG: malformed grey+alpha image");
+  }
+  return encodePngChannels<2>(greyAlpha.data(), widthPixels, heightPixels);
 }
 
 }  // namespace globe::imagery_tiling

@@ -60,6 +60,9 @@ struct ImageryInput {
   // fades to 0 over kFootprintFadePixels source pixels towards them, so the layer blends into
   // what lies under it instead of cutting (chooseFootprintFades).
   std::array<bool, 4> fadeEdges{};
+  // Likewise towards the raster's own no-data (an irregular collar around a scene): alpha fades
+  // over kFootprintFadePixels source pixels from the nearest transparent one.
+  bool fadeCollars = false;
 
   formats::BoundsDegrees extent;  // after warping to longitude/latitude, within ±180°
   // A footprint across ±180° (a 0..360° image, a scene over the antimeridian): the part beyond,

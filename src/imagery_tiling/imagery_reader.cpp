@@ -105,6 +105,12 @@ class RasterReader final : public ImageryReader {
                          ": cannot transform to longitude/latitude: " + gdalError());
       }
     }
+    // A collar can only come from an alpha band, a mask or nodata (or a palette's alpha).
+    fadesCollars_ =
+        input_.fadeCollars && (input_.alphaBand != 0 || input_.palette ||
+                               (GDALGetMaskFlags(GDALGetRasterBand(
+                                    ds, input_.colourBands.empty() ? 1 : input_.colourBands[0])) &
+                                GMF_ALL_VALID) == 0);
     if (input_.palette) {
       GDALColorTableH table = GDALGetRasterColorTable(GDALGetRasterBand(ds, 1));
       const int count = GDALGetColorEntryCount(table);
@@ -157,10 +163,12 @@ class RasterReader final : public ImageryReader {
       minY = std::min(minY, y), maxY = std::max(maxY, y);
     }
     if (minX > maxX) return false;
-    const int x0 = std::max(0, static_cast<int>(std::floor(minX)) - 1);
-    const int y0 = std::max(0, static_cast<int>(std::floor(minY)) - 1);
-    const int x1 = std::min(columns_, static_cast<int>(std::floor(maxX)) + 2);
-    const int y1 = std::min(rows_, static_cast<int>(std::floor(maxY)) + 2);
+    // One pixel for the bilinear neighbours; with a collar fade, also the pixels within its reach.
+    const int pad = 1 + (fadesCollars_ ? static_cast<int>(std::ceil(kFootprintFadePixels)) : 0);
+    const int x0 = std::max(0, static_cast<int>(std::floor(minX)) - pad);
+    const int y0 = std::max(0, static_cast<int>(std::floor(minY)) - pad);
+    const int x1 = std::min(columns_, static_cast<int>(std::floor(maxX)) + 1 + pad);
+    const int y1 = std::min(rows_, static_cast<int>(std::floor(maxY)) + 1 + pad);
     const int windowWidth = x1 - x0, windowHeight = y1 - y0;
     const int reduce =
         (std::max(windowWidth, windowHeight) + kMaxWindowPixels - 1) / kMaxWindowPixels;
@@ -174,6 +182,14 @@ class RasterReader final : public ImageryReader {
     bool covered = false;
     const bool fades = std::any_of(input_.fadeEdges.begin(), input_.fadeEdges.end(),
                                    [](bool edge) { return edge; });
+    // The no-data collar's fade: each window pixel's distance to the nearest transparent one, in
+    // source pixels (a reduced window's pixels span `reduce`).
+    bool collar = false;
+    if (fadesCollars_) {
+      for (size_t i = 3; i < window_.rgba.size() && !collar; i += 4) collar = window_.rgba[i] == 0;
+      if (collar)
+        distanceToTransparent(window_.rgba, window_.width, window_.height, collarDistance_);
+    }
     const bool wrapSeam = edges && wrapsAround();
     std::vector<size_t> seam;  // samples on a whole-globe raster's first or last column edge
     for (size_t i = 0; i < sourceX_.size(); ++i) {
@@ -186,8 +202,11 @@ class RasterReader final : public ImageryReader {
         continue;
       }
       sampleInto(window_, (x - x0) * scaleX, (y - y0) * scaleY, pixel);
-      if (fades && pixel[3] != 0) {
-        const double fade = footprintFade(input_, x, y, columns_, rows_);
+      if ((fades || collar) && pixel[3] != 0) {
+        double fade = fades ? footprintFade(input_, x, y, columns_, rows_) : 1.0;
+        if (collar) {
+          fade *= smoothFade(sampleDistance((x - x0) * scaleX, (y - y0) * scaleY) * reduce);
+        }
         if (fade < 1.0) {
           pixel[3] = static_cast<uint8_t>(std::lround(pixel[3] * fade));
           if (pixel[3] == 0) std::fill_n(pixel, 4, uint8_t{0});
@@ -222,6 +241,20 @@ class RasterReader final : public ImageryReader {
       covered = true;
     }
     return covered;
+  }
+
+  // collarDistance_ bilinear at window coordinates (x, y), pixel centres at +0.5 as sampleInto.
+  double sampleDistance(double x, double y) const {
+    const double fx = x - 0.5, fy = y - 0.5;
+    const double floorX = std::floor(fx), floorY = std::floor(fy);
+    const double tx = fx - floorX, ty = fy - floorY;
+    const int w = window_.width, h = window_.height;
+    const int ix = static_cast<int>(floorX), iy = static_cast<int>(floorY);
+    const int xa = std::clamp(ix, 0, w - 1), xb = std::clamp(ix + 1, 0, w - 1);
+    const int ya = std::clamp(iy, 0, h - 1), yb = std::clamp(iy + 1, 0, h - 1);
+    auto d = [&](int cx, int cy) { return double(collarDistance_[size_t(cy) * w + cx]); };
+    return (1 - ty) * ((1 - tx) * d(xa, ya) + tx * d(xb, ya)) +
+           ty * ((1 - tx) * d(xa, yb) + tx * d(xb, yb));
   }
 
   // A raster in longitude/latitude 360° wide: its first and last columns are neighbours.
@@ -413,6 +446,8 @@ class RasterReader final : public ImageryReader {
   std::vector<size_t> exactPixels_;
   Window window_;
   std::vector<uint8_t> plane_, alpha_;
+  bool fadesCollars_ = false;
+  std::vector<float> collarDistance_;
   std::vector<double> values_;
   std::vector<int32_t> indices_;
 };

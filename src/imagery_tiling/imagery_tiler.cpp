@@ -36,7 +36,7 @@ constexpr uint64_t kMaxImagePackBytes = uint64_t{1} << 34;
 // Version 1: pixel-is-area tiles (a layer re-packing a TMS tree keeps them); 2: edge samples.
 constexpr const char* kRulesVersion = "bilinear-premultiplied-finest-over 1";
 constexpr const char* kEdgeSampledRulesVersion =
-    "bilinear-premultiplied-finest-over 2 edges, footprints fade over 4 pixels";
+    "bilinear-premultiplied-finest-over 2 edges, footprints and no-data collars fade over 4 pixels";
 
 std::string boundsText(const formats::BoundsDegrees& b) {
   char text[128];

@@ -27,6 +27,7 @@
 #include "terrain/relief_shading.hpp"
 #include "terrain/skirt_edges.hpp"
 #include "terrain/texel_footprint.hpp"
+#include "terrain/water_mask_weight.hpp"
 
 namespace globe::render {
 
@@ -44,6 +45,9 @@ constexpr double kVertexDepthRadii = 2.0;
 // covers the spherical globe model's radius (0.1 % off WGS84's) and ground down to -11 km.
 constexpr double kMagnifiedTexelsPerPixel = 0.99;
 
+// Texture units: 0 the global image, 1..kMaxDrapeLayers the layers, then the water mask.
+constexpr GLuint kWaterMaskUnit = 1 + terrain::kMaxDrapeLayers;
+
 }  // namespace
 
 struct TerrainRenderer::Impl {
@@ -53,6 +57,7 @@ struct TerrainRenderer::Impl {
     GLint logDepthScale = -1, coarserEdges = -1;
     GLint fogColor = -1, fogDensity = -1, fogMaximum = -1;
     GLint layerTransform = -1, layerOpacity = -1, layerLight = -1, levelLight = -1;
+    GLint waterMask = -1, waterMaskTransform = -1, waterMaskWeight = -1;
     std::array<GLint, terrain::kMaxDrapeLayers> layerSamplers{-1, -1, -1, -1};
   };
 
@@ -74,6 +79,12 @@ struct TerrainRenderer::Impl {
     std::array<GLuint, terrain::kMaxDrapeLayers> samplers{};
     uint32_t count = 0;
     bool opaqueBase = false;  // layer 0 is opaque everywhere (texels and opacity)
+    // The water mask: texture, uv transform, its weight at the tile's corners (NW, NE, SW, SE;
+    // terrain/water_mask_weight.hpp) times its opacity.
+    GLuint maskTexture = 0;
+    GLuint maskSampler = 0;
+    glm::vec4 maskTransform{0.0f, 0.0f, 1.0f, 1.0f};
+    glm::vec4 maskWeights{0.0f};
   };
   struct DrawItem {
     double nearestMeters;
@@ -117,7 +128,8 @@ struct TerrainRenderer::Impl {
 
   // The program for this variant, compiled on first use and kept.
   Result<const Program*> program(bool globalImage, uint32_t layers, bool vertexDepth,
-                                 bool lightImagery, bool opaqueBase = false);
+                                 bool lightImagery, bool opaqueBase = false,
+                                 bool waterMask = false);
   // Where the camera is and one pixel's angle (terrain::pixelAngleRadians): which sampler a
   // drape needs.
   struct Footprint {
@@ -184,6 +196,24 @@ TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(
     bound.samplers[bound.count] = imageryTiles.sampler(magnified);
     ++bound.count;
   }
+  if (drapes != nullptr && drapes->hasWaterMask) {
+    const terrain::TileDrape& mask = drapes->waterMask;
+    const ResidentTexture resident = imageryTiles.find(mask.layer, mask.imageryTile);
+    const float opacity = mask.opacity > 0.0f ? std::min(mask.opacity, 1.0f) : 0.0f;
+    if (resident.name == 0) {
+      ++stats.drapesMissing;
+    } else if (opacity > 0.0f) {
+      bound.maskTexture = resident.name;
+      bound.maskSampler = imageryTiles.sampler(false);  // mipmapped: a far coast as coverage
+      bound.maskTransform = mask.uvTransform;
+      for (int corner = 0; corner < 4; ++corner) {
+        bound.maskWeights[corner] =
+            opacity *
+            static_cast<float>(terrain::waterMaskWeight(
+                mask.nativeTexelDegrees, mask.terrainStepDegrees[static_cast<size_t>(corner)]));
+      }
+    }
+  }
   // Counted once the layers under an opaque one are dropped.
   for (uint32_t k = 0; k < bound.count; ++k)
     stats.drapesMagnified += bound.samplers[k] == imageryTiles.sampler(true) ? 1 : 0;
@@ -192,12 +222,16 @@ TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(
 }
 
 Result<const TerrainRenderer::Impl::Program*> TerrainRenderer::Impl::program(
-    bool globalImage, uint32_t layers, bool vertexDepth, bool lightImagery, bool opaqueBase) {
+    bool globalImage, uint32_t layers, bool vertexDepth, bool lightImagery, bool opaqueBase,
+    bool waterMask) {
   lightImagery = lightImagery && layers > 0;
   opaqueBase = opaqueBase && layers > 0;
   globalImage = globalImage && !opaqueBase;  // covered anyway
+  // Under an opaque unlit base nothing shows whether a fragment is land or water.
+  waterMask = waterMask && (!opaqueBase || lightImagery);
   const uint32_t key = (globalImage ? 1u : 0u) | (vertexDepth ? 2u : 0u) |
-                       (lightImagery ? 4u : 0u) | (opaqueBase ? 8u : 0u) | (layers << 4);
+                       (lightImagery ? 4u : 0u) | (opaqueBase ? 8u : 0u) | (waterMask ? 16u : 0u) |
+                       (layers << 5);
   if (auto found = programs.find(key); found != programs.end()) return &found->second;
   const auto& dir = options.shaderDirectory;
   const std::string defines =
@@ -205,6 +239,7 @@ Result<const TerrainRenderer::Impl::Program*> TerrainRenderer::Impl::program(
       (layers > 0 ? "#define GLOBE_LAYERS " + std::to_string(layers) + "\n" : "") +
       (lightImagery ? "#define GLOBE_LIGHT_IMAGERY 1\n" : "") +
       (opaqueBase ? "#define GLOBE_OPAQUE_BASE 1\n" : "") +
+      (waterMask ? "#define GLOBE_WATER_MASK 1\n" : "") +
       (vertexDepth ? "#define GLOBE_VERTEX_LOG_DEPTH 1\n" : "");
   auto loaded = loadNamedShaderProgram(dir, "terrain.vert", "terrain.frag", defines);
   if (!loaded) return Error{loaded.error()};
@@ -229,6 +264,9 @@ Result<const TerrainRenderer::Impl::Program*> TerrainRenderer::Impl::program(
   u.layerOpacity = p.uniformLocation("u_layerOpacity");
   u.layerLight = p.uniformLocation("u_layerLight");
   u.levelLight = p.uniformLocation("u_levelLight");
+  u.waterMask = p.uniformLocation("u_waterMask");
+  u.waterMaskTransform = p.uniformLocation("u_waterMaskTransform");
+  u.waterMaskWeight = p.uniformLocation("u_waterMaskWeight");
   for (uint32_t k = 0; k < terrain::kMaxDrapeLayers; ++k) {
     u.layerSamplers[k] = p.uniformLocation(("u_layer" + std::to_string(k)).c_str());
   }
@@ -242,11 +280,23 @@ Result<const TerrainRenderer::Impl::Program*> TerrainRenderer::Impl::program(
                      " + terrain.frag: the GLOBE_LAYERS program lacks u_layerTransform or "
                      "u_layerOpacity");
   }
+  if (waterMask && (u.waterMask < 0 || u.waterMaskTransform < 0 || u.waterMaskWeight < 0)) {
+    return makeError((dir / "terrain.vert").string() +
+                     " + terrain.frag: the GLOBE_WATER_MASK program lacks u_waterMask, "
+                     "u_waterMaskTransform or u_waterMaskWeight");
+  }
   return &programs.emplace(key, std::move(target)).first->second;
 }
 
-// Binds the layers to units 1.. and sets their uniforms.
+// Binds the layers to units 1.., the water mask to the unit after them, and sets their uniforms.
 void TerrainRenderer::Impl::bindDrapes(const BoundDrapes& drapes, const Uniforms& u) const {
+  if (drapes.maskTexture != 0 && u.waterMask >= 0) {
+    glActiveTexture(GL_TEXTURE0 + kWaterMaskUnit);
+    glBindTexture(GL_TEXTURE_2D, drapes.maskTexture);
+    glBindSampler(kWaterMaskUnit, drapes.maskSampler);
+    glUniform4fv(u.waterMaskTransform, 1, glm::value_ptr(drapes.maskTransform));
+    glUniform4fv(u.waterMaskWeight, 1, glm::value_ptr(drapes.maskWeights));
+  }
   for (uint32_t k = 0; k < drapes.count; ++k) {
     glActiveTexture(GL_TEXTURE1 + k);
     glBindTexture(GL_TEXTURE_2D, drapes.textures[k]);
@@ -514,23 +564,28 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
   for (int variant = 0; variant < 2; ++variant) {
     auto& items = impl.drawItems[variant];
     if (items.empty()) continue;
-    // By layer count (one program each), then front to back.
+    // By program (layer count, opaque base, water mask), then front to back.
     std::sort(items.begin(), items.end(), [](const Impl::DrawItem& a, const Impl::DrawItem& b) {
       if (a.drapes.count != b.drapes.count) return a.drapes.count < b.drapes.count;
       if (a.drapes.opaqueBase != b.drapes.opaqueBase) return a.drapes.opaqueBase;
+      const bool aMask = a.drapes.maskTexture != 0, bMask = b.drapes.maskTexture != 0;
+      if (aMask != bMask) return bMask;
       return a.nearestMeters < b.nearestMeters;
     });
     const Impl::Uniforms* current = nullptr;
     uint32_t currentLayers = terrain::kMaxDrapeLayers + 1;
     bool currentOpaqueBase = false;
+    bool currentMask = false;
     for (const Impl::DrawItem& item : items) {
+      const bool mask = item.drapes.maskTexture != 0;
       if (item.drapes.count != currentLayers || item.drapes.opaqueBase != currentOpaqueBase ||
-          current == nullptr) {
+          mask != currentMask || current == nullptr) {
         currentLayers = item.drapes.count;
         currentOpaqueBase = item.drapes.opaqueBase;
-        auto found =
-            impl.program(useImagery, currentLayers, variant == 1,
-                         style.imageryLighting != terrain::ImageryLighting::Off, currentOpaqueBase);
+        currentMask = mask;
+        auto found = impl.program(useImagery, currentLayers, variant == 1,
+                                  style.imageryLighting != terrain::ImageryLighting::Off,
+                                  currentOpaqueBase, currentMask);
         if (!found) {
           // Layers this GL cannot compile: the terrain without them, said once.
           if (!impl.programErrorReported) core::warn(impl.options.warn, found.error());
@@ -560,6 +615,7 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
         for (uint32_t k = 0; k < currentLayers; ++k) {
           glUniform1i(u.layerSamplers[k], static_cast<GLint>(1 + k));
         }
+        if (u.waterMask >= 0) glUniform1i(u.waterMask, static_cast<GLint>(kWaterMaskUnit));
       }
       const Impl::Uniforms& u = *current;
       const GpuTile& gpu = *item.gpu;
@@ -578,7 +634,7 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
       glUniform4f(u.coarserEdges, coarser(terrain::TileEdge::North),
                   coarser(terrain::TileEdge::South), coarser(terrain::TileEdge::West),
                   coarser(terrain::TileEdge::East));
-      if (currentLayers > 0) impl.bindDrapes(item.drapes, u);
+      if (currentLayers > 0 || currentMask) impl.bindDrapes(item.drapes, u);
       glBindVertexArray(gpu.vertexArray.get());
       // The grid and only the skirts this tile needs (terrain/skirt_edges.hpp), in one call.
       std::array<terrain::IndexRange, 3> ranges;
@@ -601,7 +657,7 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
   // Behind everything, only where nothing was drawn (sky_pass.hpp).
   if (drawSky) impl.sky->draw(view, sky, globeRadius);
   if (useLayers) {
-    for (uint32_t k = 0; k < terrain::kMaxDrapeLayers; ++k) {
+    for (uint32_t k = 0; k < terrain::kMaxDrapeLayers + 1; ++k) {  // and the water mask's
       glActiveTexture(GL_TEXTURE1 + k);
       glBindTexture(GL_TEXTURE_2D, 0);
       glBindSampler(1 + k, 0);

@@ -121,14 +121,22 @@ ImageryLayers::~ImageryLayers() = default;
 Result<std::unique_ptr<ImageryLayers>> ImageryLayers::open(
     std::span<const LayerOptions> layers, core::TaskRunner& runner, const ImageryBudget& budget,
     std::shared_ptr<transport::Network> network, core::WarningSink warnings) {
-  if (layers.size() > terrain::kMaxDrapeLayers) {
-    return makeError("at most " + std::to_string(terrain::kMaxDrapeLayers) + " layers, not " +
-                     std::to_string(layers.size()));
-  }
   std::vector<std::unique_ptr<Layer>> opened;
+  size_t colourLayers = 0, masks = 0;
   for (const LayerOptions& options : layers) {
     auto store = streaming::ImageryStore::open(options.directory, network);
     if (!store) return Error{store.error()};
+    const bool mask = (*store)->manifest().kind == formats::LayerKind::WaterMask;
+    (mask ? masks : colourLayers) += 1;
+    if (colourLayers > terrain::kMaxDrapeLayers) {
+      return makeError("at most " + std::to_string(terrain::kMaxDrapeLayers) +
+                       " imagery layers (and one water mask)");
+    }
+    if (masks > 1) {
+      return makeError(options.directory.string() +
+                       ": a second water mask (one is drawn: tile both sets of land polygons "
+                       "into one with globe-tiler water-mask)");
+    }
     opened.push_back(
         std::make_unique<Layer>(options, std::move(*store), runner, budget.decodedBytes));
   }
@@ -240,7 +248,10 @@ Result<ImageryFrame> ImageryLayers::update(std::span<const geo::TileId> tiles,
       if (drawn != want) ++frame.fallbacks;
       layer.textureLastUsedFrame[drawn] = frame_;
       terrain::TileDrapes& tileDrapes = drapes[i];
-      terrain::TileDrape& drape = tileDrapes.layers[tileDrapes.count++];
+      const bool mask = layer.store->manifest().kind == formats::LayerKind::WaterMask;
+      if (mask) tileDrapes.hasWaterMask = true;
+      terrain::TileDrape& drape =
+          mask ? tileDrapes.waterMask : tileDrapes.layers[tileDrapes.count++];
       glm::vec4 transform = terrain::uvTransformInAncestor(tile, drawn);
       if (layer.store->manifest().pixelGrid == formats::ImageryPixelGrid::Edges) {
         transform = terrain::edgeSampledTransform(transform, tileSize);

@@ -367,10 +367,11 @@ void TerrainScene::updateImagery(const glm::dvec3& cameraEcefMeters, TileGpu& gp
     info.imagery = *frame;
     // The terrain's own step where each tile is, for the relief weight (TileDrape).
     for (size_t i = 0; i < tiles_.size(); ++i) {
-      if (drapes_[i].count == 0) continue;
+      if (drapes_[i].count == 0 && !drapes_[i].hasWaterMask) continue;
       const std::array<double, 4> step = terrainStepDegreesAt(tiles_[i]);
       for (uint32_t k = 0; k < drapes_[i].count; ++k)
         drapes_[i].layers[k].terrainStepDegrees = step;
+      drapes_[i].waterMask.terrainStepDegrees = step;
     }
     return;
   }

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 namespace globe::terrain {
 
 // Block samples are GTOPO30 heights (int16 metres) with one extension for bathymetry:
@@ -97,6 +99,13 @@ struct HeightBlock {
   // the grid and of the apron, in the orders above. Empty for blocks read from a pyramid.
   std::vector<double> exactSurfaceMeters{};
   std::vector<double> exactApronSurfaceMeters{};
+  // Such a block is also shaded as its parent's triangles shade that ground, so that a refined
+  // tile looks like the one it refines: per grid vertex, the parent's normal (unit, ECEF), the
+  // height its colour shows and its water fraction (0..1), interpolated linearly along the
+  // parent's edges. Empty for blocks read from a pyramid (tile_mesh.hpp derives them).
+  std::vector<glm::vec3> shadingNormals{};
+  std::vector<float> colorMeters{};
+  std::vector<float> waterFraction{};
 
   int16_t at(uint32_t row, uint32_t column) const {
     return heights[static_cast<size_t>(row) * verticesPerSide + column];

@@ -39,6 +39,11 @@ struct TileDrape {
 struct TileDrapes {
   std::array<TileDrape, kMaxDrapeLayers> layers{};
   uint32_t count = 0;
+  // A water-mask layer's tile (formats::LayerKind::WaterMask), when one is given: not drawn as
+  // colour, it decides land and water per fragment where the terrain's sources are coarser
+  // (water_mask_weight.hpp); its opacity scales that weight.
+  TileDrape waterMask{};
+  bool hasWaterMask = false;
 };
 
 }  // namespace globe::terrain

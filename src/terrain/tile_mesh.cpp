@@ -106,9 +106,12 @@ TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
       const int16_t sample = block.at(i, j);
       Vertex& vertex = vertices[gridVertexIndex(i, j, n)];
       vertex.heightMeters = block.surfaceHeightMetersAt(i, j);
-      vertex.colorHeightMeters = seaFloorMeters(sample);
+      const size_t k = static_cast<size_t>(i) * n + j;
+      vertex.colorHeightMeters =
+          block.colorMeters.empty() ? seaFloorMeters(sample) : block.colorMeters[k];
       vertex.positionEcef = vertexEcef(ellipsoid, longitudes[j], latitudes[i], vertex.heightMeters);
-      vertex.sea = isWater(sample) ? 1.0f : 0.0f;
+      vertex.sea =
+          block.waterFraction.empty() ? (isWater(sample) ? 1.0f : 0.0f) : block.waterFraction[k];
       vertex.u = static_cast<float>(j) / cells;
       vertex.v = static_cast<float>(i) / cells;
     }
@@ -146,10 +149,12 @@ TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
     }
     return up;
   };
+  const bool ownShading = block.shadingNormals.size() == static_cast<size_t>(n) * n;
   for (uint32_t i = 0; i < n; ++i) {
     for (uint32_t j = 0; j < n; ++j) {
       Vertex& vertex = vertices[gridVertexIndex(i, j, n)];
-      vertex.normal = normalAt(static_cast<int>(i), static_cast<int>(j), 1);
+      vertex.normal = ownShading ? glm::dvec3(block.shadingNormals[static_cast<size_t>(i) * n + j])
+                                 : normalAt(static_cast<int>(i), static_cast<int>(j), 1);
       vertex.coarseNormal = vertex.normal;
     }
   }
@@ -157,7 +162,7 @@ TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
   // vertices (every other one), and between them the mean of the two, as the coarser tile's edge
   // interpolates them. The renderer lights an edge with it where the neighbour is coarser.
   auto coarseAt = [&](int row, int column) { return normalAt(row, column, 2); };
-  for (uint32_t i = 0; i < n; ++i) {
+  for (uint32_t i = 0; i < n && !ownShading; ++i) {
     for (uint32_t j = 0; j < n; ++j) {
       if (i != 0 && i != n - 1 && j != 0 && j != n - 1) continue;
       const auto row = static_cast<int>(i), column = static_cast<int>(j);
@@ -282,6 +287,20 @@ std::vector<uint32_t> buildGridIndices(uint32_t verticesPerSide, bool withSkirts
     }
   }
   return indices;
+}
+
+std::vector<glm::dvec3> gridVertexNormals(const geo::TileId& tile, const HeightBlock& block,
+                                          const geo::Ellipsoid& ellipsoid) {
+  const TileMesh mesh = buildTileMesh(tile, block, ellipsoid, 0.0);
+  std::vector<glm::dvec3> normals;
+  const size_t count = static_cast<size_t>(block.verticesPerSide) * block.verticesPerSide;
+  if (mesh.vertices.size() < count * kTileVertexFloats) return normals;
+  normals.reserve(count);
+  for (size_t k = 0; k < count; ++k) {
+    const float* v = &mesh.vertices[k * kTileVertexFloats + kTileVertexNormalOffset];
+    normals.emplace_back(v[0], v[1], v[2]);
+  }
+  return normals;
 }
 
 }  // namespace globe::terrain

@@ -107,8 +107,15 @@ glm::dvec3 drawnVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGri
 //   points below the horizon, the ellipsoid normal is used: never NaN.
 // - Skirts (skirtDepthMeters > 0): each edge vertex is repeated at height − skirtDepthMeters;
 //   recommendedSkirtDepthMeters gives a depth that closes cracks against coarser neighbours.
+// - A block made from its parent's (upsampled_block.hpp) brings its own shading: its
+//   shadingNormals (also its edges' coarser normals: the parent is the coarser level),
+//   colorMeters and waterFraction.
 TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
                        const geo::Ellipsoid& ellipsoid, double skirtDepthMeters);
+
+// The normals buildTileMesh gives the grid's vertices, row-major (N² of them).
+std::vector<glm::dvec3> gridVertexNormals(const geo::TileId& tile, const HeightBlock& block,
+                                          const geo::Ellipsoid& ellipsoid);
 
 // Skirt depth for a tile: deep enough to hide the crack against a neighbour up to one level
 // coarser. With s the tile's vertex spacing along a meridian in metres, the coarser neighbour's

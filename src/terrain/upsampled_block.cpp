@@ -1,7 +1,9 @@
 #include "terrain/upsampled_block.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -141,6 +143,41 @@ HeightBlock upsampleBlock(const HeightBlock& parent, const geo::TileId& child,
       block.exactSurfaceMeters[k] = p.heightMeters;
     }
   }
+  // The shading: the parent's vertex values, linear along its edges (the diagonal included), as
+  // its triangles interpolate them. The normals are the parent mesh's, not the child's own: those
+  // would show the parent's flat facets, with light and dark lines along their edges.
+  const std::vector<glm::dvec3> parentNormals =
+      gridVertexNormals(child.parent(), parent, ellipsoid);
+  block.shadingNormals.resize(block.heights.size());
+  block.colorMeters.resize(block.heights.size());
+  block.waterFraction.resize(block.heights.size());
+  auto parentIndex = [&](int row, int column) { return static_cast<size_t>(row) * n + column; };
+  auto colorAt = [&](size_t k) {
+    return parent.colorMeters.empty() ? static_cast<float>(seaFloorMeters(parent.heights[k]))
+                                      : parent.colorMeters[k];
+  };
+  auto waterAt = [&](size_t k) {
+    return parent.waterFraction.empty() ? (isWater(parent.heights[k]) ? 1.0f : 0.0f)
+                                        : parent.waterFraction[k];
+  };
+  for (uint32_t i = 0; i < n; ++i) {
+    for (uint32_t j = 0; j < n; ++j) {
+      const int rowTwice = rowOffset + static_cast<int>(i);
+      const int columnTwice = columnOffset + static_cast<int>(j);
+      const int row = rowTwice / 2, column = columnTwice / 2;  // within the parent's grid
+      const size_t a = parentIndex(row, column);
+      const size_t b = parentIndex(row + rowTwice % 2, column + columnTwice % 2);
+      const size_t k = static_cast<size_t>(i) * n + j;
+      glm::dvec3 normal = parentNormals.size() > std::max(a, b)
+                              ? parentNormals[a] + parentNormals[b]
+                              : glm::dvec3(0.0);
+      const double length = glm::length(normal);
+      block.shadingNormals[k] = length > 0 ? glm::vec3(normal / length) : glm::vec3(0.0f);
+      block.colorMeters[k] = 0.5f * (colorAt(a) + colorAt(b));
+      block.waterFraction[k] = 0.5f * (waterAt(a) + waterAt(b));
+    }
+  }
+  if (parentNormals.size() != block.heights.size()) block.shadingNormals.clear();
   if (!parent.hasApron()) return block;
   // The child's apron reaches kApronWidth child spacings (one parent spacing) past its edges:
   // inside the parent's block and apron.

@@ -21,9 +21,11 @@ namespace globe::terrain {
 // apron is made the same way from the parent's apron (none when the parent has none), so two
 // children of neighbouring parents compute the same heights for their shared edge.
 // - exactSurfaceMeters (and exactApronSurfaceMeters) hold those heights;
-// - `heights` (and `apron`) hold samples for the colour and the water flag: the mean of the two
+// - `heights` (and `apron`) hold samples (for the water flag of queries): the mean of the two
 //   ends where both are land (rounded) or both water (floors averaged), else the first end's
-//   (north-west), so neighbours agree.
+//   (north-west), so neighbours agree;
+// - shadingNormals, colorMeters and waterFraction shade it as the parent's triangles shade that
+//   ground: the parent mesh's vertex values, the mean of the two ends along an edge.
 // The parent's block size must be valid (isValidBlockSize) and its samples complete.
 HeightBlock upsampleBlock(const HeightBlock& parent, const geo::TileId& child,
                           const geo::Ellipsoid& ellipsoid);

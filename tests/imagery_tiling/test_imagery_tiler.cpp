@@ -56,6 +56,16 @@ class SourceProbe {
     transform_ = OCTNewCoordinateTransformation(wgs84, source);
     OSRDestroySpatialReference(wgs84);
     OSRDestroySpatialReference(source);
+    // Which pixels hold data (any of the first three bands not 0), for the collar's distance.
+    const int columns = GDALGetRasterXSize(dataset_), rows = GDALGetRasterYSize(dataset_);
+    valid_.assign(size_t(columns) * rows, 0);
+    std::vector<uint8_t> band(valid_.size());
+    for (int b = 1; b <= std::min(3, GDALGetRasterCount(dataset_)); ++b) {
+      EXPECT_EQ(GDALRasterIO(GDALGetRasterBand(dataset_, b), GF_Read, 0, 0, columns, rows,
+                             band.data(), columns, rows, GDT_Byte, 0, 0),
+                CE_None);
+      for (size_t i = 0; i < band.size(); ++i) valid_[i] = valid_[i] != 0 || band[i] != 0 ? 1 : 0;
+    }
   }
   ~SourceProbe() {
     OCTDestroyCoordinateTransformation(transform_);
@@ -64,9 +74,10 @@ class SourceProbe {
 
   struct Sample {
     double rgb[3] = {0, 0, 0};
-    int validNeighbours = 0;        // of the 4 (a neighbour is valid when any band is not 0)
-    bool inside = false;            // the point lies inside the raster's area
-    double edgeDistancePixels = 0;  // to the raster's nearest edge, in its pixels
+    int validNeighbours = 0;            // of the 4 (a neighbour is valid when any band is not 0)
+    bool inside = false;                // the point lies inside the raster's area
+    double edgeDistancePixels = 0;      // to the raster's nearest edge, in its pixels
+    double collarDistancePixels = 1e9;  // to the nearest no-data pixel's centre (within 8)
   };
 
   Sample at(double lon, double lat, const std::vector<int>& bands = {1, 2, 3}) const {
@@ -78,6 +89,14 @@ class SourceProbe {
     s.inside = column >= 0 && column < columns && row >= 0 && row < rows;
     s.edgeDistancePixels = std::min(std::min(column, columns - column), std::min(row, rows - row));
     if (!s.inside) return s;
+    for (int cy = static_cast<int>(row) - 8; cy <= static_cast<int>(row) + 8; ++cy) {
+      for (int cx = static_cast<int>(column) - 8; cx <= static_cast<int>(column) + 8; ++cx) {
+        if (cx < 0 || cy < 0 || cx >= columns || cy >= rows) continue;
+        if (valid_[size_t(cy) * columns + cx] != 0) continue;
+        s.collarDistancePixels =
+            std::min(s.collarDistancePixels, std::hypot(cx + 0.5 - column, cy + 0.5 - row));
+      }
+    }
     const double fx = column - 0.5, fy = row - 0.5;
     const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
     const double tx = fx - x0, ty = fy - y0;
@@ -106,6 +125,7 @@ class SourceProbe {
 
  private:
   GDALDatasetH dataset_ = nullptr;
+  std::vector<uint8_t> valid_;
   double geo_[6] = {};
   OGRCoordinateTransformationH transform_ = nullptr;
 };
@@ -162,6 +182,9 @@ TEST(ImageryTiler, ProjectedInputMatchesTheSourceThroughGdal) {
           continue;
         }
         if (s.validNeighbours < 4) continue;  // the edge of the scene: partly transparent
+        // The collar fades over 4 source pixels (FootprintFade.AScenesNoDataCollarFades); the
+        // chamfer distance the tiler uses is within 8 % of this one.
+        if (s.collarDistancePixels < 1.1 * kFootprintFadePixels + 1) continue;
         if (s.edgeDistancePixels < kFootprintFadePixels) {
           // The footprint's edge fades over 4 source pixels (imagery_tiling/footprint_fade.hpp).
           const double t = s.edgeDistancePixels / kFootprintFadePixels;

@@ -1,5 +1,5 @@
-// Screenshot regression: twelve views of the bundled real data (four with imagery layers) rendered
-// by the real `globe snapshot` program through OSMesa, compared with the committed goldens in
+// Screenshot regression: views of the bundled real data (some with imagery layers or the water
+// mask) rendered by the real `globe snapshot` program through OSMesa, compared with the goldens in
 // tests/render/golden. Tolerance: a pixel differs when a channel is off by more than 24 (of 255);
 // at most 0.5% of the pixels may differ. On failure the actual image and a diff image are written
 // next to the test output. Regenerate the goldens (then look at them!) with:
@@ -46,12 +46,19 @@ const GoldenView kViews[] = {
     {"sky_10km", "--camera 138.60,35.20,10000,30,-5,0"},
     {"sky_space", "--camera 138,30,3000000,0,-40,0"},
     {"sky_off_10km", "--camera 138.60,35.20,10000,30,-5,0 --no-sky"},
+    // True coasts from the bundled water mask: the Wash over ETOPO20 (east of 0°) and the GTOPO30
+    // crop (west of it), Suruga Bay as coast_suruga_bay, and north-western Europe from 2,500 km.
+    {"wash_water_mask", "--camera 0.3,52.9,60000 --layer @coast"},
+    {"coast_suruga_bay_water_mask", "--camera 138.62,34.85,9000,10,-25,0 --layer @coast"},
+    {"europe_water_mask", "--camera 2,54,2500000 --layer @coast"},
 };
 
 // The view's arguments with the layer placeholders replaced by the layers (tiled once).
 std::string expandLayers(std::string arguments) {
   const std::pair<const char*, const fs::path& (*)()> layers[] = {
-      {"@bm", globe::testing::blueMarbleLayer}, {"@zion", globe::testing::zionLayer}};
+      {"@bm", globe::testing::blueMarbleLayer},
+      {"@zion", globe::testing::zionLayer},
+      {"@coast", globe::testing::coastMask}};
   for (const auto& [token, layer] : layers) {
     for (size_t at = arguments.find(token); at != std::string::npos; at = arguments.find(token)) {
       arguments.replace(at, std::string(token).size(), layer().string());

@@ -34,6 +34,22 @@ const std::filesystem::path& zionLayer() {
   return imageryLayer("zion", bundledData("data/imagery/zion-landsat8-rgb.tif").string());
 }
 
+const std::filesystem::path& coastMask() {
+  static const std::filesystem::path dir = [] {
+    const auto out = freshTempDir("layer-coast") / "layer";
+    std::string command = std::string(GLOBE_TILER_EXE) + " water-mask -q -o " + out.string();
+    for (const char* file :
+         {"gshhg-l-land", "gshhg-f-suruga-bay", "gshhg-f-the-wash", "gshhg-f-chesapeake-bay",
+          "gshhg-f-gibraltar", "gshhg-f-san-francisco-bay"}) {
+      command += " " + bundledData(std::string("data/coast/") + file + ".fgb").string();
+    }
+    if (std::system((command + " > /dev/null").c_str()) != 0)
+      ADD_FAILURE() << "failed: " << command;
+    return out;
+  }();
+  return dir;
+}
+
 const std::filesystem::path& zionPyramid() {
   static const std::filesystem::path dir =
       tilePyramid("zion-pyramid", {bundledData("data/dem/ETOPO20.DEM").string(),

@@ -13,6 +13,9 @@ const std::filesystem::path& imageryLayer(const std::string& name, const std::st
 const std::filesystem::path& blueMarbleLayer();
 // The bundled Landsat 8 RGB over Zion (UTM 12N, 30 m).
 const std::filesystem::path& zionLayer();
+// The bundled water mask (`globe-tiler water-mask`): GSHHG low over the world and full resolution
+// in five boxes (data/coast).
+const std::filesystem::path& coastMask();
 // ETOPO20 + the bundled Zion SRTM 3″, tiled once.
 const std::filesystem::path& zionPyramid();
 // A bundled data file (data/...) or a shared one (../shared/data/...) by relative path.

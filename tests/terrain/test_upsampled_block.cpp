@@ -1,11 +1,14 @@
 // Blocks made from their parent's surface: parent vertices kept, neighbours (across tiles, ±180°
 // and two generations deep) agreeing on shared edges, aprons and normals, water kept, old blocks
-// without an apron, and height bounds that hold the exact heights.
+// without an apron, height bounds that hold the exact heights, and shading that continues the
+// parent's (its normals, colours and water interpolated, not the child's own faceted normals).
 #include "terrain/upsampled_block.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include <glm/geometric.hpp>
 
 #include "terrain/tile_mesh.hpp"
 #include "tests/support/test_constants.hpp"
@@ -133,6 +136,71 @@ TEST(UpsampledBlock, HeightBoundsHoldTheExactHeights) {
       EXPECT_GE(range.maximumMeters, h);
     }
   }
+}
+
+// The mesh values (normal, colour height, water) of grid vertex (row, column).
+struct Shading {
+  glm::dvec3 normal;
+  double colorMeters;
+  double water;
+};
+Shading shadingAt(const TileMesh& mesh, uint32_t row, uint32_t column) {
+  const float* v =
+      &mesh.vertices[gridVertexIndex(row, column, mesh.verticesPerSide) * kTileVertexFloats];
+  return {
+      {v[kTileVertexNormalOffset], v[kTileVertexNormalOffset + 1], v[kTileVertexNormalOffset + 2]},
+      v[kTileVertexHeightOffset],
+      v[kTileVertexSeaOffset]};
+}
+
+TEST(UpsampledBlock, ShadedAsTheParentsTrianglesShadeThatGround) {
+  int coasts = 0;
+  for (const geo::TileId& parent : {geo::TileId{5, 40, 9}, geo::TileId{4, 3, 5},
+                                    geo::TileId{4, 20, 3}, geo::TileId{4, 9, 11}}) {
+    const HeightBlock block = upsampledWorldBlock(parent, kN);
+    const TileMesh parentMesh = buildTileMesh(parent, block, kWgs84, 0.0);
+    for (const geo::TileId& child : parent.children()) {
+      const HeightBlock up = upsampleBlock(block, child, kWgs84);
+      const TileMesh mesh = buildTileMesh(child, up, kWgs84, 0.0);
+      const uint32_t rowOffset = (child.y & 1u) * (kN - 1),
+                     columnOffset = (child.x & 1u) * (kN - 1);
+      for (uint32_t i = 0; i < kN; ++i) {
+        for (uint32_t j = 0; j < kN; ++j) {
+          // The parent's two vertices at the ends of the edge this vertex halves (or one vertex).
+          const uint32_t rowTwice = rowOffset + i, columnTwice = columnOffset + j;
+          const Shading a = shadingAt(parentMesh, rowTwice / 2, columnTwice / 2);
+          const Shading b =
+              shadingAt(parentMesh, rowTwice / 2 + rowTwice % 2, columnTwice / 2 + columnTwice % 2);
+          const Shading c = shadingAt(mesh, i, j);
+          EXPECT_GT(glm::dot(c.normal, glm::normalize(a.normal + b.normal)), 1.0 - 1e-6)
+              << child.x << "," << child.y << " " << i << "," << j;
+          EXPECT_NEAR(c.colorMeters, 0.5 * (a.colorMeters + b.colorMeters), 0.01);
+          EXPECT_DOUBLE_EQ(c.water, 0.5 * (a.water + b.water));
+          coasts += c.water == 0.5 ? 1 : 0;
+        }
+      }
+    }
+  }
+  EXPECT_GT(coasts, 0);  // the test world's coasts run through some of these tiles
+}
+
+TEST(UpsampledBlock, GrandchildrenKeepTheGrandparentsShading) {
+  // Two generations: the grandchild's shading still interpolates the grandparent's, so a tile
+  // refined twice looks like the real block it came from.
+  const geo::TileId parent{5, 40, 9};
+  const HeightBlock block = upsampledWorldBlock(parent, kN);
+  const geo::TileId child = parent.children()[0];
+  const geo::TileId grandchild = child.children()[3];
+  const HeightBlock up = upsampleBlock(upsampleBlock(block, child, kWgs84), grandchild, kWgs84);
+  const TileMesh parentMesh = buildTileMesh(parent, block, kWgs84, 0.0);
+  const TileMesh mesh = buildTileMesh(grandchild, up, kWgs84, 0.0);
+  // Grandchild (north-west child's south-east child) vertex 0,0 is the parent's (kN-1)/4 point.
+  const uint32_t quarter = (kN - 1) / 4;
+  const Shading parentVertex = shadingAt(parentMesh, quarter, quarter);
+  const Shading own = shadingAt(mesh, 0, 0);
+  EXPECT_GT(glm::dot(own.normal, parentVertex.normal), 1.0 - 1e-6);
+  EXPECT_NEAR(own.colorMeters, parentVertex.colorMeters, 0.01);
+  EXPECT_EQ(own.water, parentVertex.water);
 }
 
 }  // namespace
