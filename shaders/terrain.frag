@@ -66,6 +66,9 @@ uniform float u_logDepthScale; // 1 / log2(1 + far)
 out vec4 o_color;
 
 #ifdef GLOBE_LAYERS
+#ifdef GLOBE_LIGHT_IMAGERY
+const float kReliefLift = 2.0;  // how far a slope lit at 1.5× level ground's light lifts (to sqrt)
+#endif
 // "Over" with a premultiplied texel: colour·(1 − a) + rgb, a = alpha · opacity, which is
 // mix(colour, straight rgb, a). Premultiplied so that filtering next to transparent texels does
 // not bleed their (meaningless) colour in.
@@ -73,9 +76,18 @@ out vec4 o_color;
 vec3 drape(vec3 color, sampler2D layer, int k, float level, float relief) {
   vec4 texel = texture(layer, v_layerUv[k]) * u_layerOpacity[k];
 #ifdef GLOBE_LIGHT_IMAGERY
-  level *= mix(1.0, relief, v_layerLight[k]);
-#endif
+  // Shadow darkens (multiplies); light lifts the colour towards its square root, as a soft-light
+  // blend does, so that sunlit slopes show on dark imagery too (the Blue Marble's forests are
+  // ~0.15: a product would leave their relief nearly black on black).
+  vec3 lit = texel.rgb * level;  // premultiplied, as texel
+  float shade = relief - 1.0;
+  vec3 straight = lit / max(texel.a, 1e-3);
+  vec3 relit = shade < 0.0 ? lit * relief
+                           : lit + min(shade * kReliefLift, 1.0) * (sqrt(straight) - straight) * texel.a;
+  return mix(lit, relit, v_layerLight[k]) + color * (1.0 - texel.a);
+#else
   return texel.rgb * level + color * (1.0 - texel.a);
+#endif
 }
 #endif
 

@@ -22,7 +22,7 @@ cmake --build build -j"$(nproc)" --target globe globe-tiler
 ./build/apps/globe-tiler/globe-tiler water-mask -o layers/coast data/coast/gshhg-l-land.fgb \
   data/coast/gshhg-f-*.fgb
 ./build/apps/globe/globe info pyramid
-LAYERS=(--layer layers/blue-marble --layer layers/zion --layer layers/coast)
+LAYERS=(--layer layers/blue-marble --layer layers/zion)
 mkdir -p out
 ./build/apps/globe/globe snapshot pyramid --camera 138,30,20000000 "${LAYERS[@]}" -o out/globe.png
 ./build/apps/globe/globe snapshot pyramid --camera -112.93,37.16,4500,330,-20,0 "${LAYERS[@]}" -o out/zion.png

@@ -9,6 +9,7 @@
 #include <limits>
 #include <string>
 
+#include "formats/tile_edges.hpp"
 #include "transport/atomic_file.hpp"
 
 namespace globe::formats {
@@ -53,6 +54,7 @@ Result<ImageRgba> decodeImageRgba(std::span<const std::byte> bytes, const std::s
   image.heightPixels = height;
   image.pixels.assign(decoded, decoded + static_cast<size_t>(width) * height * 4);
   stbi_image_free(decoded);
+  restoreTileEdges(bytes, image);  // a JPEG tile's exact edge samples, when it carries them
   return image;
 }
 

@@ -15,6 +15,7 @@
 
 #include "core/big_endian.hpp"
 #include "core/crc32.hpp"
+#include "formats/tile_edges.hpp"
 
 namespace globe::imagery_tiling {
 namespace {
@@ -59,9 +60,26 @@ struct CompressorDeleter {
 
 }  // namespace
 
-Result<std::vector<std::byte>> encodeJpegFast(const formats::ImageRgba& image, int quality) {
+Result<std::vector<std::byte>> encodeJpegFast(const formats::ImageRgba& image, int quality,
+                                              bool exactEdges) {
   if (!wellFormed(image)) return makeError("cannot encode JPEG: malformed RGBA image");
   if (quality < 1 || quality > 100) return makeError("JPEG quality must be 1..100");
+  std::vector<std::byte> edges;
+  if (exactEdges) {
+    const std::vector<uint8_t> ring = formats::tileEdgeBytes(image);
+    edges = formats::tileEdgesHead(image.widthPixels, image.heightPixels);
+    thread_local std::unique_ptr<libdeflate_compressor, CompressorDeleter> compressor(
+        libdeflate_alloc_compressor(9));
+    if (!compressor) return makeError("JPEG encoding failed: cannot allocate a compressor");
+    const size_t head = edges.size();
+    edges.resize(head + libdeflate_zlib_compress_bound(compressor.get(), ring.size()));
+    const size_t compressed = libdeflate_zlib_compress(compressor.get(), ring.data(), ring.size(),
+                                                       &edges[head], edges.size() - head);
+    if (compressed == 0 || head + compressed > 65533) {
+      return makeError("JPEG encoding failed: the edge segment does not fit");
+    }
+    edges.resize(head + compressed);
+  }
   jpeg_compress_struct info{};
   JpegError error{};
   info.err = jpeg_std_error(&error.manager);
@@ -83,6 +101,11 @@ Result<std::vector<std::byte>> encodeJpegFast(const formats::ImageRgba& image, i
   jpeg_set_quality(&info, quality, TRUE);
   info.dct_method = JDCT_ISLOW;
   jpeg_start_compress(&info, TRUE);
+  if (!edges.empty()) {
+    jpeg_write_marker(&info, formats::kTileEdgesMarker,
+                      reinterpret_cast<const JOCTET*>(edges.data()),
+                      static_cast<unsigned int>(edges.size()));
+  }
   const auto stride = static_cast<size_t>(image.widthPixels) * 4;
   while (info.next_scanline < info.image_height) {
     auto* row = const_cast<JSAMPROW>(&image.pixels[info.next_scanline * stride]);

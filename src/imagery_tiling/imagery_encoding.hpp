@@ -13,8 +13,11 @@
 
 namespace globe::imagery_tiling {
 
-// Baseline JPEG, 4:2:0, integer DCT (the same bytes on every machine); alpha ignored.
-Result<std::vector<std::byte>> encodeJpegFast(const formats::ImageRgba& image, int quality);
+// Baseline JPEG, 4:2:0, integer DCT (the same bytes on every machine); alpha ignored. With
+// exactEdges, the border ring's exact samples ride along in an APP9 segment
+// (formats/tile_edges.hpp).
+Result<std::vector<std::byte>> encodeJpegFast(const formats::ImageRgba& image, int quality,
+                                              bool exactEdges = false);
 // 8-bit RGBA PNG, each row's filter chosen by the minimum-sum-of-differences heuristic.
 Result<std::vector<std::byte>> encodePngFast(const formats::ImageRgba& image);
 // 8-bit grey PNG of width × height bytes, row by row (water masks).

@@ -132,8 +132,9 @@ formats::ImageRgba downsampleEdgeSampledChildren(
   return parent;
 }
 
-Result<std::vector<std::byte>> encodeTile(const formats::ImageRgba& tile, int jpegQuality) {
-  return fullyOpaque(tile) ? encodeJpegFast(tile, jpegQuality) : encodePngFast(tile);
+Result<std::vector<std::byte>> encodeTile(const formats::ImageRgba& tile, int jpegQuality,
+                                          bool exactEdges) {
+  return fullyOpaque(tile) ? encodeJpegFast(tile, jpegQuality, exactEdges) : encodePngFast(tile);
 }
 
 }  // namespace globe::imagery_tiling

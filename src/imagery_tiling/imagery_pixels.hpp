@@ -35,6 +35,7 @@ formats::ImageRgba downsampleEdgeSampledChildren(
     const std::array<std::optional<formats::ImageRgba>, 4>& children);
 
 // JPEG when every pixel is opaque, PNG (RGBA) otherwise.
-Result<std::vector<std::byte>> encodeTile(const formats::ImageRgba& tile, int jpegQuality);
+Result<std::vector<std::byte>> encodeTile(const formats::ImageRgba& tile, int jpegQuality,
+                                          bool exactEdges = false);
 
 }  // namespace globe::imagery_tiling

@@ -36,7 +36,8 @@ constexpr uint64_t kMaxImagePackBytes = uint64_t{1} << 34;
 // Version 1: pixel-is-area tiles (a layer re-packing a TMS tree keeps them); 2: edge samples.
 constexpr const char* kRulesVersion = "bilinear-premultiplied-finest-over 1";
 constexpr const char* kEdgeSampledRulesVersion =
-    "bilinear-premultiplied-finest-over 2 edges, footprints and no-data collars fade over 4 pixels";
+    "bilinear-premultiplied-finest-over 2 edges (exact in JPEG), footprints and no-data collars "
+    "fade over 4 pixels";
 
 std::string boundsText(const formats::BoundsDegrees& b) {
   char text[128];
@@ -265,7 +266,10 @@ struct TileMaker {
       if (*drawn) compositeOver(image, layer);
     }
     if (!covered) return std::optional<std::vector<std::byte>>();
-    auto encoded = encodeTile(image, jpegQuality);
+    // Edge-sampled JPEG tiles keep their border exactly (formats/tile_edges.hpp).
+    auto encoded =
+        encodeTile(image, jpegQuality,
+                   !inputs.empty() && inputs[0].pixelGrid == formats::ImageryPixelGrid::Edges);
     if (!encoded) return Error{encoded.error()};
     return std::optional<std::vector<std::byte>>(std::move(*encoded));
   }

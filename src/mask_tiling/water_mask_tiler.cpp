@@ -249,7 +249,11 @@ Result<WaterMaskTilerReport> runWaterMaskTiler(const WaterMaskTilerOptions& opti
     source.driver = layer.polygons.driver;
     source.crs = layer.polygons.crs;
     source.finestLevel = layer.finestLevel;
-    source.pixelDegrees = texelDegrees(layer.finestLevel);
+    // Its resolution: the shoreline's own detail (the median edge), or the deepest texel if
+    // coarser. The viewer weighs the mask against the terrain's step by it: GSHHG's full
+    // resolution is not 40 m because its tiles are, and SRTM's coast beside it is as good.
+    source.pixelDegrees =
+        std::max(texelDegrees(layer.finestLevel), layer.polygons.medianEdgeDegrees);
     const RectangleDegrees& e = layer.polygons.extent;
     source.bounds = {e.west, e.south, e.east, e.north};
     source.bands = "land polygons: layer " + layer.polygons.name + ", " +

@@ -34,6 +34,12 @@ GpuTile uploadGpuTile(const geo::TileId& tile, const terrain::TileMesh& mesh, GL
                               static_cast<float>(rect.heightRadians() / pi));
   gpu.vertexBytes = mesh.vertices.size() * sizeof(float);
   double radiusSquared = 0.0;
+  gpu.allLand = gpu.allWater = !mesh.vertices.empty();
+  for (size_t k = terrain::kTileVertexSeaOffset; k < mesh.vertices.size();
+       k += terrain::kTileVertexFloats) {
+    gpu.allLand = gpu.allLand && mesh.vertices[k] == 0.0f;
+    gpu.allWater = gpu.allWater && mesh.vertices[k] == 1.0f;
+  }
   std::vector<glm::dvec3> offsets;
   offsets.reserve(mesh.vertices.size() / terrain::kTileVertexFloats);
   for (size_t k = 0; k + terrain::kTileVertexFloats <= mesh.vertices.size();

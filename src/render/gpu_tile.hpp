@@ -29,6 +29,10 @@ struct GpuTile {
   glm::vec4 imageryRect{0.0f};  // global equirectangular uv = xy + tile uv · zw
   double radiusMeters = 0.0;    // the farthest vertex (skirts included) from the centre
   terrain::TileBox box;         // around the vertices (skirts included), for texel footprints
+  // Every vertex land (sea flag 0) or every vertex water (1): where a water mask says the same
+  // over the whole tile, it changes nothing and is not sampled.
+  bool allLand = false;
+  bool allWater = false;
   uint64_t vertexBytes = 0;
 };
 

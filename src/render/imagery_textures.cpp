@@ -77,6 +77,22 @@ Result<void> ImageryTextures::upload(uint32_t layer, const geo::TileId& tile,
   const uint8_t* pixels = rgba.data();
   std::array<uint16_t, 16> opaqueCells;
   opaqueCells.fill(0xffff);
+  // What each cell says as a water mask (grey in red): every texel land, water or undecided.
+  std::array<uint16_t, 16> landCells, waterCells, undecidedCells;
+  landCells.fill(0xffff);
+  waterCells.fill(0xffff);
+  undecidedCells.fill(0xffff);
+  for (size_t p = 0; p + 3 < rgba.size(); p += 4) {
+    const size_t texel = p / 4;
+    const auto row =
+        (texel / static_cast<size_t>(widthPixels)) * 16 / static_cast<size_t>(heightPixels);
+    const auto column =
+        (texel % static_cast<size_t>(widthPixels)) * 16 / static_cast<size_t>(widthPixels);
+    const auto clear = static_cast<uint16_t>(~(1u << column));
+    if (rgba[p + 3] != 255 || rgba[p] != 0) landCells[row] &= clear;
+    if (rgba[p + 3] != 255 || rgba[p] != 255) waterCells[row] &= clear;
+    if (rgba[p + 3] != 0) undecidedCells[row] &= clear;
+  }
   for (size_t k = 3; k < rgba.size(); k += 4) {
     if (rgba[k] == 255) continue;
     for (size_t p = 3; p < rgba.size(); p += 4) {
@@ -128,9 +144,17 @@ Result<void> ImageryTextures::upload(uint32_t layer, const geo::TileId& tile,
     return makeError("terrain renderer: GL error " + std::to_string(error) + " uploading imagery " +
                      tileName(layer, tile));
   }
-  if (replacing) found->second.opaqueCells = opaqueCells;
+  if (replacing) {
+    found->second.opaqueCells = opaqueCells;
+    found->second.landCells = landCells;
+    found->second.waterCells = waterCells;
+    found->second.undecidedCells = undecidedCells;
+  }
   if (!replacing) {
     texture.opaqueCells = opaqueCells;
+    texture.landCells = landCells;
+    texture.waterCells = waterCells;
+    texture.undecidedCells = undecidedCells;
     texture.widthPixels = widthPixels;
     texture.heightPixels = heightPixels;
     texture.bytes = mipmappedTextureBytes(widthPixels, heightPixels);
@@ -144,24 +168,46 @@ bool ImageryTextures::contains(uint32_t layer, const geo::TileId& tile) const {
   return textures_.contains({layer, tile});
 }
 
-bool ImageryTextures::isOpaqueOver(uint32_t layer, const geo::TileId& tile,
-                                   const glm::vec4& uvRect) const {
-  const auto found = textures_.find({layer, tile});
-  if (found == textures_.end()) return false;
+bool ImageryTextures::cellsOver(const glm::vec4& uvRect, int& c0, int& c1, int& r0, int& r1) {
   // The cells the rectangle touches, grown by one cell each way (clamped to the tile).
   auto cell = [](float uv) { return static_cast<int>(std::floor(uv * 16.0f)); };
   if (!std::isfinite(uvRect.x) || !std::isfinite(uvRect.y) || !std::isfinite(uvRect.z) ||
       !std::isfinite(uvRect.w)) {
     return false;
   }
-  const int c0 = std::max(0, cell(uvRect.x) - 1), c1 = std::min(15, cell(uvRect.x + uvRect.z) + 1);
-  const int r0 = std::max(0, cell(uvRect.y) - 1), r1 = std::min(15, cell(uvRect.y + uvRect.w) + 1);
+  c0 = std::max(0, cell(uvRect.x) - 1), c1 = std::min(15, cell(uvRect.x + uvRect.z) + 1);
+  r0 = std::max(0, cell(uvRect.y) - 1), r1 = std::min(15, cell(uvRect.y + uvRect.w) + 1);
+  return true;
+}
+
+bool ImageryTextures::allSet(const std::array<uint16_t, 16>& cells, int c0, int c1, int r0,
+                             int r1) {
   for (int r = r0; r <= r1; ++r) {
     for (int c = c0; c <= c1; ++c) {
-      if ((found->second.opaqueCells[static_cast<size_t>(r)] & (1u << c)) == 0) return false;
+      if ((cells[static_cast<size_t>(r)] & (1u << c)) == 0) return false;
     }
   }
   return true;
+}
+
+bool ImageryTextures::isOpaqueOver(uint32_t layer, const geo::TileId& tile,
+                                   const glm::vec4& uvRect) const {
+  const auto found = textures_.find({layer, tile});
+  int c0 = 0, c1 = 0, r0 = 0, r1 = 0;
+  if (found == textures_.end() || !cellsOver(uvRect, c0, c1, r0, r1)) return false;
+  return allSet(found->second.opaqueCells, c0, c1, r0, r1);
+}
+
+ImageryTextures::MaskOver ImageryTextures::maskOver(uint32_t layer, const geo::TileId& tile,
+                                                    const glm::vec4& uvRect) const {
+  const auto found = textures_.find({layer, tile});
+  int c0 = 0, c1 = 0, r0 = 0, r1 = 0;
+  if (found == textures_.end() || !cellsOver(uvRect, c0, c1, r0, r1)) return MaskOver::Mixed;
+  const Texture& t = found->second;
+  if (allSet(t.landCells, c0, c1, r0, r1)) return MaskOver::Land;
+  if (allSet(t.waterCells, c0, c1, r0, r1)) return MaskOver::Water;
+  if (allSet(t.undecidedCells, c0, c1, r0, r1)) return MaskOver::Undecided;
+  return MaskOver::Mixed;
 }
 
 ResidentTexture ImageryTextures::find(uint32_t layer, const geo::TileId& tile) const {

@@ -60,6 +60,10 @@ class ImageryTextures {
   // sixteenth of the tile around it (what bilinear filtering and the first four mip levels reach).
   // Layers under it cannot show there.
   bool isOpaqueOver(uint32_t layer, const geo::TileId& tile, const glm::vec4& uvRect) const;
+  // For a water mask (grey = water fraction): what every texel that rectangle draws says, with
+  // the same margin: all land, all water, all undecided (alpha 0), or a mix.
+  enum class MaskOver { Mixed, Land, Water, Undecided };
+  MaskOver maskOver(uint32_t layer, const geo::TileId& tile, const glm::vec4& uvRect) const;
   bool evict(uint32_t layer, const geo::TileId& tile);
   void clear();
 
@@ -75,7 +79,12 @@ class ImageryTextures {
     uint64_t bytes = 0;
     // Bit c of row r: the cell (r, c) of a 16×16 grid over the tile has only opaque texels.
     std::array<uint16_t, 16> opaqueCells{};
+    // Likewise cells whose texels are all (0, alpha 255), all (255, 255), all alpha 0.
+    std::array<uint16_t, 16> landCells{}, waterCells{}, undecidedCells{};
   };
+  // The cells of `uvRect` grown by one cell, clamped: false when the rectangle is not finite.
+  static bool cellsOver(const glm::vec4& uvRect, int& c0, int& c1, int& r0, int& r1);
+  static bool allSet(const std::array<uint16_t, 16>& cells, int c0, int c1, int r0, int r1);
   std::unordered_map<ImageryTextureKey, Texture, ImageryTextureKeyHash> textures_;
   uint64_t bytes_ = 0;
   float maxAnisotropy_ = 1.0f;

@@ -196,15 +196,30 @@ TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(
     bound.samplers[bound.count] = imageryTiles.sampler(magnified);
     ++bound.count;
   }
-  if (drapes != nullptr && drapes->hasWaterMask) {
+  // Under an opaque bottom layer the terrain's land and sea colours do not show: no mask.
+  if (drapes != nullptr && drapes->hasWaterMask && !(bound.count > 0 && bound.opaqueBase)) {
     const terrain::TileDrape& mask = drapes->waterMask;
     const ResidentTexture resident = imageryTiles.find(mask.layer, mask.imageryTile);
     const float opacity = mask.opacity > 0.0f ? std::min(mask.opacity, 1.0f) : 0.0f;
+    // Where the mask over the tile is all undecided, or agrees with every vertex's own flag, it
+    // changes nothing: not sampled.
+    const auto says = imageryTiles.maskOver(mask.layer, mask.imageryTile, mask.uvTransform);
+    const bool changesNothing = says == ImageryTextures::MaskOver::Undecided ||
+                                (says == ImageryTextures::MaskOver::Land && gpu.allLand) ||
+                                (says == ImageryTextures::MaskOver::Water && gpu.allWater);
     if (resident.name == 0) {
       ++stats.drapesMissing;
-    } else if (opacity > 0.0f) {
+    } else if (opacity > 0.0f && !changesNothing) {
       bound.maskTexture = resident.name;
-      bound.maskSampler = imageryTiles.sampler(false);  // mipmapped: a far coast as coverage
+      // Mipmapped where minified (a far coast as its coverage), bilinear where magnified over
+      // the whole tile, as the layers.
+      const double texelMeters = terrain::shortestTexelMeters(
+          mask.imageryTile, resident.widthPixels, resident.heightPixels, wgs84);
+      bound.maskSampler =
+          imageryTiles.sampler(style.bilinearWhereMagnified &&
+                               terrain::maxTexelsPerPixel(footprint.cameraEcefMeters, gpu.box,
+                                                          texelMeters, footprint.pixelAngleRadians,
+                                                          wgs84) <= kMagnifiedTexelsPerPixel);
       bound.maskTransform = mask.uvTransform;
       for (int corner = 0; corner < 4; ++corner) {
         bound.maskWeights[corner] =
@@ -212,6 +227,8 @@ TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(
             static_cast<float>(terrain::waterMaskWeight(
                 mask.nativeTexelDegrees, mask.terrainStepDegrees[static_cast<size_t>(corner)]));
       }
+      // Nowhere in charge (a finer terrain): not sampled either.
+      if (bound.maskWeights == glm::vec4(0.0f)) bound.maskTexture = 0;
     }
   }
   // Counted once the layers under an opaque one are dropped.
@@ -227,8 +244,9 @@ Result<const TerrainRenderer::Impl::Program*> TerrainRenderer::Impl::program(
   lightImagery = lightImagery && layers > 0;
   opaqueBase = opaqueBase && layers > 0;
   globalImage = globalImage && !opaqueBase;  // covered anyway
-  // Under an opaque unlit base nothing shows whether a fragment is land or water.
-  waterMask = waterMask && (!opaqueBase || lightImagery);
+  // Under an opaque base the terrain's land and sea colours do not show (the relief's light on
+  // water, flat at 0 m, is level anyway).
+  waterMask = waterMask && !opaqueBase;
   const uint32_t key = (globalImage ? 1u : 0u) | (vertexDepth ? 2u : 0u) |
                        (lightImagery ? 4u : 0u) | (opaqueBase ? 8u : 0u) | (waterMask ? 16u : 0u) |
                        (layers << 5);

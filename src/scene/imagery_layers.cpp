@@ -14,6 +14,7 @@
 #include "scene/native_resolution.hpp"
 #include "streaming/background_pack_opens.hpp"
 #include "terrain/imagery_level.hpp"
+#include "terrain/water_mask_weight.hpp"
 
 namespace globe::scene {
 
@@ -30,6 +31,10 @@ struct ImageryLayers::Layer {
   std::unordered_map<geo::TileId, uint64_t> textureLastUsedFrame;  // textures on the GPU
   std::unordered_map<geo::TileId, bool> present;  // the layer's index, asked once per tile
   std::unordered_map<geo::TileId, double> nativeTexelDegrees;  // per terrain tile, found once
+  // Both level-0 tiles opaque in every texel (known after the preload): the layer covers the
+  // whole globe opaquely at every level (a footprint's edge would be transparent).
+  bool opaqueEverywhere = false;
+  bool isWaterMask() const { return store->manifest().kind == formats::LayerKind::WaterMask; }
 
   Layer(LayerOptions layerOptions, std::unique_ptr<streaming::ImageryStore> layerStore,
         core::TaskRunner& taskRunner, size_t decodedBytes)
@@ -145,11 +150,19 @@ Result<std::unique_ptr<ImageryLayers>> ImageryLayers::open(
 }
 
 Result<void> ImageryLayers::preload(Layer& layer, uint32_t index, TileGpu& gpu) {
+  layer.opaqueEverywhere = !layer.isWaterMask();
   for (uint32_t x = 0; x < geo::GeographicTilingScheme::tilesX(0); ++x) {
     const geo::TileId root{0, x, 0};
     auto image = layer.source->load(root);
     if (!image) return Error{image.error()};
-    if (!*image) continue;  // the layer covers nothing of this half
+    if (!*image) {  // the layer covers nothing of this half
+      layer.opaqueEverywhere = false;
+      continue;
+    }
+    const std::vector<uint8_t>& pixels = (*image)->pixels;
+    for (size_t k = 3; k < pixels.size() && layer.opaqueEverywhere; k += 4) {
+      layer.opaqueEverywhere = pixels[k] == 255;
+    }
     if (auto uploaded = gpu.prepareImageryTile(index, root, (*image)->pixels, (*image)->widthPixels,
                                                (*image)->heightPixels);
         !uploaded) {
@@ -188,8 +201,10 @@ Result<ImageryFrame> ImageryLayers::update(std::span<const geo::TileId> tiles,
     return -glm::length(center - cameraEcefMeters);
   };
 
+  const bool maskHidden = waterMaskHidden();
   for (uint32_t index = 0; index < layers_.size(); ++index) {
     Layer& layer = *layers_[index];
+    if (maskHidden && layer.isWaterMask()) continue;
     layer.cache.beginFrame();
     const streaming::PollResult polled = layer.loader->poll();
     frame.arrived += polled.arrived.size();
@@ -291,8 +306,10 @@ void ImageryLayers::evictTextures(TileGpu& gpu) {
 std::vector<terrain::NominalErrorRegion> ImageryLayers::nominalErrorRegions(
     uint32_t verticesPerSide, double maximumScreenSpaceErrorPixels) const {
   std::vector<terrain::NominalErrorRegion> regions;
+  const bool maskHidden = waterMaskHidden();
   for (const auto& layer : layers_) {
     if (!(layer->options.opacity > 0.0f)) continue;  // draws nothing
+    if (maskHidden && layer->isWaterMask()) continue;
     const formats::LayerManifest& manifest = layer->store->manifest();
     auto imageryLevel = [&](uint32_t terrainLevel) {
       return layer->imageryLevel(terrainLevel, verticesPerSide, maximumScreenSpaceErrorPixels);
@@ -327,11 +344,23 @@ std::vector<terrain::NominalErrorRegion> ImageryLayers::nominalErrorRegions(
   return regions;
 }
 
+bool ImageryLayers::waterMaskHidden() const {
+  return std::any_of(layers_.begin(), layers_.end(), [](const auto& layer) {
+    return layer->opaqueEverywhere && layer->options.opacity >= 1.0f;
+  });
+}
+
 bool ImageryLayers::sharperBelow(const geo::TileId& tile, uint32_t verticesPerSide,
-                                 double maximumScreenSpaceErrorPixels) {
+                                 double maximumScreenSpaceErrorPixels, double terrainStepDegrees) {
   if (tile.level >= geo::kMaxLevel) return false;
+  const bool maskHidden = waterMaskHidden();
   for (const auto& layer : layers_) {
     if (!(layer->options.opacity > 0.0f)) continue;  // draws nothing
+    if (maskHidden && layer->isWaterMask()) continue;
+    if (layer->isWaterMask() &&
+        !(terrain::waterMaskWeight(layer->nativeTexelAt(tile), terrainStepDegrees) > 0.0)) {
+      continue;  // the terrain's own coast is as fine: the mask is not drawn here
+    }
     const uint32_t childLevel =
         layer->imageryLevel(tile.level + 1, verticesPerSide, maximumScreenSpaceErrorPixels);
     if (childLevel <=

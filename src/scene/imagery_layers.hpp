@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <span>
 #include <string>
@@ -85,8 +86,16 @@ class ImageryLayers {
   // layer has the imagery tile the children take (terrain::imageryLevelFor), and it is deeper than
   // the one `tile` takes. Where a layer's index is not read yet, no for now (it is read in the
   // background and the answer comes a later frame).
+  // A water mask counts only where it is in charge over terrain whose finest source step there
+  // is terrainStepDegrees (terrain/water_mask_weight.hpp; NaN: unknown, it is).
   bool sharperBelow(const geo::TileId& tile, uint32_t verticesPerSide,
-                    double maximumScreenSpaceErrorPixels);
+                    double maximumScreenSpaceErrorPixels,
+                    double terrainStepDegrees = std::numeric_limits<double>::quiet_NaN());
+
+  // Whether a water mask cannot show: some layer at full opacity covers the whole globe opaquely
+  // (the Blue Marble), so the terrain's land and sea colours never do. Such a mask is neither
+  // loaded nor drawn, nor refined for. Known once the level-0 tiles are loaded (first update).
+  bool waterMaskHidden() const;
 
   // Loader counters summed over the layers.
   streaming::LoaderCounters counters() const;

@@ -57,8 +57,9 @@ class SceneCatalog final : public terrain::TileCatalog {
       parentSummary = inPyramid(parent, notYetOpen);
     }
     if (!parentSummary ||
-        !upsampling_->imagery.sharperBelow(parent, upsampling_->verticesPerSide,
-                                           upsampling_->maximumScreenSpaceErrorPixels)) {
+        !upsampling_->imagery.sharperBelow(
+            parent, upsampling_->verticesPerSide, upsampling_->maximumScreenSpaceErrorPixels,
+            finestStepDegreesAt(store_.manifest().sources, parent))) {
       return std::nullopt;
     }
     if (upsampling_->tiles.size() >= kUpsampledEntries) upsampling_->tiles.clear();
@@ -224,6 +225,12 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   // Imagery's resolution follows the terrain's level: flat ground keeps refining under a layer
   // as long as that sharpens it.
   selectionOptions.measuredErrors = options_.measuredLod;
+  if (imagery_) {
+    // Each frame: a layer's opacity may change (window keys), and a water mask under an opaque
+    // world layer is known hidden once the level-0 tiles are in.
+    nominalErrorRegions_ = imagery_->nominalErrorRegions(store_->manifest().verticesPerSide,
+                                                         options_.maximumScreenSpaceErrorPixels);
+  }
   selectionOptions.nominalErrorRegions = nominalErrorRegions_;
   if (store_->remote()) selectionOptions.lookaheadLevels = kRemoteLookaheadLevels;
   std::vector<geo::TileId> notOpen;

@@ -11,10 +11,12 @@
 #include "camera/camera_path_file.hpp"
 #include "core/big_endian.hpp"
 #include "core/crc32.hpp"
+#include "formats/image_io.hpp"
 #include "formats/image_pack.hpp"
 #include "formats/layer_manifest.hpp"
 #include "formats/pack_format.hpp"
 #include "formats/pyramid_manifest.hpp"
+#include "formats/tile_edges.hpp"
 #include "rasters/gtopo30_header.hpp"
 #include "transport/http_client.hpp"
 
@@ -99,6 +101,14 @@ void remote(const uint8_t* data, size_t size) {
   if (layer) (void)formats::layerManifestToJson(*layer);
 }
 
+void imageTile(const uint8_t* data, size_t size) {
+  const std::span<const std::byte> bytes(reinterpret_cast<const std::byte*>(data), size);
+  auto image = formats::decodeImageRgba(bytes, "fuzz.jpg");  // restores the edges when it can
+  if (image) (void)image->pixels.size();
+  formats::ImageRgba tile{256, 256, std::vector<uint8_t>(256 * 256 * 4, 0)};
+  (void)formats::restoreTileEdges(bytes, tile);
+}
+
 Entry entryNamed(std::string_view target) {
   if (target == "gtopo30_header") return gtopo30Header;
   if (target == "pack") return pack;
@@ -106,6 +116,7 @@ Entry entryNamed(std::string_view target) {
   if (target == "path_json") return pathJson;
   if (target == "path_kml") return pathKml;
   if (target == "remote") return remote;
+  if (target == "image_tile") return imageTile;
   return nullptr;
 }
 

@@ -16,6 +16,9 @@ void pathKml(const uint8_t* data, size_t size);
 // What a web server controls beyond the pyramid's own formats: a Content-Range header, an
 // imagery pack's head and index, a layer manifest.
 void remote(const uint8_t* data, size_t size);
+// An imagery tile as served: decoded, and its JPEG edge segment (formats/tile_edges.hpp) parsed
+// into a tile of its own size and into a 256×256 one.
+void imageTile(const uint8_t* data, size_t size);
 
 // The entry for a corpus folder name (gtopo30_header, pack, ...), or nullptr.
 using Entry = void (*)(const uint8_t*, size_t);

@@ -37,6 +37,7 @@ TEST(FuzzCorpus, Manifest) { EXPECT_GT(replay("manifest"), 0U); }
 TEST(FuzzCorpus, PathJson) { EXPECT_GT(replay("path_json"), 0U); }
 TEST(FuzzCorpus, PathKml) { EXPECT_GT(replay("path_kml"), 0U); }
 TEST(FuzzCorpus, Remote) { EXPECT_GT(replay("remote"), 0U); }
+TEST(FuzzCorpus, ImageTile) { EXPECT_GT(replay("image_tile"), 0U); }
 
 // The hand-made seeds are valid packs of the current format; the version-1 seed (negative samples
 // meant sea then) is refused by name as made by an older globe-tiler.

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Coastline position with the 20' world grid (ETOPO20) alone, against GSHHG's full-resolution
 # shoreline, at five coasts: each view straight down over a shoreline vertex, lighting off, no
-# sky, the terrain's own colours (sea blue, land green), from two heights. Rows: the grid's own
+# sky, the terrain's own colours (sea blue, land green), from 60 km, 4 km and 400 m. Rows: the grid's own
 # sea flag; with the bundled world water mask (GSHHG low, data/coast/gshhg-l-land.fgb); with it and
 # the bundled full-resolution boxes (data/coast/gshhg-f-*.fgb). The reference: the same
 # full-resolution polygons rasterised by gdal_rasterize into the view's frame (an azimuthal
@@ -43,7 +43,7 @@ for entry in "${COASTS[@]}"; do
     "$west" "$south" "$east" "$south" "$east" "$north" "$west" "$north" "$west" "$south" \
     > "$WORK/box.geojson"
   IFS=, read -r clon clat <<< "$(/usr/bin/python3 "$ERROR" nearest "$polygons" "$lon" "$lat")"
-  for above in 60000 4000; do
+  for above in 60000 4000 400; do
     # Half the frame on the ground: tan(22.5°) of the height (45° vertical field of view).
     half_h=$(awk -v h=$above 'BEGIN { printf "%.3f", h * sin(3.14159265358979/8) / cos(3.14159265358979/8) }')
     half_w=$(awk -v a="$half_h" -v w=$W -v h=$H 'BEGIN { printf "%.3f", a * w / h }')
@@ -70,14 +70,14 @@ for entry in "${COASTS[@]}"; do
       [ "$there" = - ] && off="no coast drawn"
       cells+=("$(awk -v w="$wrong" 'BEGIN { printf "%.1f %%", 100 * w }')" "$off")
     done
-    echo "| $name ($clon, $clat) | $(awk -v a=$above 'BEGIN { printf "%.0f km", a / 1000 }') | ${cells[0]} | ${cells[1]} | ${cells[2]} | ${cells[3]} | ${cells[4]} | ${cells[5]} |" >> "$WORK/table.md"
+    echo "| $name ($clon, $clat) | $(awk -v a=$above 'BEGIN { if (a >= 1000) printf "%.0f km", a / 1000; else printf "%.0f m", a }') | ${cells[0]} | ${cells[1]} | ${cells[2]} | ${cells[3]} | ${cells[4]} | ${cells[5]} |" >> "$WORK/table.md"
   done
 done
 {
   echo "# Coastlines with only the world grid"
   echo
   echo "The 20′ world grid (ETOPO20) alone, straight down over a shoreline vertex of GSHHG's"
-  echo "full-resolution shoreline at each coast, ${W}×${H}, 45° field of view, \`--lighting off"
+  echo "full-resolution shoreline at each coast, from 60 km, 4 km and 400 m, ${W}×${H}, 45° field of view, \`--lighting off"
   echo "--no-sky\`, against those polygons rasterised into the same frame. Wrong pixels: land drawn"
   echo "as sea or sea as land. Coast off by: the mean distance from the view's coast pixels to the"
   echo "reference's nearest / from the reference's to the view's (a coast the view lacks counts in"

@@ -36,6 +36,7 @@ struct Rendered {
   scene::FrameInfo frame;
   size_t tilesDrawn = 0;
   size_t tilesDraped = 0;  // drawn with at least one imagery texture
+  size_t tilesMasked = 0;  // drawn with a water mask tile
   uint32_t deepestImageryLevel = 0;
 };
 
@@ -74,6 +75,7 @@ Rendered renderNadir(const fs::path& pyramid, const std::vector<scene::LayerOpti
   out.tilesDrawn = (*scene)->tiles().size();
   for (const terrain::TileDrapes& drapes : (*scene)->drapes()) {
     out.tilesDraped += drapes.count > 0 ? 1 : 0;
+    out.tilesMasked += drapes.hasWaterMask ? 1 : 0;
     for (uint32_t k = 0; k < drapes.count; ++k) {
       out.deepestImageryLevel =
           std::max(out.deepestImageryLevel, drapes.layers[k].imageryTile.level);
@@ -268,6 +270,28 @@ TEST(ImageryScene, NoDataIsTransparent) {
       EXPECT_LE(largestChannelDifference(drawn, plain), 2.0) << "no-data is not transparent";
     }
   }
+}
+
+// A water mask decides land and sea where the terrain's colours show; under a layer that covers
+// the whole globe opaquely (the Blue Marble) they never do, and the mask is neither loaded, nor
+// drawn, nor refined for: the same tiles and the same picture as without it.
+TEST(ImageryScene, AWaterMaskUnderAnOpaqueWorldLayerIsNeitherLoadedNorDrawn) {
+  const auto& pyramid = globe::testing::bundledPyramid();
+  const std::vector<scene::LayerOptions> mask{{globe::testing::coastMask(), 1.0f}};
+  const std::vector<scene::LayerOptions> world{{globe::testing::blueMarbleLayer(), 1.0f}};
+  const std::vector<scene::LayerOptions> both{world[0], mask[0]};
+  // The Wash from 60 km: the mask's full-resolution box over the GTOPO30 crop and the grid.
+  const Rendered alone = renderNadir(pyramid, mask, 0.3, 52.9, 60000, 65);
+  const Rendered under = renderNadir(pyramid, both, 0.3, 52.9, 60000, 65);
+  const Rendered plain = renderNadir(pyramid, world, 0.3, 52.9, 60000, 65);
+  EXPECT_GT(alone.tilesMasked, 0u);
+  EXPECT_EQ(under.tilesMasked, 0u);
+  EXPECT_EQ(under.tilesDrawn, plain.tilesDrawn) << "refined for a mask that cannot show";
+  EXPECT_EQ(under.image.pixels, plain.image.pixels);
+  // At half opacity the world layer no longer hides the terrain's colours: the mask is back.
+  const std::vector<scene::LayerOptions> halfWorld{{globe::testing::blueMarbleLayer(), 0.5f},
+                                                   mask[0]};
+  EXPECT_GT(renderNadir(pyramid, halfWorld, 0.3, 52.9, 60000, 65).tilesMasked, 0u);
 }
 
 // While a tile's own imagery is not loaded (here: never, imagery loads stop at level 3), every
