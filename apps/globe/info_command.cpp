@@ -132,10 +132,13 @@ std::string formatLayerInfoText(const formats::LayerManifest& m, const std::stri
       line, sizeof line,
       "layer       %s\n"
       "scheme      geographic lat/long quadtree, level 0 = 2x1 tiles of 180 deg\n"
-      "tiles       %ux%u pixels, JPEG (opaque) or PNG (with alpha), %llu in all\n"
+      "tiles       %ux%u pixels, %s, %llu in all\n"
       "levels      0..%u\n"
       "finest      %s\n",
       path.c_str(), m.tileSizePixels, m.tileSizePixels,
+      m.kind == formats::LayerKind::WaterMask
+          ? "a water mask: grey+alpha PNG (water fraction; alpha 0 = undecided)"
+          : "JPEG (opaque) or PNG (with alpha)",
       static_cast<unsigned long long>(m.tileCount()), m.maxLevel(),
       boundsText(m.levels.empty() ? formats::BoundsDegrees{} : m.levels.back().bounds).c_str());
   out += line;
