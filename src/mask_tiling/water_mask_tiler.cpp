@@ -4,8 +4,10 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "formats/image_pack.hpp"
@@ -121,19 +123,38 @@ class Maker {
     if (active.empty()) return made;
 
     // Grey (water fraction) and alpha (a layer decides) per sample, the finest layer whose
-    // extent holds the sample deciding.
+    // extent holds the sample deciding; near a side of its extent where a coarser layer goes on,
+    // blended into that one's (extentBlend), so the coast moves from one shoreline to the other
+    // instead of jumping at a straight line.
     std::vector<uint8_t> pixels(size_t{kTileSize} * kTileSize * 2);
     for (int r = 0; r < kTileSize; ++r) {
       const double latitude = f.north - r * step;
       for (int c = 0; c < kTileSize; ++c) {
         const double longitude = f.west + c * step;
         const size_t sample = static_cast<size_t>(r) * kTileSize + static_cast<size_t>(c);
+        auto water = [&](size_t l) {
+          const int land = uniformCount[l] >= 0 ? uniformCount[l] : counts[l][sample];
+          return static_cast<double>(kPoints - land) / kPoints;
+        };
+        std::optional<size_t> finest;
         for (size_t l : active) {
           if (!layers_[l].polygons.extent.contains(longitude, latitude)) continue;
-          const int land = uniformCount[l] >= 0 ? uniformCount[l] : counts[l][sample];
-          pixels[2 * sample] = static_cast<uint8_t>((kPoints - land) * 255 / kPoints);
-          pixels[2 * sample + 1] = 255;
+          if (!finest) {
+            finest = l;
+            continue;
+          }
+          // The next layer under the finest: blend towards it near the finest one's side.
+          const double t = extentBlend(*finest, l, longitude, latitude);
+          if (t < 1.0) {
+            const double w = t * water(*finest) + (1.0 - t) * water(l);
+            pixels[2 * sample] = static_cast<uint8_t>(std::lround(w * 255));
+            pixels[2 * sample + 1] = 255;
+          }
           break;
+        }
+        if (finest && pixels[2 * sample + 1] == 0) {
+          pixels[2 * sample] = static_cast<uint8_t>(std::lround(water(*finest) * 255));
+          pixels[2 * sample + 1] = 255;
         }
       }
     }
@@ -163,6 +184,26 @@ class Maker {
   }
 
  private:
+  // How much layer `fine` decides at a point of its extent where layer `coarse` goes on too:
+  // smoothstep from 0 at a side of its extent (not ±180° or a pole: nothing lies beyond those)
+  // to 1 a blend width in: the coarse layer's own detail (its median edge), at least 16 of the
+  // fine layer's finest texels, at most an eighth of the extent's size.
+  double extentBlend(size_t fine, size_t coarse, double longitude, double latitude) const {
+    const RectangleDegrees& e = layers_[fine].polygons.extent;
+    double distance = std::numeric_limits<double>::max();
+    if (e.west > -180.0 + kEdgeDegrees) distance = std::min(distance, longitude - e.west);
+    if (e.east < 180.0 - kEdgeDegrees) distance = std::min(distance, e.east - longitude);
+    if (e.south > -90.0 + kEdgeDegrees) distance = std::min(distance, latitude - e.south);
+    if (e.north < 90.0 - kEdgeDegrees) distance = std::min(distance, e.north - latitude);
+    const double width = std::min(std::max(16.0 * texelDegrees(layers_[fine].finestLevel),
+                                           layers_[coarse].polygons.medianEdgeDegrees),
+                                  0.125 * std::min(e.east - e.west, e.north - e.south));
+    if (!(width > 0) || distance >= width) return 1.0;
+    const double t = std::clamp(distance / width, 0.0, 1.0);
+    return t * t * (3.0 - 2.0 * t);
+  }
+
+  static constexpr double kEdgeDegrees = 1e-9;
   const std::vector<Layer>& layers_;
 };
 

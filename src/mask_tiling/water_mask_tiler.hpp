@@ -8,8 +8,9 @@
 // The tree is built from the top: each tile's rings are its parent's clipped to it, and it is
 // split only where a shoreline (or where one layer's extent gives way to another) runs through
 // it, down to the finest level of the layers there. Where several layers cover a sample, the one
-// with the finest shoreline decides; outside every layer's extent samples are transparent (alpha
-// 0: the terrain decides).
+// with the finest shoreline decides, blended into the next coarser one near the sides of its
+// extent (no straight cut where a regional file ends); outside every layer's extent samples are
+// transparent (alpha 0: the terrain decides).
 #pragma once
 
 #include <cstdint>

@@ -197,6 +197,26 @@ TEST(WaterMaskTiler, TheFinestShorelineDecidesWhereLayersOverlap) {
   EXPECT_LT(mask.manifest.sources[1].finestLevel, mask.manifest.sources[0].finestLevel);
 }
 
+TEST(WaterMaskTiler, NearAFineLayersSideTheCoastMovesToTheCoarseOnesInsteadOfJumping) {
+  const fs::path dir = freshTempDir("water-mask-blend");
+  // Coarse: land from 0 to 40. Fine (many vertices): a rim of land from 10 to 20 around water.
+  // Inside the fine extent near its west side, the coarse layer's land blends into the fine
+  // layer's water over an eighth of the extent (1.25 degrees, capped there).
+  const fs::path coarse = writeFile(dir, "coarse.geojson", geoJson({{square(0, 0, 40, 40)}}));
+  const fs::path fine =
+      writeFile(dir, "fine.geojson",
+                geoJson({{square(10, 10, 20, 20, 400), square(10.3, 10.3, 19.7, 19.7, 400)}}));
+  auto report = tile({coarse, fine}, dir / "mask", 6);
+  ASSERT_TRUE(report) << report.error();
+  const MaskLayer mask = readMask(dir / "mask");
+  auto waterAt = [&](double lon) { return mask.sample(mask.deepestAt(lon, 15), lon, 15).first; };
+  EXPECT_LT(waterAt(10.4), 128) << "near the side, mostly the coarse layer's land";
+  EXPECT_LT(waterAt(10.4), waterAt(10.8));
+  EXPECT_LT(waterAt(10.8), waterAt(11.1));
+  EXPECT_EQ(waterAt(15.0), 255) << "farther in, the fine layer alone";
+  EXPECT_EQ(waterAt(5.0), 0) << "outside the fine extent, the coarse layer alone";
+}
+
 TEST(WaterMaskTiler, BadInputsAreRefusedNamingThem) {
   const fs::path dir = freshTempDir("water-mask-bad");
   const fs::path points =
