@@ -79,15 +79,7 @@ Result<void> prepareOutput(const fs::path& dir, const std::string& fingerprint) 
   std::error_code error;
   fs::create_directories(dir, error);
   if (error) return makeError(dir.string() + ": cannot create: " + error.message());
-  // Temporaries left by a killed run are never complete files: remove them.
-  for (auto it = fs::recursive_directory_iterator(dir, error);
-       !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
-    std::error_code typeError;
-    if (it->is_regular_file(typeError) &&
-        it->path().filename().string().find(".tmp-") != std::string::npos) {
-      fs::remove(it->path(), typeError);
-    }
-  }
+  transport::removeAtomicTemporaries(dir);  // a killed run's half-written files
   if (fs::exists(dir / formats::kManifestFileName, error)) {
     return makeError(dir.string() + ": holds a terrain pyramid; choose another output directory");
   }

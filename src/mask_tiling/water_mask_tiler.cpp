@@ -222,15 +222,7 @@ Result<void> prepareOutput(const fs::path& dir) {
                        "output directory");
     }
   }
-  // Temporaries left by a killed run are never complete files.
-  for (auto it = fs::recursive_directory_iterator(dir, error);
-       !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
-    std::error_code typeError;
-    if (it->is_regular_file(typeError) &&
-        it->path().filename().string().find(".tmp-") != std::string::npos) {
-      fs::remove(it->path(), typeError);
-    }
-  }
+  transport::removeAtomicTemporaries(dir);  // a killed run's half-written files
   return {};
 }
 

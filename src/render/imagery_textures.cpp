@@ -78,20 +78,36 @@ Result<void> ImageryTextures::upload(uint32_t layer, const geo::TileId& tile,
   std::array<uint16_t, 16> opaqueCells;
   opaqueCells.fill(0xffff);
   // What each cell says as a water mask (grey in red): every texel land, water or undecided.
-  std::array<uint16_t, 16> landCells, waterCells, undecidedCells;
-  landCells.fill(0xffff);
-  waterCells.fill(0xffff);
-  undecidedCells.fill(0xffff);
-  for (size_t p = 0; p + 3 < rgba.size(); p += 4) {
-    const size_t texel = p / 4;
-    const auto row =
-        (texel / static_cast<size_t>(widthPixels)) * 16 / static_cast<size_t>(heightPixels);
-    const auto column =
-        (texel % static_cast<size_t>(widthPixels)) * 16 / static_cast<size_t>(widthPixels);
-    const auto clear = static_cast<uint16_t>(~(1u << column));
-    if (rgba[p + 3] != 255 || rgba[p] != 0) landCells[row] &= clear;
-    if (rgba[p + 3] != 255 || rgba[p] != 255) waterCells[row] &= clear;
-    if (rgba[p + 3] != 0) undecidedCells[row] &= clear;
+  // A cell whose first texel is none of those is none: colour imagery is ruled out in 256 reads.
+  std::array<uint16_t, 16> landCells{}, waterCells{}, undecidedCells{};
+  const auto width = static_cast<size_t>(widthPixels), height = static_cast<size_t>(heightPixels);
+  auto says = [&](size_t texel, int& land, int& water, int& undecided) {
+    const uint8_t grey = rgba[texel * 4], alpha = rgba[texel * 4 + 3];
+    land = alpha == 255 && grey == 0, water = alpha == 255 && grey == 255, undecided = alpha == 0;
+  };
+  bool anyUniform = false;
+  for (size_t row = 0; row < 16 && !anyUniform; ++row) {
+    for (size_t column = 0; column < 16 && !anyUniform; ++column) {
+      int land = 0, water = 0, undecided = 0;
+      says((row * height / 16) * width + column * width / 16, land, water, undecided);
+      anyUniform = land != 0 || water != 0 || undecided != 0;
+    }
+  }
+  if (anyUniform) {
+    landCells.fill(0xffff);
+    waterCells.fill(0xffff);
+    undecidedCells.fill(0xffff);
+    for (size_t y = 0; y < height; ++y) {
+      const size_t row = y * 16 / height;
+      for (size_t x = 0; x < width; ++x) {
+        int land = 0, water = 0, undecided = 0;
+        says(y * width + x, land, water, undecided);
+        const auto clear = static_cast<uint16_t>(~(1u << (x * 16 / width)));
+        if (land == 0) landCells[row] &= clear;
+        if (water == 0) waterCells[row] &= clear;
+        if (undecided == 0) undecidedCells[row] &= clear;
+      }
+    }
   }
   for (size_t k = 3; k < rgba.size(); k += 4) {
     if (rgba[k] == 255) continue;

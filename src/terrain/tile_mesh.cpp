@@ -291,9 +291,13 @@ std::vector<uint32_t> buildGridIndices(uint32_t verticesPerSide, bool withSkirts
 
 std::vector<glm::dvec3> gridVertexNormals(const geo::TileId& tile, const HeightBlock& block,
                                           const geo::Ellipsoid& ellipsoid) {
-  const TileMesh mesh = buildTileMesh(tile, block, ellipsoid, 0.0);
   std::vector<glm::dvec3> normals;
   const size_t count = static_cast<size_t>(block.verticesPerSide) * block.verticesPerSide;
+  if (block.shadingNormals.size() == count) {  // a block made from its parent's: its own
+    normals.assign(block.shadingNormals.begin(), block.shadingNormals.end());
+    return normals;
+  }
+  const TileMesh mesh = buildTileMesh(tile, block, ellipsoid, 0.0);
   if (mesh.vertices.size() < count * kTileVertexFloats) return normals;
   normals.reserve(count);
   for (size_t k = 0; k < count; ++k) {

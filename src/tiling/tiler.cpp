@@ -89,15 +89,7 @@ Result<void> prepareOutput(const TilerOptions& options, const std::string& finge
   std::error_code error;
   fs::create_directories(options.outputDir, error);
   if (error) return makeError(options.outputDir.string() + ": cannot create: " + error.message());
-  // Temporaries left by a killed run are never complete files: remove them.
-  for (auto it = fs::recursive_directory_iterator(options.outputDir, error);
-       !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
-    std::error_code typeError;
-    if (it->is_regular_file(typeError) &&
-        it->path().filename().string().find(".tmp-") != std::string::npos) {
-      fs::remove(it->path(), typeError);
-    }
-  }
+  transport::removeAtomicTemporaries(options.outputDir);  // a killed run's half-written files
   const fs::path planPath = options.outputDir / kPlanFileName;
   if (fs::exists(planPath, error)) {
     auto existing = transport::readWholeFile(planPath, 1 << 24);

@@ -40,6 +40,18 @@ std::atomic<uint64_t> tempCounter{0};
 
 }  // namespace
 
+void removeAtomicTemporaries(const std::filesystem::path& dir) {
+  std::error_code error;
+  for (auto it = std::filesystem::recursive_directory_iterator(dir, error);
+       !error && it != std::filesystem::recursive_directory_iterator(); it.increment(error)) {
+    std::error_code typeError;
+    if (it->is_regular_file(typeError) &&
+        it->path().filename().string().find(".tmp-") != std::string::npos) {
+      std::filesystem::remove(it->path(), typeError);
+    }
+  }
+}
+
 Result<void> writeFileAtomically(const std::filesystem::path& path,
                                  std::span<const std::byte> bytes) {
   const std::filesystem::path temp =

@@ -18,6 +18,11 @@ Result<void> writeFileAtomically(const std::filesystem::path& path,
                                  std::span<const std::byte> bytes);
 Result<void> writeFileAtomically(const std::filesystem::path& path, std::string_view text);
 
+// Removes, anywhere below `dir`, the temporaries writeFileAtomically leaves when its process is
+// killed mid-write: never complete files. Errors are ignored (what cannot be listed or removed
+// stays, and is never read as a finished file).
+void removeAtomicTemporaries(const std::filesystem::path& dir);
+
 // Reads a regular file whole; refuses files larger than maxBytes before allocating, and anything
 // that is not a regular file (a FIFO without waiting for a writer).
 Result<std::vector<std::byte>> readWholeFile(const std::filesystem::path& path, uint64_t maxBytes);
