@@ -8,7 +8,10 @@ namespace globe::app {
 
 void addPyramidArgument(CLI::App& command, std::string& pyramid) {
   command
-      .add_option("PYRAMID", pyramid, "pyramid made by globe-tiler: a directory or its http(s) URL")
+      .add_option("PYRAMID", pyramid,
+                  "pyramid made by globe-tiler (a directory or its http(s) URL), or a terrain "
+                  "service: quantized-mesh:URL (Cesium terrain, layer.json or its folder), "
+                  "terrarium:TEMPLATE or terrain-rgb:TEMPLATE ({z}/{x}/{y} PNG tiles)")
       ->required();
 }
 

@@ -13,9 +13,9 @@ Result<double> FinestSurface::heightMeters(double longitudeRadians, double latit
     const auto tile = geo::GeographicTilingScheme::positionToTile(lon, latitudeRadians, level);
     if (!tile) return makeError("invalid position");
     if (tile_ != *tile) {
-      auto entry = store_.entry(*tile);
-      if (!entry) return Error{entry.error()};
-      if (!*entry) continue;
+      auto summary = store_.summary(*tile);
+      if (!summary) return Error{summary.error()};
+      if (!*summary) continue;
       auto block = store_.loadBlock(*tile);
       if (!block) return Error{block.error()};
       block_ = std::move(*block);

@@ -7,14 +7,14 @@
 #include "core/result.hpp"
 #include "geo/ellipsoid.hpp"
 #include "geo/tile_id.hpp"
-#include "streaming/tile_store.hpp"
+#include "streaming/terrain_source.hpp"
 #include "terrain/height_block.hpp"
 
 namespace globe::app {
 
 class FinestSurface {
  public:
-  FinestSurface(streaming::TileStore& store, const geo::Ellipsoid& ellipsoid)
+  FinestSurface(streaming::TerrainSource& store, const geo::Ellipsoid& ellipsoid)
       : store_(store), ellipsoid_(ellipsoid) {}
 
   // Height above the ellipsoid of the finest tile's mesh along the normal (collision's exact
@@ -22,7 +22,7 @@ class FinestSurface {
   Result<double> heightMeters(double longitudeRadians, double latitudeRadians);
 
  private:
-  streaming::TileStore& store_;
+  streaming::TerrainSource& store_;
   geo::Ellipsoid ellipsoid_;
   std::optional<geo::TileId> tile_;  // the last block read, kept for the next frames
   terrain::HeightBlock block_;

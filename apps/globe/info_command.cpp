@@ -8,6 +8,7 @@
 
 #include "formats/source_conditioning_json.hpp"
 #include "formats/vertical_units_json.hpp"
+#include "services/terrain_services.hpp"
 
 namespace globe::app {
 namespace {
@@ -162,7 +163,39 @@ std::string formatLayerInfoText(const formats::LayerManifest& m, const std::stri
   return out;
 }
 
+// A terrain service: what its layer.json or template says, as the viewer will read it.
+static std::string formatServiceInfo(const streaming::TerrainSource& service, bool json) {
+  const formats::PyramidManifest& m = service.manifest();
+  const formats::SourceInfo& s = m.sources.front();
+  if (json) {
+    nlohmann::json j{{"service", service.location()},
+                     {"format", s.format},
+                     {"verticesPerSide", m.verticesPerSide},
+                     {"maxLevel", m.maxLevel()},
+                     {"stepDegrees", s.stepDegrees},
+                     {"bounds", {s.bounds.west, s.bounds.south, s.bounds.east, s.bounds.north}},
+                     {"attribution", service.attribution()}};
+    return j.dump(2) + "\n";
+  }
+  char line[2048];
+  std::snprintf(line, sizeof line,
+                "service     %s\nformat      %s\nscheme      geographic lat/long quadtree, "
+                "level 0 = 2x1 tiles of 180 deg\nblocks      %ux%u vertices sampled from each "
+                "tile as it loads\nlevels      0..%u\nfinest      %.6g deg (%.1f arcsec), %s\n"
+                "attribution %s\n",
+                service.location().c_str(), s.format.c_str(), m.verticesPerSide, m.verticesPerSide,
+                m.maxLevel(), s.stepDegrees, s.stepDegrees * 3600.0, boundsText(s.bounds).c_str(),
+                service.attribution().empty() ? "(none given)" : service.attribution().c_str());
+  return line;
+}
+
 Result<std::string> runInfo(const InfoOptions& options) {
+  if (services::isTerrainService(options.location)) {
+    auto service =
+        services::openTerrainSource(options.location, terrain::SeaSurface::Water, options.network);
+    if (!service) return Error{service.error()};
+    return formatServiceInfo(**service, options.json);
+  }
   auto source = transport::openByteSource(options.location, options.network.get());
   if (!source) return Error{source.error()};
   auto asText = [](const std::vector<std::byte>& bytes) {

@@ -143,6 +143,7 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
   if (!surface) return Error{surface.error()};
   render::TerrainRendererOptions rendererOptions;
   rendererOptions.warn = options.scene.warnings;  // no sky, layers this GL cannot compile
+  rendererOptions.verticesPerSide = scene.store().manifest().verticesPerSide;
   auto renderer = render::TerrainRenderer::create(rendererOptions);
   if (!renderer) return Error{renderer.error()};
   RendererGpu gpu(**renderer, options.scene);

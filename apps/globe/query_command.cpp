@@ -7,7 +7,7 @@
 #include "camera/path_checks.hpp"
 #include "geo/cartographic.hpp"
 #include "geo/tiling_scheme.hpp"
-#include "streaming/tile_store.hpp"
+#include "services/terrain_services.hpp"
 
 namespace globe::app {
 namespace {
@@ -41,7 +41,7 @@ Result<std::pair<double, double>> parseLine(const std::string& line) {
 
 Result<QueryReport> runQuery(const QueryOptions& options, std::istream& in, std::FILE* out,
                              std::FILE* errors) {
-  auto store = streaming::TileStore::open(options.pyramid, options.sea, options.network);
+  auto store = services::openTerrainSource(options.pyramid, options.sea, options.network);
   if (!store) return Error{store.error()};
   const uint32_t maxLevel = (*store)->manifest().maxLevel();
   if (options.level && *options.level > maxLevel) {
@@ -61,8 +61,8 @@ Result<QueryReport> runQuery(const QueryOptions& options, std::istream& in, std:
     for (uint32_t level = options.level.value_or(maxLevel) + 1; position && level-- > 0;) {
       const auto candidate =
           geo::GeographicTilingScheme::positionToTile(position->first, position->second, level);
-      auto entry = candidate ? (*store)->entry(*candidate)
-                             : Result<std::optional<formats::PackEntry>>(std::nullopt);
+      auto entry = candidate ? (*store)->summary(*candidate)
+                             : Result<std::optional<terrain::TileSummary>>(std::nullopt);
       if (!entry) return Error{entry.error()};
       if (*entry) {
         tile = candidate;

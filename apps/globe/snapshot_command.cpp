@@ -28,6 +28,7 @@ Result<SnapshotReport> runSnapshot(const SnapshotOptions& options) {
   if (!context) return Error{context.error()};
   render::TerrainRendererOptions rendererOptions;
   rendererOptions.warn = options.scene.warnings;  // no sky, layers this GL cannot compile
+  rendererOptions.verticesPerSide = (*scene)->store().manifest().verticesPerSide;
   auto renderer = render::TerrainRenderer::create(rendererOptions);
   if (!renderer) return Error{renderer.error()};
   RendererGpu gpu(**renderer, options.scene);

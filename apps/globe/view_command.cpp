@@ -146,6 +146,7 @@ Result<ViewReport> runView(const ViewOptions& options) {
   // Declared after the window: destroyed before its context goes.
   render::TerrainRendererOptions rendererOptions;
   rendererOptions.warn = options.scene.warnings;  // no sky, layers this GL cannot compile
+  rendererOptions.verticesPerSide = (*scene)->store().manifest().verticesPerSide;
   auto renderer = render::TerrainRenderer::create(rendererOptions);
   if (!renderer) return Error{renderer.error()};
   RendererGpu gpu(**renderer, options.scene);

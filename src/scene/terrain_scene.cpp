@@ -10,6 +10,7 @@
 #include "geo/frustum.hpp"
 #include "geo/tiling_scheme.hpp"
 #include "scene/native_resolution.hpp"
+#include "services/terrain_services.hpp"
 #include "terrain/block_grid.hpp"
 #include "terrain/tile_mesh.hpp"
 #include "terrain/upsampled_block.hpp"
@@ -35,7 +36,7 @@ struct Upsampling {
 // summary is their parent's height bounds, with no measured error (the nominal one refines them).
 class SceneCatalog final : public terrain::TileCatalog {
  public:
-  SceneCatalog(streaming::TileStore& store, const streaming::TileLoader& loader,
+  SceneCatalog(streaming::TerrainSource& store, const streaming::TileLoader& loader,
                std::vector<geo::TileId>* notOpen, Upsampling* upsampling)
       : store_(store), loader_(loader), notOpen_(notOpen), upsampling_(upsampling) {}
   std::optional<terrain::TileSummary> find(const geo::TileId& tile) const override {
@@ -76,24 +77,24 @@ class SceneCatalog final : public terrain::TileCatalog {
 
   std::optional<terrain::TileSummary> inPyramid(const geo::TileId& tile, bool& notYetOpen) const {
     if (notOpen_ != nullptr) {
-      formats::PackEntry e;
-      switch (store_.peekEntry(tile, &e)) {
-        case streaming::TileStore::Peek::Present:
-          return terrain::TileSummary{e.subtreeRange, e.geometricErrorMeters};
-        case streaming::TileStore::Peek::Absent:
+      terrain::TileSummary summary;
+      switch (store_.peek(tile, &summary)) {
+        case streaming::TerrainSource::Peek::Present:
+          return summary;
+        case streaming::TerrainSource::Peek::Absent:
           return std::nullopt;
-        case streaming::TileStore::Peek::NotOpen:
+        case streaming::TerrainSource::Peek::NotOpen:
           notOpen_->push_back(tile);
           notYetOpen = true;
           return std::nullopt;
       }
     }
-    auto entry = store_.entry(tile);
-    if (!entry || !*entry) return std::nullopt;  // an unreadable pack draws its parent instead
-    return terrain::TileSummary{(*entry)->subtreeRange, (*entry)->geometricErrorMeters};
+    auto summary = store_.summary(tile);
+    if (!summary || !*summary) return std::nullopt;  // an unreadable pack draws its parent instead
+    return **summary;
   }
 
-  streaming::TileStore& store_;
+  streaming::TerrainSource& store_;
   const streaming::TileLoader& loader_;
   std::vector<geo::TileId>* notOpen_;
   Upsampling* upsampling_;
@@ -125,7 +126,8 @@ glm::dvec3 sunDirectionFor(const geo::Ellipsoid& ellipsoid, const camera::Camera
 
 }  // namespace
 
-TerrainScene::TerrainScene(std::unique_ptr<streaming::TileStore> store, const SceneOptions& options)
+TerrainScene::TerrainScene(std::unique_ptr<streaming::TerrainSource> store,
+                           const SceneOptions& options)
     : options_(options),
       ellipsoid_(geo::ellipsoidFor(options.globeModel)),
       store_(std::move(store)),
@@ -143,7 +145,7 @@ TerrainScene::~TerrainScene() {
 
 Result<std::unique_ptr<TerrainScene>> TerrainScene::open(const std::filesystem::path& pyramidDir,
                                                          const SceneOptions& options) {
-  auto store = streaming::TileStore::open(pyramidDir, options.sea, options.network);
+  auto store = services::openTerrainSource(pyramidDir.string(), options.sea, options.network);
   if (!store) return Error{store.error()};
   SceneOptions sceneOptions = options;
   const bool remote =
@@ -237,11 +239,11 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   if (store_->remote()) {
     // Every level's pack under the camera at once, rather than one level per round trip as the
     // refinement reaches it: the packs a view needs are mostly these (a pack spans 64 tiles).
-    formats::PackEntry ignored;
+    terrain::TileSummary ignored;
     for (uint32_t level = 0; level <= store_->manifest().maxLevel(); ++level) {
       const auto tile = geo::GeographicTilingScheme::positionToTile(
           pose.position.longitudeRadians, pose.position.latitudeRadians, level);
-      if (tile && store_->peekEntry(*tile, &ignored) == streaming::TileStore::Peek::NotOpen) {
+      if (tile && store_->peek(*tile, &ignored) == streaming::TerrainSource::Peek::NotOpen) {
         notOpen.push_back(*tile);
       }
     }
@@ -286,12 +288,15 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   for (const geo::TileId& tile : selection.tiles) {
     const bool onGpu = gpu.hasTile(tile);
     auto block = loader_->get(tile);
-    if (block && uploadIfNeeded(tile, *block, gpu)) {
-      tiles_.push_back(tile);
-      arrayTiles.push_back(terrain::makeArrayTile(tile, *block));
-      blocks_.push_back(std::move(block));
-      info.uploaded += onGpu ? 0 : 1;
+    if (!block) continue;
+    if (auto uploaded = uploadIfNeeded(tile, *block, gpu); !uploaded) {
+      core::warn(options_.warnings, geo::tileName(tile) + ": " + uploaded.error());
+      continue;
     }
+    tiles_.push_back(tile);
+    arrayTiles.push_back(terrain::makeArrayTile(tile, *block));
+    blocks_.push_back(std::move(block));
+    info.uploaded += onGpu ? 0 : 1;
   }
   // The ground under the camera must be known to collision even when it is not drawn (a camera
   // looking at the horizon does not see its own nadir): where no drawn tile covers the nadir, the
@@ -313,8 +318,8 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
         array_.assign(std::move(arrayTiles));  // rebuilt only in this rare case
         break;
       }
-      auto entry = store_->entry(*tile);
-      if (entry && *entry && loader_->state(*tile) != streaming::TileState::Failed) {
+      auto summary = store_->summary(*tile);
+      if (summary && *summary && loader_->state(*tile) != streaming::TileState::Failed) {
         requests.push_back({*tile, 1.0});  // after what the view needs
       }
     }
@@ -332,7 +337,7 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
     }
   }
   // Each missing or damaged pack once (the store remembers it), not once per tile or frame.
-  for (const std::string& error : store_->takeNewPackErrors()) {
+  for (const std::string& error : store_->takeNewSourceErrors()) {
     core::warn(options_.warnings, error + "; drawing coarser tiles there");
   }
   info.selection = selection.counters;
@@ -346,10 +351,9 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
 
 void TerrainScene::openPacksInBackground(const std::vector<geo::TileId>& tiles) {
   for (const geo::TileId& tile : tiles) {
-    packOpens_.post(
-        runner_, formats::packOf(tile, store_->manifest().packTilesPerSide), [this, tile] {
-          (void)store_->entry(tile);  // opens the pack: an error is the store's to report
-        });
+    packOpens_.post(runner_, store_->summaryGroupOf(tile), [this, tile] {
+      (void)store_->summary(tile);  // opens the pack: an error is the store's to report
+    });
   }
 }
 
@@ -426,9 +430,9 @@ Result<double> TerrainScene::terrainHeightMeters(double longitudeRadians, double
     const auto tile =
         geo::GeographicTilingScheme::positionToTile(longitudeRadians, latitudeRadians, level);
     if (!tile) return makeError("invalid position");
-    auto entry = store_->entry(*tile);
-    if (!entry) return Error{entry.error()};
-    if (!*entry) continue;
+    auto summary = store_->summary(*tile);
+    if (!summary) return Error{summary.error()};
+    if (!*summary) continue;
     auto block = store_->loadBlock(*tile);
     if (!block) return Error{block.error()};
     return blockHeightMeters(*block, *tile, longitudeRadians, latitudeRadians);

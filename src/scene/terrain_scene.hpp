@@ -21,8 +21,8 @@
 #include "scene/tile_gpu.hpp"
 #include "streaming/background_pack_opens.hpp"
 #include "streaming/block_cache.hpp"
+#include "streaming/terrain_source.hpp"
 #include "streaming/tile_loader.hpp"
-#include "streaming/tile_store.hpp"
 #include "terrain/height_block.hpp"
 #include "terrain/relief_shading.hpp"
 #include "terrain/render_view.hpp"
@@ -89,7 +89,7 @@ class TerrainScene {
   ~TerrainScene();
 
   const geo::Ellipsoid& ellipsoid() const { return ellipsoid_; }
-  streaming::TileStore& store() { return *store_; }
+  streaming::TerrainSource& store() { return *store_; }
   const streaming::TileLoader& loader() const { return *loader_; }
   const streaming::BlockCache& cache() const { return cache_; }
   // The imagery layers, or null without --layer.
@@ -121,7 +121,7 @@ class TerrainScene {
                                         std::chrono::seconds timeout);
 
  private:
-  TerrainScene(std::unique_ptr<streaming::TileStore> store, const SceneOptions& options);
+  TerrainScene(std::unique_ptr<streaming::TerrainSource> store, const SceneOptions& options);
   void updateImagery(const glm::dvec3& cameraEcefMeters, TileGpu& gpu, FrameInfo& info);
   void retryFailedLoadsWhenDue();
   // Reads these tiles' pack indexes on the loader's threads (a remote pyramid).
@@ -135,7 +135,7 @@ class TerrainScene {
 
   SceneOptions options_;
   geo::Ellipsoid ellipsoid_;
-  std::unique_ptr<streaming::TileStore> store_;
+  std::unique_ptr<streaming::TerrainSource> store_;
   streaming::BlockCache cache_;
   core::ThreadPoolRunner runner_;
   std::unique_ptr<streaming::TileLoader> loader_;

@@ -115,6 +115,21 @@ TileStore::Peek TileStore::peekEntry(const geo::TileId& tile, formats::PackEntry
   return Peek::Present;
 }
 
+TileStore::Peek TileStore::peek(const geo::TileId& tile, terrain::TileSummary* summary) {
+  formats::PackEntry e;
+  const Peek peeked = peekEntry(tile, &e);
+  if (peeked == Peek::Present) *summary = {e.subtreeRange, e.geometricErrorMeters};
+  return peeked;
+}
+
+Result<std::optional<terrain::TileSummary>> TileStore::summary(const geo::TileId& tile) {
+  auto e = entry(tile);
+  if (!e) return Error{e.error()};
+  if (!*e) return std::optional<terrain::TileSummary>();
+  return std::optional<terrain::TileSummary>(
+      terrain::TileSummary{(*e)->subtreeRange, (*e)->geometricErrorMeters});
+}
+
 Result<terrain::HeightBlock> TileStore::loadBlock(const geo::TileId& tile) {
   auto opened = pack(formats::packOf(tile, manifest_.packTilesPerSide));
   if (!opened) return Error{opened.error()};

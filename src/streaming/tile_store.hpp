@@ -16,6 +16,7 @@
 #include "formats/pyramid_manifest.hpp"
 #include "geo/tile_id.hpp"
 #include "streaming/open_packs.hpp"
+#include "streaming/terrain_source.hpp"
 #include "streaming/tile_source.hpp"
 #include "terrain/height_block.hpp"
 #include "transport/byte_source.hpp"
@@ -24,7 +25,7 @@
 namespace globe::streaming {
 
 // The height-block source of the loader (TileSource<HeightBlock>).
-class TileStore final : public TileSource<terrain::HeightBlock> {
+class TileStore final : public TerrainSource {
  public:
   // `sea`: the surface every block loaded from this store reads as the ground over water
   // (HeightBlock::sea): the one place a viewer's --sea-floor reaches rendering, collision and
@@ -43,23 +44,25 @@ class TileStore final : public TileSource<terrain::HeightBlock> {
   TileStore(const TileStore&) = delete;
   TileStore& operator=(const TileStore&) = delete;
 
-  const formats::PyramidManifest& manifest() const { return manifest_; }
+  const formats::PyramidManifest& manifest() const override { return manifest_; }
   // The pyramid's directory or URL.
-  const std::string& location() const { return source_->location(); }
-  bool remote() const { return source_->remote(); }
-  terrain::SeaSurface sea() const { return sea_; }
+  const std::string& location() const override { return source_->location(); }
+  bool remote() const override { return source_->remote(); }
+  terrain::SeaSurface sea() const override { return sea_; }
 
   // The tile's index entry, or nullopt when the pyramid has no such tile. Thread-safe.
   Result<std::optional<formats::PackEntry>> entry(const geo::TileId& tile);
   // For a render thread that must not wait on a server: the tile's entry from its pack's index
   // without any I/O. Absent also for a pack that failed (its parent is drawn); NotOpen when the
   // pack was not read yet: entry() (on a worker) reads it.
-  enum class Peek { Absent, Present, NotOpen };
   Peek peekEntry(const geo::TileId& tile, formats::PackEntry* entry);
+  // TerrainSource: the entry's height bounds and measured error.
+  Peek peek(const geo::TileId& tile, terrain::TileSummary* summary) override;
+  Result<std::optional<terrain::TileSummary>> summary(const geo::TileId& tile) override;
 
   // Loads a present tile's block with one read (its pack's index is parsed once), its `sea` set
   // to the store's. Thread-safe.
-  Result<terrain::HeightBlock> loadBlock(const geo::TileId& tile);
+  Result<terrain::HeightBlock> loadBlock(const geo::TileId& tile) override;
 
   // TileSource: the entry first, so that a tile beyond the pyramid's coverage (nullopt) is told
   // apart from a pack that is missing or damaged (an error); then loadBlock.

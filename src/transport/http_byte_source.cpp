@@ -96,6 +96,7 @@ class HttpByteSource final : public ByteSource,
     HttpRequest q;
     q.url = url;
     q.maxBodyBytes = maxBytes;
+    q.accept = options_.accept;
     if (cached) q.ifNoneMatch = cached->validator;
     HttpResponse r = fetch(q);
     if (r.status == 304 && cached) {

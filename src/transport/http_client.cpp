@@ -154,6 +154,9 @@ struct HttpClient::Impl {
     if (!q.ifNoneMatch.empty()) {
       t.headers = curl_slist_append(t.headers, ("If-None-Match: " + q.ifNoneMatch).c_str());
     }
+    if (!q.accept.empty()) {
+      t.headers = curl_slist_append(t.headers, ("Accept: " + q.accept).c_str());
+    }
     if (t.headers != nullptr) curl_easy_setopt(e, CURLOPT_HTTPHEADER, t.headers);
     curl_multi_add_handle(multi, e);
   }

@@ -27,6 +27,7 @@ struct HttpRequest {
   uint64_t rangeOffset = 0;
   uint64_t rangeBytes = 0;
   std::string ifNoneMatch;  // an ETag: 304 when the server's copy still has it
+  std::string accept;       // the Accept header, when not empty
   // A longer body is cut off (HttpResponse::bodyTooLong): a server cannot make the viewer
   // allocate more than its caller expects.
   size_t maxBodyBytes = 0;

@@ -13,6 +13,11 @@ Network::Network(NetworkSettings settings, core::WarningSink warnings)
 Network::~Network() = default;
 
 Result<std::shared_ptr<ByteSource>> Network::open(const std::string& location) {
+  return open(location, settings_.remote.accept);
+}
+
+Result<std::shared_ptr<ByteSource>> Network::open(const std::string& location,
+                                                  const std::string& accept) {
   if (!isHttpUrl(location)) return localByteSource(location);
   std::optional<std::string> warning;  // given to the sink once the lock is released
   Result<std::shared_ptr<ByteSource>> opened = [&]() -> Result<std::shared_ptr<ByteSource>> {
@@ -37,8 +42,9 @@ Result<std::shared_ptr<ByteSource>> Network::open(const std::string& location) {
     if (!settings_.remote.offline && !client_) {
       client_ = std::make_shared<HttpClient>(settings_.http);
     }
-    return httpByteSource(location, settings_.remote.offline ? nullptr : client_, cache_,
-                          settings_.remote);
+    RemoteOptions remote = settings_.remote;
+    remote.accept = accept;
+    return httpByteSource(location, remote.offline ? nullptr : client_, cache_, remote);
   }();
   if (warning) core::warn(warnings_, *warning);
   return opened;

@@ -26,6 +26,8 @@ struct RemoteOptions {
   bool offline = false;          // the disk cache alone; a miss is an error
   int attempts = 3;              // per request, on timeouts, dropped connections and 5xx
   long firstRetryDelayMs = 200;  // doubled after each failed attempt
+  // Sent as Accept with every GET (a terrain service picks the tile's extensions by it).
+  std::string accept{};
 };
 
 struct NetworkSettings {
@@ -54,6 +56,8 @@ class Network {
   // on a static server. Errors: --offline without a disk cache (naming the URL), or the disk
   // cache's own error when offline.
   Result<std::shared_ptr<ByteSource>> open(const std::string& location);
+  // The same, every GET sent with this Accept header.
+  Result<std::shared_ptr<ByteSource>> open(const std::string& location, const std::string& accept);
 
  private:
   const NetworkSettings settings_;

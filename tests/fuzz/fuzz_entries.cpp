@@ -11,13 +11,18 @@
 #include "camera/camera_path_file.hpp"
 #include "core/big_endian.hpp"
 #include "core/crc32.hpp"
+#include "formats/gzip_bytes.hpp"
 #include "formats/image_io.hpp"
 #include "formats/image_pack.hpp"
 #include "formats/layer_manifest.hpp"
 #include "formats/pack_format.hpp"
 #include "formats/pyramid_manifest.hpp"
+#include "formats/quantized_mesh.hpp"
+#include "formats/terrain_layer_json.hpp"
 #include "formats/tile_edges.hpp"
 #include "rasters/gtopo30_header.hpp"
+#include "services/tin_sampling.hpp"
+#include "services/xyz_elevation_source.hpp"
 #include "transport/http_client.hpp"
 
 namespace globe::fuzz {
@@ -109,6 +114,38 @@ void imageTile(const uint8_t* data, size_t size) {
   (void)formats::restoreTileEdges(bytes, tile);
 }
 
+void terrainTile(const uint8_t* data, size_t size) {
+  const std::span<const std::byte> bytes(reinterpret_cast<const std::byte*>(data), size);
+  auto inflated = formats::gunzipIfNeeded(bytes, "fuzz.terrain", size_t{1} << 24);
+  if (!inflated) return;
+  if (auto mesh = formats::decodeQuantizedMesh(*inflated, "fuzz.terrain")) {
+    const services::ServiceSamples samples = services::sampleTin(*mesh);
+    (void)samples.heightMeters.size();
+  }
+  if (auto heightmap = formats::decodeHeightmapTile(*inflated, "fuzz.terrain")) {
+    (void)services::sampleHeightmap(*heightmap);
+  }
+}
+
+void terrainLayerJson(const uint8_t* data, size_t size) {
+  auto layer = formats::parseTerrainLayerJson(
+      std::string_view(reinterpret_cast<const char*>(data), size), "layer.json");
+  if (layer) (void)layer->available.size();
+}
+
+void elevationImage(const uint8_t* data, size_t size) {
+  const std::span<const std::byte> bytes(reinterpret_cast<const std::byte*>(data), size);
+  auto image = formats::decodeImageRgba(bytes, "fuzz.png");
+  if (!image) return;
+  double sum = 0;
+  for (size_t p = 0; p + 3 < image->pixels.size(); p += 4) {
+    sum +=
+        services::decodeElevationPixel(services::ElevationEncoding::Terrarium, &image->pixels[p]) +
+        services::decodeElevationPixel(services::ElevationEncoding::TerrainRgb, &image->pixels[p]);
+  }
+  (void)sum;
+}
+
 Entry entryNamed(std::string_view target) {
   if (target == "gtopo30_header") return gtopo30Header;
   if (target == "pack") return pack;
@@ -117,6 +154,9 @@ Entry entryNamed(std::string_view target) {
   if (target == "path_kml") return pathKml;
   if (target == "remote") return remote;
   if (target == "image_tile") return imageTile;
+  if (target == "terrain_tile") return terrainTile;
+  if (target == "terrain_layer_json") return terrainLayerJson;
+  if (target == "elevation_image") return elevationImage;
   return nullptr;
 }
 

@@ -20,6 +20,14 @@ void remote(const uint8_t* data, size_t size);
 // into a tile of its own size and into a 256×256 one.
 void imageTile(const uint8_t* data, size_t size);
 
+// A terrain service's tile as served: gunzipped when gzip, decoded as quantized-mesh-1.0 and as
+// heightmap-1.0, and a decoded mesh sampled onto a block's grid.
+void terrainTile(const uint8_t* data, size_t size);
+// A terrain service's layer.json.
+void terrainLayerJson(const uint8_t* data, size_t size);
+// A Terrarium / Terrain-RGB elevation tile: decoded and every pixel read as a height.
+void elevationImage(const uint8_t* data, size_t size);
+
 // The entry for a corpus folder name (gtopo30_header, pack, ...), or nullptr.
 using Entry = void (*)(const uint8_t*, size_t);
 Entry entryNamed(std::string_view target);

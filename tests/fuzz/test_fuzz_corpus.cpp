@@ -38,6 +38,9 @@ TEST(FuzzCorpus, PathJson) { EXPECT_GT(replay("path_json"), 0U); }
 TEST(FuzzCorpus, PathKml) { EXPECT_GT(replay("path_kml"), 0U); }
 TEST(FuzzCorpus, Remote) { EXPECT_GT(replay("remote"), 0U); }
 TEST(FuzzCorpus, ImageTile) { EXPECT_GT(replay("image_tile"), 0U); }
+TEST(FuzzCorpus, TerrainTile) { EXPECT_GT(replay("terrain_tile"), 0U); }
+TEST(FuzzCorpus, TerrainLayerJson) { EXPECT_GT(replay("terrain_layer_json"), 0U); }
+TEST(FuzzCorpus, ElevationImage) { EXPECT_GT(replay("elevation_image"), 0U); }
 
 // The hand-made seeds are valid packs of the current format; the version-1 seed (negative samples
 // meant sea then) is refused by name as made by an older globe-tiler.

@@ -122,7 +122,7 @@ TEST(SceneFaults, EachDamagedPackIsReportedOnceAndItsParentsAreDrawn) {
     ::alarm(120);  // a FIFO that blocked an open would hang the frame loop: fail instead
     const SceneRun run = view(pyramid, [&](TerrainScene& scene) {
       if (damage.apply) return;
-      auto entry = scene.store().entry(*nadir);  // the viewer has read the pack's index
+      auto entry = scene.store().summary(*nadir);  // the viewer has read the pack's index
       ASSERT_TRUE(entry && *entry) << (entry ? "absent" : entry.error());
       fs::resize_file(pack, layout.indexEndOffset());  // every block is gone
     });

@@ -1,0 +1,103 @@
+#include "formats/terrain_layer_json.hpp"
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+
+namespace globe::formats {
+namespace {
+
+// Levels beyond this are refused: the quadtree stops at geo::kMaxLevel.
+constexpr uint32_t kMaxServiceLevel = 30;
+
+std::string stringOr(const nlohmann::json& j, const char* key, std::string fallback) {
+  auto it = j.find(key);
+  return it != j.end() && it->is_string() ? it->get<std::string>() : fallback;
+}
+
+}  // namespace
+
+bool TerrainLayerJson::hasExtension(std::string_view name) const {
+  return std::find(extensions.begin(), extensions.end(), name) != extensions.end();
+}
+
+Result<TerrainLayerJson> parseTerrainLayerJson(std::string_view text, const std::string& name) {
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    return makeError(name + ": not JSON (" + e.what() + ")");
+  }
+  if (!j.is_object()) return makeError(name + ": not a layer.json (no JSON object)");
+  TerrainLayerJson layer;
+  try {
+    const std::string format = stringOr(j, "format", "heightmap-1.0");
+    if (format == "quantized-mesh-1.0") {
+      layer.format = TerrainLayerJson::Format::QuantizedMesh;
+    } else if (format == "heightmap-1.0") {
+      layer.format = TerrainLayerJson::Format::Heightmap;
+    } else {
+      return makeError(name + ": format \"" + format +
+                       "\" (quantized-mesh-1.0 or heightmap-1.0 expected)");
+    }
+    const std::string projection = stringOr(j, "projection", "EPSG:4326");
+    if (projection != "EPSG:4326") {
+      return makeError(name + ": projection " + projection +
+                       " (only EPSG:4326, Cesium's geographic tiling, is this viewer's quadtree)");
+    }
+    const std::string scheme = stringOr(j, "scheme", stringOr(j, "schema", "tms"));
+    if (scheme != "tms") return makeError(name + ": scheme \"" + scheme + "\" (tms expected)");
+    layer.version = stringOr(j, "version", "1.0.0");
+    layer.attribution = stringOr(j, "attribution", "");
+    if (auto t = j.find("tiles"); t != j.end() && t->is_array()) {
+      for (const auto& s : *t)
+        if (s.is_string()) layer.tiles.push_back(s.get<std::string>());
+    }
+    if (layer.tiles.empty()) return makeError(name + ": no tile URL template (\"tiles\")");
+    if (auto e = j.find("extensions"); e != j.end() && e->is_array()) {
+      for (const auto& s : *e)
+        if (s.is_string()) layer.extensions.push_back(s.get<std::string>());
+    }
+    if (auto m = j.find("metadataAvailability"); m != j.end() && m->is_number_unsigned()) {
+      layer.metadataAvailability = m->get<uint32_t>();
+    }
+    layer.minZoom = j.value("minzoom", 0u);
+    layer.maxZoom = j.value("maxzoom", 0u);
+    if (auto a = j.find("available"); a != j.end() && a->is_array()) {
+      if (a->size() > kMaxServiceLevel + 1) {
+        return makeError(name + ": \"available\" lists " + std::to_string(a->size()) +
+                         " levels (at most " + std::to_string(kMaxServiceLevel + 1) + ")");
+      }
+      for (const auto& level : *a) {
+        std::vector<TileRange> ranges;
+        const uint32_t z = static_cast<uint32_t>(layer.available.size());
+        const uint64_t columns = uint64_t{2} << z, rows = uint64_t{1} << z;
+        for (const auto& r : level) {
+          TileRange range{r.at("startX").get<uint32_t>(), r.at("startY").get<uint32_t>(),
+                          r.at("endX").get<uint32_t>(), r.at("endY").get<uint32_t>()};
+          if (range.startX > range.endX || range.startY > range.endY || range.endX >= columns ||
+              range.endY >= rows) {
+            return makeError(name + ": level " + std::to_string(z) +
+                             " lists tiles outside the level's " + std::to_string(columns) + "×" +
+                             std::to_string(rows) + " grid");
+          }
+          ranges.push_back(range);
+        }
+        layer.available.push_back(std::move(ranges));
+      }
+      // Trailing empty levels say nothing is there.
+      while (!layer.available.empty() && layer.available.back().empty()) layer.available.pop_back();
+      if (!layer.available.empty()) {
+        layer.maxZoom = static_cast<uint32_t>(layer.available.size() - 1);
+      }
+    }
+    if (layer.maxZoom > kMaxServiceLevel) {
+      return makeError(name + ": maxzoom " + std::to_string(layer.maxZoom) + " (at most " +
+                       std::to_string(kMaxServiceLevel) + ")");
+    }
+  } catch (const nlohmann::json::exception& e) {
+    return makeError(name + ": a malformed layer.json (" + e.what() + ")");
+  }
+  return layer;
+}
+
+}  // namespace globe::formats

@@ -1,0 +1,31 @@
+// Tile URL templates as services publish them: {z} {x} {y}, {-y} for TMS rows (from the south),
+// {s} a subdomain, {version}; and a service argument's own options, given as query keys after
+// the URL (?maxzoom=15) and taken out of it before it is requested.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/result.hpp"
+
+namespace globe::services {
+
+struct TileUrlValues {
+  uint32_t z = 0, x = 0, y = 0;  // y: the row from the north (XYZ)
+  std::string version;
+  std::vector<std::string> subdomains;  // {s}: picked by the tile, so a tile's URL never changes
+};
+
+std::string expandTileUrl(const std::string& pattern, const TileUrlValues& values);
+
+// Removes `keys` from the URL's query and returns them; other query keys (an API key) stay.
+std::map<std::string, std::string> takeQueryOptions(std::string& url,
+                                                    const std::vector<std::string>& keys);
+
+// An option as a non-negative integer no larger than `maximum`; errors name the option.
+Result<uint32_t> optionNumber(const std::map<std::string, std::string>& options,
+                              const std::string& key, uint32_t fallback, uint32_t maximum);
+
+}  // namespace globe::services

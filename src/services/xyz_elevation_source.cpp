@@ -1,0 +1,286 @@
+#include "services/xyz_elevation_source.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <list>
+#include <map>
+#include <mutex>
+#include <numbers>
+
+#include "formats/image_io.hpp"
+#include "geo/tiling_scheme.hpp"
+#include "services/tin_sampling.hpp"
+#include "services/url_reader.hpp"
+#include "services/url_template.hpp"
+
+namespace globe::services {
+namespace {
+
+constexpr size_t kMaxElevationTileBytes = size_t{8} << 20;
+constexpr size_t kDecodedElevationTiles = 64;
+constexpr double kMercatorMaxLatitudeDegrees = 85.05112877980659;
+constexpr uint32_t kMaxZoom = 24;
+// How many zooms finer than a block's own its samples may come from (4^k tiles a block).
+constexpr uint32_t kFinerZoomsBelowMin = 2;
+
+struct MercatorTile {
+  uint32_t z, x, y;
+  auto operator<=>(const MercatorTile&) const = default;
+};
+
+// A decoded tile: heights per pixel (NaN: no data), or absent (404).
+struct DecodedTile {
+  uint32_t size = 0;
+  std::vector<float> heightMeters;
+};
+
+class XyzElevationSource final : public ServiceTerrainSource {
+ public:
+  XyzElevationSource(const ServiceDescription& d, terrain::SeaSurface sea,
+                     ElevationEncoding encoding, std::string pattern,
+                     std::vector<std::string> subdomains, uint32_t minZoom, uint32_t maxZoom,
+                     uint32_t tileSize, double seaLevelMeters, std::unique_ptr<UrlReader> reader)
+      : ServiceTerrainSource(d, sea),
+        encoding_(encoding),
+        pattern_(std::move(pattern)),
+        subdomains_(std::move(subdomains)),
+        minZoom_(minZoom),
+        maxZoom_(maxZoom),
+        tileSize_(tileSize),
+        seaLevelMeters_(seaLevelMeters),
+        reader_(std::move(reader)) {}
+
+  std::string location(const geo::TileId& tile) const override {
+    const auto rect = geo::GeographicTilingScheme::tileRectangle(tile);
+    const uint32_t z = zoomFor(tile.level);
+    const double lon = (rect.westRadians + rect.eastRadians) / 2;
+    const double lat = (rect.southRadians + rect.northRadians) / 2;
+    const double scale = std::ldexp(1.0, static_cast<int>(z));
+    return urlOf({z, static_cast<uint32_t>(std::clamp(mercatorX(lon) * scale, 0.0, scale - 1)),
+                  static_cast<uint32_t>(std::clamp(mercatorY(lat) * scale, 0.0, scale - 1))});
+  }
+
+ protected:
+  bool publishes(const geo::TileId& tile) const override {
+    return tile.level <= manifest().maxLevel();
+  }
+
+  Result<std::optional<ServiceSamples>> fetchSamples(const geo::TileId& tile) override {
+    const uint32_t z = zoomFor(tile.level);
+    if (z < minZoom_) return std::optional<ServiceSamples>();  // nothing published that coarse
+    const auto rect = geo::GeographicTilingScheme::tileRectangle(tile);
+    const int n = static_cast<int>(kServiceVerticesPerSide);
+    const int w = terrain::kApronWidth;
+    const double scale = std::ldexp(1.0, static_cast<int>(z));
+    ServiceSamples s;
+    s.heightMeters.resize(ServiceSamples::count());
+    s.water.assign(ServiceSamples::count(), 0);
+    std::map<MercatorTile, std::shared_ptr<const DecodedTile>> tiles;
+    bool anyData = false;
+    size_t k = 0;
+    for (int row = -w; row < n + w; ++row) {
+      const double lat = std::clamp(rect.northRadians - row * rect.heightRadians() / (n - 1),
+                                    -std::numbers::pi / 2, std::numbers::pi / 2);
+      const double py = mercatorY(lat) * scale;  // in tiles
+      for (int column = -w; column < n + w; ++column, ++k) {
+        const double lon = rect.westRadians + column * rect.widthRadians() / (n - 1);
+        const double px = mercatorX(lon) * scale;
+        auto h = sample(z, px, py, tiles);
+        if (!h) return Error{h.error()};
+        s.heightMeters[k] = *h;
+        anyData = anyData || std::isfinite(*h);
+      }
+    }
+    if (!anyData) return std::optional<ServiceSamples>();  // the parent's surface
+    for (size_t i = 0; i < s.heightMeters.size(); ++i) {
+      // Transparent pixels: the producer's sea (Terrain-RGB writes none over water). Where a
+      // tile is missing the height stays NaN: the parent's surface.
+      if (std::isinf(s.heightMeters[i])) {
+        s.heightMeters[i] = 0;
+        if (s.water.empty()) s.water.assign(ServiceSamples::count(), 0);
+        s.water[i] = 1;
+      } else if (s.heightMeters[i] <= seaLevelMeters_) {
+        s.water[i] = 1;
+      }
+    }
+    return std::optional<ServiceSamples>(std::move(s));
+  }
+
+ private:
+  static double mercatorX(double lon) { return lon / (2 * std::numbers::pi) + 0.5; }
+  static double mercatorY(double lat) {
+    const double limit = kMercatorMaxLatitudeDegrees * std::numbers::pi / 180;
+    const double clamped = std::clamp(lat, -limit, limit);
+    return 0.5 - std::log(std::tan(std::numbers::pi / 4 + clamped / 2)) / (2 * std::numbers::pi);
+  }
+
+  // The Mercator zoom whose pixels are about the block's vertex step at the equator (a
+  // 256-pixel tile at zoom z spans 360/2^z degrees; a block at level L 180/2^L over N-1 steps).
+  // Blocks a little coarser than the service's first zoom sample that zoom's pixels (a few more
+  // tiles each), so a regional tree shows from further away than its first zoom.
+  uint32_t zoomFor(uint32_t level) const {
+    const double z = level + std::log2(2.0 * (kServiceVerticesPerSide - 1) / tileSize_);
+    const auto zoom =
+        static_cast<uint32_t>(std::clamp(std::ceil(z - 1e-9), 0.0, static_cast<double>(maxZoom_)));
+    return zoom < minZoom_ && minZoom_ - zoom <= kFinerZoomsBelowMin ? minZoom_ : zoom;
+  }
+
+  std::string urlOf(const MercatorTile& t) const {
+    return expandTileUrl(pattern_, {t.z, t.x, t.y, "", subdomains_});
+  }
+
+  // Bilinear between pixel centres at (px, py) in tile units; NaN where a tile is missing,
+  // +inf where every pixel around is transparent.
+  Result<double> sample(uint32_t z, double px, double py,
+                        std::map<MercatorTile, std::shared_ptr<const DecodedTile>>& tiles) {
+    const uint32_t count = 1u << z;
+    const double size = tileSize_;
+    const double gx = px * size - 0.5, gy = py * size - 0.5;  // global pixel coordinates
+    const double fx = std::floor(gx), fy = std::floor(gy);
+    const double tx = gx - fx, ty = gy - fy;
+    double total = 0, weights = 0;
+    for (int dy = 0; dy < 2; ++dy) {
+      for (int dx = 0; dx < 2; ++dx) {
+        const double weight = (dx ? tx : 1 - tx) * (dy ? ty : 1 - ty);
+        const auto worldPixels = static_cast<int64_t>(count) * tileSize_;
+        int64_t gxi = static_cast<int64_t>(fx) + dx;
+        gxi = ((gxi % worldPixels) + worldPixels) % worldPixels;  // across ±180°
+        const int64_t gyi = std::clamp<int64_t>(static_cast<int64_t>(fy) + dy, 0, worldPixels - 1);
+        const MercatorTile t{z, static_cast<uint32_t>(gxi / tileSize_),
+                             static_cast<uint32_t>(gyi / tileSize_)};
+        auto decoded = tile(t, tiles);
+        if (!decoded) return Error{decoded.error()};
+        if (!*decoded) return std::numeric_limits<double>::quiet_NaN();  // a missing tile
+        const DecodedTile& d = **decoded;
+        // A tile of another size than declared is sampled at its own scale.
+        const auto col = static_cast<uint32_t>((gxi % tileSize_) * d.size / tileSize_);
+        const auto row = static_cast<uint32_t>((gyi % tileSize_) * d.size / tileSize_);
+        const float h = d.heightMeters[static_cast<size_t>(row) * d.size + col];
+        if (std::isnan(h)) continue;
+        total += weight * h;
+        weights += weight;
+      }
+    }
+    // All four transparent: the producer's sea (+inf); beside it, the pixels that have data.
+    if (weights <= 0) return std::numeric_limits<double>::infinity();
+    return total / weights;
+  }
+
+  Result<std::shared_ptr<const DecodedTile>> tile(
+      const MercatorTile& t, std::map<MercatorTile, std::shared_ptr<const DecodedTile>>& local) {
+    if (auto it = local.find(t); it != local.end()) return it->second;
+    std::shared_ptr<const DecodedTile> decoded;
+    bool found = false;
+    {
+      std::lock_guard lock(mutex_);
+      for (auto it = recent_.begin(); it != recent_.end(); ++it) {
+        if (it->first == t) {
+          decoded = it->second;
+          found = true;
+          recent_.splice(recent_.begin(), recent_, it);
+          break;
+        }
+      }
+    }
+    if (!found) {
+      const std::string url = urlOf(t);
+      auto bytes = reader_->read(url, kMaxElevationTileBytes);
+      if (!bytes) return Error{bytes.error()};
+      if (*bytes) {
+        auto image = formats::decodeImageRgba(**bytes, url);
+        if (!image) return Error{image.error()};
+        if (image->widthPixels != image->heightPixels || image->widthPixels <= 0) {
+          return makeError(url + ": an elevation tile of " + std::to_string(image->widthPixels) +
+                           "×" + std::to_string(image->heightPixels) + " pixels (square expected)");
+        }
+        auto d = std::make_shared<DecodedTile>();
+        d->size = static_cast<uint32_t>(image->widthPixels);
+        d->heightMeters.resize(size_t{d->size} * d->size);
+        for (size_t p = 0; p < d->heightMeters.size(); ++p) {
+          d->heightMeters[p] =
+              static_cast<float>(decodeElevationPixel(encoding_, &image->pixels[4 * p]));
+        }
+        decoded = std::move(d);
+      }
+      std::lock_guard lock(mutex_);
+      recent_.emplace_front(t, decoded);
+      if (recent_.size() > kDecodedElevationTiles) recent_.pop_back();
+    }
+    local.emplace(t, decoded);
+    return decoded;
+  }
+
+  ElevationEncoding encoding_;
+  std::string pattern_;
+  std::vector<std::string> subdomains_;
+  uint32_t minZoom_, maxZoom_, tileSize_;
+  double seaLevelMeters_;  // samples at or below are water; -inf: none
+  std::unique_ptr<UrlReader> reader_;
+  std::mutex mutex_;
+  std::list<std::pair<MercatorTile, std::shared_ptr<const DecodedTile>>> recent_;
+};
+
+}  // namespace
+
+double decodeElevationPixel(ElevationEncoding encoding, const uint8_t rgba[4]) {
+  if (rgba[3] == 0) return std::numeric_limits<double>::quiet_NaN();
+  if (encoding == ElevationEncoding::Terrarium) {
+    return rgba[0] * 256.0 + rgba[1] + rgba[2] / 256.0 - 32768.0;
+  }
+  return -10000.0 + (rgba[0] * 65536.0 + rgba[1] * 256.0 + rgba[2]) * 0.1;
+}
+
+Result<std::unique_ptr<ServiceTerrainSource>> openXyzElevationSource(
+    ElevationEncoding encoding, const std::string& spec, terrain::SeaSurface sea,
+    std::shared_ptr<transport::Network> network) {
+  const char* kind = encoding == ElevationEncoding::Terrarium ? "terrarium" : "terrain-rgb";
+  std::string pattern = spec;
+  auto options = takeQueryOptions(pattern, {"maxzoom", "minzoom", "subdomains", "tilesize", "sea"});
+  auto problem = [&](const std::string& what) {
+    return makeError(std::string(kind) + ":" + spec + ": " + what);
+  };
+  if (pattern.find("{z}") == std::string::npos || pattern.find("{x}") == std::string::npos ||
+      (pattern.find("{y}") == std::string::npos && pattern.find("{-y}") == std::string::npos)) {
+    return problem("a tile URL template needs {z}, {x} and {y} (or {-y})");
+  }
+  auto maxZoom = optionNumber(options, "maxzoom",
+                              encoding == ElevationEncoding::Terrarium ? 15 : 14, kMaxZoom);
+  if (!maxZoom) return problem(maxZoom.error());
+  auto minZoom = optionNumber(options, "minzoom", 0, *maxZoom);
+  if (!minZoom) return problem(minZoom.error());
+  auto tileSize = optionNumber(options, "tilesize", 256, 4096);
+  if (!tileSize) return problem(tileSize.error());
+  if (*tileSize != 256 && *tileSize != 512) return problem("tilesize must be 256 or 512");
+  std::vector<std::string> subdomains;
+  for (char c : options.count("subdomains") ? options["subdomains"] : std::string("abc"))
+    if (c != ',') subdomains.emplace_back(1, c);
+  double seaLevelMeters = 0;
+  if (auto level = options.find("sea"); level != options.end()) {
+    if (level->second == "none") {
+      seaLevelMeters = -std::numeric_limits<double>::infinity();
+    } else {
+      char* end = nullptr;
+      seaLevelMeters = std::strtod(level->second.c_str(), &end);
+      if (level->second.empty() || *end != '\0' || !(std::fabs(seaLevelMeters) <= 1000)) {
+        return problem("sea=" + level->second + ": expected metres (-1000..1000) or none");
+      }
+    }
+  }
+  ServiceDescription d;
+  d.location = std::string(kind) + ":" + spec;
+  d.format = kind;
+  // The level whose blocks sample the finest zoom's pixels one to one at the equator.
+  const double levels = *maxZoom - std::log2(2.0 * (kServiceVerticesPerSide - 1) / *tileSize);
+  d.maxLevel = static_cast<uint32_t>(std::clamp(std::floor(levels), 0.0, double{geo::kMaxLevel}));
+  d.stepDegrees = 360.0 / (std::ldexp(1.0, static_cast<int>(*maxZoom)) * *tileSize);
+  d.bounds = {-180, -kMercatorMaxLatitudeDegrees, 180, kMercatorMaxLatitudeDegrees};
+  auto reader = std::make_unique<UrlReader>(network, "image/png,image/*;q=0.9");
+  d.remote = reader->remote(pattern);
+  return std::unique_ptr<ServiceTerrainSource>(std::make_unique<XyzElevationSource>(
+      d, sea, encoding, pattern, std::move(subdomains), *minZoom, *maxZoom, *tileSize,
+      seaLevelMeters, std::move(reader)));
+}
+
+}  // namespace globe::services
