@@ -8,6 +8,7 @@
 
 #include "formats/source_conditioning_json.hpp"
 #include "formats/vertical_units_json.hpp"
+#include "services/imagery_services.hpp"
 #include "services/terrain_services.hpp"
 
 namespace globe::app {
@@ -190,6 +191,28 @@ static std::string formatServiceInfo(const streaming::TerrainSource& service, bo
 }
 
 Result<std::string> runInfo(const InfoOptions& options) {
+  if (services::isImageryService(options.location)) {
+    auto layer = services::openImageryTiles(options.location, options.network);
+    if (!layer) return Error{layer.error()};
+    const formats::LayerManifest& m = (*layer)->manifest();
+    if (options.json) {
+      nlohmann::json j = nlohmann::json::parse(formats::layerManifestToJson(m));
+      j["service"] = (*layer)->location();
+      j["attribution"] = (*layer)->attribution();
+      return j.dump(2) + "\n";
+    }
+    const formats::ImagerySourceInfo& s = m.sources.front();
+    char line[4096];
+    std::snprintf(
+        line, sizeof line,
+        "layer       %s\nservice     %s, %s tiles drawn onto the geographic quadtree as "
+        "they load\ntiles       %ux%u samples on the tile edges\nlevels      0..%u\n"
+        "extent      %s\nfinest      %.6g deg per pixel\nattribution %s\n",
+        options.location.c_str(), s.driver.c_str(), s.crs.c_str(), m.tileSizePixels,
+        m.tileSizePixels, m.maxLevel(), boundsText(m.bounds).c_str(), s.pixelDegrees,
+        (*layer)->attribution().empty() ? "(none given)" : (*layer)->attribution().c_str());
+    return std::string(line);
+  }
   if (services::isTerrainService(options.location)) {
     auto service =
         services::openTerrainSource(options.location, terrain::SeaSurface::Water, options.network);

@@ -4,8 +4,10 @@
 
 #include <stb_image.h>
 #include <stb_image_write.h>
+#include <webp/decode.h>
 
 #include <cstddef>
+#include <cstring>
 #include <limits>
 #include <string>
 
@@ -32,10 +34,42 @@ bool wellFormed(const ImageRgba& image) {
 
 }  // namespace
 
+namespace {
+
+// "RIFF" size "WEBP": tile services' WebP (stb_image reads none).
+bool isWebp(std::span<const std::byte> bytes) {
+  return bytes.size() >= 12 && std::memcmp(bytes.data(), "RIFF", 4) == 0 &&
+         std::memcmp(bytes.data() + 8, "WEBP", 4) == 0;
+}
+
+Result<ImageRgba> decodeWebp(std::span<const std::byte> bytes, const std::string& name) {
+  const auto* data = reinterpret_cast<const uint8_t*>(bytes.data());
+  int width = 0, height = 0;
+  if (WebPGetInfo(data, bytes.size(), &width, &height) == 0) {
+    return makeError(name + ": not a readable WebP image");
+  }
+  if (width <= 0 || height <= 0 || width > kMaxDecodedImageSide || height > kMaxDecodedImageSide) {
+    return makeError(name + ": image size " + std::to_string(width) + "x" + std::to_string(height) +
+                     " out of range 1.." + std::to_string(kMaxDecodedImageSide));
+  }
+  ImageRgba image;
+  image.widthPixels = width;
+  image.heightPixels = height;
+  image.pixels.resize(static_cast<size_t>(width) * height * 4);
+  if (WebPDecodeRGBAInto(data, bytes.size(), image.pixels.data(), image.pixels.size(), width * 4) ==
+      nullptr) {
+    return makeError(name + ": cannot decode WebP image");
+  }
+  return image;
+}
+
+}  // namespace
+
 Result<ImageRgba> decodeImageRgba(std::span<const std::byte> bytes, const std::string& name) {
   if (bytes.size() > static_cast<size_t>(std::numeric_limits<int>::max())) {
     return makeError(name + ": image too large");
   }
+  if (isWebp(bytes)) return decodeWebp(bytes, name);
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int size = static_cast<int>(bytes.size());
   int width = 0, height = 0, channels = 0;

@@ -12,6 +12,7 @@
 #include "geo/ecef.hpp"
 #include "geo/tiling_scheme.hpp"
 #include "scene/native_resolution.hpp"
+#include "services/imagery_services.hpp"
 #include "streaming/background_pack_opens.hpp"
 #include "terrain/imagery_level.hpp"
 #include "terrain/water_mask_weight.hpp"
@@ -20,7 +21,7 @@ namespace globe::scene {
 
 struct ImageryLayers::Layer {
   LayerOptions options;
-  std::shared_ptr<streaming::ImageryStore> store;
+  std::shared_ptr<streaming::ImageryTiles> store;
   std::unique_ptr<streaming::ImagerySource> source;
   streaming::ImageryCache cache;
   std::unique_ptr<streaming::ImageryLoader> loader;
@@ -36,7 +37,7 @@ struct ImageryLayers::Layer {
   bool opaqueEverywhere = false;
   bool isWaterMask() const { return store->manifest().kind == formats::LayerKind::WaterMask; }
 
-  Layer(LayerOptions layerOptions, std::unique_ptr<streaming::ImageryStore> layerStore,
+  Layer(LayerOptions layerOptions, std::unique_ptr<streaming::ImageryTiles> layerStore,
         core::TaskRunner& taskRunner, size_t decodedBytes)
       : options(std::move(layerOptions)),
         store(std::move(layerStore)),
@@ -55,12 +56,12 @@ struct ImageryLayers::Layer {
     if (auto it = present.find(tile); it != present.end()) return it->second;
     bool has = false;
     if (store->remote()) {
-      const streaming::ImageryStore::Peek peek = store->peekTile(tile);
-      if (peek == streaming::ImageryStore::Peek::NotOpen) {
+      const streaming::ImageryTiles::Peek peek = store->peekTile(tile);
+      if (peek == streaming::ImageryTiles::Peek::NotOpen) {
         openInBackground(tile);
         return std::nullopt;
       }
-      has = peek == streaming::ImageryStore::Peek::Present;
+      has = peek == streaming::ImageryTiles::Peek::Present;
     } else {
       auto answer = store->hasTile(tile);
       has = answer && *answer;
@@ -72,10 +73,9 @@ struct ImageryLayers::Layer {
   }
 
   void openInBackground(const geo::TileId& tile) {
-    opening.post(runner, formats::packOf(tile, store->manifest().packTilesPerSide),
-                 [store = store, tile] {
-                   (void)store->hasTile(tile);  // opens the pack: an error is the store's to report
-                 });
+    opening.post(runner, store->tileGroupOf(tile), [store = store, tile] {
+      (void)store->hasTile(tile);  // opens the pack: an error is the store's to report
+    });
   }
   // The imagery level a terrain tile of this level takes (terrain/imagery_level.hpp).
   uint32_t imageryLevel(uint32_t terrainLevel, uint32_t verticesPerSide,
@@ -98,8 +98,16 @@ struct ImageryLayers::Layer {
 
 Result<LayerOptions> parseLayerArgument(const std::string& text) {
   LayerOptions layer;
-  const size_t comma = text.rfind(',');
+  size_t comma = text.rfind(',');
   std::string directory = text;
+  // A service's URL may hold commas (bounds=W,S,E,N): only a number after the last one is an
+  // opacity there.
+  if (comma != std::string::npos && services::isImageryService(text)) {
+    char* end = nullptr;
+    const std::string tail = text.substr(comma + 1);
+    (void)std::strtod(tail.c_str(), &end);
+    if (tail.empty() || end != tail.c_str() + tail.size()) comma = std::string::npos;
+  }
   if (comma != std::string::npos) {
     const std::string opacity = text.substr(comma + 1);
     char* end = nullptr;
@@ -129,7 +137,7 @@ Result<std::unique_ptr<ImageryLayers>> ImageryLayers::open(
   std::vector<std::unique_ptr<Layer>> opened;
   size_t colourLayers = 0, masks = 0;
   for (const LayerOptions& options : layers) {
-    auto store = streaming::ImageryStore::open(options.directory, network);
+    auto store = services::openImageryTiles(options.directory.string(), network);
     if (!store) return Error{store.error()};
     const bool mask = (*store)->manifest().kind == formats::LayerKind::WaterMask;
     (mask ? masks : colourLayers) += 1;

@@ -18,6 +18,9 @@
 
 namespace globe::services {
 
+// What an imagery service's tiles may be.
+inline constexpr const char* kImageAccept = "image/png,image/jpeg,image/webp;q=0.9,*/*;q=0.5";
+
 class UrlReader {
  public:
   UrlReader(std::shared_ptr<transport::Network> network, std::string accept)

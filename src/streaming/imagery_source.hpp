@@ -1,5 +1,5 @@
-// An imagery layer as a tile source: its tiles read from the layer's packs (one read each) and
-// decoded to RGBA8 on the loader's worker thread, so the main thread only uploads.
+// An imagery layer as a tile source: its tiles read (from packs, or a service) and decoded to
+// RGBA8 on the loader's worker thread, so the main thread only uploads.
 #pragma once
 
 #include <cstdint>
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "formats/image_io.hpp"
-#include "streaming/imagery_store.hpp"
+#include "streaming/imagery_tiles.hpp"
 #include "streaming/tile_cache.hpp"
 #include "streaming/tile_loader.hpp"
 #include "streaming/tile_source.hpp"
@@ -26,17 +26,15 @@ using ImageryLoader = PayloadLoader<formats::ImageRgba>;
 
 class ImagerySource final : public TileSource<formats::ImageRgba> {
  public:
-  explicit ImagerySource(ImageryStore& store) : store_(store) {}
+  explicit ImagerySource(ImageryTiles& tiles) : tiles_(tiles) {}
 
-  // A tile whose decoded size is not the layer's tile size is an error, not a picture drawn
-  // at the wrong scale.
   Result<std::optional<formats::ImageRgba>> load(const geo::TileId& tile) override;
   std::string location(const geo::TileId& tile) const override;
-  std::vector<std::string> takeNewSourceErrors() override { return store_.takeNewPackErrors(); }
-  void forgetSourceFailures() override { store_.forgetFailedPacks(); }
+  std::vector<std::string> takeNewSourceErrors() override { return tiles_.takeNewSourceErrors(); }
+  void forgetSourceFailures() override { tiles_.forgetSourceFailures(); }
 
  private:
-  ImageryStore& store_;
+  ImageryTiles& tiles_;
 };
 
 extern template class TileCache<formats::ImageRgba>;

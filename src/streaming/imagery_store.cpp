@@ -98,4 +98,20 @@ Result<std::optional<std::vector<std::byte>>> ImageryStore::loadEncoded(const ge
   return std::optional<std::vector<std::byte>>(std::move(bytes));
 }
 
+Result<std::optional<formats::ImageRgba>> ImageryStore::loadImage(const geo::TileId& tile) {
+  auto encoded = loadEncoded(tile);
+  if (!encoded) return Error{encoded.error()};
+  if (!*encoded) return std::optional<formats::ImageRgba>{};
+  auto image = formats::decodeImageRgba(**encoded, packFileOf(tile));
+  if (!image) return Error{image.error()};
+  const auto size = static_cast<int>(manifest_.tileSizePixels);
+  if (image->widthPixels != size || image->heightPixels != size) {
+    return makeError(packFileOf(tile) + ": " + geo::tileName(tile) + " is " +
+                     std::to_string(image->widthPixels) + "x" +
+                     std::to_string(image->heightPixels) + " pixels, the layer's tiles are " +
+                     std::to_string(size) + "x" + std::to_string(size));
+  }
+  return std::optional<formats::ImageRgba>{std::move(*image)};
+}
+
 }  // namespace globe::streaming

@@ -16,12 +16,15 @@
 #include "formats/image_pack.hpp"
 #include "formats/layer_manifest.hpp"
 #include "formats/pack_format.hpp"
+#include "formats/pmtiles.hpp"
 #include "formats/pyramid_manifest.hpp"
 #include "formats/quantized_mesh.hpp"
 #include "formats/terrain_layer_json.hpp"
 #include "formats/tile_edges.hpp"
 #include "rasters/gtopo30_header.hpp"
 #include "services/tin_sampling.hpp"
+#include "services/tms_tilemap.hpp"
+#include "services/wmts_capabilities.hpp"
 #include "services/xyz_elevation_source.hpp"
 #include "transport/http_client.hpp"
 
@@ -146,6 +149,31 @@ void elevationImage(const uint8_t* data, size_t size) {
   (void)sum;
 }
 
+void pmtiles(const uint8_t* data, size_t size) {
+  const std::span<const std::byte> bytes(reinterpret_cast<const std::byte*>(data), size);
+  // The head of a longer archive: its sections may lie beyond these bytes.
+  auto header = formats::decodePmtilesHeader(bytes, uint64_t{1} << 40, "fuzz.pmtiles");
+  if (header && header->rootOffset + header->rootLength <= size) {
+    const auto root = bytes.subspan(header->rootOffset, header->rootLength);
+    auto inflated = formats::gunzipIfNeeded(root, "fuzz.pmtiles", size_t{1} << 24);
+    if (inflated) {
+      if (auto entries = formats::decodePmtilesDirectory(*inflated, "fuzz.pmtiles")) {
+        (void)formats::findPmtilesEntry(*entries, formats::pmtilesTileId(3, 5, 2));
+      }
+    }
+  }
+  // The bytes as a directory of their own.
+  if (auto entries = formats::decodePmtilesDirectory(bytes, "fuzz.dir")) {
+    (void)formats::findPmtilesEntry(*entries, 7);
+  }
+}
+
+void serviceXml(const uint8_t* data, size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  if (auto caps = services::parseWmtsCapabilities(text, "fuzz.xml")) (void)caps->layers.size();
+  if (auto map = services::parseTmsTileMap(text, "fuzz.xml")) (void)map->hrefs.size();
+}
+
 Entry entryNamed(std::string_view target) {
   if (target == "gtopo30_header") return gtopo30Header;
   if (target == "pack") return pack;
@@ -157,6 +185,8 @@ Entry entryNamed(std::string_view target) {
   if (target == "terrain_tile") return terrainTile;
   if (target == "terrain_layer_json") return terrainLayerJson;
   if (target == "elevation_image") return elevationImage;
+  if (target == "pmtiles") return pmtiles;
+  if (target == "service_xml") return serviceXml;
   return nullptr;
 }
 

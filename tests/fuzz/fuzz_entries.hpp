@@ -28,6 +28,11 @@ void terrainLayerJson(const uint8_t* data, size_t size);
 // A Terrarium / Terrain-RGB elevation tile: decoded and every pixel read as a height.
 void elevationImage(const uint8_t* data, size_t size);
 
+// A PMTiles archive's head: header, root directory (raw and gzip) and a tile id lookup.
+void pmtiles(const uint8_t* data, size_t size);
+// A service's XML: as a WMTS GetCapabilities document and as a TMS tile map.
+void serviceXml(const uint8_t* data, size_t size);
+
 // The entry for a corpus folder name (gtopo30_header, pack, ...), or nullptr.
 using Entry = void (*)(const uint8_t*, size_t);
 Entry entryNamed(std::string_view target);

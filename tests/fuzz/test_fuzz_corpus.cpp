@@ -41,6 +41,8 @@ TEST(FuzzCorpus, ImageTile) { EXPECT_GT(replay("image_tile"), 0U); }
 TEST(FuzzCorpus, TerrainTile) { EXPECT_GT(replay("terrain_tile"), 0U); }
 TEST(FuzzCorpus, TerrainLayerJson) { EXPECT_GT(replay("terrain_layer_json"), 0U); }
 TEST(FuzzCorpus, ElevationImage) { EXPECT_GT(replay("elevation_image"), 0U); }
+TEST(FuzzCorpus, Pmtiles) { EXPECT_GT(replay("pmtiles"), 0U); }
+TEST(FuzzCorpus, ServiceXml) { EXPECT_GT(replay("service_xml"), 0U); }
 
 // The hand-made seeds are valid packs of the current format; the version-1 seed (negative samples
 // meant sea then) is refused by name as made by an older globe-tiler.

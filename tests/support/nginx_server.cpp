@@ -76,7 +76,7 @@ std::unique_ptr<NginxServer> NginxServer::start(const Options& options) {
          << "events { worker_connections 256; }\n"
          << "http {\n"
          << "  log_format ranges '$request_method $uri $status \"$http_range\" $bytes_sent "
-            "$server_protocol';\n"
+            "$server_protocol ?$args';\n"
          << "  access_log " << d << "/access.log ranges;\n"
          << "  client_body_temp_path " << d << "/tmp/body;\n"
          << "  proxy_temp_path " << d << "/tmp/proxy;\n"

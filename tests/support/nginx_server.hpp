@@ -35,7 +35,7 @@ class NginxServer {
   // http(s)://127.0.0.1:PORT/path
   std::string url(const std::string& path) const;
   // The requests served so far (once the log has settled): one line each, "METHOD URI STATUS
-  // \"RANGE\" BYTES PROTOCOL".
+  // \"RANGE\" BYTES PROTOCOL ?QUERY".
   std::vector<std::string> accessLog() const;
 
  private:
