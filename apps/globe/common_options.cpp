@@ -1,18 +1,48 @@
 #include "apps/globe/common_options.hpp"
 #include "apps/globe/stderr_warnings.hpp"
+#include "services/imagery_services.hpp"
+#include "services/terrain_services.hpp"
+#include "services/url_template.hpp"
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 
 namespace globe::app {
 
-void addPyramidArgument(CLI::App& command, std::string& pyramid) {
+Result<std::string> resolveSourceName(const CommonArguments& arguments, const std::string& text,
+                                      services::SourceKind kind) {
+  std::error_code ec;
+  // A directory of that name wins over a source's.
+  if (!arguments.sources || std::filesystem::exists(text, ec)) return text;
+  auto found = services::findNamedSource(*arguments.sources, text, kind);
+  if (!found) return Error{found.error()};
+  if (!*found) return text;
+  std::string url = (*found)->url;
+  const bool service = services::isTerrainService(url) || services::isImageryService(url);
+  if (service && !(*found)->attribution.empty() && url.find("attribution=") == std::string::npos) {
+    url += (url.find('?') == std::string::npos ? "?" : "&") + std::string("attribution=") +
+           services::percentEncode((*found)->attribution);
+  }
+  return url;
+}
+
+void addPyramidArgument(CLI::App& command, std::string& pyramid, const CommonArguments& common) {
   command
       .add_option("PYRAMID", pyramid,
                   "pyramid made by globe-tiler (a directory or its http(s) URL), or a terrain "
                   "service: quantized-mesh:URL (Cesium terrain, layer.json or its folder), "
-                  "terrarium:TEMPLATE or terrain-rgb:TEMPLATE ({z}/{x}/{y} PNG tiles)")
-      ->required();
+                  "terrarium:TEMPLATE or terrain-rgb:TEMPLATE ({z}/{x}/{y} PNG tiles), or a "
+                  "source's name (globe sources)")
+      ->required()
+      ->transform(CLI::Validator(
+          [&common](std::string& text) -> std::string {
+            auto resolved = resolveSourceName(common, text, services::SourceKind::Terrain);
+            if (!resolved) return resolved.error();
+            text = *resolved;
+            return {};
+          },
+          "", "named source"));
 }
 
 void addImageryOption(CLI::App& command, std::string& image) {
@@ -51,8 +81,10 @@ void addSeaFloorOption(CLI::App& command, CommonArguments& arguments) {
 
 void addLayerOptions(CLI::App& command, CommonArguments& arguments) {
   command.add_option("--layer", arguments.layerTexts,
-                     "imagery layer directory made by `globe-tiler imagery`, optionally "
-                     "DIR,OPACITY (0..1); repeat for more, bottom layer first. A water mask made "
+                     "imagery layer directory made by `globe-tiler imagery`, a service "
+                     "(xyz:TEMPLATE, tms:URL, wmts:URL?layer=NAME, pmtiles:URL) or a source's "
+                     "name (globe sources), optionally LAYER,OPACITY (0..1); repeat for more, "
+                     "bottom layer first. A water mask made "
                      "by `globe-tiler water-mask` (at most one) decides land and water where the "
                      "terrain is coarser; its opacity scales that");
   // A bare --lighting (before layers could be lit by resolution: the only way to light them)
@@ -100,7 +132,23 @@ bool applySceneArguments(const char* command, const CommonArguments& arguments,
   scene.sea = context.sea;
   scene.network = context.network;
   scene.warnings = context.warnings;
-  for (const std::string& text : arguments.layerTexts) {
+  for (const std::string& given : arguments.layerTexts) {
+    // A named source, with or without ",OPACITY".
+    std::string text = given;
+    const size_t comma = given.rfind(',');
+    for (const std::string& name :
+         {given, comma == std::string::npos ? std::string() : given.substr(0, comma)}) {
+      if (name.empty()) continue;
+      auto resolved = resolveSourceName(arguments, name, services::SourceKind::Imagery);
+      if (!resolved) {
+        std::fprintf(stderr, "globe %s: --layer %s\n", command, resolved.error().c_str());
+        return false;
+      }
+      if (*resolved != name) {
+        text = *resolved + given.substr(name.size());
+        break;
+      }
+    }
     auto layer = scene::parseLayerArgument(text);
     if (!layer) {
       std::fprintf(stderr, "globe %s: %s\n", command, layer.error().c_str());

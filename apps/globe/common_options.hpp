@@ -15,6 +15,7 @@
 #include "core/warnings.hpp"
 #include "geo/ellipsoid.hpp"
 #include "scene/terrain_scene.hpp"
+#include "services/named_sources.hpp"
 #include "terrain/height_block.hpp"
 #include "transport/network_settings.hpp"
 
@@ -32,10 +33,18 @@ struct CommonArguments {
   bool offline = false;
   uint64_t cacheMegabytes = 2048;
   double httpTimeoutSeconds = 120;
+  // The presets and the user's sources.toml (read by main before the arguments): names given
+  // where a pyramid or a layer is are replaced by their URLs.
+  std::shared_ptr<const services::NamedSources> sources;
 };
 
 // Each adds its options to `command`, stored in `arguments` (or `value`).
-void addPyramidArgument(CLI::App& command, std::string& pyramid);
+// PYRAMID: a directory, a URL, a terrain service, or a named terrain source.
+void addPyramidArgument(CLI::App& command, std::string& pyramid, const CommonArguments& common);
+// What `text` means as terrain or imagery: a named source's URL (with its attribution), else
+// `text` as it is; an error for a source of the other kind.
+Result<std::string> resolveSourceName(const CommonArguments& arguments, const std::string& text,
+                                      services::SourceKind kind);
 void addImageryOption(CLI::App& command, std::string& image);
 void addGlobeOption(CLI::App& command, CommonArguments& arguments);
 void addNetworkOptions(CLI::App& command, CommonArguments& arguments);

@@ -35,8 +35,21 @@ Subcommand addInfoCommand(CLI::App& app, CommonArguments& common) {
       "info", "print a pyramid's (or an imagery layer's) levels, tile counts, bounds and sources");
   auto arguments = std::make_shared<InfoArguments>();
   info->add_option("DIR", arguments->location,
-                   "pyramid or imagery layer made by globe-tiler: a directory or its http(s) URL")
-      ->required();
+                   "pyramid or imagery layer made by globe-tiler (a directory or its http(s) "
+                   "URL), a terrain or imagery service, or a source's name (globe sources)")
+      ->required()
+      ->transform(CLI::Validator(
+          [&common](std::string& text) -> std::string {
+            for (auto kind : {services::SourceKind::Terrain, services::SourceKind::Imagery}) {
+              auto resolved = resolveSourceName(common, text, kind);
+              if (resolved) {
+                text = *resolved;
+                return {};
+              }
+            }
+            return {};
+          },
+          "", "named source"));
   info->add_flag("--json", arguments->json, "machine-readable output");
   addGlobeOption(*info, common);
   addNetworkOptions(*info, common);

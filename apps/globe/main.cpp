@@ -2,6 +2,8 @@
 // runs in its own file (<name>_cli.cpp, over <name>_command.cpp); the options several share are
 // declared once (common_options.cpp).
 #include <CLI/CLI.hpp>
+#include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -16,10 +18,16 @@ int main(int argc, char** argv) {
       "--version", std::string("globe ") + globe::kVersion + " (" + globe::kSourceRevision + ")");
   app.require_subcommand(1);
   globe::app::CommonArguments common;
+  auto sources = globe::services::loadNamedSources(globe::services::userSourcesFile());
+  if (!sources) {
+    std::fprintf(stderr, "globe: %s\n", sources.error().c_str());
+    return 2;
+  }
+  common.sources = std::make_shared<const globe::services::NamedSources>(std::move(*sources));
   const std::vector<globe::app::Subcommand> subcommands = {
-      globe::app::addInfoCommand(app, common), globe::app::addSnapshotCommand(app, common),
+      globe::app::addInfoCommand(app, common),  globe::app::addSnapshotCommand(app, common),
       globe::app::addQueryCommand(app, common), globe::app::addViewCommand(app, common),
-      globe::app::addPlayCommand(app, common)};
+      globe::app::addPlayCommand(app, common),  globe::app::addSourcesCommand(app, common)};
 
   CLI11_PARSE(app, argc, argv);
   const auto context = globe::app::makeCommandContext(common);

@@ -58,7 +58,7 @@ Subcommand addPlayCommand(CLI::App& app, CommonArguments& common) {
       "play a camera path (.json or KML tour) through the collision controller, headless "
       "(OSMesa): frames, log.csv, timing.csv, summary.txt in --out");
   auto arguments = std::make_shared<PlayArguments>();
-  addPyramidArgument(*play, arguments->pyramid);
+  addPyramidArgument(*play, arguments->pyramid, common);
   play->add_option("PATH", arguments->path, "camera path: .json keyframes or a .kml gx:Tour")
       ->required();
   play->add_option("--out", arguments->out, "output directory")->required();

@@ -45,7 +45,7 @@ Subcommand addQueryCommand(CLI::App& app, CommonArguments& common) {
   CLI::App* query = app.add_subcommand(
       "query", "heights: reads lon,lat lines (degrees) on stdin, prints lon,lat,level,height_m");
   auto arguments = std::make_shared<QueryArguments>();
-  addPyramidArgument(*query, arguments->pyramid);
+  addPyramidArgument(*query, arguments->pyramid, common);
   query
       ->add_option("--mode", arguments->mode,
                    "qotcd (the paper's conservative height) | exact (the drawn surface)")

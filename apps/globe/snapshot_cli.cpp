@@ -20,6 +20,7 @@ struct SnapshotArguments {
   bool aboveTerrain = false;
   std::string sse = "2";  // numbers as text: checked and named by parseNumberArgument
   uint32_t maxLoadLevel = geo::kMaxLevel;
+  bool noAttribution = false;
 };
 
 int runSnapshotCommand(const SnapshotArguments& arguments, const CommonArguments& common,
@@ -42,6 +43,7 @@ int runSnapshotCommand(const SnapshotArguments& arguments, const CommonArguments
   options.widthPixels = size->first;
   options.heightPixels = size->second;
   options.output = arguments.output;
+  options.attribution = !arguments.noAttribution;
   if (!arguments.imagery.empty()) options.imagery = arguments.imagery;
   options.scene.maximumScreenSpaceErrorPixels = *sse;
   options.scene.maximumLoadLevel = arguments.maxLoadLevel;
@@ -64,7 +66,7 @@ Subcommand addSnapshotCommand(CLI::App& app, CommonArguments& common) {
   CLI::App* snapshot = app.add_subcommand(
       "snapshot", "render one view headless (OSMesa) once every tile it needs is loaded");
   auto arguments = std::make_shared<SnapshotArguments>();
-  addPyramidArgument(*snapshot, arguments->pyramid);
+  addPyramidArgument(*snapshot, arguments->pyramid, common);
   snapshot
       ->add_option("--camera", arguments->camera,
                    "LON,LAT,HEIGHT[,HEADING,PITCH,ROLL]: degrees, metres above the ellipsoid; "
@@ -79,6 +81,9 @@ Subcommand addSnapshotCommand(CLI::App& app, CommonArguments& common) {
       ->capture_default_str();
   snapshot->add_option("--max-load-level", arguments->maxLoadLevel,
                        "never load tiles deeper than this (shows a view mid-refinement)");
+  snapshot->add_flag("--no-attribution", arguments->noAttribution,
+                     "leave out the data's attribution (stamped at the bottom right for services "
+                     "that give one)");
   addGlobeOption(*snapshot, common);
   addNetworkOptions(*snapshot, common);
   addSeaFloorOption(*snapshot, common);

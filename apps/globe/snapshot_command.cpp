@@ -2,9 +2,11 @@
 
 #include <chrono>
 
+#include "apps/globe/attribution_stamp.hpp"
 #include "apps/globe/imagery.hpp"
 #include "apps/globe/renderer_gpu.hpp"
 #include "formats/image_io.hpp"
+#include "render/hud_renderer.hpp"
 #include "render/osmesa_context.hpp"
 #include "render/read_pixels.hpp"
 
@@ -40,6 +42,16 @@ Result<SnapshotReport> runSnapshot(const SnapshotOptions& options) {
                                              std::chrono::seconds(options.timeoutSeconds));
   if (!frame) return Error{frame.error()};
   const render::FrameStats stats = gpu.draw(**scene);
+  if (options.attribution) {
+    if (auto block =
+            attributionBlock((*scene)->attributions(), options.widthPixels, options.heightPixels)) {
+      auto hud = render::HudRenderer::create({});
+      if (!hud) return Error{hud.error()};
+      const render::HudItem item = *block;
+      (*hud)->setItems(std::span(&item, 1));
+      (*hud)->draw(options.widthPixels, options.heightPixels);
+    }
+  }
   const std::vector<uint8_t> pixels =
       render::readPixelsRgba(options.widthPixels, options.heightPixels);
   if (auto written = formats::writePngAtomically(options.output, pixels, options.widthPixels,

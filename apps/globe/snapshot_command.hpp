@@ -19,6 +19,7 @@ struct SnapshotOptions {
   std::optional<std::filesystem::path> imagery;  // equirectangular world image to drape
   scene::SceneOptions scene;
   int timeoutSeconds = 300;
+  bool attribution = true;  // stamp the services' attributions at the bottom right
 };
 
 struct SnapshotReport {

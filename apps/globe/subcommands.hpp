@@ -22,5 +22,6 @@ Subcommand addSnapshotCommand(CLI::App& app, CommonArguments& common);
 Subcommand addQueryCommand(CLI::App& app, CommonArguments& common);
 Subcommand addViewCommand(CLI::App& app, CommonArguments& common);
 Subcommand addPlayCommand(CLI::App& app, CommonArguments& common);
+Subcommand addSourcesCommand(CLI::App& app, CommonArguments& common);
 
 }  // namespace globe::app

@@ -64,7 +64,7 @@ Subcommand addViewCommand(CLI::App& app, CommonArguments& common) {
       "point) and fly (F/Tab; WASD/QE, drag looks, Shift x5); P records the path, K/F12 takes a "
       "screenshot, H shows every key, Esc quits");
   auto arguments = std::make_shared<ViewArguments>();
-  addPyramidArgument(*view, arguments->pyramid);
+  addPyramidArgument(*view, arguments->pyramid, common);
   view->add_option("--camera", arguments->camera,
                    "LON,LAT,HEIGHT[,HEADING,PITCH,ROLL] to start from")
       ->capture_default_str();

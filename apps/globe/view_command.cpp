@@ -16,6 +16,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "apps/globe/attribution_stamp.hpp"
 #include "apps/globe/elapsed.hpp"
 #include "apps/globe/go_to.hpp"
 #include "apps/globe/hud_text.hpp"
@@ -134,6 +135,8 @@ Result<ViewReport> runView(const ViewOptions& options) {
   if (!options.pose.isFinite()) return makeError("the camera pose is not finite");
   auto scene = scene::TerrainScene::open(options.pyramid, options.scene);
   if (!scene) return Error{scene.error()};
+  // Who the terrain and imagery are from, shown at the bottom right as their services ask.
+  const std::vector<std::string> attributions = (*scene)->attributions();
   render::GlfwWindowOptions windowOptions;
   windowOptions.widthPixels = options.widthPixels;
   windowOptions.heightPixels = options.heightPixels;
@@ -323,9 +326,12 @@ Result<ViewReport> runView(const ViewOptions& options) {
           glfwGetWindowSize(handle, &windowWidth, &windowHeight);
           const double toWindow = static_cast<double>(windowWidth) / std::max(width, 1);
           std::pair<glm::dvec2, glm::dvec2> compassBox;
-          const std::vector<render::HudItem> items = hudItems(
+          std::vector<render::HudItem> items = hudItems(
               hudStatusLines(hudState), input.helpVisible, controller.pose().headingRadians,
               hudState.metersPerPixel * toWindow, width, height, compassBox);
+          if (auto block = attributionBlock(attributions, width, height)) {
+            items.push_back(*block);
+          }
           input.compassTopLeft = compassBox.first * toWindow;
           input.compassBottomRight = compassBox.second * toWindow;
           (*hud)->setItems(items);

@@ -157,6 +157,12 @@ Result<std::unique_ptr<ImageryLayers>> ImageryLayers::open(
       new ImageryLayers(std::move(opened), budget, std::move(warnings)));
 }
 
+std::vector<std::string> ImageryLayers::attributions() const {
+  std::vector<std::string> out;
+  for (const auto& layer : layers_) out.push_back(layer->store->attribution());
+  return out;
+}
+
 Result<void> ImageryLayers::preload(Layer& layer, uint32_t index, TileGpu& gpu) {
   layer.opaqueEverywhere = !layer.isWaterMask();
   for (uint32_t x = 0; x < geo::GeographicTilingScheme::tilesX(0); ++x) {

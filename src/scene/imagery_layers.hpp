@@ -63,6 +63,8 @@ class ImageryLayers {
   ImageryLayers& operator=(const ImageryLayers&) = delete;
 
   bool empty() const { return layers_.empty(); }
+  // Each layer's attribution (empty where it gives none), bottom layer first.
+  std::vector<std::string> attributions() const;
   size_t size() const { return layers_.size(); }
 
   // One frame: drapes[i] for tiles[i]. Loads are prioritised by the terrain tile's distance to

@@ -425,6 +425,18 @@ Result<FrameInfo> TerrainScene::updateUntilComplete(const camera::CameraPose& po
   }
 }
 
+std::vector<std::string> TerrainScene::attributions() const {
+  std::vector<std::string> out;
+  auto add = [&out](const std::string& text) {
+    if (!text.empty() && std::find(out.begin(), out.end(), text) == out.end()) out.push_back(text);
+  };
+  add(store_->attribution());
+  if (imagery_) {
+    for (const std::string& text : imagery_->attributions()) add(text);
+  }
+  return out;
+}
+
 Result<double> TerrainScene::terrainHeightMeters(double longitudeRadians, double latitudeRadians) {
   for (uint32_t level = store_->manifest().maxLevel() + 1; level-- > 0;) {
     const auto tile =

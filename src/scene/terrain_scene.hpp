@@ -112,6 +112,9 @@ class TerrainScene {
   const terrain::RenderingTileArray& renderingTileArray() const { return array_; }
   // Blocks until a load completes or the timeout passes (loads run on worker threads).
   void waitForLoads(std::chrono::milliseconds timeout) const;
+  // Who the terrain and each layer's imagery are from, as their services say, each once: shown
+  // beside the picture (empty for pyramids and layers made by globe-tiler).
+  std::vector<std::string> attributions() const;
   // Surface height at a position from the finest tile the pyramid has there (loads it if needed).
   Result<double> terrainHeightMeters(double longitudeRadians, double latitudeRadians);
 

@@ -4,7 +4,7 @@
 //                    ?crs=EPSG:4326 for the geographic tiling with two tiles at zoom 0; options
 //                    minzoom, maxzoom, subdomains, tilesize, attribution
 //   tms:URL          an OSGeo TMS tilemapresource.xml, or its folder
-//   wmts:URL?layer=NAME[&tilematrixset=ID&style=S]   a WMTS GetCapabilities document (KVP or
+//   wmts:URL?layer=NAME[&tilematrixset=ID&style=S&time=T]   a WMTS GetCapabilities document (KVP or
 //                    RESTful)
 //   pmtiles:URL      a PMTiles v3 archive of PNG, JPEG or WebP tiles, read by range
 #pragma once

@@ -8,6 +8,7 @@
 #include "formats/gzip_bytes.hpp"
 #include "formats/pmtiles.hpp"
 #include "services/url_reader.hpp"
+#include "services/url_template.hpp"
 #include "transport/http_client.hpp"
 
 namespace globe::services {
@@ -125,7 +126,9 @@ bool supported(formats::PmtilesCompression c) {
 }  // namespace
 
 Result<std::unique_ptr<ServiceImagery>> openPmtilesImagery(
-    const std::string& url, std::shared_ptr<transport::Network> network) {
+    const std::string& spec, std::shared_ptr<transport::Network> network) {
+  std::string url = spec;
+  auto options = takeQueryOptions(url, {"attribution"});
   const std::string path = url.substr(0, url.find('?'));
   const size_t slash = path.rfind('/');
   const std::string folder = slash == std::string::npos ? "." : path.substr(0, slash);
@@ -193,12 +196,12 @@ Result<std::unique_ptr<ServiceImagery>> openPmtilesImagery(
     }
   }
   ImageryServiceDescription d;
-  d.location = "pmtiles:" + url;
+  d.location = "pmtiles:" + spec;
   d.driver = "PMTiles";
   d.tiling = webMercatorQuad(header->minZoom, header->maxZoom, tileSize);
   d.bounds = {header->westDegrees, std::max(header->southDegrees, -85.0511287798),
               header->eastDegrees, std::min(header->northDegrees, 85.0511287798)};
-  d.attribution = attribution;
+  d.attribution = options.count("attribution") ? options["attribution"] : attribution;
   d.remote = (*source)->remote();
   return std::unique_ptr<ServiceImagery>(std::make_unique<PmtilesImagery>(
       std::move(d), std::move(opened->file), *header, std::move(*root)));

@@ -120,7 +120,9 @@ class QuantizedMeshSource final : public ServiceTerrainSource {
 }  // namespace
 
 Result<std::unique_ptr<ServiceTerrainSource>> openQuantizedMeshSource(
-    const std::string& url, terrain::SeaSurface sea, std::shared_ptr<transport::Network> network) {
+    const std::string& spec, terrain::SeaSurface sea, std::shared_ptr<transport::Network> network) {
+  std::string url = spec;
+  auto options = takeQueryOptions(url, {"attribution"});
   std::string layerUrl = url;
   const std::string path = url.substr(0, url.find('?'));
   if (path.size() < 5 || path.compare(path.size() - 5, 5, ".json") != 0) {
@@ -142,7 +144,7 @@ Result<std::unique_ptr<ServiceTerrainSource>> openQuantizedMeshSource(
       std::string_view(reinterpret_cast<const char*>((*text)->data()), (*text)->size()), layerUrl);
   if (!layer) return Error{layer.error()};
   ServiceDescription d;
-  d.location = url;
+  d.location = "quantized-mesh:" + spec;
   d.format = layer->format == formats::TerrainLayerJson::Format::Heightmap ? "heightmap-1.0"
                                                                            : "quantized-mesh-1.0";
   d.maxLevel = layer->maxZoom;
@@ -162,7 +164,7 @@ Result<std::unique_ptr<ServiceTerrainSource>> openQuantizedMeshSource(
     }
     d.bounds = b;
   }
-  d.attribution = layer->attribution;
+  d.attribution = options.count("attribution") ? options["attribution"] : layer->attribution;
   d.remote = reader->remote(layerUrl);
   return std::unique_ptr<ServiceTerrainSource>(std::make_unique<QuantizedMeshSource>(
       d, sea, std::move(*layer), std::move(layerUrl), std::move(reader)));

@@ -99,7 +99,9 @@ Result<std::unique_ptr<ServiceImagery>> openXyzImagery(
 }
 
 Result<std::unique_ptr<ServiceImagery>> openTmsImagery(
-    const std::string& url, std::shared_ptr<transport::Network> network) {
+    const std::string& spec, std::shared_ptr<transport::Network> network) {
+  std::string url = spec;
+  auto options = takeQueryOptions(url, {"attribution"});
   std::string xmlUrl = url;
   const std::string path = url.substr(0, url.find('?'));
   if (path.size() < 4 || path.compare(path.size() - 4, 4, ".xml") != 0) {
@@ -115,7 +117,8 @@ Result<std::unique_ptr<ServiceImagery>> openTmsImagery(
       std::string_view(reinterpret_cast<const char*>((*bytes)->data()), (*bytes)->size()), xmlUrl);
   if (!map) return Error{map.error()};
   ImageryServiceDescription d;
-  d.location = "tms:" + url;
+  d.location = "tms:" + spec;
+  d.attribution = options.count("attribution") ? options["attribution"] : "";
   d.driver = "TMS";
   d.tiling = map->tiling;
   d.bounds = map->bounds;

@@ -1,7 +1,9 @@
 #include "services/url_template.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
+#include <cstdio>
 
 namespace globe::services {
 
@@ -41,6 +43,39 @@ std::string expandTileUrl(const std::string& pattern, const TileUrlValues& value
   return out;
 }
 
+namespace {
+
+// %XX escapes and '+' (a space) in a query value.
+std::string percentDecode(const std::string& s) {
+  std::string out;
+  for (size_t i = 0; i < s.size(); ++i) {
+    if (s[i] == '%' && i + 2 < s.size() && std::isxdigit(static_cast<unsigned char>(s[i + 1])) &&
+        std::isxdigit(static_cast<unsigned char>(s[i + 2]))) {
+      out += static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      out += s[i] == '+' ? ' ' : s[i];
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string percentEncode(const std::string& s) {
+  std::string out;
+  for (unsigned char c : s) {
+    if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~') {
+      out += static_cast<char>(c);
+    } else {
+      char hex[4];
+      std::snprintf(hex, sizeof hex, "%%%02X", c);
+      out += hex;
+    }
+  }
+  return out;
+}
+
 std::map<std::string, std::string> takeQueryOptions(std::string& url,
                                                     const std::vector<std::string>& keys) {
   std::map<std::string, std::string> taken;
@@ -55,7 +90,7 @@ std::map<std::string, std::string> takeQueryOptions(std::string& url,
     const size_t equals = pair.find('=');
     const std::string key = pair.substr(0, equals);
     if (std::find(keys.begin(), keys.end(), key) != keys.end()) {
-      taken[key] = equals == std::string::npos ? "" : pair.substr(equals + 1);
+      taken[key] = equals == std::string::npos ? "" : percentDecode(pair.substr(equals + 1));
     } else if (!pair.empty()) {
       kept += (kept.empty() ? "" : "&") + pair;
     }

@@ -20,9 +20,13 @@ struct TileUrlValues {
 
 std::string expandTileUrl(const std::string& pattern, const TileUrlValues& values);
 
-// Removes `keys` from the URL's query and returns them; other query keys (an API key) stay.
+// Removes `keys` from the URL's query and returns them, percent-decoded; other query keys (an
+// API key) stay. Every service takes `attribution` (who the data is from, shown with it).
 std::map<std::string, std::string> takeQueryOptions(std::string& url,
                                                     const std::vector<std::string>& keys);
+
+// RFC 3986's unreserved characters as they are, every other byte as %XX.
+std::string percentEncode(const std::string& s);
 
 // An option as a non-negative integer no larger than `maximum`; errors name the option.
 Result<uint32_t> optionNumber(const std::map<std::string, std::string>& options,

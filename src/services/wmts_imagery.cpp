@@ -24,20 +24,6 @@ std::string replaceKey(std::string s, const std::string& key, const std::string&
   return s;
 }
 
-std::string percentEncode(const std::string& s) {
-  std::string out;
-  for (unsigned char c : s) {
-    if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~') {
-      out += static_cast<char>(c);
-    } else {
-      char hex[4];
-      std::snprintf(hex, sizeof hex, "%%%02X", c);
-      out += hex;
-    }
-  }
-  return out;
-}
-
 std::string joinNames(const std::vector<std::string>& names, size_t most) {
   std::string out;
   for (size_t i = 0; i < names.size() && i < most; ++i) out += (i ? ", " : "") + names[i];
@@ -50,7 +36,8 @@ std::string joinNames(const std::vector<std::string>& names, size_t most) {
 Result<std::unique_ptr<ServiceImagery>> openWmtsImagery(
     const std::string& spec, std::shared_ptr<transport::Network> network) {
   std::string url = spec;
-  auto options = takeQueryOptions(url, {"layer", "tilematrixset", "style", "format"});
+  auto options =
+      takeQueryOptions(url, {"layer", "tilematrixset", "style", "format", "time", "attribution"});
   auto problem = [&](const std::string& what) { return makeError("wmts:" + spec + ": " + what); };
   auto reader = std::make_unique<UrlReader>(network, kImageAccept);
   auto bytes = reader->read(url, kMaxCapabilitiesBytes);
@@ -107,7 +94,9 @@ Result<std::unique_ptr<ServiceImagery>> openWmtsImagery(
   if (restful.empty() && caps->kvpGetTileUrl.empty()) {
     return problem("the server offers neither a RESTful tile template nor KVP GetTile");
   }
-  restful = replaceKey(replaceKey(restful, "TileMatrixSet", setId), "Style", style);
+  // A time dimension (NASA GIBS's {Time}): as asked, else the server's default.
+  restful = replaceKey(replaceKey(replaceKey(restful, "TileMatrixSet", setId), "Style", style),
+                       "Time", options.count("time") ? options["time"] : "default");
   std::string kvp = resolveUrl(url, caps->kvpGetTileUrl);
   if (!kvp.empty() && kvp.back() != '?' && kvp.back() != '&') {
     kvp += kvp.find('?') == std::string::npos ? "?" : "&";
@@ -124,7 +113,7 @@ Result<std::unique_ptr<ServiceImagery>> openWmtsImagery(
     d.bounds.south = std::max(d.bounds.south, -85.0511287798);
     d.bounds.north = std::min(d.bounds.north, 85.0511287798);
   }
-  d.attribution = caps->title;
+  d.attribution = options.count("attribution") ? options["attribution"] : caps->title;
   d.remote = reader->remote(url);
   const std::string base = url;
   return makeUrlImagery(

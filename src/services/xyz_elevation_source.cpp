@@ -237,7 +237,8 @@ Result<std::unique_ptr<ServiceTerrainSource>> openXyzElevationSource(
     std::shared_ptr<transport::Network> network) {
   const char* kind = encoding == ElevationEncoding::Terrarium ? "terrarium" : "terrain-rgb";
   std::string pattern = spec;
-  auto options = takeQueryOptions(pattern, {"maxzoom", "minzoom", "subdomains", "tilesize", "sea"});
+  auto options = takeQueryOptions(
+      pattern, {"maxzoom", "minzoom", "subdomains", "tilesize", "sea", "attribution"});
   auto problem = [&](const std::string& what) {
     return makeError(std::string(kind) + ":" + spec + ": " + what);
   };
@@ -270,6 +271,7 @@ Result<std::unique_ptr<ServiceTerrainSource>> openXyzElevationSource(
   }
   ServiceDescription d;
   d.location = std::string(kind) + ":" + spec;
+  d.attribution = options.count("attribution") ? options["attribution"] : "";
   d.format = kind;
   // The level whose blocks sample the finest zoom's pixels one to one at the equator.
   const double levels = *maxZoom - std::log2(2.0 * (kServiceVerticesPerSide - 1) / *tileSize);

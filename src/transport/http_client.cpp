@@ -108,7 +108,9 @@ size_t onHeader(char* data, size_t size, size_t count, void* user) {
 
 struct HttpClient::Impl {
   HttpSettings settings;
-  std::string userAgent = std::string("globe/") + kVersion;
+  // Names the program and its version to tile servers, as their usage policies ask
+  // (OpenStreetMap's: a User-Agent that identifies the application, not a library's default).
+  std::string userAgent = std::string("globe/") + kVersion + " (open-source virtual globe viewer)";
   CURLM* multi = nullptr;
   std::mutex mutex;
   std::deque<std::unique_ptr<Transfer>> queued;                  // guarded by mutex
