@@ -7,7 +7,7 @@
 namespace globe::formats {
 namespace {
 
-struct DecompressorDeleter {
+struct GzipDecompressorDeleter {
   void operator()(libdeflate_decompressor* d) const { libdeflate_free_decompressor(d); }
 };
 
@@ -20,7 +20,7 @@ bool isGzip(std::span<const std::byte> bytes) {
 Result<std::vector<std::byte>> gunzipIfNeeded(std::span<const std::byte> bytes,
                                               const std::string& name, size_t maxBytes) {
   if (!isGzip(bytes)) return std::vector<std::byte>(bytes.begin(), bytes.end());
-  thread_local std::unique_ptr<libdeflate_decompressor, DecompressorDeleter> decompressor(
+  thread_local std::unique_ptr<libdeflate_decompressor, GzipDecompressorDeleter> decompressor(
       libdeflate_alloc_decompressor());
   if (!decompressor) return makeError(name + ": out of memory inflating gzip");
   // gzip's trailer states the size modulo 2^32: a start, grown when it lies.

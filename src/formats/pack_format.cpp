@@ -5,6 +5,10 @@
 #include <cstring>
 #include <string>
 
+#include <libdeflate.h>
+
+#include <memory>
+
 #include "core/big_endian.hpp"
 #include "core/crc32.hpp"
 
@@ -53,6 +57,32 @@ void forEachStoredSample(const PackLayout& layout, Visit visit) {
                            : terrain::apronIndex(row, column, layout.verticesPerSide));
     }
   }
+}
+
+struct CompressorDeleter {
+  void operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
+};
+struct DecompressorDeleter {
+  void operator()(libdeflate_decompressor* d) const { libdeflate_free_decompressor(d); }
+};
+
+std::vector<std::byte> zlibCompress(std::span<const std::byte> in) {
+  thread_local std::unique_ptr<libdeflate_compressor, CompressorDeleter> compressor(
+      libdeflate_alloc_compressor(9));
+  std::vector<std::byte> out(libdeflate_zlib_compress_bound(compressor.get(), in.size()));
+  out.resize(
+      libdeflate_zlib_compress(compressor.get(), in.data(), in.size(), out.data(), out.size()));
+  return out;
+}
+
+// Exactly out.size() bytes inflated, or false.
+bool zlibDecompress(std::span<const std::byte> in, std::span<std::byte> out) {
+  thread_local std::unique_ptr<libdeflate_decompressor, DecompressorDeleter> decompressor(
+      libdeflate_alloc_decompressor());
+  size_t actual = 0;
+  return libdeflate_zlib_decompress(decompressor.get(), in.data(), in.size(), out.data(),
+                                    out.size(), &actual) == LIBDEFLATE_SUCCESS &&
+         actual == out.size();
 }
 
 }  // namespace
@@ -121,6 +151,32 @@ size_t Pack::presentCount() const {
 }
 
 std::vector<std::byte> encodePack(const Pack& pack) {
+  if (pack.layout.hasCompressedIndex()) {
+    // The uncompressed form with offsets from the index's end, whose index is then compressed.
+    Pack uncompressed = pack;
+    uncompressed.layout.formatVersion = 4;
+    uncompressed.layout.indexBytes = 0;
+    const std::vector<std::byte> plain = encodePack(uncompressed);
+    const size_t plainIndexEnd = uncompressed.layout.indexEndOffset();
+    std::vector<std::byte> entries(plain.begin() + kPackHeaderBytes,
+                                   plain.begin() + static_cast<ptrdiff_t>(plainIndexEnd));
+    for (size_t slot = 0; slot < pack.layout.slotCount(); ++slot) {
+      std::byte* entry = &entries[slot * packEntryBytes(4)];
+      const uint64_t offset = core::loadBigEndian64(entry);
+      core::storeBigEndian64(entry, offset == 0 ? 0 : offset - plainIndexEnd + 1);
+    }
+    const std::vector<std::byte> index = zlibCompress(entries);
+    std::vector<std::byte> bytes(plain.begin(), plain.begin() + kPackHeaderBytes);
+    core::storeBigEndian32(&bytes[8], pack.layout.formatVersion);
+    core::storeBigEndian32(&bytes[36], static_cast<uint32_t>(index.size()));
+    bytes.insert(bytes.end(), index.begin(), index.end());
+    bytes.insert(bytes.end(), plain.begin() + static_cast<ptrdiff_t>(plainIndexEnd),
+                 plain.end() - 4);
+    const size_t body = bytes.size();
+    bytes.resize(body + 4);
+    core::storeBigEndian32(&bytes[body], core::crc32(std::span(bytes).first(body)));
+    return bytes;
+  }
   const PackLayout& layout = pack.layout;
   const size_t present = pack.presentCount();
   std::vector<std::byte> bytes(layout.fileBytes(present));
@@ -181,6 +237,14 @@ Result<void> checkPackFormatVersion(uint32_t version, const std::filesystem::pat
                              std::to_string(kPackFormatVersion) + ")");
 }
 
+std::optional<uint64_t> packIndexEndOffset(std::span<const std::byte> head) {
+  const std::optional<uint32_t> version = packFormatVersionOf(head);
+  if (!version) return std::nullopt;
+  if (*version >= 5) return kPackHeaderBytes + uint64_t{core::loadBigEndian32(&head[36])};
+  const uint32_t tiles = core::loadBigEndian32(&head[24]);
+  return kPackHeaderBytes + uint64_t{tiles} * tiles * packEntryBytes(*version);
+}
+
 Result<PackIndex> decodePackIndex(std::span<const std::byte> headAndIndex, uint64_t fileBytes,
                                   const std::filesystem::path& path) {
   const std::optional<uint32_t> version = packFormatVersionOf(headAndIndex);
@@ -192,7 +256,7 @@ Result<PackIndex> decodePackIndex(std::span<const std::byte> headAndIndex, uint6
   }
   uint32_t h[8];
   for (size_t i = 0; i < 8; ++i) h[i] = core::loadBigEndian32(&headAndIndex[8 + 4 * i]);
-  PackIndex index{{h[1], h[2], h[3]}, {h[4], h[5], *version}, {}};
+  PackIndex index{{h[1], h[2], h[3]}, {h[4], h[5], *version, *version >= 5 ? h[7] : 0}, {}};
   const PackLayout& layout = index.layout;
   if (layout.tilesPerSide == 0 || layout.tilesPerSide > 1024 ||
       !terrain::isValidBlockSize(layout.verticesPerSide)) {
@@ -208,11 +272,25 @@ Result<PackIndex> decodePackIndex(std::span<const std::byte> headAndIndex, uint6
   if (headAndIndex.size() < layout.indexEndOffset()) {
     return packError(path, "pack index is truncated");
   }
+  // Version 5: the entries inflated, their offsets made the file's.
+  std::vector<std::byte> inflated;
+  std::span<const std::byte> entries =
+      headAndIndex.subspan(kPackHeaderBytes, layout.indexEndOffset() - kPackHeaderBytes);
+  if (layout.hasCompressedIndex()) {
+    inflated.resize(layout.slotCount() * layout.entryBytes());
+    if (!zlibDecompress(entries, inflated)) {
+      return packError(path, "pack index does not inflate to its " +
+                                 std::to_string(layout.slotCount()) + " entries (corrupt pack)");
+    }
+    entries = inflated;
+  }
   index.entries.resize(layout.slotCount());
   uint32_t seen = 0;
   for (size_t slot = 0; slot < layout.slotCount(); ++slot) {
-    PackEntry entry =
-        loadEntry(&headAndIndex[kPackHeaderBytes + slot * layout.entryBytes()], *version);
+    PackEntry entry = loadEntry(&entries[slot * layout.entryBytes()], *version);
+    if (layout.hasCompressedIndex() && entry.present()) {
+      entry.blockOffset += layout.indexEndOffset() - 1;
+    }
     if (entry.present()) {
       const uint64_t relative = entry.blockOffset - layout.indexEndOffset();
       if (entry.blockOffset < layout.indexEndOffset() || relative % layout.blockBytes() != 0 ||

@@ -110,7 +110,13 @@ std::string manifestToJson(const PyramidManifest& manifest) {
   json levels = json::array();
   for (const LevelInfo& level : manifest.levels) {
     json packs = json::array();
-    for (const PackId& pack : level.packs) packs.push_back({pack.x, pack.y});
+    for (size_t i = 0; i < level.packs.size(); ++i) {
+      if (level.packIndexBytes.size() == level.packs.size()) {
+        packs.push_back({level.packs[i].x, level.packs[i].y, level.packIndexBytes[i]});
+      } else {
+        packs.push_back({level.packs[i].x, level.packs[i].y});
+      }
+    }
     levels.push_back({{"level", level.level},
                       {"tiles", level.tileCount},
                       {"boundsDegrees", boundsToJson(level.bounds)},
@@ -185,6 +191,12 @@ Result<PyramidManifest> manifestFromJson(std::string_view text, const std::files
       for (const json& pack : level.at("packs")) {
         info.packs.push_back(
             {info.level, integerOf<uint32_t>(pack.at(0)), integerOf<uint32_t>(pack.at(1))});
+        // [x, y, index bytes] since pack format 5; [x, y] before.
+        if (pack.size() >= 3) info.packIndexBytes.push_back(integerOf<uint32_t>(pack.at(2)));
+      }
+      if (!info.packIndexBytes.empty() && info.packIndexBytes.size() != info.packs.size()) {
+        return makeError(path.string() + ": level " + std::to_string(info.level) +
+                         " gives index sizes for some packs only");
       }
       m.levels.push_back(std::move(info));
     }

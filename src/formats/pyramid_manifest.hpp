@@ -28,6 +28,9 @@ struct LevelInfo {
   BoundsDegrees bounds;              // union of the level's tile rectangles
   terrain::HeightRange heightRange;  // of the level's vertices, sea = 0 m
   std::vector<PackId> packs;         // the pack files of this level, sorted
+  // Per pack, its stored index's bytes (version-5 packs), so that a reader asks for exactly the
+  // header and index in one read; empty when the manifest does not say (older pyramids).
+  std::vector<uint32_t> packIndexBytes{};
 };
 
 // What the tiler did to a source's samples before tiling (docs/conditioning.md).

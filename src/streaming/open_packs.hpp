@@ -28,8 +28,11 @@ template <class Index>
 struct OpenPackFile {
   std::shared_ptr<const transport::ByteFile> file;
   Index index;
-  OpenPackFile(std::shared_ptr<const transport::ByteFile> opened, Index packIndex)
-      : file(std::move(opened)), index(std::move(packIndex)) {}
+  // The pack's first bytes as read with its index: blocks that lie in them need no read.
+  std::vector<std::byte> head;
+  OpenPackFile(std::shared_ptr<const transport::ByteFile> opened, Index packIndex,
+               std::vector<std::byte> firstBytes = {})
+      : file(std::move(opened)), index(std::move(packIndex)), head(std::move(firstBytes)) {}
 };
 
 // Whether a manifest's levels (a pyramid's or a layer's: levels[l].packs, sorted) list the pack.

@@ -8,22 +8,6 @@
 #include "core/crc32.hpp"
 
 namespace globe::streaming {
-namespace {
-
-// A pyramid of another pack format version is refused as a whole: its first level-0 pack's
-// header says so. Unreadable or damaged packs are left to be reported one by one when read.
-Result<void> checkFormatVersion(transport::ByteSource& source,
-                                const formats::PyramidManifest& manifest) {
-  if (manifest.levels.empty() || manifest.levels[0].packs.empty()) return {};
-  const std::string name = formats::packName(manifest.levels[0].packs.front());
-  auto opened = source.open(name, formats::kPackHeaderBytes);
-  if (!opened || opened->head.size() < formats::kPackHeaderBytes) return {};
-  const std::optional<uint32_t> version = formats::packFormatVersionOf(opened->head);
-  return version ? formats::checkPackFormatVersion(*version, source.locationOf(name))
-                 : Result<void>{};
-}
-
-}  // namespace
 
 TileStore::TileStore(std::shared_ptr<transport::ByteSource> source,
                      formats::PyramidManifest manifest, terrain::SeaSurface sea)
@@ -41,12 +25,31 @@ Result<std::unique_ptr<TileStore>> TileStore::open(std::shared_ptr<transport::By
                                                    terrain::SeaSurface sea) {
   auto manifest = formats::readManifest(*source);
   if (!manifest) return Error{manifest.error()};
-  for (formats::LevelInfo& level : manifest->levels)
-    std::sort(level.packs.begin(), level.packs.end());
-  if (auto version = checkFormatVersion(*source, *manifest); !version) {
-    return Error{version.error()};
+  for (formats::LevelInfo& level : manifest->levels) {
+    // Sorted for lookups, each pack's index size kept beside it.
+    std::vector<size_t> order(level.packs.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(),
+              [&](size_t a, size_t b) { return level.packs[a] < level.packs[b]; });
+    std::vector<formats::PackId> packs;
+    std::vector<uint32_t> indexBytes;
+    for (size_t i : order) {
+      packs.push_back(level.packs[i]);
+      if (!level.packIndexBytes.empty()) indexBytes.push_back(level.packIndexBytes[i]);
+    }
+    level.packs = std::move(packs);
+    level.packIndexBytes = std::move(indexBytes);
   }
-  return std::unique_ptr<TileStore>(new TileStore(std::move(source), std::move(*manifest), sea));
+  std::unique_ptr<TileStore> store(new TileStore(std::move(source), std::move(*manifest), sea));
+  // A pyramid of another pack format version is refused as a whole: its first level-0 pack
+  // (the first any view reads, so opened now) says so. Unreadable or damaged packs are left to
+  // be reported one by one when read.
+  const auto& first = store->manifest_.levels;
+  if (!first.empty() && !first[0].packs.empty()) {
+    auto opened = store->pack(first[0].packs.front());
+    if (!opened && store->versionRefused_) return Error{opened.error()};
+  }
+  return store;
 }
 
 Result<std::shared_ptr<const TileStore::OpenPack>> TileStore::pack(const formats::PackId& id) {
@@ -62,9 +65,21 @@ Result<std::shared_ptr<const TileStore::OpenPack>> TileStore::openPack(const for
   const std::string name = formats::packName(id);
   const std::string path = source_->locationOf(name);
   formats::PackLayout layout = manifest_.packLayout();
-  // One read (one range request) for the header and the index the manifest's layout predicts;
-  // a pack of another readable version has another index size and takes a second read.
-  auto opened = source_->open(name, layout.indexEndOffset());
+  // One read (one range request) for the header and the index: a compressed index's first
+  // kPackFirstReadBytes (its blocks too, for a small pack), an uncompressed one's exact size. A
+  // longer index, or a pack of an older version, takes a second read.
+  // The manifest says how long a version-5 pack's index is: exactly header and index then.
+  size_t firstRead =
+      layout.hasCompressedIndex() ? formats::kPackFirstReadBytes : layout.indexEndOffset();
+  if (id.level < manifest_.levels.size()) {
+    const formats::LevelInfo& level = manifest_.levels[id.level];
+    const auto at = std::lower_bound(level.packs.begin(), level.packs.end(), id);
+    if (at != level.packs.end() && *at == id && !level.packIndexBytes.empty()) {
+      firstRead = formats::kPackHeaderBytes +
+                  level.packIndexBytes[static_cast<size_t>(at - level.packs.begin())];
+    }
+  }
+  auto opened = source_->open(name, firstRead);
   if (!opened) return Error{opened.error()};
   const uint64_t fileBytes = opened->file->sizeBytes();
   std::vector<std::byte> head = std::move(opened->head);
@@ -72,12 +87,21 @@ Result<std::shared_ptr<const TileStore::OpenPack>> TileStore::openPack(const for
     return makeError(path + ": truncated pack (" + std::to_string(fileBytes) + " bytes)");
   };
   if (head.size() < formats::kPackHeaderBytes) return truncated();
-  const std::optional<uint32_t> version = formats::packFormatVersionOf(head);
-  if (version && formats::checkPackFormatVersion(*version, path)) layout.formatVersion = *version;
-  if (head.size() != layout.indexEndOffset()) {
-    if (fileBytes < layout.indexEndOffset()) return truncated();
-    head.resize(layout.indexEndOffset());
-    if (auto read = opened->file->read(head, 0); !read) return Error{read.error()};
+  if (const auto version = formats::packFormatVersionOf(head)) {
+    if (auto readable = formats::checkPackFormatVersion(*version, path); !readable) {
+      versionRefused_ = true;
+      return Error{readable.error()};
+    }
+  }
+  const std::optional<uint64_t> indexEnd = formats::packIndexEndOffset(head);
+  if (indexEnd && *indexEnd > head.size()) {
+    if (fileBytes < *indexEnd) return truncated();
+    const size_t have = head.size();
+    head.resize(static_cast<size_t>(*indexEnd));
+    if (auto read = opened->file->read(std::span(head).subspan(have), have); !read) {
+      return Error{read.error()};
+    }
+    ++indexContinuations_;
   }
   auto index = formats::decodePackIndex(head, fileBytes, path);
   if (!index) return Error{index.error()};
@@ -86,7 +110,8 @@ Result<std::shared_ptr<const TileStore::OpenPack>> TileStore::openPack(const for
     return makeError(path + ": pack header disagrees with the manifest");
   }
   ++packIndexReads_;
-  return std::make_shared<const OpenPack>(std::move(opened->file), std::move(*index));
+  return std::make_shared<const OpenPack>(std::move(opened->file), std::move(*index),
+                                          std::move(head));
 }
 
 std::vector<std::string> TileStore::takeNewPackErrors() { return packs_.takeNewErrors(); }
@@ -140,7 +165,10 @@ Result<terrain::HeightBlock> TileStore::loadBlock(const geo::TileId& tile) {
   if (!e.present()) return makeError(location() + ": the pyramid has no " + name);
 
   std::vector<std::byte> bytes(p.index.layout.blockBytes());
-  if (auto read = p.file->read(bytes, e.blockOffset); !read) {
+  if (e.blockOffset + bytes.size() <= p.head.size()) {
+    std::memcpy(bytes.data(), p.head.data() + e.blockOffset, bytes.size());  // read with the index
+    ++blocksFromHead_;
+  } else if (auto read = p.file->read(bytes, e.blockOffset); !read) {
     packs_.noteError(p.index.id, read.error());
     return Error{read.error()};
   }

@@ -71,7 +71,11 @@ class TileStore final : public TerrainSource {
   std::vector<std::string> takeNewSourceErrors() override { return takeNewPackErrors(); }
   void forgetSourceFailures() override { forgetFailedPacks(); }
 
+  // Blocks loaded, and of them those found in the bytes read with their pack's index.
   uint64_t blockReads() const { return blockReads_.load(); }
+  uint64_t blocksFromHead() const { return blocksFromHead_.load(); }
+  // Pack indexes longer than the first read (or of an older version): a second read each.
+  uint64_t indexContinuations() const { return indexContinuations_.load(); }
   uint64_t packIndexReads() const { return packIndexReads_.load(); }
   // Packs that could not be opened: each is tried once, then its error is returned from memory.
   uint64_t packOpenFailures() const { return packOpenFailures_.load(); }
@@ -96,6 +100,9 @@ class TileStore final : public TerrainSource {
   terrain::SeaSurface sea_;
   OpenPacks<OpenPack> packs_;
   std::atomic<uint64_t> blockReads_{0};
+  std::atomic<uint64_t> blocksFromHead_{0};
+  std::atomic<uint64_t> indexContinuations_{0};
+  std::atomic<bool> versionRefused_{false};  // a pack of a version this globe does not read
   std::atomic<uint64_t> packIndexReads_{0};
   std::atomic<uint64_t> packOpenFailures_{0};
 };

@@ -37,6 +37,7 @@ struct PackSummary {
   uint64_t tiles = 0;
   formats::BoundsDegrees bounds{180, 90, -180, -90};
   terrain::HeightRange range{INT16_MAX, INT16_MIN};
+  uint32_t indexBytes = 0;  // the pack's stored index (version 5), for the manifest
 };
 
 PackSummary summarise(const formats::Pack& pack) {
@@ -135,7 +136,9 @@ struct PackJob {
           existing->layout.verticesPerSide == layout.verticesPerSide &&
           existing->layout.formatVersion == formats::kPackFormatVersion) {
         reused = true;
-        return summarise(*existing);
+        PackSummary summary = summarise(*existing);
+        summary.indexBytes = existing->layout.indexBytes;
+        return summary;
       }
     }
     std::map<formats::PackId, formats::Pack> children;
@@ -157,10 +160,16 @@ struct PackJob {
     fs::create_directories(path.parent_path(), error);
     if (error)
       return makeError(path.parent_path().string() + ": cannot create: " + error.message());
-    if (auto written = transport::writeFileAtomically(path, formats::encodePack(*pack)); !written) {
+    const std::vector<std::byte> bytes = formats::encodePack(*pack);
+    if (auto written = transport::writeFileAtomically(path, bytes); !written) {
       return writeFailed(written.error());
     }
-    return summarise(*pack);
+    PackSummary summary = summarise(*pack);
+    const auto indexEnd = formats::packIndexEndOffset(bytes);
+    if (pack->layout.hasCompressedIndex() && indexEnd) {
+      summary.indexBytes = static_cast<uint32_t>(*indexEnd - formats::kPackHeaderBytes);
+    }
+    return summary;
   }
 };
 
@@ -285,6 +294,12 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
     formats::LevelInfo& info = manifest.levels[level];
     info.level = level;
     info.packs = packs;
+    info.packIndexBytes.clear();
+    for (const PackSummary& s : summaries) info.packIndexBytes.push_back(s.indexBytes);
+    if (std::find(info.packIndexBytes.begin(), info.packIndexBytes.end(), 0u) !=
+        info.packIndexBytes.end()) {
+      info.packIndexBytes.clear();  // all or none
+    }
     info.bounds = {180, 90, -180, -90};
     info.heightRange = {INT16_MAX, INT16_MIN};
     for (const PackSummary& s : summaries) {

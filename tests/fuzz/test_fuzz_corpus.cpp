@@ -44,8 +44,8 @@ TEST(FuzzCorpus, ElevationImage) { EXPECT_GT(replay("elevation_image"), 0U); }
 TEST(FuzzCorpus, Pmtiles) { EXPECT_GT(replay("pmtiles"), 0U); }
 TEST(FuzzCorpus, ServiceXml) { EXPECT_GT(replay("service_xml"), 0U); }
 
-// The hand-made seeds are valid packs of the current format; the version-1 seed (negative samples
-// meant sea then) is refused by name as made by an older globe-tiler.
+// The hand-made seeds are valid packs (version 2, and 5 with its compressed index); the version-1
+// seed (negative samples meant sea then) is refused by name as made by an older globe-tiler.
 TEST(FuzzCorpus, PackSeedsDecodeAndTheVersion1SeedIsRefused) {
   auto read = [](const char* name) {
     std::ifstream in(kCorpus / "pack" / name, std::ios::binary);
@@ -54,7 +54,9 @@ TEST(FuzzCorpus, PackSeedsDecodeAndTheVersion1SeedIsRefused) {
     std::memcpy(bytes.data(), chars.data(), chars.size());
     return bytes;
   };
-  for (const char* seed : {"seed-p1n5.pack", "seed-p2n3.pack", "seed-p4n3-empty.pack"}) {
+  for (const char* seed : {"seed-p1n5.pack", "seed-p2n3.pack", "seed-p4n3-empty.pack",
+                           "seed-p1n5-version5.pack", "seed-p2n3-version5.pack",
+                           "seed-p4n3-empty-version5.pack"}) {
     const auto pack = globe::formats::decodePack(read(seed), seed);
     EXPECT_TRUE(pack.ok()) << seed << ": " << pack.error();
   }
@@ -66,20 +68,14 @@ TEST(FuzzCorpus, PackSeedsDecodeAndTheVersion1SeedIsRefused) {
 }
 
 // Regression: a 16 MiB pack claiming 1024x1024 slots of 1025x1025 vertices (no tiles present)
-// once made decodePack allocate 2 TiB for its blocks; it is now refused by name.
+// once made decodePack allocate 2 TiB for its blocks; it is now refused by name. (Version 4: its
+// index uncompressed, as it was found.)
 TEST(FuzzRegression, PackWithHugeLayoutIsRefusedWithoutAllocating) {
-  const globe::formats::PackLayout layout{1024, 1025};
+  const globe::formats::PackLayout layout{1024, 1025, 4};
   std::vector<std::byte> bytes(layout.fileBytes(0));
   const char magic[] = "GLOBEPK1";
   for (size_t i = 0; i < 8; ++i) bytes[i] = static_cast<std::byte>(magic[i]);
-  const uint32_t header[8] = {globe::formats::kPackFormatVersion,
-                              10,
-                              0,
-                              0,
-                              layout.tilesPerSide,
-                              layout.verticesPerSide,
-                              0,
-                              0};
+  const uint32_t header[8] = {4, 10, 0, 0, layout.tilesPerSide, layout.verticesPerSide, 0, 0};
   for (size_t i = 0; i < 8; ++i) {
     for (size_t b = 0; b < 4; ++b) {
       bytes[8 + 4 * i + b] = static_cast<std::byte>((header[i] >> (24 - 8 * b)) & 0xFFU);

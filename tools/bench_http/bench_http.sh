@@ -86,11 +86,16 @@ for entry in "${VIEWS[@]}"; do
   for run in $(seq "$RUNS"); do
     rm -rf "$WORK/cache"
     before=$(log_lines)
-    cold+=("$(seconds snap "$FAR/pyramid" --cache-dir "$WORK/cache")")
+    start=$(date +%s.%N)
+    snap "$FAR/pyramid" --cache-dir "$WORK/cache" > "$WORK/cold-$run.out"
+    end=$(date +%s.%N)
+    cold+=("$(python3 -c "print(f'{$end - $start:.3f}')")")
+    loads=$(grep -o '[0-9]* tile loads' "$WORK/cold-$run.out" | cut -d' ' -f1)
     read -r coldRequests coldBytes <<< "$(log_stats "$before")"
     if [ "$run" = 1 ]; then
       # The blocks it fetched, as one file per tile, for the z/x/y comparison.
       tail -n +"$((before + 1))" "$WORK/nginx/access.log" > "$WORK/cold.log"
+      coldLoads=$loads
     fi
     before=$(log_lines)
     warmFar+=("$(seconds snap "$FAR/pyramid" --cache-dir "$WORK/cache")")
@@ -107,8 +112,8 @@ for entry in "${VIEWS[@]}"; do
     warmFresh+=("$(seconds snap "$FAR/fresh" --cache-dir "$WORK/cache-fresh")")
     read -r freshRequests _ <<< "$(log_stats "$before")"
   done
-  python3 tools/bench_http/zxy_from_log.py "$WORK/cold.log" "$WORK/www" "zxy-$name" 2>/dev/null \
-    "$FAR" > "$WORK/curl-$name.cfg"
+  python3 tools/bench_http/zxy_from_log.py "$WORK/cold.log" "$WORK/www" "zxy-$name" \
+    "$FAR" "$coldLoads" 2>/dev/null > "$WORK/curl-$name.cfg"
   zxy=()
   for run in $(seq "$RUNS"); do
     before=$(log_lines)

@@ -1,33 +1,60 @@
 #!/usr/bin/env python3
 """Cuts the blocks a cold run fetched (nginx access log lines "GET URI 206 "bytes=A-B" SENT")
-out of their packs into one file per range under WWW/PREFIX/<pack path>/<first byte>.bin, and
+out of their packs into one file per block under WWW/PREFIX/<pack path>/<first byte>.bin, and
 prints a curl config that fetches each of them from BASE_URL: the z/x/y layout's transport, for
-the same bytes. Pack headers and indexes (ranges starting at byte 0) are left out: a z/x/y tree
-has none.
+the same blocks. Pack headers and indexes are left out (a z/x/y tree has none); blocks a reader
+took from the bytes it read with a pack's index (a version-5 pack's first read holds its first
+blocks) are cut from those bytes, as many as LOADED (the run's tile loads) says there were.
 
-    zxy_from_log.py ACCESS_LOG WWW PREFIX BASE_URL > curl.cfg
+    zxy_from_log.py ACCESS_LOG WWW PREFIX BASE_URL [LOADED] > curl.cfg
 """
 import os
 import re
+import struct
 import sys
 
 log, www, prefix, base = sys.argv[1:5]
+loaded = int(sys.argv[5]) if len(sys.argv) > 5 else None
 pattern = re.compile(r'^GET (\S+\.pack) 206 "bytes=(\d+)-(\d+)"')
-count = 0
+HEADER = 40
+
+
+def block_bytes(header):
+    version, _, _, _, tiles, n, _, index_bytes = struct.unpack('>8I', header[8:40])
+    side = n + 4 if version >= 3 else n
+    return side * side * 2
+
+
+def index_end(header):
+    version, _, _, _, tiles, _, _, index_bytes = struct.unpack('>8I', header[8:40])
+    entry = 24 if version >= 4 else 20 if version >= 3 else 16
+    return HEADER + (index_bytes if version >= 5 else tiles * tiles * entry)
+
+
+blocks = []      # (uri, first byte, bytes) fetched by their own range
+in_heads = []    # the same for blocks that came with an index read
 for line in open(log):
     m = pattern.match(line)
     if not m:
         continue
     uri, first, last = m.group(1), int(m.group(2)), int(m.group(3))
-    if first == 0:
-        continue
     with open(os.path.join(www, uri.lstrip('/')), 'rb') as pack:
-        pack.seek(first)
-        data = pack.read(last - first + 1)
+        header = pack.read(HEADER)
+        if first != 0:
+            pack.seek(first)
+            blocks.append((uri, first, pack.read(last - first + 1)))
+            continue
+        size, start = block_bytes(header), index_end(header)
+        offset = start
+        while offset + size <= last + 1:
+            pack.seek(offset)
+            in_heads.append((uri, offset, pack.read(size)))
+            offset += size
+extra = max(0, (loaded - len(blocks)) if loaded is not None else 0)
+for uri, first, data in blocks + in_heads[:extra]:
     name = os.path.join(prefix, uri.lstrip('/').replace('.pack', ''), f'{first}.bin')
     os.makedirs(os.path.join(www, os.path.dirname(name)), exist_ok=True)
     with open(os.path.join(www, name), 'wb') as out:
         out.write(data)
     print(f'url = "{base}/{name}"\noutput = "/dev/null"')
-    count += 1
-print(f'{count} files', file=sys.stderr)
+print(f'{len(blocks)} blocks by range, {min(extra, len(in_heads))} read with an index', file=sys.stderr)
