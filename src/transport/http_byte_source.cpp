@@ -85,7 +85,11 @@ class HttpByteSource final : public ByteSource,
     const std::string key = "get " + url;
     std::optional<CacheEntry> cached = cache_ ? cache_->get(key) : std::nullopt;
     if (options_.offline) {
-      if (!cached) return makeError(url + ": not in the disk cache (offline)");
+      if (!cached) {
+        // A file the server said it does not have (a tile service's 404) is absent offline too.
+        if (cache_ && cache_->get("absent " + url)) return std::optional<std::vector<std::byte>>();
+        return makeError(url + ": not in the disk cache (offline)");
+      }
       return std::optional<std::vector<std::byte>>(std::move(cached->body));
     }
     // Still fresh by the server's Cache-Control max-age: no round trip at all.
@@ -111,7 +115,11 @@ class HttpByteSource final : public ByteSource,
       keepFresh(url, r.etag, r.maxAgeSeconds);
       return std::optional<std::vector<std::byte>>(std::move(r.body));
     }
-    if (r.status == 404 || r.status == 410) return std::optional<std::vector<std::byte>>();
+    if (r.status == 404 || r.status == 410) {
+      // Remembered for --offline only: online the server is asked again (it may have it now).
+      if (cache_) (void)cache_->put("absent " + url, CacheEntry{"absent", 0, {}});
+      return std::optional<std::vector<std::byte>>();
+    }
     if (r.bodyTooLong) {
       return makeError(url + ": larger than " + std::to_string(maxBytes) + " bytes");
     }

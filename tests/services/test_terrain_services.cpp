@@ -339,6 +339,42 @@ TEST(TerrainServices, TerrainRgbOverYushanAndTerrariumMatchAnIndependentDecoder)
   }
 }
 
+// A service read once is read again from the disk cache alone, the server gone.
+TEST(TerrainServices, OfflineFromTheDiskCache) {
+  Site site;
+  auto server = NginxServer::start({site.root, kAcceptRule});
+  ASSERT_TRUE(server);
+  const fs::path points =
+      writePoints(site.dir, "p.txt", randomPoints(4.72, 53.01, 4.89, 53.18, 40, 21));
+  const std::string texel = "quantized-mesh:" + server->url("/qm/texel-ahn4");
+  const std::string taiwan =
+      "terrain-rgb:" + server->url("/taiwan/{z}/{x}/{y}.png") + "?minzoom=7&maxzoom=13";
+  const auto online = query(texel, points, site.dir / "cache");
+  const auto onlineTaiwan =
+      query(taiwan, writePoints(site.dir, "t.txt", {{120.9572, 23.47}}), site.dir / "cache");
+  server->stop();
+  auto offline = [&](const std::string& source, const fs::path& file) {
+    const auto r = runGlobe("query --mode exact --offline '" + source + "' --cache-dir " +
+                            (site.dir / "cache").string() + " < " + file.string());
+    EXPECT_EQ(r.exitCode, 0) << r.output.substr(r.output.find("globe query"));
+    return parseAnswers(r.output, true);
+  };
+  const auto again = offline(texel, points);
+  ASSERT_EQ(again.size(), online.size());
+  for (size_t i = 0; i < online.size(); ++i)
+    EXPECT_EQ(again[i].heightMeters, online[i].heightMeters);
+  const auto againTaiwan = offline(taiwan, site.dir / "t.txt");
+  ASSERT_EQ(againTaiwan.size(), 1u);
+  EXPECT_EQ(againTaiwan[0].heightMeters, onlineTaiwan[0].heightMeters);
+  // What the cache lacks is named, not guessed.
+  const auto missing =
+      runGlobe("query --offline 'quantized-mesh:" + server->url("/qm/denhaag-ahn-octnormals") +
+               "' --cache-dir " + (site.dir / "cache").string() + " < " + points.string());
+  EXPECT_NE(missing.exitCode, 0);
+  EXPECT_NE(missing.output.find("not in the disk cache (offline)"), std::string::npos)
+      << missing.output;
+}
+
 // Snapshots from both kinds of service: Taiwan's mountains over its sea (Terrain-RGB writes the
 // sea as 0 m: water), The Hague's lowland (Cesium terrain, 65-vertex blocks drawn).
 TEST(TerrainServices, SnapshotsFromServices) {
