@@ -190,9 +190,9 @@ TEST(TerrainServices, CesiumQuantizedMeshHeightsMatchAnIndependentDecoder) {
     uint32_t x0, y0, x1, y1;  // the z15 tiles layer.json lists (TMS)
     double p95Meters;
   };
-  // The Hague's dune and canal banks make steep cells where the grid's diagonal is not the TIN's.
-  for (const Set& set : {Set{"denhaag-ahn-octnormals", 33549, 25856, 33563, 25866, 1.0},
-                         Set{"texel-ahn4", 33626, 26041, 33640, 26051, 0.25}}) {
+  // A steep cell whose diagonal is not the TIN's differs by up to a metre: rare.
+  for (const Set& set : {Set{"denhaag-ahn-octnormals", 33549, 25856, 33563, 25866, 0.05},
+                         Set{"texel-ahn4", 33626, 26041, 33640, 26051, 0.05}}) {
     SCOPED_TRACE(set.name);
     const double west = -180 + set.x0 * z15, east = -180 + (set.x1 + 1) * z15;
     const double south = -90 + set.y0 * z15, north = -90 + (set.y1 + 1) * z15;
@@ -336,6 +336,47 @@ TEST(TerrainServices, TerrainRgbOverYushanAndTerrariumMatchAnIndependentDecoder)
                                   reference("xyz_elevation_reference.py", arguments, anywhere));
     EXPECT_EQ(a.count, 200u);
     EXPECT_LT(a.median, 3.0) << a.worst;
+  }
+}
+
+// Cesium's heightmap-1.0 through a layer.json: the two Dutch z16 tiles (one raw, its northern
+// neighbour too), their 65x65 samples the block's vertices exactly.
+TEST(TerrainServices, HeightmapTilesAreTheBlocksVertices) {
+  Site site;
+  fs::create_directories(site.root / "hm/16/67465");
+  for (const char* y : {"51617", "51618"}) {
+    fs::copy_file(kInterop / "heightmap-1.0" / (std::string(y) + ".terrain"),
+                  site.root / "hm/16/67465" / (std::string(y) + ".terrain"));
+  }
+  std::ofstream layer(site.root / "hm/layer.json");
+  layer << R"({"format":"heightmap-1.0","tiles":["{z}/{x}/{y}.terrain"],"available":[)";
+  for (int z = 0; z < 16; ++z) layer << "[],";
+  layer << R"([{"startX":67465,"startY":51617,"endX":67465,"endY":51618}]]})";
+  layer.close();
+  auto server = NginxServer::start({site.root, ""});
+  ASSERT_TRUE(server);
+  const double size = 180.0 / 65536, step = size / 64;
+  std::vector<Point> points;
+  std::vector<double> expected;
+  for (const uint32_t tmsY : {51617u, 51618u}) {
+    std::ifstream in(kInterop / "heightmap-1.0" / (std::to_string(tmsY) + ".terrain"),
+                     std::ios::binary);
+    const std::vector<char> bytes{std::istreambuf_iterator<char>(in), {}};
+    const double west = -180 + 67465 * size, north = -90 + (tmsY + 1) * size;
+    for (int k = 0; k < 40; ++k) {
+      const int i = 1 + (k * 7) % 63, j = 1 + (k * 13) % 63;  // rows from the north
+      const auto lo = static_cast<uint8_t>(bytes[2 * (i * 65 + j)]);
+      const auto hi = static_cast<uint8_t>(bytes[2 * (i * 65 + j) + 1]);
+      points.push_back({west + j * step, north - i * step});
+      expected.push_back((lo | hi << 8) / 5.0 - 1000.0);
+    }
+  }
+  const auto ours = query("quantized-mesh:" + server->url("/hm"),
+                          writePoints(site.dir, "hm.txt", points), site.dir / "cache");
+  ASSERT_EQ(ours.size(), expected.size());
+  for (size_t k = 0; k < ours.size(); ++k) {
+    EXPECT_EQ(ours[k].level, 16) << k;
+    EXPECT_NEAR(ours[k].heightMeters, expected[k], 0.01) << k;
   }
 }
 
