@@ -77,12 +77,24 @@ Result<QueryReport> runQuery(const QueryOptions& options, std::istream& in, std:
       ++report.rejected;
       continue;
     }
-    auto found = blocks.find(*tile);
-    if (found == blocks.end()) {
-      if (blocks.size() >= kMaxCachedBlocks) blocks.clear();
-      auto block = (*store)->loadBlock(*tile);
-      if (!block) return Error{block.error()};
-      found = blocks.emplace(*tile, std::move(*block)).first;
+    auto found = blocks.end();
+    for (;;) {
+      found = blocks.find(*tile);
+      if (found == blocks.end()) {
+        if (blocks.size() >= kMaxCachedBlocks) blocks.clear();
+        auto block = (*store)->loadBlock(*tile);
+        if (!block) return Error{block.error()};
+        found = blocks.emplace(*tile, std::move(*block)).first;
+      }
+      // A service's tiles may tell of finer ones (Cesium's metadata availability): deeper then.
+      if (options.level || tile->level >= maxLevel) break;
+      const auto finer = geo::GeographicTilingScheme::positionToTile(
+          position->first, position->second, tile->level + 1);
+      auto finerSummary = finer ? (*store)->summary(*finer)
+                                : Result<std::optional<terrain::TileSummary>>(std::nullopt);
+      if (!finerSummary) return Error{finerSummary.error()};
+      if (!*finerSummary) break;
+      tile = finer;
     }
     terrain::RenderingTileArray array;
     array.assign({terrain::makeArrayTile(*tile, found->second)});

@@ -86,8 +86,11 @@ Result<TerrainLayerJson> parseTerrainLayerJson(std::string_view text, const std:
       }
       // Trailing empty levels say nothing is there.
       while (!layer.available.empty() && layer.available.back().empty()) layer.available.pop_back();
+      // Beyond what it lists, only tiles' metadata can say what exists (metadataAvailability):
+      // then its maxzoom bounds the levels, else the last level listed does.
       if (!layer.available.empty()) {
-        layer.maxZoom = static_cast<uint32_t>(layer.available.size() - 1);
+        const auto listed = static_cast<uint32_t>(layer.available.size() - 1);
+        layer.maxZoom = layer.metadataAvailability > 0 ? std::max(layer.maxZoom, listed) : listed;
       }
     }
     if (layer.maxZoom > kMaxServiceLevel) {

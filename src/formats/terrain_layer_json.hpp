@@ -25,7 +25,9 @@ struct TerrainLayerJson {
   std::string attribution;
   std::vector<std::string> extensions;
   uint32_t minZoom = 0;
-  uint32_t maxZoom = 0;  // the deepest level `available` lists (or maxzoom when it lists none)
+  // The deepest level `available` lists; maxzoom when it lists none, or when tiles' metadata
+  // lists more (metadataAvailability).
+  uint32_t maxZoom = 0;
   // available[level]: the tiles present at that level; empty means every tile to maxZoom.
   std::vector<std::vector<TileRange>> available;
   // Levels at which tiles' metadata extension lists their descendants' availability (0: none).

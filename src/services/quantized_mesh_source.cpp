@@ -152,9 +152,9 @@ Result<std::unique_ptr<ServiceTerrainSource>> openQuantizedMeshSource(
   d.stepDegrees =
       180.0 / static_cast<double>(uint64_t{1} << layer->maxZoom) / (kServiceVerticesPerSide - 1);
   if (!layer->available.empty()) {
-    // The finest level's extent.
+    // The finest listed level's extent (tiles' metadata may list deeper ones).
     formats::BoundsDegrees b{180, 90, -180, -90};
-    const uint32_t z = layer->maxZoom;
+    const auto z = static_cast<uint32_t>(layer->available.size() - 1);
     const double size = 180.0 / static_cast<double>(uint64_t{1} << z);
     for (const formats::TileRange& r : layer->available[z]) {
       b.west = std::min(b.west, -180 + r.startX * size);

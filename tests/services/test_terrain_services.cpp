@@ -5,6 +5,8 @@
 // snapshot rendered from a service.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -378,6 +380,52 @@ TEST(TerrainServices, HeightmapTilesAreTheBlocksVertices) {
     EXPECT_EQ(ours[k].level, 16) << k;
     EXPECT_NEAR(ours[k].heightMeters, expected[k], 0.01) << k;
   }
+}
+
+// Availability from the tiles' metadata extension (as Cesium ion publishes it): Texel's layer.json
+// cut to zoom 14 with metadataAvailability, each z14 tile carrying its children in metadata; the
+// z15 tiles are found (and drawn) only through it.
+TEST(TerrainServices, TheMetadataExtensionListsTheNextLevel) {
+  Site site;
+  const fs::path texel = site.root / "qm/texel-ahn4";
+  // The levels layer.json lists stop at 14 (its 15-19 go); the tiles say the rest.
+  std::ifstream in(texel / "layer.json");
+  nlohmann::json layer = nlohmann::json::parse(in);
+  layer["available"].erase(layer["available"].begin() + 15, layer["available"].end());
+  layer["maxzoom"] = 15;
+  layer["metadataAvailability"] = 1;
+  std::ofstream(texel / "layer-meta.json") << layer.dump();
+  for (const auto& e : fs::directory_iterator(texel / "14")) {
+    const uint32_t x = static_cast<uint32_t>(std::stoul(e.path().filename().string()));
+    for (const auto& f : fs::directory_iterator(e.path())) {
+      const uint32_t y = static_cast<uint32_t>(std::stoul(f.path().stem().string()));
+      const std::string meta = "{\"available\":[[{\"startX\":" + std::to_string(2 * x) +
+                               ",\"startY\":" + std::to_string(2 * y) +
+                               ",\"endX\":" + std::to_string(2 * x + 1) +
+                               ",\"endY\":" + std::to_string(2 * y + 1) + "}]]}";
+      std::ofstream out(f.path(), std::ios::binary | std::ios::app);
+      const uint32_t jsonBytes = static_cast<uint32_t>(meta.size());
+      const uint32_t length = 4 + jsonBytes;
+      out.put(4);
+      out.write(reinterpret_cast<const char*>(&length), 4);
+      out.write(reinterpret_cast<const char*>(&jsonBytes), 4);
+      out << meta;
+    }
+  }
+  auto server = NginxServer::start({site.root, kAcceptRule});
+  ASSERT_TRUE(server);
+  const double z15 = 180.0 / 32768;
+  const std::vector<Point> points = randomPoints(-180 + 33627 * z15, -90 + 26042 * z15,
+                                                 -180 + 33639 * z15, -90 + 26050 * z15, 50, 31);
+  const fs::path file = writePoints(site.dir, "meta.txt", points);
+  const auto ours = query("quantized-mesh:" + server->url("/qm/texel-ahn4/layer-meta.json"), file,
+                          site.dir / "c");
+  const auto theirs = reference("quantized_mesh_reference.py", texel.string(), file);
+  ASSERT_EQ(ours.size(), 50u);
+  for (const Answer& a : ours) EXPECT_EQ(a.level, 15);
+  const Differences d = compare(ours, theirs);
+  EXPECT_EQ(d.count, 50u);
+  EXPECT_LT(d.p95, 0.05) << d.worst;
 }
 
 // A service read once is read again from the disk cache alone, the server gone.
