@@ -290,7 +290,10 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
     auto block = loader_->get(tile);
     if (!block) continue;
     if (auto uploaded = uploadIfNeeded(tile, *block, gpu); !uploaded) {
-      core::warn(options_.warnings, geo::tileName(tile) + ": " + uploaded.error());
+      // Each tile's failure once (it is tried again every frame): not a message per frame.
+      if (failedUploads_.size() < kFailedUploadsReported && failedUploads_.insert(tile).second) {
+        core::warn(options_.warnings, geo::tileName(tile) + ": " + uploaded.error());
+      }
       continue;
     }
     tiles_.push_back(tile);

@@ -10,6 +10,7 @@
 #include <optional>
 #include <span>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "camera/camera_pose.hpp"
@@ -135,6 +136,9 @@ class TerrainScene {
   // once per tile.
   std::array<double, 4> terrainStepDegreesAt(const geo::TileId& tile);
   static constexpr size_t kTerrainStepEntries = 1u << 16;
+  // Tiles whose upload to the GPU failed and was reported (each once; bounded).
+  std::unordered_set<geo::TileId> failedUploads_;
+  static constexpr size_t kFailedUploadsReported = 64;
 
   SceneOptions options_;
   geo::Ellipsoid ellipsoid_;
