@@ -1,12 +1,11 @@
 #include "services/pmtiles_imagery.hpp"
 
-#include <list>
-#include <mutex>
 
 #include <nlohmann/json.hpp>
 
 #include "formats/gzip_bytes.hpp"
 #include "formats/pmtiles.hpp"
+#include "services/recent_items.hpp"
 #include "services/url_reader.hpp"
 #include "services/url_template.hpp"
 #include "transport/http_client.hpp"
@@ -79,23 +78,13 @@ class PmtilesImagery final : public ServiceImagery {
 
   Result<std::shared_ptr<const std::vector<formats::PmtilesEntry>>> leafDirectory(uint64_t offset,
                                                                                   uint64_t length) {
-    {
-      std::lock_guard lock(mutex_);
-      for (auto it = leaves_.begin(); it != leaves_.end(); ++it) {
-        if (it->first == offset) {
-          leaves_.splice(leaves_.begin(), leaves_, it);
-          return it->second;
-        }
-      }
-    }
+    if (auto kept = leaves_.find(offset)) return *kept;
     auto bytes = readSection(offset, length, kMaxDirectoryBytes, "a leaf directory");
     if (!bytes) return Error{bytes.error()};
     auto entries = decodeDirectory(*bytes, header_, file_->location());
     if (!entries) return Error{entries.error()};
     auto shared = std::make_shared<const std::vector<formats::PmtilesEntry>>(std::move(*entries));
-    std::lock_guard lock(mutex_);
-    leaves_.emplace_front(offset, shared);
-    if (leaves_.size() > kLeafDirectories) leaves_.pop_back();
+    leaves_.put(offset, shared);
     return shared;
   }
 
@@ -115,8 +104,8 @@ class PmtilesImagery final : public ServiceImagery {
   std::shared_ptr<const transport::ByteFile> file_;
   formats::PmtilesHeader header_;
   std::vector<formats::PmtilesEntry> root_;
-  std::mutex mutex_;
-  std::list<std::pair<uint64_t, std::shared_ptr<const std::vector<formats::PmtilesEntry>>>> leaves_;
+  RecentItems<uint64_t, std::shared_ptr<const std::vector<formats::PmtilesEntry>>> leaves_{
+      kLeafDirectories};
 };
 
 bool supported(formats::PmtilesCompression c) {
@@ -199,8 +188,8 @@ Result<std::unique_ptr<ServiceImagery>> openPmtilesImagery(
   d.location = "pmtiles:" + spec;
   d.driver = "PMTiles";
   d.tiling = webMercatorQuad(header->minZoom, header->maxZoom, tileSize);
-  d.bounds = {header->westDegrees, std::max(header->southDegrees, -85.0511287798),
-              header->eastDegrees, std::min(header->northDegrees, 85.0511287798)};
+  d.bounds = {header->westDegrees, std::max(header->southDegrees, -kWebMercatorMaxLatitudeDegrees),
+              header->eastDegrees, std::min(header->northDegrees, kWebMercatorMaxLatitudeDegrees)};
   d.attribution = options.count("attribution") ? options["attribution"] : attribution;
   d.remote = (*source)->remote();
   return std::unique_ptr<ServiceImagery>(std::make_unique<PmtilesImagery>(

@@ -10,7 +10,6 @@
 namespace globe::services {
 namespace {
 
-constexpr size_t kDecodedSourceTiles = 96;
 constexpr double kDegreesPerMeterAtEquator = 360.0 / (2 * 3.141592653589793 * 6378137.0);
 
 double unitsToDegrees(TileCrs crs, double units) {
@@ -98,15 +97,9 @@ std::string ServiceImagery::tileLocation(const geo::TileId& tile) const {
 Result<std::shared_ptr<const ServiceImagery::Decoded>> ServiceImagery::sourceTile(
     const Key& key, std::map<Key, std::shared_ptr<const Decoded>>& local) {
   if (auto it = local.find(key); it != local.end()) return it->second;
-  {
-    std::lock_guard lock(mutex_);
-    for (auto it = recent_.begin(); it != recent_.end(); ++it) {
-      if (it->first == key) {
-        recent_.splice(recent_.begin(), recent_, it);
-        local.emplace(key, it->second);
-        return it->second;
-      }
-    }
+  if (auto kept = recent_.find(key)) {
+    local.emplace(key, *kept);
+    return *kept;
   }
   const auto& [m, column, row] = key;
   auto bytes = fetchSourceTile(m, column, row);
@@ -122,9 +115,7 @@ Result<std::shared_ptr<const ServiceImagery::Decoded>> ServiceImagery::sourceTil
     d->rgba = std::move(image->pixels);
     decoded = std::move(d);
   }
-  std::lock_guard lock(mutex_);
-  recent_.emplace_front(key, decoded);
-  if (recent_.size() > kDecodedSourceTiles) recent_.pop_back();
+  recent_.put(key, decoded);
   local.emplace(key, decoded);
   return decoded;
 }

@@ -8,15 +8,14 @@
 
 #include <atomic>
 #include <cstdint>
-#include <list>
 #include <map>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
 #include <tuple>
 #include <vector>
 
+#include "services/recent_items.hpp"
 #include "services/tile_matrix.hpp"
 #include "streaming/imagery_tiles.hpp"
 
@@ -70,8 +69,8 @@ class ServiceImagery : public streaming::ImageryTiles {
   ImageryServiceDescription description_;
   formats::LayerManifest manifest_;
   std::atomic<uint64_t> fetched_{0};
-  std::mutex mutex_;
-  std::list<std::pair<Key, std::shared_ptr<const Decoded>>> recent_;  // decoded source tiles
+  // Decoded source tiles (null: the service has none there).
+  RecentItems<Key, std::shared_ptr<const Decoded>> recent_{96};
 };
 
 }  // namespace globe::services

@@ -10,7 +10,6 @@ namespace globe::services {
 namespace {
 
 constexpr size_t kRangeEntries = 1u << 16;
-constexpr size_t kRecentBlocks = 32;
 // Bounds of the Earth's surface for a tile nothing is known of yet (Dead Sea to Everest, and
 // the service's sea floor should it have one).
 constexpr terrain::HeightRange kUnknownRange{-11000, 8900};
@@ -145,17 +144,11 @@ void ServiceTerrainSource::remember(const geo::TileId& tile, const terrain::Heig
   std::lock_guard lock(mutex_);
   if (ranges_.size() >= kRangeEntries) ranges_.clear();
   ranges_[tile] = terrain::surfaceHeightRange(block);
-  recent_.remove_if([&](const auto& entry) { return entry.first == tile; });
-  recent_.emplace_front(tile, std::make_shared<const terrain::HeightBlock>(block));
-  if (recent_.size() > kRecentBlocks) recent_.pop_back();
+  recent_.put(tile, std::make_shared<const terrain::HeightBlock>(block));
 }
 
 Result<terrain::HeightBlock> ServiceTerrainSource::loadBlock(const geo::TileId& tile) {
-  {
-    std::lock_guard lock(mutex_);
-    for (const auto& [t, block] : recent_)
-      if (t == tile) return *block;
-  }
+  if (auto kept = recent_.find(tile)) return **kept;
   if (!exists(tile)) return makeError(location_ + ": the service has no " + geo::tileName(tile));
   std::optional<ServiceSamples> samples;
   if (publishes(tile)) {

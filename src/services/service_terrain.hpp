@@ -9,7 +9,6 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
-#include <list>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -20,6 +19,7 @@
 #include <glm/vec3.hpp>
 
 #include "geo/ellipsoid.hpp"
+#include "services/recent_items.hpp"
 #include "streaming/terrain_source.hpp"
 
 namespace globe::services {
@@ -98,7 +98,7 @@ class ServiceTerrainSource : public streaming::TerrainSource {
   mutable std::mutex mutex_;
   std::unordered_map<geo::TileId, terrain::HeightRange> ranges_;  // of loaded blocks
   // Recent blocks, for children made from them without fetching them again.
-  std::list<std::pair<geo::TileId, std::shared_ptr<const terrain::HeightBlock>>> recent_;
+  RecentItems<geo::TileId, std::shared_ptr<const terrain::HeightBlock>> recent_{32};
   std::vector<std::string> newErrors_;
   std::vector<std::string> reportedErrors_;
 };

@@ -56,17 +56,8 @@ Result<std::unique_ptr<ServiceImagery>> openXyzImagery(
   auto options = takeQueryOptions(
       pattern, {"minzoom", "maxzoom", "subdomains", "tilesize", "crs", "bounds", "attribution"});
   auto problem = [&](const std::string& what) { return makeError("xyz:" + spec + ": " + what); };
-  if (pattern.find("{z}") == std::string::npos || pattern.find("{x}") == std::string::npos ||
-      (pattern.find("{y}") == std::string::npos && pattern.find("{-y}") == std::string::npos)) {
-    return problem("a tile URL template needs {z}, {x} and {y} (or {-y})");
-  }
-  auto maxZoom = optionNumber(options, "maxzoom", 18, 24);
-  if (!maxZoom) return problem(maxZoom.error());
-  auto minZoom = optionNumber(options, "minzoom", 0, *maxZoom);
-  if (!minZoom) return problem(minZoom.error());
-  auto tileSize = optionNumber(options, "tilesize", 256, 4096);
-  if (!tileSize) return problem(tileSize.error());
-  if (*tileSize != 256 && *tileSize != 512) return problem("tilesize must be 256 or 512");
+  auto xyz = xyzTemplateOptions(pattern, options, 18);
+  if (!xyz) return problem(xyz.error());
   const std::string crs = options.count("crs") ? options["crs"] : "EPSG:3857";
   if (crs != "EPSG:3857" && crs != "EPSG:4326") {
     return problem("crs=" + crs + ": EPSG:3857 (the default) or EPSG:4326");
@@ -74,22 +65,21 @@ Result<std::unique_ptr<ServiceImagery>> openXyzImagery(
   ImageryServiceDescription d;
   d.location = "xyz:" + spec;
   d.driver = "XYZ";
-  d.tiling = crs == "EPSG:4326" ? geographicQuad(*minZoom, *maxZoom, *tileSize)
-                                : webMercatorQuad(*minZoom, *maxZoom, *tileSize);
+  d.tiling = crs == "EPSG:4326" ? geographicQuad(xyz->minZoom, xyz->maxZoom, xyz->tileSize)
+                                : webMercatorQuad(xyz->minZoom, xyz->maxZoom, xyz->tileSize);
   d.bounds = crs == "EPSG:4326" ? formats::BoundsDegrees{-180, -90, 180, 90}
-                                : formats::BoundsDegrees{-180, -85.0511287798, 180, 85.0511287798};
+                                : formats::BoundsDegrees{-180, -kWebMercatorMaxLatitudeDegrees, 180,
+                                                         kWebMercatorMaxLatitudeDegrees};
   if (options.count("bounds")) {
     auto b = parseBounds(options["bounds"]);
     if (!b) return problem(b.error());
     d.bounds = *b;
   }
   d.attribution = options.count("attribution") ? options["attribution"] : "";
-  std::vector<std::string> subdomains;
-  for (char c : options.count("subdomains") ? options["subdomains"] : std::string("abc"))
-    if (c != ',') subdomains.emplace_back(1, c);
+  const std::vector<std::string> subdomains = xyz->subdomains;
   auto reader = std::make_unique<UrlReader>(network, kImageAccept);
   d.remote = reader->remote(pattern);
-  const uint32_t firstZoom = *minZoom;
+  const uint32_t firstZoom = xyz->minZoom;
   return makeUrlImagery(std::move(d), std::move(reader),
                         [pattern, subdomains, firstZoom](size_t m, uint64_t x, uint64_t y) {
                           return expandTileUrl(pattern, {static_cast<uint32_t>(firstZoom + m),

@@ -7,7 +7,6 @@ namespace globe::services {
 namespace {
 
 constexpr double kMercatorRadiusMeters = 6378137.0;  // the sphere of EPSG:3857
-constexpr double kMercatorLimitDegrees = 85.05112877980659;
 
 }  // namespace
 
@@ -47,7 +46,7 @@ TileMatrixSet geographicQuad(uint32_t minZoom, uint32_t maxZoom, uint32_t tileSi
 
 std::optional<std::pair<double, double>> toCrs(TileCrs crs, double lon, double lat) {
   if (crs == TileCrs::Geographic) return std::pair{lon, lat};
-  if (std::fabs(lat) > kMercatorLimitDegrees + 1e-9) return std::nullopt;
+  if (std::fabs(lat) > kWebMercatorMaxLatitudeDegrees + 1e-9) return std::nullopt;
   const double phi = lat * std::numbers::pi / 180;
   return std::pair{lon * std::numbers::pi / 180 * kMercatorRadiusMeters,
                    std::log(std::tan(std::numbers::pi / 4 + phi / 2)) * kMercatorRadiusMeters};
@@ -55,7 +54,7 @@ std::optional<std::pair<double, double>> toCrs(TileCrs crs, double lon, double l
 
 double crsUnitsPerDegree(TileCrs crs, double lat) {
   if (crs == TileCrs::Geographic) return 1.0;
-  const double clamped = std::min(std::fabs(lat), kMercatorLimitDegrees);
+  const double clamped = std::min(std::fabs(lat), kWebMercatorMaxLatitudeDegrees);
   return std::numbers::pi / 180 * kMercatorRadiusMeters /
          std::cos(clamped * std::numbers::pi / 180);
 }

@@ -13,6 +13,9 @@ namespace globe::services {
 
 enum class TileCrs { WebMercator, Geographic };
 
+// Web Mercator's square world ends at this latitude, north and south.
+inline constexpr double kWebMercatorMaxLatitudeDegrees = 85.05112877980659;
+
 struct TileMatrix {
   std::string id;                   // the zoom's name in URLs (WMTS's TileMatrix)
   double originX = 0, originY = 0;  // top-left corner, CRS units (x east, y north)

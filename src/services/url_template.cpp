@@ -100,6 +100,30 @@ std::map<std::string, std::string> takeQueryOptions(std::string& url,
   return taken;
 }
 
+Result<XyzTemplateOptions> xyzTemplateOptions(const std::string& pattern,
+                                              const std::map<std::string, std::string>& options,
+                                              uint32_t defaultMaxZoom) {
+  if (pattern.find("{z}") == std::string::npos || pattern.find("{x}") == std::string::npos ||
+      (pattern.find("{y}") == std::string::npos && pattern.find("{-y}") == std::string::npos)) {
+    return makeError("a tile URL template needs {z}, {x} and {y} (or {-y})");
+  }
+  XyzTemplateOptions out;
+  auto maxZoom = optionNumber(options, "maxzoom", defaultMaxZoom, 24);
+  if (!maxZoom) return Error{maxZoom.error()};
+  auto minZoom = optionNumber(options, "minzoom", 0, *maxZoom);
+  if (!minZoom) return Error{minZoom.error()};
+  auto tileSize = optionNumber(options, "tilesize", 256, 4096);
+  if (!tileSize) return Error{tileSize.error()};
+  if (*tileSize != 256 && *tileSize != 512) return makeError("tilesize must be 256 or 512");
+  out.minZoom = *minZoom;
+  out.maxZoom = *maxZoom;
+  out.tileSize = *tileSize;
+  const auto s = options.find("subdomains");
+  for (char c : s != options.end() ? s->second : std::string("abc"))
+    if (c != ',') out.subdomains.emplace_back(1, c);
+  return out;
+}
+
 Result<uint32_t> optionNumber(const std::map<std::string, std::string>& options,
                               const std::string& key, uint32_t fallback, uint32_t maximum) {
   auto it = options.find(key);

@@ -25,6 +25,17 @@ std::string expandTileUrl(const std::string& pattern, const TileUrlValues& value
 std::map<std::string, std::string> takeQueryOptions(std::string& url,
                                                     const std::vector<std::string>& keys);
 
+// What every {z}/{x}/{y} template takes: minzoom, maxzoom (defaultMaxZoom unless given, at most
+// 24), tilesize (256 or 512) and subdomains (letters for {s}, default "abc").
+struct XyzTemplateOptions {
+  uint32_t minZoom = 0, maxZoom = 0, tileSize = 256;
+  std::vector<std::string> subdomains;
+};
+// Errors: a template without {z}, {x} and {y} (or {-y}), an option out of range.
+Result<XyzTemplateOptions> xyzTemplateOptions(const std::string& pattern,
+                                              const std::map<std::string, std::string>& options,
+                                              uint32_t defaultMaxZoom);
+
 // RFC 3986's unreserved characters as they are, every other byte as %XX.
 std::string percentEncode(const std::string& s);
 

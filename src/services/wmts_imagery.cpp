@@ -110,8 +110,8 @@ Result<std::unique_ptr<ServiceImagery>> openWmtsImagery(
   d.tiling = tiling;
   d.bounds = layer->bounds;
   if (tiling.crs == TileCrs::WebMercator) {
-    d.bounds.south = std::max(d.bounds.south, -85.0511287798);
-    d.bounds.north = std::min(d.bounds.north, 85.0511287798);
+    d.bounds.south = std::max(d.bounds.south, -kWebMercatorMaxLatitudeDegrees);
+    d.bounds.north = std::min(d.bounds.north, kWebMercatorMaxLatitudeDegrees);
   }
   d.attribution = options.count("attribution") ? options["attribution"] : caps->title;
   d.remote = reader->remote(url);

@@ -4,13 +4,13 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
-#include <list>
 #include <map>
-#include <mutex>
 #include <numbers>
 
 #include "formats/image_io.hpp"
 #include "geo/tiling_scheme.hpp"
+#include "services/recent_items.hpp"
+#include "services/tile_matrix.hpp"
 #include "services/tin_sampling.hpp"
 #include "services/url_reader.hpp"
 #include "services/url_template.hpp"
@@ -20,8 +20,6 @@ namespace {
 
 constexpr size_t kMaxElevationTileBytes = size_t{8} << 20;
 constexpr size_t kDecodedElevationTiles = 64;
-constexpr double kMercatorMaxLatitudeDegrees = 85.05112877980659;
-constexpr uint32_t kMaxZoom = 24;
 // How many zooms finer than a block's own its samples may come from (4^k tiles a block).
 constexpr uint32_t kFinerZoomsBelowMin = 2;
 
@@ -111,7 +109,7 @@ class XyzElevationSource final : public ServiceTerrainSource {
  private:
   static double mercatorX(double lon) { return lon / (2 * std::numbers::pi) + 0.5; }
   static double mercatorY(double lat) {
-    const double limit = kMercatorMaxLatitudeDegrees * std::numbers::pi / 180;
+    const double limit = kWebMercatorMaxLatitudeDegrees * std::numbers::pi / 180;
     const double clamped = std::clamp(lat, -limit, limit);
     return 0.5 - std::log(std::tan(std::numbers::pi / 4 + clamped / 2)) / (2 * std::numbers::pi);
   }
@@ -171,20 +169,9 @@ class XyzElevationSource final : public ServiceTerrainSource {
   Result<std::shared_ptr<const DecodedTile>> tile(
       const MercatorTile& t, std::map<MercatorTile, std::shared_ptr<const DecodedTile>>& local) {
     if (auto it = local.find(t); it != local.end()) return it->second;
-    std::shared_ptr<const DecodedTile> decoded;
-    bool found = false;
-    {
-      std::lock_guard lock(mutex_);
-      for (auto it = recent_.begin(); it != recent_.end(); ++it) {
-        if (it->first == t) {
-          decoded = it->second;
-          found = true;
-          recent_.splice(recent_.begin(), recent_, it);
-          break;
-        }
-      }
-    }
-    if (!found) {
+    std::optional<std::shared_ptr<const DecodedTile>> kept = recent_.find(t);
+    std::shared_ptr<const DecodedTile> decoded = kept ? *kept : nullptr;
+    if (!kept) {
       const std::string url = urlOf(t);
       auto bytes = reader_->read(url, kMaxElevationTileBytes);
       if (!bytes) return Error{bytes.error()};
@@ -204,9 +191,7 @@ class XyzElevationSource final : public ServiceTerrainSource {
         }
         decoded = std::move(d);
       }
-      std::lock_guard lock(mutex_);
-      recent_.emplace_front(t, decoded);
-      if (recent_.size() > kDecodedElevationTiles) recent_.pop_back();
+      recent_.put(t, decoded);
     }
     local.emplace(t, decoded);
     return decoded;
@@ -218,8 +203,8 @@ class XyzElevationSource final : public ServiceTerrainSource {
   uint32_t minZoom_, maxZoom_, tileSize_;
   double seaLevelMeters_;  // samples at or below are water; -inf: none
   std::unique_ptr<UrlReader> reader_;
-  std::mutex mutex_;
-  std::list<std::pair<MercatorTile, std::shared_ptr<const DecodedTile>>> recent_;
+  // Decoded tiles (null: the service has none there).
+  RecentItems<MercatorTile, std::shared_ptr<const DecodedTile>> recent_{kDecodedElevationTiles};
 };
 
 }  // namespace
@@ -242,21 +227,9 @@ Result<std::unique_ptr<ServiceTerrainSource>> openXyzElevationSource(
   auto problem = [&](const std::string& what) {
     return makeError(std::string(kind) + ":" + spec + ": " + what);
   };
-  if (pattern.find("{z}") == std::string::npos || pattern.find("{x}") == std::string::npos ||
-      (pattern.find("{y}") == std::string::npos && pattern.find("{-y}") == std::string::npos)) {
-    return problem("a tile URL template needs {z}, {x} and {y} (or {-y})");
-  }
-  auto maxZoom = optionNumber(options, "maxzoom",
-                              encoding == ElevationEncoding::Terrarium ? 15 : 14, kMaxZoom);
-  if (!maxZoom) return problem(maxZoom.error());
-  auto minZoom = optionNumber(options, "minzoom", 0, *maxZoom);
-  if (!minZoom) return problem(minZoom.error());
-  auto tileSize = optionNumber(options, "tilesize", 256, 4096);
-  if (!tileSize) return problem(tileSize.error());
-  if (*tileSize != 256 && *tileSize != 512) return problem("tilesize must be 256 or 512");
-  std::vector<std::string> subdomains;
-  for (char c : options.count("subdomains") ? options["subdomains"] : std::string("abc"))
-    if (c != ',') subdomains.emplace_back(1, c);
+  auto xyz =
+      xyzTemplateOptions(pattern, options, encoding == ElevationEncoding::Terrarium ? 15 : 14);
+  if (!xyz) return problem(xyz.error());
   double seaLevelMeters = 0;
   if (auto level = options.find("sea"); level != options.end()) {
     if (level->second == "none") {
@@ -274,14 +247,15 @@ Result<std::unique_ptr<ServiceTerrainSource>> openXyzElevationSource(
   d.attribution = options.count("attribution") ? options["attribution"] : "";
   d.format = kind;
   // The level whose blocks sample the finest zoom's pixels one to one at the equator.
-  const double levels = *maxZoom - std::log2(2.0 * (kServiceVerticesPerSide - 1) / *tileSize);
+  const double levels =
+      xyz->maxZoom - std::log2(2.0 * (kServiceVerticesPerSide - 1) / xyz->tileSize);
   d.maxLevel = static_cast<uint32_t>(std::clamp(std::floor(levels), 0.0, double{geo::kMaxLevel}));
-  d.stepDegrees = 360.0 / (std::ldexp(1.0, static_cast<int>(*maxZoom)) * *tileSize);
-  d.bounds = {-180, -kMercatorMaxLatitudeDegrees, 180, kMercatorMaxLatitudeDegrees};
+  d.stepDegrees = 360.0 / (std::ldexp(1.0, static_cast<int>(xyz->maxZoom)) * xyz->tileSize);
+  d.bounds = {-180, -kWebMercatorMaxLatitudeDegrees, 180, kWebMercatorMaxLatitudeDegrees};
   auto reader = std::make_unique<UrlReader>(network, "image/png,image/*;q=0.9");
   d.remote = reader->remote(pattern);
   return std::unique_ptr<ServiceTerrainSource>(std::make_unique<XyzElevationSource>(
-      d, sea, encoding, pattern, std::move(subdomains), *minZoom, *maxZoom, *tileSize,
+      d, sea, encoding, pattern, xyz->subdomains, xyz->minZoom, xyz->maxZoom, xyz->tileSize,
       seaLevelMeters, std::move(reader)));
 }
 
