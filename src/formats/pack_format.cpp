@@ -5,12 +5,11 @@
 #include <cstring>
 #include <string>
 
-#include <libdeflate.h>
-
-#include <memory>
-
 #include "core/big_endian.hpp"
 #include "core/crc32.hpp"
+#include "formats/deflate_bytes.hpp"
+#include "formats/pack_block_codec.hpp"
+#include "formats/pack_index_codec.hpp"
 
 namespace globe::formats {
 namespace {
@@ -59,30 +58,59 @@ void forEachStoredSample(const PackLayout& layout, Visit visit) {
   }
 }
 
-struct CompressorDeleter {
-  void operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
-};
-struct DecompressorDeleter {
-  void operator()(libdeflate_decompressor* d) const { libdeflate_free_decompressor(d); }
-};
-
-std::vector<std::byte> zlibCompress(std::span<const std::byte> in) {
-  thread_local std::unique_ptr<libdeflate_compressor, CompressorDeleter> compressor(
-      libdeflate_alloc_compressor(9));
-  std::vector<std::byte> out(libdeflate_zlib_compress_bound(compressor.get(), in.size()));
-  out.resize(
-      libdeflate_zlib_compress(compressor.get(), in.data(), in.size(), out.data(), out.size()));
-  return out;
+// The raw big-endian samples of a slot's block (versions 3 to 5 store them so; version 6
+// compresses them).
+std::vector<std::byte> rawBlock(const Pack& pack, size_t slot) {
+  std::vector<std::byte> bytes(pack.layout.blockBytes());
+  std::byte* out = bytes.data();
+  const std::span<const int16_t> heights = pack.block(slot), apron = pack.apron(slot);
+  forEachStoredSample(pack.layout, [&](bool inside, size_t index) {
+    core::storeBigEndian16(out, static_cast<uint16_t>(inside ? heights[index] : apron[index]));
+    out += 2;
+  });
+  return bytes;
 }
 
-// Exactly out.size() bytes inflated, or false.
-bool zlibDecompress(std::span<const std::byte> in, std::span<std::byte> out) {
-  thread_local std::unique_ptr<libdeflate_decompressor, DecompressorDeleter> decompressor(
-      libdeflate_alloc_decompressor());
-  size_t actual = 0;
-  return libdeflate_zlib_decompress(decompressor.get(), in.data(), in.size(), out.data(),
-                                    out.size(), &actual) == LIBDEFLATE_SUCCESS &&
-         actual == out.size();
+void storeHeader(std::byte* out, const PackId& id, const PackLayout& layout, size_t present,
+                 uint32_t indexBytes) {
+  std::memcpy(out, kPackMagic, sizeof kPackMagic);
+  const uint32_t header[] = {layout.formatVersion,
+                             id.level,
+                             id.x,
+                             id.y,
+                             layout.tilesPerSide,
+                             layout.verticesPerSide,
+                             static_cast<uint32_t>(present),
+                             indexBytes};
+  for (size_t i = 0; i < std::size(header); ++i) core::storeBigEndian32(out + 8 + 4 * i, header[i]);
+}
+
+void appendCrc(std::vector<std::byte>& bytes) {
+  const size_t body = bytes.size();
+  bytes.resize(body + 4);
+  core::storeBigEndian32(&bytes[body], core::crc32(std::span(bytes).first(body)));
+}
+
+// Version 6: the blocks compressed in storage order, the index as columns.
+std::vector<std::byte> encodePackV6(const Pack& pack) {
+  const PackLayout& layout = pack.layout;
+  const std::vector<size_t> order = storageOrder(pack.entries, layout.tilesPerSide);
+  const size_t side = layout.verticesPerSide + 2 * terrain::kApronWidth;
+  std::vector<PackEntry> entries = pack.entries;
+  std::vector<std::byte> blocks;
+  for (size_t slot : order) {
+    const std::vector<std::byte> stored = encodeCompressedBlock(rawBlock(pack, slot), side);
+    entries[slot].storedBytes = static_cast<uint32_t>(stored.size());
+    blocks.insert(blocks.end(), stored.begin(), stored.end());
+  }
+  const std::vector<std::byte> index =
+      zlibCompress(encodeIndexColumns(entries, order, layout.tilesPerSide), 9);
+  std::vector<std::byte> bytes(kPackHeaderBytes);
+  storeHeader(bytes.data(), pack.id, layout, order.size(), static_cast<uint32_t>(index.size()));
+  bytes.insert(bytes.end(), index.begin(), index.end());
+  bytes.insert(bytes.end(), blocks.begin(), blocks.end());
+  appendCrc(bytes);
+  return bytes;
 }
 
 }  // namespace
@@ -151,6 +179,7 @@ size_t Pack::presentCount() const {
 }
 
 std::vector<std::byte> encodePack(const Pack& pack) {
+  if (pack.layout.hasCompressedBlocks()) return encodePackV6(pack);
   if (pack.layout.hasCompressedIndex()) {
     // The uncompressed form with offsets from the index's end, whose index is then compressed.
     Pack uncompressed = pack;
@@ -165,7 +194,7 @@ std::vector<std::byte> encodePack(const Pack& pack) {
       const uint64_t offset = core::loadBigEndian64(entry);
       core::storeBigEndian64(entry, offset == 0 ? 0 : offset - plainIndexEnd + 1);
     }
-    const std::vector<std::byte> index = zlibCompress(entries);
+    const std::vector<std::byte> index = zlibCompress(entries, 9);
     std::vector<std::byte> bytes(plain.begin(), plain.begin() + kPackHeaderBytes);
     core::storeBigEndian32(&bytes[8], pack.layout.formatVersion);
     core::storeBigEndian32(&bytes[36], static_cast<uint32_t>(index.size()));
@@ -245,6 +274,46 @@ std::optional<uint64_t> packIndexEndOffset(std::span<const std::byte> head) {
   return kPackHeaderBytes + uint64_t{tiles} * tiles * packEntryBytes(*version);
 }
 
+namespace {
+
+Result<PackIndex> decodeIndexV6(PackIndex index, uint32_t present,
+                                std::span<const std::byte> headAndIndex, uint64_t fileBytes,
+                                const std::filesystem::path& path) {
+  const PackLayout& layout = index.layout;
+  if (present > layout.slotCount()) {
+    return packError(path, "pack header says " + std::to_string(present) + " tiles in " +
+                               std::to_string(layout.slotCount()) + " slots (corrupt pack)");
+  }
+  const uint64_t indexEnd = layout.indexEndOffset();
+  if (fileBytes < indexEnd + 4) {
+    return packError(path, "file is " + std::to_string(fileBytes) +
+                               " bytes, shorter than its header and index (truncated or corrupt)");
+  }
+  if (headAndIndex.size() < indexEnd) return packError(path, "pack index is truncated");
+  std::vector<std::byte> columns(presenceBitmapBytes(layout.tilesPerSide) +
+                                 indexColumnBytes(present));
+  if (!zlibInflateExactly(headAndIndex.subspan(kPackHeaderBytes, layout.indexBytes), columns)) {
+    return packError(path, "pack index does not inflate to its " + std::to_string(present) +
+                               " tiles (corrupt pack)");
+  }
+  if (auto decoded = decodeIndexColumns(columns, layout.tilesPerSide, present, indexEnd,
+                                        layout.maxStoredBlockBytes(), index.entries);
+      !decoded) {
+    return packError(path, decoded.error() + " (corrupt pack)");
+  }
+  uint64_t end = indexEnd;
+  for (const PackEntry& entry : index.entries) {
+    if (entry.present()) end = std::max(end, entry.blockOffset + entry.storedBytes);
+  }
+  if (end + 4 != fileBytes) {
+    return packError(path, "file is " + std::to_string(fileBytes) + " bytes but its index says " +
+                               std::to_string(end + 4) + " (truncated or corrupt)");
+  }
+  return index;
+}
+
+}  // namespace
+
 Result<PackIndex> decodePackIndex(std::span<const std::byte> headAndIndex, uint64_t fileBytes,
                                   const std::filesystem::path& path) {
   const std::optional<uint32_t> version = packFormatVersionOf(headAndIndex);
@@ -263,6 +332,8 @@ Result<PackIndex> decodePackIndex(std::span<const std::byte> headAndIndex, uint6
     return packError(path, "pack header has an invalid tiles-per-side or block size");
   }
   const uint32_t present = h[6];
+  if (layout.hasCompressedBlocks())
+    return decodeIndexV6(std::move(index), present, headAndIndex, fileBytes, path);
   if (present > layout.slotCount() || fileBytes != layout.fileBytes(present)) {
     return packError(
         path, "file is " + std::to_string(fileBytes) + " bytes but its header says " +
@@ -278,7 +349,7 @@ Result<PackIndex> decodePackIndex(std::span<const std::byte> headAndIndex, uint6
       headAndIndex.subspan(kPackHeaderBytes, layout.indexEndOffset() - kPackHeaderBytes);
   if (layout.hasCompressedIndex()) {
     inflated.resize(layout.slotCount() * layout.entryBytes());
-    if (!zlibDecompress(entries, inflated)) {
+    if (!zlibInflateExactly(entries, inflated)) {
       return packError(path, "pack index does not inflate to its " +
                                  std::to_string(layout.slotCount()) + " entries (corrupt pack)");
     }
@@ -292,6 +363,7 @@ Result<PackIndex> decodePackIndex(std::span<const std::byte> headAndIndex, uint6
       entry.blockOffset += layout.indexEndOffset() - 1;
     }
     if (entry.present()) {
+      entry.storedBytes = static_cast<uint32_t>(layout.blockBytes());
       const uint64_t relative = entry.blockOffset - layout.indexEndOffset();
       if (entry.blockOffset < layout.indexEndOffset() || relative % layout.blockBytes() != 0 ||
           relative / layout.blockBytes() >= present) {
@@ -315,6 +387,27 @@ void decodeBlock(std::span<const std::byte> bytes, const PackLayout& layout,
   });
 }
 
+Result<void> decodeStoredBlock(std::span<const std::byte> stored, const PackLayout& layout,
+                               const PackEntry& entry, std::span<int16_t> heights,
+                               std::span<int16_t> apron) {
+  if (layout.hasCompressedBlocks()) {
+    std::vector<std::byte> samples(layout.blockBytes());
+    if (auto inflated = decodeCompressedBlock(
+            stored, layout.verticesPerSide + 2 * terrain::kApronWidth, samples);
+        !inflated) {
+      return makeError("the block " + inflated.error() + " (corrupt pack)");
+    }
+    decodeBlock(samples, layout, heights, apron);
+    return {};
+  }
+  if (stored.size() != layout.blockBytes()) return makeError("the block is cut short");
+  if (layout.hasBlockCrc() && core::crc32(stored) != entry.blockCrc) {
+    return makeError("the block fails its CRC (corrupt pack)");
+  }
+  decodeBlock(stored, layout, heights, apron);
+  return {};
+}
+
 Result<Pack> decodePack(std::span<const std::byte> bytes, const std::filesystem::path& path) {
   auto index = decodePackIndex(bytes, bytes.size(), path);
   if (!index) return Error{index.error()};
@@ -336,9 +429,12 @@ Result<Pack> decodePack(std::span<const std::byte> bytes, const std::filesystem:
   pack.entries = std::move(index->entries);
   for (size_t slot = 0; slot < pack.layout.slotCount(); ++slot) {
     const PackEntry& entry = pack.entries[slot];
-    if (entry.present()) {
-      decodeBlock(bytes.subspan(entry.blockOffset, pack.layout.blockBytes()), pack.layout,
-                  pack.block(slot), pack.apron(slot));
+    if (!entry.present()) continue;
+    if (auto decoded = decodeStoredBlock(bytes.subspan(entry.blockOffset, entry.storedBytes),
+                                         pack.layout, entry, pack.block(slot), pack.apron(slot));
+        !decoded) {
+      return packError(path, geo::tileName(tileOfSlot(pack.id, slot, pack.layout.tilesPerSide)) +
+                                 ": " + decoded.error());
     }
   }
   return pack;

@@ -1,27 +1,27 @@
 // The pyramid's pack file: one file holds up to P×P neighbouring tiles of one level (big-endian).
 //
 //   offset 0   "GLOBEPK1", u32 version, u32 level, u32 packX, u32 packY, u32 P, u32 N,
-//              u32 present tile count, u32 index bytes (stored; version 5)   (40 bytes)
-//   offset 40  index: P×P entries in slot order (slot = localY·P + localX), 24 bytes each,
-//              zlib-compressed (version 5: most slots of a deep level's pack are empty, and a
-//              viewer over HTTP reads the index before any block):
-//              u64 block offset (0 = tile absent), i16 vertex min, i16 vertex max,
-//              i16 subtree min, i16 subtree max     (metres: min with sea floors, max with water
-//                                                        at 0 m, terrain::surfaceHeightRange),
-//              f32 geometric error (metres: how far the tile's surface, drawn with the mesh's
-//                  diagonal rule, lies from its children's vertices, above or below, and at
-//                  least its children's errors: src/tiling/pack_builder.hpp),
-//              u32 CRC-32 of the block's stored bytes (a block read alone, by one range request
-//                  over HTTP, is checked on its own)
-//              In version 5 the stored block offset is 1 + its offset from the end of the index
-//              (0 = absent), as the index's compressed size is not known before it is written;
-//              PackEntry::blockOffset is the offset in the file either way.
-//   then       the present blocks, (N+4)×(N+4) int16 samples each: the N×N vertices with their
-//              apron (terrain::HeightBlock::apron, 2 vertices wide) around them, rows from the
-//              north (row -2)
-//              (terrain/height_block.hpp: GTOPO30 heights, -9999 and -32767..-20001 water)
+//              u32 present tile count, u32 index bytes (stored; versions 5 and 6)   (40 bytes)
+//   offset 40  version 6: the index, zlib-compressed: a presence bitmap, then columns over the
+//              present tiles in storage order (Morton order of their place in the pack): each
+//              block's stored bytes, the tile's vertex min/max and subtree min/max (metres: min
+//              with sea floors, max with water at 0 m, terrain::surfaceHeightRange) as
+//              differences from the previous tile's, and its f32 geometric error (metres: how far
+//              the tile's surface, drawn with the mesh's diagonal rule, lies from its children's
+//              vertices, above or below, and at least its children's errors:
+//              src/tiling/pack_builder.hpp). Layout: formats/pack_index_codec.hpp.
+//   then       the present blocks in storage order, each its (N+4)×(N+4) int16 samples (the N×N
+//              vertices with their apron, terrain::HeightBlock::apron, 2 vertices wide, rows from
+//              the north; terrain/height_block.hpp: GTOPO30 heights, -9999 and -32767..-20001
+//              water) predicted, DEFLATE-compressed and followed by the CRC-32 of what is stored,
+//              so a block read alone, by one range request over HTTP, is checked on its own
+//              (formats/pack_block_codec.hpp)
 //   last       u32 CRC-32 of everything before it
 //
+// Version 5 (still read): the index is P×P 24-byte entries in slot order (slot = localY·P +
+// localX), zlib-compressed: u64 1 + the block's offset from the index's end (0 = absent), i16
+// vertex min, max, subtree min, max, f32 geometric error, u32 CRC-32 of the block; blocks are
+// the raw samples in slot order.
 // Version 4 (still read): the index uncompressed, block offsets from the file's start.
 // Version 3 (still read): 20-byte entries without the block CRC.
 // Version 2 (still read): 16-byte entries without the geometric error, N×N blocks, no apron.
@@ -47,8 +47,9 @@ namespace globe::formats {
 // 2: samples below 0 m are land, water is -9999 or band-coded with its sea floor (version 1
 // read every negative sample as sea: such packs are refused, the pyramid must be re-tiled).
 // 3: blocks carry their apron, entries their geometric error. 4: entries carry their block's
-// CRC. 5: the index is compressed. The tiler writes 5; 4, 3 and 2 are read.
-inline constexpr uint32_t kPackFormatVersion = 5;
+// CRC. 5: the index is compressed. 6: the index is columns, the blocks compressed and stored in
+// Morton order. The tiler writes 6; 5, 4, 3 and 2 are read.
+inline constexpr uint32_t kPackFormatVersion = 6;
 // How much of a version-5 pack a reader asks for first: its header and (mostly) whole index.
 inline constexpr size_t kPackFirstReadBytes = 16384;
 inline constexpr uint32_t kOldestReadPackFormatVersion = 2;
@@ -72,7 +73,10 @@ struct PackEntry {
   terrain::HeightRange subtreeRange;  // of this tile's vertices and all its descendants'
   // Metres; NaN when the pack (version 2) does not say.
   float geometricErrorMeters = std::numeric_limits<float>::quiet_NaN();
-  uint32_t blockCrc = 0;  // CRC-32 of the stored block (version 4; 0 before)
+  uint32_t blockCrc = 0;  // CRC-32 of the stored block (versions 4 and 5; 0 otherwise)
+  // The block's bytes in the file: PackLayout::blockBytes() before version 6, its compressed
+  // size and CRC in version 6 (set by decodePackIndex and encodePack; the tiler leaves it 0).
+  uint32_t storedBytes = 0;
   bool present() const { return blockOffset != 0; }
 };
 
@@ -94,9 +98,15 @@ struct PackLayout {
   size_t entryBytes() const { return packEntryBytes(formatVersion); }
   size_t slotCount() const { return size_t{tilesPerSide} * tilesPerSide; }
   bool hasCompressedIndex() const { return formatVersion >= 5; }
+  bool hasCompressedBlocks() const { return formatVersion >= 6; }
+  // The most a version-6 block may take: DEFLATE's stored fallback of its samples and the CRC.
+  uint32_t maxStoredBlockBytes() const {
+    return static_cast<uint32_t>(blockBytes() + blockBytes() / 16 + 64);
+  }
   size_t indexEndOffset() const {
     return kPackHeaderBytes + (hasCompressedIndex() ? indexBytes : slotCount() * entryBytes());
   }
+  // Versions 2 to 5, whose blocks all take blockBytes().
   uint64_t fileBytes(size_t presentTiles) const {
     return indexEndOffset() + uint64_t{presentTiles} * blockBytes() + 4;
   }
@@ -128,7 +138,8 @@ struct Pack {
   size_t presentCount() const;
 };
 
-// Serialises the pack in layout.formatVersion; block offsets are assigned here in slot order.
+// Serialises the pack in layout.formatVersion; block offsets are assigned here (in slot order
+// before version 6, in storage order from it).
 std::vector<std::byte> encodePack(const Pack& pack);
 
 // Parses and validates a whole pack file (sizes, offsets, CRC); errors name `path`.
@@ -157,8 +168,16 @@ Result<PackIndex> decodePackIndex(std::span<const std::byte> headAndIndex, uint6
 // readable pack header.
 std::optional<uint64_t> packIndexEndOffset(std::span<const std::byte> head);
 
-// Decodes one stored block (layout.blockBytes() big-endian bytes) into its N×N heights and, when
-// the layout has aprons, its apron (apronSampleCount samples; pass an empty span otherwise).
+// Decodes one block as the pack stores it (entry.storedBytes bytes at entry.blockOffset) into its
+// N×N heights and, when the layout has aprons, its apron (apronSampleCount samples; pass an
+// empty span otherwise), checking its CRC (versions 4 to 6). The error says what is wrong
+// ("fails its CRC (corrupt pack)") for the caller to prefix with the file and tile.
+Result<void> decodeStoredBlock(std::span<const std::byte> stored, const PackLayout& layout,
+                               const PackEntry& entry, std::span<int16_t> heights,
+                               std::span<int16_t> apron);
+
+// Decodes one block's raw samples (layout.blockBytes() big-endian bytes, as versions 2 to 5
+// store them).
 void decodeBlock(std::span<const std::byte> bytes, const PackLayout& layout,
                  std::span<int16_t> heights, std::span<int16_t> apron);
 

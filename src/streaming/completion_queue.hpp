@@ -24,6 +24,7 @@ struct FinishedLoad {
   std::string error;                       // when Failed
   std::chrono::steady_clock::time_point postedAt;
   std::chrono::steady_clock::time_point finishedAt;
+  bool endsTask = true;  // the last load of its task (a task may load tiles read together)
 };
 
 // Tasks hold it by shared_ptr, so a task that runs after its loader is gone finds it closed.
@@ -44,6 +45,18 @@ class CompletionQueue {
       --running_;
       // After close() nobody will collect it; dropping it here frees the payload at once.
       if (!closed_) finished_.push_back(std::move(load));
+    }
+    idle_.notify_all();
+  }
+
+  // The same for a task that loaded several tiles: all of them, once.
+  void finishAll(std::vector<FinishedLoad<Payload>> loads) {
+    {
+      std::lock_guard lock(mutex_);
+      --running_;
+      if (!closed_) {
+        for (FinishedLoad<Payload>& load : loads) finished_.push_back(std::move(load));
+      }
     }
     idle_.notify_all();
   }

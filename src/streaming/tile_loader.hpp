@@ -1,5 +1,6 @@
 // Streams tiles of one payload kind from a tile source into a tile cache in the background:
-// prioritised, cancellable, at most K loads at once, failures reported once. TileLoader is the
+// prioritised, cancellable, at most K load tasks at once (a task loads one tile, or the tiles its
+// source reads in one request), failures reported once. TileLoader is the
 // one for height blocks; imagery layers use the same class over their own payload.
 #pragma once
 
@@ -45,14 +46,16 @@ struct LoadError {
 };
 
 struct LoaderCounters {
-  uint64_t requested = 0;  // tiles newly queued (not already queued, loading, resident or known)
-  uint64_t started = 0;    // loads handed to the runner
-  uint64_t completed = 0;  // loads whose payload went into the cache
-  uint64_t absent = 0;     // loads that found no such tile in the source
-  uint64_t failed = 0;     // loads that failed
-  uint64_t cancelled = 0;  // queued tiles dropped because a later request() no longer wanted them
-  size_t pending = 0;      // queued, not started
-  size_t inFlight = 0;     // started, not yet collected by poll(); at most maxInFlight()
+  uint64_t requested = 0;    // tiles newly queued (not already queued, loading, resident or known)
+  uint64_t started = 0;      // loads handed to the runner
+  uint64_t completed = 0;    // loads whose payload went into the cache
+  uint64_t absent = 0;       // loads that found no such tile in the source
+  uint64_t failed = 0;       // loads that failed
+  uint64_t cancelled = 0;    // queued tiles dropped because a later request() no longer wanted them
+  size_t pending = 0;        // queued, not started
+  size_t inFlight = 0;       // started, not yet collected by poll()
+  size_t tasksInFlight = 0;  // their tasks; at most maxInFlight()
+  uint64_t readTogether = 0;  // loads started in another tile's task (TileSource::readableWith)
 };
 
 struct PollResult {
@@ -81,6 +84,8 @@ template <class Payload>
 class PayloadLoader {
  public:
   static constexpr size_t kDefaultMaxInFlight = 4;
+  // How many of the queued tiles after the next one a source is offered to read with it.
+  static constexpr size_t kReadTogetherCandidates = 256;
 
   PayloadLoader(TileSource<Payload>& source, core::TaskRunner& runner, TileCache<Payload>& cache)
       : source_(source),
@@ -131,6 +136,7 @@ class PayloadLoader {
     LoaderCounters counters = counters_;
     counters.pending = pending_.size();
     counters.inFlight = loading_.size();
+    counters.tasksInFlight = tasksInFlight_;
     return counters;
   }
   // Blocks until a load has finished on its worker (ready for poll()) or the timeout passes.
@@ -145,6 +151,11 @@ class PayloadLoader {
   void startLoads();
   static Finished loadTile(TileSource<Payload>& source, const geo::TileId& tile,
                            Clock::time_point postedAt);
+  static std::vector<Finished> loadGroup(TileSource<Payload>& source,
+                                         const std::vector<geo::TileId>& tiles,
+                                         Clock::time_point postedAt);
+  static Finished finished(const geo::TileId& tile, Result<std::optional<Payload>> loaded,
+                           Clock::time_point postedAt);
 
   TileSource<Payload>& source_;
   core::TaskRunner& runner_;
@@ -153,6 +164,7 @@ class PayloadLoader {
   size_t maxInFlight_ = kDefaultMaxInFlight;
   std::vector<LoadRequest> queue_;  // highest priority first; queue_[nextQueued_..] are pending
   size_t nextQueued_ = 0;
+  size_t tasksInFlight_ = 0;
   std::unordered_set<geo::TileId> pending_;  // the tiles of queue_[nextQueued_..]
   std::unordered_set<geo::TileId> loading_;
   std::unordered_set<geo::TileId> absent_;
@@ -161,13 +173,11 @@ class PayloadLoader {
   LoaderCounters counters_;
 };
 
-// Runs on a worker.
 template <class Payload>
-FinishedLoad<Payload> PayloadLoader<Payload>::loadTile(TileSource<Payload>& source,
-                                                       const geo::TileId& tile,
+FinishedLoad<Payload> PayloadLoader<Payload>::finished(const geo::TileId& tile,
+                                                       Result<std::optional<Payload>> loaded,
                                                        Clock::time_point postedAt) {
   Finished done{tile, Finished::Outcome::Failed, nullptr, {}, postedAt, {}};
-  auto loaded = source.load(tile);
   if (!loaded) {
     done.error = geo::tileName(tile) + ": " + loaded.error();
   } else if (!*loaded) {
@@ -177,6 +187,34 @@ FinishedLoad<Payload> PayloadLoader<Payload>::loadTile(TileSource<Payload>& sour
     done.payload = std::make_shared<const Payload>(std::move(**loaded));
   }
   done.finishedAt = Clock::now();
+  return done;
+}
+
+// Runs on a worker.
+template <class Payload>
+FinishedLoad<Payload> PayloadLoader<Payload>::loadTile(TileSource<Payload>& source,
+                                                       const geo::TileId& tile,
+                                                       Clock::time_point postedAt) {
+  return finished(tile, source.load(tile), postedAt);
+}
+
+// Runs on a worker: tiles the source reads together, the last one ending the task.
+template <class Payload>
+std::vector<FinishedLoad<Payload>> PayloadLoader<Payload>::loadGroup(
+    TileSource<Payload>& source, const std::vector<geo::TileId>& tiles,
+    Clock::time_point postedAt) {
+  std::vector<Result<std::optional<Payload>>> loaded = source.loadTogether(tiles);
+  std::vector<Finished> done;
+  done.reserve(tiles.size());
+  for (size_t i = 0; i < tiles.size(); ++i) {
+    done.push_back(finished(
+        tiles[i],
+        i < loaded.size() ? std::move(loaded[i])
+                          : Result<std::optional<Payload>>(makeError("not loaded with its group")),
+        postedAt));
+    done.back().endsTask = false;
+  }
+  if (!done.empty()) done.back().endsTask = true;
   return done;
 }
 
@@ -218,15 +256,40 @@ void PayloadLoader<Payload>::request(std::span<const LoadRequest> requests) {
 
 template <class Payload>
 void PayloadLoader<Payload>::startLoads() {
-  while (loading_.size() < maxInFlight_ && nextQueued_ < queue_.size()) {
+  while (tasksInFlight_ < maxInFlight_ && nextQueued_ < queue_.size()) {
     const geo::TileId tile = queue_[nextQueued_++].tile;
+    if (!pending_.contains(tile)) continue;  // already started with another tile
     pending_.erase(tile);
     loading_.insert(tile);
-    ++counters_.started;
-    runner_.post([completions = completions_, source = &source_, tile, postedAt = Clock::now()] {
-      if (!completions->begin()) return;  // the loader is gone
-      completions->finish(loadTile(*source, tile, postedAt));
-    });
+    std::vector<geo::TileId> group{tile};
+    std::vector<geo::TileId> candidates;
+    for (size_t i = nextQueued_; i < queue_.size() && candidates.size() < kReadTogetherCandidates;
+         ++i) {
+      if (pending_.contains(queue_[i].tile)) candidates.push_back(queue_[i].tile);
+    }
+    if (!candidates.empty()) {
+      for (const geo::TileId& other : source_.readableWith(tile, candidates)) {
+        if (pending_.erase(other) == 0) continue;  // not a candidate: ignored
+        loading_.insert(other);
+        group.push_back(other);
+        ++counters_.readTogether;
+      }
+    }
+    counters_.started += group.size();
+    ++tasksInFlight_;
+    const Clock::time_point postedAt = Clock::now();
+    if (group.size() == 1) {
+      runner_.post([completions = completions_, source = &source_, tile, postedAt] {
+        if (!completions->begin()) return;  // the loader is gone
+        completions->finish(loadTile(*source, tile, postedAt));
+      });
+    } else {
+      runner_.post(
+          [completions = completions_, source = &source_, group = std::move(group), postedAt] {
+            if (!completions->begin()) return;
+            completions->finishAll(loadGroup(*source, group, postedAt));
+          });
+    }
   }
 }
 
@@ -239,6 +302,7 @@ PollResult PayloadLoader<Payload>::poll() {
   };
   for (Finished& done : completions_->takeAll()) {
     loading_.erase(done.tile);
+    if (done.endsTask && tasksInFlight_ > 0) --tasksInFlight_;
     switch (done.outcome) {
       case Finished::Outcome::Loaded:
         cache_.insert(done.tile, std::move(done.payload));

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,22 @@ class TileSource {
   // error, never retried), or an error naming the tile's file or URL. Called on worker threads:
   // implementations are thread-safe.
   virtual Result<std::optional<Payload>> load(const geo::TileId& tile) = 0;
+  // Which of `candidates` (tiles the loader also wants) this source reads in the same request as
+  // `first`, known without any I/O; empty when none (the default) or not known yet.
+  virtual std::vector<geo::TileId> readableWith(const geo::TileId& first,
+                                                std::span<const geo::TileId> candidates) {
+    (void)first;
+    (void)candidates;
+    return {};
+  }
+  // Loads `first` and what readableWith chose for it together: one result per tile, in order.
+  virtual std::vector<Result<std::optional<Payload>>> loadTogether(
+      std::span<const geo::TileId> tiles) {
+    std::vector<Result<std::optional<Payload>>> results;
+    results.reserve(tiles.size());
+    for (const geo::TileId& tile : tiles) results.push_back(load(tile));
+    return results;
+  }
   // The file or URL a tile comes from, for error messages.
   virtual std::string location(const geo::TileId& tile) const = 0;
   // Problems with a whole file or server (a damaged pack), each once since the last call, so a

@@ -3,9 +3,10 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <map>
 #include <utility>
 
-#include "core/crc32.hpp"
+#include "formats/pack_format.hpp"
 
 namespace globe::streaming {
 
@@ -164,7 +165,7 @@ Result<terrain::HeightBlock> TileStore::loadBlock(const geo::TileId& tile) {
   const formats::PackEntry& e = p.index.entries[formats::slotOf(tile, manifest_.packTilesPerSide)];
   if (!e.present()) return makeError(location() + ": the pyramid has no " + name);
 
-  std::vector<std::byte> bytes(p.index.layout.blockBytes());
+  std::vector<std::byte> bytes(e.storedBytes);
   if (e.blockOffset + bytes.size() <= p.head.size()) {
     std::memcpy(bytes.data(), p.head.data() + e.blockOffset, bytes.size());  // read with the index
     ++blocksFromHead_;
@@ -172,18 +173,24 @@ Result<terrain::HeightBlock> TileStore::loadBlock(const geo::TileId& tile) {
     packs_.noteError(p.index.id, read.error());
     return Error{read.error()};
   }
+  return decodeLoaded(p, tile, bytes);
+}
+
+Result<terrain::HeightBlock> TileStore::decodeLoaded(const OpenPack& p, const geo::TileId& tile,
+                                                     std::span<const std::byte> stored) {
   const formats::PackLayout& layout = p.index.layout;
-  if (layout.hasBlockCrc() && core::crc32(bytes) != e.blockCrc) {
+  const formats::PackEntry& e = p.index.entries[formats::slotOf(tile, manifest_.packTilesPerSide)];
+  terrain::HeightBlock block{manifest_.verticesPerSide, {}, sea_};
+  block.heights.resize(size_t{layout.verticesPerSide} * layout.verticesPerSide);
+  if (layout.hasApron()) block.apron.resize(terrain::apronSampleCount(layout.verticesPerSide));
+  if (auto decoded = formats::decodeStoredBlock(stored, layout, e, block.heights, block.apron);
+      !decoded) {
     const std::string message =
-        p.file->location() + ": the block of " + name + " fails its CRC (corrupt pack)";
+        p.file->location() + ": " + geo::tileName(tile) + ": " + decoded.error();
     packs_.noteError(p.index.id, message);
     return makeError(message);
   }
   ++blockReads_;
-  terrain::HeightBlock block{manifest_.verticesPerSide, {}, sea_};
-  block.heights.resize(size_t{layout.verticesPerSide} * layout.verticesPerSide);
-  if (layout.hasApron()) block.apron.resize(terrain::apronSampleCount(layout.verticesPerSide));
-  formats::decodeBlock(bytes, layout, block.heights, block.apron);
   return block;
 }
 
@@ -194,6 +201,99 @@ Result<std::optional<terrain::HeightBlock>> TileStore::load(const geo::TileId& t
   auto block = loadBlock(tile);
   if (!block) return Error{block.error()};
   return std::optional<terrain::HeightBlock>{std::move(*block)};
+}
+
+std::vector<geo::TileId> TileStore::readableWith(const geo::TileId& first,
+                                                 std::span<const geo::TileId> candidates) {
+  if (!remote()) return {};
+  const uint32_t perSide = manifest_.packTilesPerSide;
+  const formats::PackId id = formats::packOf(first, perSide);
+  const auto opened = packs_.peek(id);
+  if (!opened || !*opened) return {};
+  const OpenPack& p = ***opened;
+  const formats::PackEntry& start = p.index.entries[formats::slotOf(first, perSide)];
+  if (!start.present() || start.blockOffset + start.storedBytes <= p.head.size()) return {};
+  // Candidates' blocks by where they start: a run grows at either end while one begins where it
+  // ends or ends where it begins.
+  std::map<uint64_t, geo::TileId> byOffset;
+  std::map<uint64_t, geo::TileId> byEnd;
+  for (const geo::TileId& tile : candidates) {
+    if (tile == first || formats::packOf(tile, perSide) != id) continue;
+    const formats::PackEntry& e = p.index.entries[formats::slotOf(tile, perSide)];
+    if (!e.present() || e.blockOffset < p.head.size()) continue;
+    byOffset.emplace(e.blockOffset, tile);
+    byEnd.emplace(e.blockOffset + e.storedBytes, tile);
+  }
+  uint64_t begin = start.blockOffset;
+  uint64_t end = start.blockOffset + start.storedBytes;
+  std::vector<geo::TileId> after;
+  std::vector<geo::TileId> before;
+  for (bool grew = true; grew && end - begin < kReadTogetherBytes;) {
+    grew = false;
+    if (auto next = byOffset.find(end); next != byOffset.end()) {
+      end += p.index.entries[formats::slotOf(next->second, perSide)].storedBytes;
+      after.push_back(next->second);
+      grew = true;
+    }
+    if (auto previous = byEnd.find(begin);
+        previous != byEnd.end() && end - begin < kReadTogetherBytes) {
+      begin -= p.index.entries[formats::slotOf(previous->second, perSide)].storedBytes;
+      before.push_back(previous->second);
+      grew = true;
+    }
+  }
+  std::vector<geo::TileId> together(before.rbegin(), before.rend());
+  together.insert(together.end(), after.begin(), after.end());
+  return together;
+}
+
+std::vector<Result<std::optional<terrain::HeightBlock>>> TileStore::loadTogether(
+    std::span<const geo::TileId> tiles) {
+  using Loaded = Result<std::optional<terrain::HeightBlock>>;
+  const auto eachAlone = [&] {
+    std::vector<Loaded> results;
+    for (const geo::TileId& tile : tiles) results.push_back(load(tile));
+    return results;
+  };
+  if (tiles.size() < 2) return eachAlone();
+  const uint32_t perSide = manifest_.packTilesPerSide;
+  const formats::PackId id = formats::packOf(tiles[0], perSide);
+  auto opened = pack(id);
+  if (!opened || !*opened) return eachAlone();
+  const OpenPack& p = **opened;
+  // The tiles by offset; read together only when they are one run of adjacent blocks.
+  std::vector<std::pair<uint64_t, size_t>> order;
+  for (size_t i = 0; i < tiles.size(); ++i) {
+    if (formats::packOf(tiles[i], perSide) != id) return eachAlone();
+    const formats::PackEntry& e = p.index.entries[formats::slotOf(tiles[i], perSide)];
+    if (!e.present()) return eachAlone();
+    order.emplace_back(e.blockOffset, i);
+  }
+  std::sort(order.begin(), order.end());
+  std::vector<uint32_t> pieces;
+  uint64_t end = order.front().first;
+  for (const auto& [offset, i] : order) {
+    if (offset != end) return eachAlone();
+    pieces.push_back(p.index.entries[formats::slotOf(tiles[i], perSide)].storedBytes);
+    end += pieces.back();
+  }
+  std::vector<std::byte> bytes(end - order.front().first);
+  if (auto read = p.file->readPieces(bytes, order.front().first, pieces); !read) {
+    packs_.noteError(p.index.id, read.error());
+    return std::vector<Loaded>(tiles.size(), Loaded(Error{read.error()}));
+  }
+  ++groupReads_;
+  groupBlocks_ += tiles.size();
+  std::vector<Loaded> results(tiles.size(), Loaded(std::optional<terrain::HeightBlock>()));
+  uint64_t at = 0;
+  for (size_t k = 0; k < order.size(); ++k) {
+    const size_t i = order[k].second;
+    auto block = decodeLoaded(p, tiles[i], std::span(bytes).subspan(at, pieces[k]));
+    at += pieces[k];
+    results[i] = block ? Loaded(std::optional<terrain::HeightBlock>(std::move(*block)))
+                       : Loaded(Error{block.error()});
+  }
+  return results;
 }
 
 std::string TileStore::location(const geo::TileId& tile) const {

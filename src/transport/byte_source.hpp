@@ -24,6 +24,15 @@ class ByteFile {
   virtual uint64_t sizeBytes() const = 0;
   // Exactly out.size() bytes at offset, or an error naming the file or URL and the problem.
   virtual Result<void> read(std::span<std::byte> out, uint64_t offset) const = 0;
+  // The same for adjacent pieces (say, the blocks of neighbouring tiles) read together: out
+  // holds pieceBytes[0] bytes at offset, then pieceBytes[1] after them, and so on (their sum is
+  // out.size()). Over HTTP: one range request for the pieces the disk cache lacks, each piece
+  // cached on its own, so that later reads find it whatever it is read with.
+  virtual Result<void> readPieces(std::span<std::byte> out, uint64_t offset,
+                                  std::span<const uint32_t> pieceBytes) const {
+    (void)pieceBytes;
+    return read(out, offset);
+  }
   virtual const std::string& location() const = 0;
 };
 

@@ -57,6 +57,8 @@ class HttpFile final : public ByteFile {
         validator_(std::move(validator)) {}
   uint64_t sizeBytes() const override { return sizeBytes_; }
   Result<void> read(std::span<std::byte> out, uint64_t offset) const override;
+  Result<void> readPieces(std::span<std::byte> out, uint64_t offset,
+                          std::span<const uint32_t> pieceBytes) const override;
   const std::string& location() const override { return url_; }
 
  private:
@@ -184,24 +186,82 @@ class HttpByteSource final : public ByteSource,
 
   Result<void> readRange(const std::string& url, const std::string& validator, uint64_t sizeBytes,
                          std::span<std::byte> out, uint64_t offset) {
+    const uint32_t whole[] = {static_cast<uint32_t>(out.size())};
+    if (out.size() > UINT32_MAX) return fetchRange(url, validator, sizeBytes, out, offset, {});
+    return readPieces(url, validator, sizeBytes, out, offset, whole);
+  }
+
+  // Each piece from the cache when it holds it; the span from the first piece it lacks to the
+  // last by one request, each of those pieces then cached under its own key.
+  Result<void> readPieces(const std::string& url, const std::string& validator, uint64_t sizeBytes,
+                          std::span<std::byte> out, uint64_t offset,
+                          std::span<const uint32_t> pieceBytes) {
     if (out.empty()) return {};
-    const std::string key = rangeKey(url, offset, out.size());
     const std::string span =
         "bytes " + std::to_string(offset) + "-" + std::to_string(offset + out.size() - 1);
     if (offset + out.size() > sizeBytes) {
       return makeError(url + ": " + span + " lie beyond its end (" + std::to_string(sizeBytes) +
                        " bytes)");
     }
-    if (cache_) {
-      std::optional<CacheEntry> cached = cache_->get(key);
-      // A cached range counts only when served with the same ETag as the head read this session.
-      if (cached && cached->body.size() == out.size() &&
-          (options_.offline || (!validator.empty() && cached->validator == validator))) {
-        std::memcpy(out.data(), cached->body.data(), out.size());
-        return {};
-      }
+    std::vector<uint64_t> starts;  // of each piece in out
+    uint64_t total = 0;
+    for (uint32_t bytes : pieceBytes) {
+      starts.push_back(total);
+      total += bytes;
     }
-    if (options_.offline) return makeError(url + ": " + span + " not in the disk cache (offline)");
+    if (total != out.size()) return makeError(url + ": " + span + ": pieces do not add up");
+    std::optional<size_t> firstMissing;
+    size_t lastMissing = 0;
+    for (size_t i = 0; i < pieceBytes.size(); ++i) {
+      const std::span<std::byte> piece = out.subspan(starts[i], pieceBytes[i]);
+      if (cached(rangeKey(url, offset + starts[i], piece.size()), validator, piece)) continue;
+      if (!firstMissing) firstMissing = i;
+      lastMissing = i;
+    }
+    if (!firstMissing) return {};
+    const uint64_t from = starts[*firstMissing];
+    const uint64_t to = starts[lastMissing] + pieceBytes[lastMissing];
+    const std::span<std::byte> missing = out.subspan(from, to - from);
+    if (options_.offline) {
+      return makeError(url + ": bytes " + std::to_string(offset + from) + "-" +
+                       std::to_string(offset + to - 1) + " not in the disk cache (offline)");
+    }
+    std::string etag;
+    if (auto fetched = fetchRange(url, validator, sizeBytes, missing, offset + from, &etag);
+        !fetched) {
+      return fetched;
+    }
+    for (size_t i = *firstMissing; i <= lastMissing; ++i) {
+      const std::span<const std::byte> piece = out.subspan(starts[i], pieceBytes[i]);
+      store(rangeKey(url, offset + starts[i], piece.size()), etag, sizeBytes,
+            std::vector<std::byte>(piece.begin(), piece.end()));
+    }
+    return {};
+  }
+
+  std::string locationOf(const std::string& name) const override { return url_ + "/" + name; }
+  const std::string& location() const override { return url_; }
+  bool remote() const override { return true; }
+
+ private:
+  // A cached range counts only when served with the same ETag as the head read this session.
+  bool cached(const std::string& key, const std::string& validator, std::span<std::byte> out) {
+    if (!cache_) return false;
+    std::optional<CacheEntry> entry = cache_->get(key);
+    if (!entry || entry->body.size() != out.size() ||
+        !(options_.offline || (!validator.empty() && entry->validator == validator))) {
+      return false;
+    }
+    std::memcpy(out.data(), entry->body.data(), out.size());
+    return true;
+  }
+
+  // One range request, checked against the file's size and ETag; *etag (when asked) the
+  // response's.
+  Result<void> fetchRange(const std::string& url, const std::string& validator, uint64_t sizeBytes,
+                          std::span<std::byte> out, uint64_t offset, std::string* etag) {
+    const std::string span =
+        "bytes " + std::to_string(offset) + "-" + std::to_string(offset + out.size() - 1);
     HttpRequest q;
     q.url = url;
     q.ranged = true;
@@ -222,16 +282,11 @@ class HttpByteSource final : public ByteSource,
     if (total != sizeBytes || (!validator.empty() && !r.etag.empty() && r.etag != validator)) {
       return makeError(url + ": changed on the server since its index was read (re-open it)");
     }
-    store(key, r.etag, total, r.body);
     std::memcpy(out.data(), r.body.data(), out.size());
+    if (etag) *etag = r.etag;
     return {};
   }
 
-  std::string locationOf(const std::string& name) const override { return url_ + "/" + name; }
-  const std::string& location() const override { return url_; }
-  bool remote() const override { return true; }
-
- private:
   HttpResponse fetch(const HttpRequest& q) {
     long delayMs = options_.firstRetryDelayMs;
     for (int attempt = 1;; ++attempt) {
@@ -281,6 +336,11 @@ class HttpByteSource final : public ByteSource,
 
 Result<void> HttpFile::read(std::span<std::byte> out, uint64_t offset) const {
   return source_->readRange(url_, validator_, sizeBytes_, out, offset);
+}
+
+Result<void> HttpFile::readPieces(std::span<std::byte> out, uint64_t offset,
+                                  std::span<const uint32_t> pieceBytes) const {
+  return source_->readPieces(url_, validator_, sizeBytes_, out, offset, pieceBytes);
 }
 
 }  // namespace

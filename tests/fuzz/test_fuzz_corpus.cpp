@@ -1,6 +1,7 @@
 // Replays every committed fuzz corpus file (tests/fuzz/corpus/<target>/) through its entry point.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -44,7 +45,8 @@ TEST(FuzzCorpus, ElevationImage) { EXPECT_GT(replay("elevation_image"), 0U); }
 TEST(FuzzCorpus, Pmtiles) { EXPECT_GT(replay("pmtiles"), 0U); }
 TEST(FuzzCorpus, ServiceXml) { EXPECT_GT(replay("service_xml"), 0U); }
 
-// The hand-made seeds are valid packs (version 2, and 5 with its compressed index); the version-1
+// The hand-made seeds are valid packs (version 2; 5 with its compressed index; 6 with compressed
+// blocks, written by tests/tools/pack_v6_from_v5.py, an encoder of its own); the version-1
 // seed (negative samples meant sea then) is refused by name as made by an older globe-tiler.
 TEST(FuzzCorpus, PackSeedsDecodeAndTheVersion1SeedIsRefused) {
   auto read = [](const char* name) {
@@ -54,11 +56,30 @@ TEST(FuzzCorpus, PackSeedsDecodeAndTheVersion1SeedIsRefused) {
     std::memcpy(bytes.data(), chars.data(), chars.size());
     return bytes;
   };
-  for (const char* seed : {"seed-p1n5.pack", "seed-p2n3.pack", "seed-p4n3-empty.pack",
-                           "seed-p1n5-version5.pack", "seed-p2n3-version5.pack",
-                           "seed-p4n3-empty-version5.pack"}) {
+  for (const char* seed :
+       {"seed-p1n5.pack", "seed-p2n3.pack", "seed-p4n3-empty.pack", "seed-p1n5-version5.pack",
+        "seed-p2n3-version5.pack", "seed-p4n3-empty-version5.pack", "seed-p1n5-version6.pack",
+        "seed-p2n3-version6.pack", "seed-p4n3-empty-version6.pack"}) {
     const auto pack = globe::formats::decodePack(read(seed), seed);
     EXPECT_TRUE(pack.ok()) << seed << ": " << pack.error();
+  }
+  // The independent encoder's version 6 holds what its version-5 source held.
+  for (const std::string stem : {"seed-p1n5", "seed-p2n3", "seed-p4n3-empty"}) {
+    const auto v5 = globe::formats::decodePack(read((stem + "-version5.pack").c_str()), stem);
+    const auto v6 = globe::formats::decodePack(read((stem + "-version6.pack").c_str()), stem);
+    ASSERT_TRUE(v5.ok() && v6.ok()) << stem;
+    EXPECT_EQ(v6->layout.formatVersion, 6U);
+    EXPECT_EQ(v5->heights, v6->heights) << stem;
+    EXPECT_EQ(v5->aprons, v6->aprons) << stem;
+    ASSERT_EQ(v5->entries.size(), v6->entries.size());
+    for (size_t slot = 0; slot < v5->entries.size(); ++slot) {
+      ASSERT_EQ(v5->entries[slot].present(), v6->entries[slot].present());
+      if (!v5->entries[slot].present()) continue;
+      EXPECT_EQ(v5->entries[slot].subtreeRange.maximumMeters,
+                v6->entries[slot].subtreeRange.maximumMeters);
+      EXPECT_EQ(std::bit_cast<uint32_t>(v5->entries[slot].geometricErrorMeters),
+                std::bit_cast<uint32_t>(v6->entries[slot].geometricErrorMeters));
+    }
   }
   const auto old = globe::formats::decodePack(read("seed-p1n5-version1.pack"), "v1.pack");
   ASSERT_FALSE(old.ok());

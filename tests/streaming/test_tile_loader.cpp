@@ -112,6 +112,63 @@ TEST_F(TileLoaderTest, TiesKeepRequestOrderAndDuplicatesKeepTheirHigherPriority)
   EXPECT_EQ(loader.counters().requested, 3U);
 }
 
+// A source that reads tiles of the same pair (x / 2) in one request, as a remote pack reads
+// adjacent blocks: the loader hands each pair to one task.
+class PairedSource final : public TileSource<terrain::HeightBlock> {
+ public:
+  explicit PairedSource(TileStore& store) : store_(store) {}
+  Result<std::optional<terrain::HeightBlock>> load(const TileId& tile) override {
+    return store_.load(tile);
+  }
+  std::string location(const TileId& tile) const override { return store_.location(tile); }
+  std::vector<TileId> readableWith(const TileId& first,
+                                   std::span<const TileId> candidates) override {
+    std::vector<TileId> together;
+    for (const TileId& tile : candidates) {
+      if (tile.y == first.y && tile.x / 2 == first.x / 2) together.push_back(tile);
+    }
+    together.push_back({first.level, first.x ^ 1U, first.y + 1});  // not offered: ignored
+    return together;
+  }
+  std::vector<Result<std::optional<terrain::HeightBlock>>> loadTogether(
+      std::span<const TileId> tiles) override {
+    groups.emplace_back(tiles.begin(), tiles.end());
+    return TileSource::loadTogether(tiles);
+  }
+  std::vector<std::vector<TileId>> groups;
+
+ private:
+  TileStore& store_;
+};
+
+TEST_F(TileLoaderTest, TilesReadTogetherShareOneTaskAndOneSlot) {
+  PairedSource source(*store_);
+  TileLoader loader(source, runner_, cache_);
+  loader.setMaxInFlight(1);
+  auto tiles = fujiRow(6);
+  if (tiles[0].x % 2 == 1) tiles = fujiRow(7), tiles.erase(tiles.begin());  // pairs aligned
+  // Priorities put each tile's partner far behind it: it is still read with it.
+  loader.request(withPriorities(tiles, {6, 3, 5, 2, 4, 1}));
+  EXPECT_EQ(runner_.queued(), 1U);
+  EXPECT_EQ(loader.counters().tasksInFlight, 1U);
+  EXPECT_EQ(loader.counters().inFlight, 2U);
+  std::vector<std::vector<TileId>> arrivals;
+  for (int frame = 0; frame < 3; ++frame) {
+    arrivals.push_back(arrivedTiles(runAndPoll(runner_, cache_, loader)));
+  }
+  const std::vector<std::vector<TileId>> pairs = {
+      {tiles[0], tiles[1]}, {tiles[2], tiles[3]}, {tiles[4], tiles[5]}};
+  EXPECT_EQ(arrivals, pairs);
+  EXPECT_EQ(source.groups, pairs);
+  const LoaderCounters c = loader.counters();
+  EXPECT_EQ(c.started, 6U);
+  EXPECT_EQ(c.readTogether, 3U);
+  EXPECT_EQ(c.completed, 6U);
+  EXPECT_EQ(c.tasksInFlight, 0U);
+  EXPECT_EQ(c.inFlight, 0U);
+  for (const TileId& tile : tiles) EXPECT_EQ(loader.state(tile), TileState::Resident);
+}
+
 TEST_F(TileLoaderTest, NeverHasMoreThanMaxInFlightLoads) {
   TileLoader loader(*store_, runner_, cache_);
   EXPECT_EQ(loader.maxInFlight(), TileLoader::kDefaultMaxInFlight);

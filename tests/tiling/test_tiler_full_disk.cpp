@@ -220,7 +220,7 @@ TEST(TilerFullDisk, FileSizeLimitAtThePlanAndInPacks) {
   // Per-file limits: under the plan's size, and under the largest packs of the finest level (the
   // first level built, so the smaller packs of that level may be complete).
   const std::vector<std::pair<rlim_t, std::string>> limits = {{100, "tiling-plan.json"},
-                                                              {1 << 20, "L14/"}};
+                                                              {1 << 19, "L14/"}};
   const fs::path scratch = globe::testing::freshTempDir("full-rlimit");
   for (const auto& [limit, failing] : limits) {
     SCOPED_TRACE("RLIMIT_FSIZE " + std::to_string(limit));

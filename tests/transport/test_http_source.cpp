@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -11,10 +12,12 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "formats/pack_format.hpp"
+#include "geo/tiling_scheme.hpp"
 #include "streaming/imagery_store.hpp"
 #include "streaming/tile_store.hpp"
 #include "tests/streaming/loader_test_pyramid.hpp"
@@ -150,6 +153,66 @@ TEST(HttpTileStore, EveryBlockEqualsTheLocalOneWithOneRangeRequestEach) {
   EXPECT_EQ(packGets + remote->blocksFromHead(),
             tiles.size() + remote->packIndexReads() + remote->indexContinuations());
   EXPECT_EQ(countMatching(log, "GET /pyramid/manifest.json 200"), 1u);
+}
+
+// A block's range request, not a pack's header and index ("bytes=0-...").
+size_t blockRanges(const std::vector<std::string>& log, size_t from) {
+  return static_cast<size_t>(std::count_if(
+      log.begin() + static_cast<ptrdiff_t>(from), log.end(), [](const std::string& line) {
+        return isPackRange(line) && line.find("\"bytes=0-") == std::string::npos;
+      }));
+}
+
+TEST(HttpTileStore, NeighboursAreReadByOneRequestAndCachedEachOnItsOwn) {
+  Served served;
+  ASSERT_TRUE(served.server);
+  TempDir cacheDir;
+  auto remote = openRemote(served.url(), std::make_shared<HttpClient>(quickSettings()),
+                           cacheIn(cacheDir.path()));
+  ASSERT_TRUE(remote);
+  auto local = streaming::TileStore::open(testing::loaderTestPyramid().string());
+  ASSERT_TRUE(local) << local.error();
+  // A family of four at level 6: one pack, its blocks adjacent (Morton order).
+  const auto fuji = geo::GeographicTilingScheme::positionToTile(geo::degreesToRadians(138.73),
+                                                                geo::degreesToRadians(35.36), 5);
+  ASSERT_TRUE(fuji);
+  const std::array<geo::TileId, 4> family = fuji->children();
+  const std::vector<geo::TileId> others(family.begin() + 1, family.end());
+  EXPECT_TRUE(remote->readableWith(family[0], others).empty()) << "its pack is not open yet";
+  ASSERT_TRUE(remote->summary(family[0]));
+  const std::vector<geo::TileId> together = remote->readableWith(family[0], others);
+  EXPECT_EQ(std::set<geo::TileId>(together.begin(), together.end()),
+            std::set<geo::TileId>(others.begin(), others.end()));
+  EXPECT_TRUE((*local)->readableWith(family[0], others).empty()) << "a local pread each";
+
+  size_t before = served.server->accessLog().size();
+  const auto loaded = remote->loadTogether(family);
+  ASSERT_EQ(loaded.size(), 4u);
+  for (size_t i = 0; i < 4; ++i) {
+    auto expected = (*local)->load(family[i]);
+    ASSERT_TRUE(expected && *expected);
+    ASSERT_TRUE(loaded[i] && *loaded[i]) << (loaded[i] ? "absent" : loaded[i].error());
+    EXPECT_EQ((*loaded[i])->heights, (*expected)->heights) << geo::tileName(family[i]);
+    EXPECT_EQ((*loaded[i])->apron, (*expected)->apron) << geo::tileName(family[i]);
+  }
+  EXPECT_EQ(blockRanges(served.server->accessLog(), before), 1u);
+  EXPECT_EQ(remote->groupReads(), 1u);
+  EXPECT_EQ(remote->groupBlocks(), 4u);
+
+  // Each block was cached under its own range: read alone later, online or offline, none is
+  // asked for again.
+  before = served.server->accessLog().size();
+  auto warm = openRemote(served.url(), std::make_shared<HttpClient>(quickSettings()),
+                         cacheIn(cacheDir.path()));
+  auto offline = openRemote(served.url(), nullptr, cacheIn(cacheDir.path()), quickRetries(true));
+  ASSERT_TRUE(warm && offline);
+  for (const geo::TileId& tile : family) {
+    auto a = warm->load(tile);
+    auto b = offline->load(tile);
+    EXPECT_TRUE(a && *a) << (a ? "absent" : a.error());
+    EXPECT_TRUE(b && *b) << (b ? "absent" : b.error());
+  }
+  EXPECT_EQ(blockRanges(served.server->accessLog(), before), 0u);
 }
 
 TEST(HttpTileStore, OfflineServesWhatTheCacheHoldsAndNamesWhatItLacks) {
@@ -301,7 +364,8 @@ TEST(HttpTileStore, EachFaultIsOneClearErrorNamingTheUrl) {
          ASSERT_TRUE(bytes);
          auto pack = formats::decodePack(*bytes, file);
          ASSERT_TRUE(pack) << pack.error();
-         (*bytes)[pack->entries[formats::slotOf(t, 64)].blockOffset + 100] ^= std::byte{0x40};
+         const formats::PackEntry& e = pack->entries[formats::slotOf(t, 64)];
+         (*bytes)[e.blockOffset + e.storedBytes / 2] ^= std::byte{0x40};
          ASSERT_TRUE(writeFileAtomically(file, *bytes));
        },
        "fails its CRC"},

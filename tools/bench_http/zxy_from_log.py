@@ -2,9 +2,11 @@
 """Cuts the blocks a cold run fetched (nginx access log lines "GET URI 206 "bytes=A-B" SENT")
 out of their packs into one file per block under WWW/PREFIX/<pack path>/<first byte>.bin, and
 prints a curl config that fetches each of them from BASE_URL: the z/x/y layout's transport, for
-the same blocks. Pack headers and indexes are left out (a z/x/y tree has none); blocks a reader
-took from the bytes it read with a pack's index (a version-5 pack's first read holds its first
-blocks) are cut from those bytes, as many as LOADED (the run's tile loads) says there were.
+the same blocks. Pack headers and indexes are left out (a z/x/y tree has none). A range that
+read several adjacent blocks at once (a version-6 pack's neighbours) is cut into its blocks, each
+its own file; blocks a reader took from the bytes it read with a pack's index (an older pack's
+first read held its first blocks) are cut from those bytes, as many as LOADED (the run's tile
+loads) says there were.
 
     zxy_from_log.py ACCESS_LOG WWW PREFIX BASE_URL [LOADED] > curl.cfg
 """
@@ -12,6 +14,7 @@ import os
 import re
 import struct
 import sys
+import zlib
 
 log, www, prefix, base = sys.argv[1:5]
 loaded = int(sys.argv[5]) if len(sys.argv) > 5 else None
@@ -31,6 +34,20 @@ def index_end(header):
     return HEADER + (index_bytes if version >= 5 else tiles * tiles * entry)
 
 
+def block_ranges(pack, header):
+    """Where each block of a version-6 pack lies: a sorted list of (offset, bytes)."""
+    version, _, _, _, tiles, _, present, index_bytes = struct.unpack('>8I', header[8:40])
+    pack.seek(HEADER)
+    columns = zlib.decompress(pack.read(index_bytes))
+    bitmap = (tiles * tiles + 7) // 8
+    sizes = struct.unpack(f'>{present}I', columns[bitmap:bitmap + 4 * present])
+    ranges, offset = [], HEADER + index_bytes
+    for size in sizes:
+        ranges.append((offset, size))
+        offset += size
+    return ranges
+
+
 blocks = []      # (uri, first byte, bytes) fetched by their own range
 in_heads = []    # the same for blocks that came with an index read
 for line in open(log):
@@ -40,6 +57,13 @@ for line in open(log):
     uri, first, last = m.group(1), int(m.group(2)), int(m.group(3))
     with open(os.path.join(www, uri.lstrip('/')), 'rb') as pack:
         header = pack.read(HEADER)
+        version = struct.unpack('>I', header[8:12])[0]
+        if first != 0 and version >= 6:
+            for offset, size in block_ranges(pack, header):
+                if first <= offset and offset + size <= last + 1:
+                    pack.seek(offset)
+                    blocks.append((uri, offset, pack.read(size)))
+            continue
         if first != 0:
             pack.seek(first)
             blocks.append((uri, first, pack.read(last - first + 1)))

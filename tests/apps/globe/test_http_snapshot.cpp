@@ -250,7 +250,7 @@ TEST(HttpSnapshot, ADamagedPackDrawsWhatTheSameDamageDrawsLocally) {
 // the parents of what had not), a message naming the URL, exit status 0.
 TEST(HttpSnapshot, AServerStoppedMidFlightStillEndsWithAnImage) {
   Site site;
-  auto server = NginxServer::start({site.root, "location /zion/ { limit_rate 50k; }"});
+  auto server = NginxServer::start({site.root, "location /zion/ { limit_rate 10k; }"});
   ASSERT_TRUE(server);
   const fs::path output = site.dir / "stopped.png";
   const std::string command = std::string(GLOBE_EXE) + " " +
