@@ -6,7 +6,7 @@ namespace globe::tiler_app {
 
 // globe-tiler -o PYRAMID INPUT...: elevation rasters to a pyramid.
 int runTileCommand(int argc, char** argv);
-// globe-tiler export PYRAMID L X Y OUT_STEM: one block as a GTOPO30 file.
+// globe-tiler export: a tile tree for other viewers (--format), or one block as a GTOPO30 file.
 int runExportCommand(int argc, char** argv);
 // globe-tiler imagery -o LAYER INPUT...: imagery to a layer.
 int runImageryCommand(int argc, char** argv);

@@ -1,26 +1,127 @@
-#include "apps/globe-tiler/commands.hpp"
-
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <string>
 
+#include "apps/globe-tiler/commands.hpp"
+#include "geo/ellipsoid.hpp"
+#include "publish/quantized_mesh_export.hpp"
+#include "publish/terrarium_export.hpp"
+#include "streaming/tile_store.hpp"
 #include "tiling/export_block.hpp"
 
 namespace globe::tiler_app {
+namespace {
+
+// "A-B" or "A" into the region's levels.
+bool parseLevels(const std::string& text, publish::ExportRegion& region) {
+  unsigned first = 0, last = 0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%u-%u%c", &first, &last, &extra) == 2 && first <= last) {
+  } else if (std::sscanf(text.c_str(), "%u%c", &first, &extra) == 1) {
+    last = first;
+  } else {
+    return false;
+  }
+  region.minLevel = first;
+  region.maxLevel = last;
+  return true;
+}
+
+bool parseBounds(const std::string& text, publish::ExportRegion& region) {
+  double w = 0, s = 0, e = 0, n = 0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%lf,%lf,%lf,%lf%c", &w, &s, &e, &n, &extra) != 4) return false;
+  if (!(w >= -180 && e <= 180 && w < e && s >= -90 && n <= 90 && s < n)) return false;
+  region = {region.minLevel, region.maxLevel, w, s, e, n};
+  return true;
+}
+
+// globe-tiler export --format F -o DIR PYRAMID: a tile tree for web viewers.
+int exportTree(const std::string& format, const std::string& out, const std::string& pyramid,
+               const std::string& levels, const std::string& bounds) {
+  publish::ExportRegion region;
+  if (!levels.empty() && !parseLevels(levels, region)) {
+    std::fprintf(stderr, "globe-tiler export: --levels must be A-B or A, not '%s'\n",
+                 levels.c_str());
+    return 2;
+  }
+  if (!bounds.empty() && !parseBounds(bounds, region)) {
+    std::fprintf(stderr,
+                 "globe-tiler export: --bounds must be W,S,E,N in degrees (W < E, S < N), not "
+                 "'%s'\n",
+                 bounds.c_str());
+    return 2;
+  }
+  auto store = streaming::TileStore::open(pyramid);
+  if (!store) {
+    std::fprintf(stderr, "globe-tiler export: %s\n", store.error().c_str());
+    return 1;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const geo::Ellipsoid ellipsoid = geo::Ellipsoid::wgs84();
+  auto report = format == "quantized-mesh"
+                    ? publish::exportQuantizedMesh(**store, region, out, ellipsoid)
+                    : publish::exportTerrarium(**store, region, out, ellipsoid);
+  if (!report) {
+    std::fprintf(stderr, "globe-tiler export: %s\n", report.error().c_str());
+    return 1;
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("%s: %llu %s tiles written (%.1f MB), %llu kept from an earlier run, in %.1f s\n",
+              out.c_str(), static_cast<unsigned long long>(report->tilesWritten), format.c_str(),
+              static_cast<double>(report->bytesWritten) / 1e6,
+              static_cast<unsigned long long>(report->tilesKept), seconds);
+  return 0;
+}
+
+}  // namespace
 
 int runExportCommand(int argc, char** argv) {
-  CLI::App app{"Export one block of a pyramid as a standalone GTOPO30 .DEM/.HDR",
-               "globe-tiler export"};
-  std::string pyramid, stem;
-  uint32_t level = 0, x = 0, y = 0;
-  app.add_option("PYRAMID", pyramid, "pyramid directory")->required();
-  app.add_option("L", level, "tile level")->required();
-  app.add_option("X", x, "tile column (eastwards from -180)")->required();
-  app.add_option("Y", y, "tile row (southwards from +90)")->required();
-  app.add_option("OUT_STEM", stem, "output path without extension (writes .DEM .HDR .PRJ .STX)")
+  CLI::App app{
+      "Export a pyramid for other viewers: a tile tree (--format quantized-mesh for CesiumJS, "
+      "terrarium for MapLibre and others), or one block as a standalone GTOPO30 .DEM/.HDR",
+      "globe-tiler export"};
+  std::string format, out, levels, bounds;
+  std::vector<std::string> positional;
+  app.add_option("--format", format, "quantized-mesh | terrarium (a tile tree into -o DIR)")
+      ->check(CLI::IsMember({"quantized-mesh", "terrarium"}));
+  app.add_option("-o,--output", out, "the tree's directory (with --format)");
+  app.add_option("--levels", levels,
+                 "A-B: pyramid levels (quantized-mesh) or Web-Mercator zooms (terrarium); "
+                 "default all (terrarium: 0 to 22, as deep as the pyramid has data)");
+  app.add_option("--bounds", bounds, "W,S,E,N degrees: the region exported (default the world)");
+  app.add_option("ARGS", positional,
+                 "with --format: PYRAMID; without: PYRAMID L X Y OUT_STEM (one block as GTOPO30 "
+                 ".DEM .HDR .PRJ .STX)")
       ->required();
   CLI11_PARSE(app, argc, argv);
+  if (!format.empty()) {
+    if (out.empty() || positional.size() != 1) {
+      std::fprintf(stderr, "globe-tiler export: --format needs -o DIR and one PYRAMID\n");
+      return 2;
+    }
+    return exportTree(format, out, positional[0], levels, bounds);
+  }
+  if (positional.size() != 5) {
+    std::fprintf(stderr,
+                 "globe-tiler export: PYRAMID L X Y OUT_STEM (one block), or --format F -o DIR "
+                 "PYRAMID (a tile tree)\n");
+    return 2;
+  }
+  uint32_t level = 0, x = 0, y = 0;
+  try {
+    level = static_cast<uint32_t>(std::stoul(positional[1]));
+    x = static_cast<uint32_t>(std::stoul(positional[2]));
+    y = static_cast<uint32_t>(std::stoul(positional[3]));
+  } catch (const std::exception&) {
+    std::fprintf(stderr, "globe-tiler export: L X Y must be whole numbers\n");
+    return 2;
+  }
+  const std::string& pyramid = positional[0];
+  const std::string& stem = positional[4];
   if (auto done = tiling::exportBlock(pyramid, {level, x, y}, stem); !done) {
     std::fprintf(stderr, "globe-tiler export: %s\n", done.error().c_str());
     return 1;

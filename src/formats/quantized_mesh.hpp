@@ -48,6 +48,21 @@ Result<QuantizedMesh> decodeQuantizedMesh(std::span<const std::byte> bytes,
 bool centreLiesOverTile(const QuantizedMesh& mesh, double westDegrees, double southDegrees,
                         double eastDegrees, double northDegrees);
 
+// What a producer writes in the header beyond QuantizedMesh: the culling volumes a client such
+// as CesiumJS uses (globe recomputes its own).
+struct QuantizedMeshCulling {
+  std::array<double, 3> boundingSphereCenterEcefMeters{};
+  double boundingSphereRadiusMeters = 0;
+  // In the ellipsoid-scaled space (ECEF divided by the radii), as the format specifies.
+  std::array<double, 3> horizonOcclusionPointScaled{};
+};
+
+// Encodes a tile (not gzip-compressed; no extensions): u, v as given, heights quantized into the
+// mesh's minimum..maximum, indices high-water-mark coded (32-bit beyond 65536 vertices), the edge
+// lists as given. The caller keeps every index below the vertex count and heights in range.
+std::vector<std::byte> encodeQuantizedMesh(const QuantizedMesh& mesh,
+                                           const QuantizedMeshCulling& culling);
+
 // Cesium's heightmap-1.0 tile: 65×65 heights (uint16 LE, h/5 - 1000 m) from the north-west,
 // then a child mask and an optional water mask.
 struct HeightmapTile {

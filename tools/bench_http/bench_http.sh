@@ -142,10 +142,13 @@ one round trip per new connection).
 |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|
 $ROWS
 * **cold**: an empty disk cache: the manifest, each pack's header and index (one range request
-  each, on the loader's threads, every level's pack under the camera at once), then one range
-  request per block, up to 24 at once over at most 16 connections, with the refinement's next
-  levels requested ahead (3 levels).
-* **z/x/y**: the same blocks the cold run loaded, each its own file, fetched by
+  each, on the loader's threads, every level's pack under the camera at once), then the blocks:
+  the loader offers the pack store the queued tiles around each one it starts, and neighbours
+  whose blocks lie end to end (a tile's children, stored together in Morton order) are read by
+  one range request; up to 24 requests at once over at most 16 connections, with the
+  refinement's next levels requested ahead (3 levels).
+* **z/x/y**: the same blocks the cold run loaded (those read together cut apart), each its own
+  file, fetched by
   \`curl --parallel --parallel-max 24\` given the exact list up front: a floor for the transport
   alone (no selection, no rendering, no index; a z/x/y viewer would also have to ask for tiles
   that do not exist to learn so).

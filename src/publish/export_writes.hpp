@@ -1,0 +1,34 @@
+// How the exporters write a tree of tiles: each file atomically (a temporary name, then rename),
+// one already there kept, so a run killed at any moment is resumed by running it again; and
+// what they report.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <span>
+
+#include "core/result.hpp"
+
+namespace globe::publish {
+
+struct ExportReport {
+  uint64_t tilesWritten = 0;
+  uint64_t tilesKept = 0;  // already written by an earlier run
+  uint64_t bytesWritten = 0;
+};
+
+// The region and levels to export; levels beyond the pyramid's are not exported.
+struct ExportRegion {
+  uint32_t minLevel = 0;
+  uint32_t maxLevel = UINT32_MAX;
+  double westDegrees = -180, southDegrees = -90, eastDegrees = 180, northDegrees = 90;
+};
+
+// Calls make() and writes its bytes to `path` unless a file is already there.
+Result<void> writeTileOnce(const std::filesystem::path& path,
+                           const std::function<Result<std::vector<std::byte>>()>& make,
+                           ExportReport& report);
+
+}  // namespace globe::publish

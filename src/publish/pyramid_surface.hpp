@@ -1,0 +1,43 @@
+// Heights of a pyramid's exact surface (collision's: the mesh the renderer draws) anywhere, from
+// the finest tile present under a point down to a chosen level; blocks read once and kept for
+// the points around them. One per thread (it caches).
+#pragma once
+
+#include <cstdint>
+#include <list>
+#include <memory>
+#include <unordered_map>
+
+#include "core/result.hpp"
+#include "geo/ellipsoid.hpp"
+#include "geo/tile_id.hpp"
+#include "streaming/terrain_source.hpp"
+#include "terrain/height_block.hpp"
+
+namespace globe::publish {
+
+class PyramidSurface {
+ public:
+  PyramidSurface(streaming::TerrainSource& source, const geo::Ellipsoid& ellipsoid)
+      : source_(source), ellipsoid_(ellipsoid) {}
+
+  // The surface height at a point from the finest tile of level <= maxLevel there; 0 m where the
+  // pyramid has none. Errors: unreadable packs, naming them.
+  Result<double> heightMeters(double longitudeRadians, double latitudeRadians, uint32_t maxLevel);
+
+ private:
+  static constexpr size_t kCachedBlocks = 512;
+  // The tile's block, or null where the pyramid has no such tile.
+  Result<std::shared_ptr<const terrain::HeightBlock>> block(const geo::TileId& tile);
+
+  streaming::TerrainSource& source_;
+  geo::Ellipsoid ellipsoid_;
+  std::list<geo::TileId> recency_;  // most recent first
+  struct Cached {
+    std::shared_ptr<const terrain::HeightBlock> block;
+    std::list<geo::TileId>::iterator place;
+  };
+  std::unordered_map<geo::TileId, Cached> cache_;
+};
+
+}  // namespace globe::publish

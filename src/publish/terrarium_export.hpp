@@ -1,0 +1,26 @@
+// A pyramid as Terrarium elevation tiles: DIR/{z}/{x}/{y}.png, 256×256 Web-Mercator XYZ, each
+// pixel the exact surface at its centre encoded as (R·256 + G + B/256) − 32768 m, from the
+// pyramid level whose vertex spacing first matches the pixel's (coarser where the pyramid stops).
+// What MapLibre's raster-dem (encoding "terrarium") and globe's terrarium: source read.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+
+#include "core/result.hpp"
+#include "geo/ellipsoid.hpp"
+#include "publish/export_writes.hpp"
+#include "streaming/terrain_source.hpp"
+
+namespace globe::publish {
+
+// region's levels are Web-Mercator zooms here; its latitudes are clamped to the projection's.
+Result<ExportReport> exportTerrarium(streaming::TerrainSource& source, const ExportRegion& region,
+                                     const std::filesystem::path& outDir,
+                                     const geo::Ellipsoid& ellipsoid);
+
+// The Terrarium pixel of a height, rounded to 1/256 m and clamped to what the encoding holds.
+std::array<uint8_t, 3> terrariumPixel(double heightMeters);
+
+}  // namespace globe::publish

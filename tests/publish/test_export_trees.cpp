@@ -1,0 +1,239 @@
+// globe-tiler export on the bundled pyramid (Fuji's 3″ DEM over ETOPO20): the quantized-mesh
+// tree decoded by an independent stdlib-Python decoder and the Terrarium tiles by stb, both
+// against `globe query --mode exact` of the pyramid itself; resuming; bad arguments.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "formats/gzip_bytes.hpp"
+#include "formats/image_io.hpp"
+#include "formats/quantized_mesh.hpp"
+#include "geo/tiling_scheme.hpp"
+#include "publish/block_mesh.hpp"
+#include "publish/terrarium_export.hpp"
+#include "tests/support/test_io_util.hpp"
+#include "tests/support/tiler_test_fixture.hpp"
+
+namespace globe::publish {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kSource = GLOBE_SOURCE_DIR;
+
+struct Exit {
+  int exitCode = -1;
+  std::string output;
+};
+
+Exit run(const std::string& command) {
+  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
+  Exit r;
+  char buffer[4096];
+  while (pipe != nullptr && std::fgets(buffer, sizeof buffer, pipe) != nullptr) r.output += buffer;
+  const int status = pipe != nullptr ? ::pclose(pipe) : -1;
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+struct Point {
+  double lon, lat;
+};
+
+fs::path writePoints(const fs::path& path, const std::vector<Point>& points) {
+  std::ofstream out(path);
+  out.precision(12);
+  for (const Point& p : points) out << p.lon << "," << p.lat << "\n";
+  return path;
+}
+
+// lon,lat,level,height lines; the heights in order.
+std::vector<double> heightsOf(const std::string& output) {
+  std::vector<double> heights;
+  std::istringstream lines(output);
+  std::string line;
+  while (std::getline(lines, line)) {
+    double lon = 0, lat = 0, h = 0;
+    int level = 0;
+    if (std::sscanf(line.c_str(), "%lf,%lf,%d,%lf", &lon, &lat, &level, &h) == 4) {
+      heights.push_back(h);
+    }
+  }
+  return heights;
+}
+
+std::vector<double> exactHeights(const fs::path& points, const std::string& level = "") {
+  const Exit r = run(std::string(GLOBE_EXE) + " query --mode exact " +
+                     (level.empty() ? "" : "--level " + level + " ") +
+                     globe::testing::bundledPyramid().string() + " < " + points.string());
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  return heightsOf(r.output);
+}
+
+std::vector<double> sortedDifferences(const std::vector<double>& a, const std::vector<double>& b) {
+  EXPECT_EQ(a.size(), b.size());
+  std::vector<double> d;
+  for (size_t i = 0; i < std::min(a.size(), b.size()); ++i) d.push_back(std::fabs(a[i] - b[i]));
+  std::sort(d.begin(), d.end());
+  return d;
+}
+
+// Fuji's DEM square, away from its edges (where the pyramid's finest level ends).
+std::vector<Point> fujiPoints(size_t count) {
+  std::mt19937 random(31);
+  std::uniform_real_distribution<double> lon(138.15, 138.85), lat(35.15, 35.85);
+  std::vector<Point> points;
+  for (size_t i = 0; i < count; ++i) points.push_back({lon(random), lat(random)});
+  return points;
+}
+
+std::string tiler() { return std::string(GLOBE_TILER_EXE) + " export "; }
+
+TEST(ExportTrees, QuantizedMeshHoldsThePyramidsSurface) {
+  const fs::path out = globe::testing::freshTempDir("export-qm") / "qm";
+  const std::string pyramid = globe::testing::bundledPyramid().string();
+  // Two runs into one tree: the world's coarse levels, then Fuji's square to its finest.
+  Exit a = run(tiler() + "--format quantized-mesh -o " + out.string() + " --levels 0-3 " + pyramid);
+  ASSERT_EQ(a.exitCode, 0) << a.output;
+  Exit b = run(tiler() + "--format quantized-mesh -o " + out.string() +
+               " --levels 4-12 --bounds 138,35,139,36 " + pyramid);
+  ASSERT_EQ(b.exitCode, 0) << b.output;
+  EXPECT_NE(b.output.find("quantized-mesh tiles written"), std::string::npos) << b.output;
+  // layer.json lists both runs' tiles: level 0's two, and level 12 over Fuji.
+  std::ifstream layerFile(out / "layer.json");
+  const std::string layer{std::istreambuf_iterator<char>(layerFile), {}};
+  EXPECT_NE(layer.find("\"format\": \"quantized-mesh-1.0\""), std::string::npos) << layer;
+  EXPECT_NE(layer.find("\"maxzoom\": 12"), std::string::npos) << layer;
+
+  // An independent decoder of the tree (the finest tile its layer.json lists, the triangle's
+  // plane) against the pyramid's exact surface: the same within the height quantization
+  // (range / 32767) and the chord's sag over a level-12 cell (< 1 mm).
+  const fs::path points = writePoints(out.parent_path() / "points.txt", fujiPoints(200));
+  const Exit reference =
+      run("python3 " + (kSource / "tests/tools/quantized_mesh_reference.py").string() + " " +
+          out.string() + " < " + points.string());
+  ASSERT_EQ(reference.exitCode, 0) << reference.output;
+  const std::vector<double> d =
+      sortedDifferences(heightsOf(reference.output), exactHeights(points));
+  ASSERT_EQ(d.size(), 200u);
+  std::printf("[ quantized-mesh ] vs the pyramid: median %.3f m, 95th %.3f m, max %.3f m\n", d[100],
+              d[190], d.back());
+  EXPECT_LT(d[190], 0.08);
+  EXPECT_LT(d.back(), 0.15);
+
+  // Resumed: nothing written again.
+  Exit again = run(tiler() + "--format quantized-mesh -o " + out.string() +
+                   " --levels 4-12 --bounds 138,35,139,36 " + pyramid);
+  ASSERT_EQ(again.exitCode, 0) << again.output;
+  EXPECT_NE(again.output.find(": 0 quantized-mesh tiles written"), std::string::npos)
+      << again.output;
+}
+
+TEST(ExportTrees, QuantizedMeshTilesAreWhatClientsCheck) {
+  // A level-9 tile over Fuji: the header's centre on the tile, edge lists on their edges (the
+  // decoder checks both), 64×64×2 triangles, heights within their quantization.
+  const auto fuji = geo::GeographicTilingScheme::positionToTile(138.73 * std::numbers::pi / 180,
+                                                                35.36 * std::numbers::pi / 180, 9);
+  ASSERT_TRUE(fuji);
+  std::vector<double> heights(65 * 65);
+  for (size_t i = 0; i < heights.size(); ++i)
+    heights[i] = 100.0 + 3776.0 * std::sin(static_cast<double>(i) * 0.01);
+  const BlockMesh made = quantizedMeshOfGrid(*fuji, 65, heights, geo::Ellipsoid::wgs84());
+  const std::vector<std::byte> bytes = formats::encodeQuantizedMesh(made.mesh, made.culling);
+  auto mesh = formats::decodeQuantizedMesh(bytes, "fuji.terrain");
+  ASSERT_TRUE(mesh) << mesh.error();
+  EXPECT_EQ(mesh->vertexCount(), 65u * 65u);
+  EXPECT_EQ(mesh->triangleCount(), 64u * 64u * 2u);
+  EXPECT_EQ(mesh->westEdge.size(), 65u);
+  EXPECT_EQ(mesh->northEdge.size(), 65u);
+  const auto r = geo::GeographicTilingScheme::tileRectangle(*fuji);
+  const double deg = 180 / std::numbers::pi;
+  EXPECT_TRUE(formats::centreLiesOverTile(*mesh, r.westRadians * deg, r.southRadians * deg,
+                                          r.eastRadians * deg, r.northRadians * deg));
+  const double step = (mesh->maximumHeightMeters - mesh->minimumHeightMeters) / 32767.0;
+  std::vector<double> sorted(mesh->heightMeters);
+  std::vector<double> expected(heights);
+  std::sort(sorted.begin(), sorted.end());
+  std::sort(expected.begin(), expected.end());
+  for (size_t i = 0; i < sorted.size(); ++i) ASSERT_NEAR(sorted[i], expected[i], step);
+  // The horizon point lies outside the ellipsoid, on the centre's side.
+  const auto& h = made.culling.horizonOcclusionPointScaled;
+  EXPECT_GT(std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]), 1.0);
+  EXPECT_GT(made.culling.boundingSphereRadiusMeters, 1000.0);
+}
+
+// The centre of pixel (column, row) of Web-Mercator tile (z, x, y), degrees.
+Point pixelCentre(int z, int x, int y, int column, int row) {
+  const double n = std::ldexp(1.0, z);
+  const double lon = (x + (column + 0.5) / 256) / n * 360 - 180;
+  const double mercator = std::numbers::pi * (1 - 2 * (y + (row + 0.5) / 256) / n);
+  return {lon, std::atan(std::sinh(mercator)) * 180 / std::numbers::pi};
+}
+
+TEST(ExportTrees, TerrariumPixelsAreTheExactSurfaceAtTheirCentres) {
+  const fs::path out = globe::testing::freshTempDir("export-terrarium") / "t";
+  const Exit r = run(tiler() + "--format terrarium -o " + out.string() +
+                     " --levels 10 --bounds 138.7,35.3,138.8,35.4 " +
+                     globe::testing::bundledPyramid().string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  // Zoom 10's pixel is 0.00137° wide: the pyramid's level 13 (0.00137°), as the exporter picks.
+  const int z = 10;
+  const int x = static_cast<int>((138.75 + 180) / 360 * 1024);
+  const double latRadians = 35.35 * std::numbers::pi / 180;
+  const int y = static_cast<int>(
+      (1 - std::log(std::tan(latRadians) + 1 / std::cos(latRadians)) / std::numbers::pi) / 2 *
+      1024);
+  const fs::path tilePath =
+      out / std::to_string(z) / std::to_string(x) / (std::to_string(y) + ".png");
+  auto image = formats::loadImageRgba(tilePath);
+  ASSERT_TRUE(image) << image.error();
+  ASSERT_EQ(image->widthPixels, 256);
+  std::vector<Point> points;
+  std::vector<double> decoded;
+  std::mt19937 random(5);
+  std::uniform_int_distribution<int> pixel(0, 255);
+  for (int i = 0; i < 100; ++i) {
+    const int column = pixel(random), row = pixel(random);
+    points.push_back(pixelCentre(z, x, y, column, row));
+    const uint8_t* p = &image->pixels[(static_cast<size_t>(row) * 256 + column) * 4];
+    decoded.push_back(p[0] * 256.0 + p[1] + p[2] / 256.0 - 32768.0);
+  }
+  const fs::path file = writePoints(out.parent_path() / "points.txt", points);
+  const std::vector<double> d = sortedDifferences(decoded, exactHeights(file, "13"));
+  ASSERT_EQ(d.size(), 100u);
+  EXPECT_LT(d.back(), 0.01) << "median " << d[50];
+  EXPECT_EQ(terrariumPixel(0.0), (std::array<uint8_t, 3>{128, 0, 0}));
+  EXPECT_EQ(terrariumPixel(-11034.5), (std::array<uint8_t, 3>{84, 229, 128}));
+  EXPECT_EQ(terrariumPixel(1e9), (std::array<uint8_t, 3>{255, 255, 255}));  // clamped
+}
+
+TEST(ExportTrees, BadArgumentsAreClearErrors) {
+  const std::string pyramid = globe::testing::bundledPyramid().string();
+  const fs::path out = globe::testing::freshTempDir("export-bad") / "x";
+  const Exit levels =
+      run(tiler() + "--format terrarium -o " + out.string() + " --levels 9-3 " + pyramid);
+  EXPECT_EQ(levels.exitCode, 2);
+  EXPECT_NE(levels.output.find("--levels must be A-B"), std::string::npos) << levels.output;
+  const Exit bounds =
+      run(tiler() + "--format terrarium -o " + out.string() + " --bounds 10,50,5,60 " + pyramid);
+  EXPECT_EQ(bounds.exitCode, 2);
+  EXPECT_NE(bounds.output.find("--bounds must be W,S,E,N"), std::string::npos) << bounds.output;
+  const Exit missing =
+      run(tiler() + "--format quantized-mesh -o " + out.string() + " /nonexistent/pyramid");
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.output.find("/nonexistent/pyramid"), std::string::npos) << missing.output;
+  EXPECT_FALSE(fs::exists(out / "layer.json"));
+  const Exit format = run(tiler() + "--format mbtiles -o " + out.string() + " " + pyramid);
+  EXPECT_NE(format.exitCode, 0);
+}
+
+}  // namespace
+}  // namespace globe::publish
