@@ -57,9 +57,10 @@ struct QuantizedMeshCulling {
   std::array<double, 3> horizonOcclusionPointScaled{};
 };
 
-// Encodes a tile (not gzip-compressed; no extensions): u, v as given, heights quantized into the
-// mesh's minimum..maximum, indices high-water-mark coded (32-bit beyond 65536 vertices), the edge
-// lists as given. The caller keeps every index below the vertex count and heights in range.
+// Encodes a tile (not gzip-compressed): u, v as given, heights quantized into the mesh's
+// minimum..maximum, indices high-water-mark coded (32-bit beyond 65536 vertices), the edge lists
+// as given; the extensions the mesh holds (oct-encoded normals, the water mask, metadata). The
+// caller keeps every index below the vertex count and heights in range.
 std::vector<std::byte> encodeQuantizedMesh(const QuantizedMesh& mesh,
                                            const QuantizedMeshCulling& culling);
 

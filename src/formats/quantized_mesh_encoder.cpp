@@ -1,8 +1,11 @@
 // quantized-mesh-1.0 written as the spec lays it out (little-endian), for the exporter. Vertices
 // are renumbered in the order the triangles first use them, as the index code requires.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
+#include <utility>
+#include <vector>
 
 #include "formats/quantized_mesh.hpp"
 
@@ -26,6 +29,21 @@ class Writer {
 uint16_t zigZag(int32_t value) {
   return static_cast<uint16_t>((static_cast<uint32_t>(value) << 1) ^
                                static_cast<uint32_t>(value >> 31));
+}
+
+// A unit vector's octahedral encoding in two bytes (the spec's, and what decoders invert).
+std::pair<uint8_t, uint8_t> octEncode(const std::array<float, 3>& n) {
+  const double sum = std::fabs(n[0]) + std::fabs(n[1]) + std::fabs(n[2]);
+  double x = sum > 0 ? n[0] / sum : 0, y = sum > 0 ? n[1] / sum : 0;
+  if (n[2] < 0) {
+    const double ox = x;
+    x = (1 - std::fabs(y)) * (ox >= 0 ? 1.0 : -1.0);
+    y = (1 - std::fabs(ox)) * (y >= 0 ? 1.0 : -1.0);
+  }
+  const auto toByte = [](double v) {
+    return static_cast<uint8_t>(std::lround((std::clamp(v, -1.0, 1.0) * 0.5 + 0.5) * 255.0));
+  };
+  return {toByte(x), toByte(y)};
 }
 
 void putDeltas(Writer& w, const std::vector<uint16_t>& values) {
@@ -109,6 +127,27 @@ std::vector<std::byte> encodeQuantizedMesh(const QuantizedMesh& given,
        {&mesh.westEdge, &mesh.southEdge, &mesh.eastEdge, &mesh.northEdge}) {
     w.put(static_cast<uint32_t>(edge->size()));
     for (uint32_t index : *edge) putIndex(index);
+  }
+  // Extensions, each an id, its length and its bytes.
+  if (!mesh.normals.empty()) {
+    w.put(uint8_t{1});
+    w.put(static_cast<uint32_t>(2 * count));
+    for (size_t k = 0; k < count; ++k) {
+      const auto [x, y] = octEncode(given.normals[order[k]]);
+      w.put(x);
+      w.put(y);
+    }
+  }
+  if (!mesh.waterMask.empty()) {
+    w.put(uint8_t{2});
+    w.put(static_cast<uint32_t>(mesh.waterMask.size()));
+    for (uint8_t m : mesh.waterMask) w.put(m);
+  }
+  if (!mesh.metadataJson.empty()) {
+    w.put(uint8_t{4});
+    w.put(static_cast<uint32_t>(4 + mesh.metadataJson.size()));
+    w.put(static_cast<uint32_t>(mesh.metadataJson.size()));
+    for (char c : mesh.metadataJson) w.put(c);
   }
   return std::move(w.bytes);
 }

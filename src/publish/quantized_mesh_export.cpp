@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <span>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -9,7 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "core/crc32.hpp"
 #include "formats/deflate_bytes.hpp"
+#include "formats/pyramid_manifest.hpp"
 #include "formats/pack_format.hpp"
 #include "geo/tiling_scheme.hpp"
 #include "publish/block_mesh.hpp"
@@ -62,6 +66,18 @@ Result<std::vector<double>> gridHeights(PyramidSurface& surface, const geo::Tile
     }
   }
   return heights;
+}
+
+// The tiles' version, in their URLs ({version}): what they are made from and how, so that a
+// client may keep a tile it has as long as the version is the same (tiles of a re-tiled
+// pyramid, or made by another exporter revision, get new URLs).
+std::string treeVersion(const formats::PyramidManifest& manifest) {
+  constexpr int kExporterRevision = 1;
+  const std::string made = formats::manifestToJson(manifest) + std::to_string(kExporterRevision);
+  char hex[16];
+  std::snprintf(hex, sizeof hex, "%08x",
+                core::crc32(std::as_bytes(std::span(made.data(), made.size()))));
+  return std::string("1.0.0-") + hex;
 }
 
 uint32_t tmsRow(const geo::TileId& tile) { return (1U << tile.level) - 1 - tile.y; }
@@ -159,7 +175,7 @@ Result<ExportReport> exportQuantizedMesh(streaming::TerrainSource& source,
       {"tilejson", "2.1.0"},
       {"name", outDir.filename().string()},
       {"description", "Exported by globe-tiler from " + source.location()},
-      {"version", "1.0.0"},
+      {"version", treeVersion(manifest)},
       {"format", "quantized-mesh-1.0"},
       {"scheme", "tms"},
       {"tiles", {"{z}/{x}/{y}.terrain?v={version}"}},

@@ -61,7 +61,13 @@ class QuantizedMeshSource final : public ServiceTerrainSource {
 
   Result<std::optional<ServiceSamples>> fetchSamples(const geo::TileId& tile) override {
     const std::string url = location(tile);
-    auto bytes = reader_->read(url, kMaxTileBytes);
+    // A template with {version} names each version's tiles apart (CesiumJS's cache busting):
+    // a tile cached under its URL is that version's, used without asking again. layer.json,
+    // which says the version, is revalidated at every open.
+    const bool versioned = !layer_.version.empty() &&
+                           layer_.tiles[0].find("{version}") != std::string::npos;
+    auto bytes = versioned ? reader_->readImmutable(url, kMaxTileBytes)
+                           : reader_->read(url, kMaxTileBytes);
     if (!bytes) return Error{bytes.error()};
     if (!*bytes) return std::optional<ServiceSamples>();  // listed but absent: the parent's
     auto inflated = formats::gunzipIfNeeded(**bytes, url, kMaxInflatedTileBytes);

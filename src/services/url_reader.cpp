@@ -34,22 +34,32 @@ std::string resolveUrl(const std::string& base, const std::string& reference) {
 
 bool UrlReader::remote(const std::string& url) const { return transport::isHttpUrl(url); }
 
+Result<std::shared_ptr<transport::ByteSource>> UrlReader::sourceOf(const std::string& origin) {
+  {
+    std::lock_guard lock(mutex_);
+    if (auto it = origins_.find(origin); it != origins_.end()) return it->second;
+  }
+  auto opened =
+      network_ ? network_->open(origin, accept_) : transport::openByteSource(origin, nullptr);
+  if (!opened) return Error{opened.error()};
+  std::lock_guard lock(mutex_);
+  return origins_.emplace(origin, std::move(*opened)).first->second;
+}
+
 Result<std::optional<std::vector<std::byte>>> UrlReader::read(const std::string& url,
                                                               size_t maxBytes) {
   auto [origin, name] = splitOrigin(url);
-  std::shared_ptr<transport::ByteSource> source;
-  {
-    std::lock_guard lock(mutex_);
-    if (auto it = origins_.find(origin); it != origins_.end()) source = it->second;
-  }
-  if (!source) {
-    auto opened =
-        network_ ? network_->open(origin, accept_) : transport::openByteSource(origin, nullptr);
-    if (!opened) return Error{opened.error()};
-    std::lock_guard lock(mutex_);
-    source = origins_.emplace(origin, std::move(*opened)).first->second;
-  }
-  return source->readWhole(name, maxBytes);
+  auto source = sourceOf(origin);
+  if (!source) return Error{source.error()};
+  return (*source)->readWhole(name, maxBytes);
+}
+
+Result<std::optional<std::vector<std::byte>>> UrlReader::readImmutable(const std::string& url,
+                                                                       size_t maxBytes) {
+  auto [origin, name] = splitOrigin(url);
+  auto source = sourceOf(origin);
+  if (!source) return Error{source.error()};
+  return (*source)->readWholeImmutable(name, maxBytes);
 }
 
 }  // namespace globe::services

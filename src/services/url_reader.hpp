@@ -28,12 +28,17 @@ class UrlReader {
   // The file, nullopt when the server says it does not exist (404/410) or there is no such file;
   // an error naming the URL otherwise (unreachable, refused, longer than maxBytes).
   Result<std::optional<std::vector<std::byte>>> read(const std::string& url, size_t maxBytes);
+  // The same for a URL whose content never changes (versioned: ByteSource::readWholeImmutable):
+  // a cached copy, or a cached 404, is used without asking the server.
+  Result<std::optional<std::vector<std::byte>>> readImmutable(const std::string& url,
+                                                              size_t maxBytes);
   bool remote(const std::string& url) const;
 
  private:
   std::shared_ptr<transport::Network> network_;
   std::string accept_;
   std::mutex mutex_;
+  Result<std::shared_ptr<transport::ByteSource>> sourceOf(const std::string& origin);
   std::map<std::string, std::shared_ptr<transport::ByteSource>> origins_;
 };
 

@@ -279,8 +279,9 @@ std::vector<Result<std::optional<terrain::HeightBlock>>> TileStore::loadTogether
   }
   std::vector<std::byte> bytes(end - order.front().first);
   if (auto read = p.file->readPieces(bytes, order.front().first, pieces); !read) {
-    packs_.noteError(p.index.id, read.error());
-    return std::vector<Loaded>(tiles.size(), Loaded(Error{read.error()}));
+    // Each alone then: offline, the cache may hold some of them; online, each failure is its
+    // own tile's (and its own pack error, once).
+    return eachAlone();
   }
   ++groupReads_;
   groupBlocks_ += tiles.size();

@@ -48,6 +48,13 @@ class ByteSource {
   // A whole small file (a manifest) of at most maxBytes; nullopt when there is no such file.
   virtual Result<std::optional<std::vector<std::byte>>> readWhole(const std::string& name,
                                                                   size_t maxBytes) = 0;
+  // The same for a file whose name never changes content (a versioned tile URL: a new version of
+  // the data is published under new names): over HTTP a cached copy is used without asking the
+  // server again. Locally the same as readWhole.
+  virtual Result<std::optional<std::vector<std::byte>>> readWholeImmutable(const std::string& name,
+                                                                           size_t maxBytes) {
+    return readWhole(name, maxBytes);
+  }
   // Opens a file and reads its first headBytes (one request over HTTP: a pack's header and index).
   virtual Result<OpenedFile> open(const std::string& name, size_t headBytes) = 0;
   // The path or URL of a file, for messages.

@@ -131,6 +131,20 @@ class HttpByteSource final : public ByteSource,
     return makeError(describe(url, r));
   }
 
+  Result<std::optional<std::vector<std::byte>>> readWholeImmutable(const std::string& name,
+                                                                   size_t maxBytes) override {
+    if (cache_ && !options_.offline) {
+      const std::string url = locationOf(name);
+      std::optional<CacheEntry> cached = cache_->get("get " + url);
+      if (cached && cached->body.size() <= maxBytes) {
+        return std::optional<std::vector<std::byte>>(std::move(cached->body));
+      }
+      // Its 404 too: that version of the data has no such file.
+      if (cache_->get("absent " + url)) return std::optional<std::vector<std::byte>>();
+    }
+    return readWhole(name, maxBytes);
+  }
+
   Result<OpenedFile> open(const std::string& name, size_t headBytes) override {
     const std::string url = locationOf(name);
     const std::string key = rangeKey(url, 0, headBytes);

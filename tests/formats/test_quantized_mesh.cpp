@@ -236,3 +236,66 @@ TEST(TerrainLayerJson, WhatThisViewerCannotUseIsRefusedByName) {
 }
 
 }  // namespace
+
+namespace {
+
+// A 3×3-vertex tile with every extension, as the exporter's encoder writes it.
+QuantizedMesh smallTile() {
+  QuantizedMesh mesh;
+  mesh.centerEcefMeters = {-3'900'000, 3'400'000, 3'670'000};
+  mesh.minimumHeightMeters = -12;
+  mesh.maximumHeightMeters = 3776;
+  for (uint16_t row = 0; row < 3; ++row) {
+    for (uint16_t column = 0; column < 3; ++column) {
+      mesh.u.push_back(static_cast<uint16_t>(column * 16383 + column / 2));
+      mesh.v.push_back(static_cast<uint16_t>((2 - row) * 16383 + (2 - row) / 2));
+      mesh.heightMeters.push_back(row * 3 + column == 4 ? 3776.0 : -12.0 + row * 100 + column);
+      const float tilt = 0.1f * static_cast<float>(column) - 0.1f;
+      mesh.normals.push_back({tilt, -0.2f, -std::sqrt(1 - tilt * tilt - 0.04f)});
+    }
+  }
+  // Counter-clockwise, first uses out of order: the encoder renumbers.
+  mesh.triangles = {4, 3, 7, 4, 7, 8, 0, 3, 4, 0, 4, 1, 1, 4, 5, 1, 5, 2, 3, 6, 7, 5, 8, 2};
+  mesh.westEdge = {6, 3, 0};
+  mesh.southEdge = {6, 7, 8};
+  mesh.eastEdge = {8, 5, 2};
+  mesh.northEdge = {0, 1, 2};
+  mesh.waterMask.assign(256 * 256, 0);
+  for (size_t row = 0; row < 256; ++row) std::fill_n(&mesh.waterMask[row * 256], 128, 255);
+  mesh.metadataJson = R"({"available":[[{"startX":0,"startY":0,"endX":1,"endY":1}]]})";
+  return mesh;
+}
+
+}  // namespace
+
+TEST(QuantizedMeshEncoder, WhatItWritesDecodesToTheSameTile) {
+  const QuantizedMesh made = smallTile();
+  auto decoded = decodeQuantizedMesh(encodeQuantizedMesh(made, {}), "made.terrain");
+  ASSERT_TRUE(decoded) << decoded.error();
+  ASSERT_EQ(decoded->vertexCount(), 9u);
+  ASSERT_EQ(decoded->triangleCount(), 8u);
+  // Vertices renumbered: compare them by their place (u, v) and each triangle by its corners.
+  const auto place = [](const QuantizedMesh& m, uint32_t k) {
+    return std::pair<uint16_t, uint16_t>{m.u[k], m.v[k]};
+  };
+  const double step = (3776.0 + 12.0) / kQuantizedMax;
+  for (uint32_t k = 0; k < 9; ++k) {
+    const auto p = place(*decoded, k);
+    uint32_t original = 0;
+    while (original < 9 && place(made, original) != p) ++original;
+    ASSERT_LT(original, 9u);
+    EXPECT_NEAR(decoded->heightMeters[k], made.heightMeters[original], step);
+    for (size_t c = 0; c < 3; ++c) {
+      EXPECT_NEAR(decoded->normals[k][c], made.normals[original][c], 0.02) << k << " " << c;
+    }
+  }
+  for (size_t t = 0; t < 8; ++t) {
+    for (size_t c = 0; c < 3; ++c) {
+      EXPECT_EQ(place(*decoded, decoded->triangles[3 * t + c]),
+                place(made, made.triangles[3 * t + c]));
+    }
+  }
+  EXPECT_EQ(decoded->waterMask, made.waterMask);
+  EXPECT_EQ(decoded->metadataJson, made.metadataJson);
+  EXPECT_EQ(decoded->westEdge.size(), 3u);  // the decoder checks each lies on its edge
+}

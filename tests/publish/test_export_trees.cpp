@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <numbers>
 #include <random>
 #include <sstream>
@@ -20,6 +21,9 @@
 #include "geo/tiling_scheme.hpp"
 #include "publish/block_mesh.hpp"
 #include "publish/terrarium_export.hpp"
+#include "services/terrain_services.hpp"
+#include "terrain/height_block.hpp"
+#include "tests/support/nginx_server.hpp"
 #include "tests/support/test_io_util.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 
@@ -137,6 +141,56 @@ TEST(ExportTrees, QuantizedMeshHoldsThePyramidsSurface) {
       << again.output;
 }
 
+// Served by nginx: `globe query` reads the tree, and again from its disk cache asks only for
+// layer.json (the tiles' URLs carry the tree's version); without {version} in the template each
+// tile is asked again (a conditional GET).
+TEST(ExportTrees, AServedTreeIsKeptByItsVersion) {
+  const fs::path site = globe::testing::freshTempDir("export-served");
+  const fs::path tree = site / "www" / "qm";
+  const Exit exported =
+      run(tiler() + "--format quantized-mesh -o " + tree.string() +
+          " --levels 0-7 --bounds 138,35,139,36 " + globe::testing::bundledPyramid().string());
+  ASSERT_EQ(exported.exitCode, 0) << exported.output;
+  auto server = globe::testing::NginxServer::start({site / "www", ""});
+  ASSERT_TRUE(server);
+  const fs::path points = writePoints(site / "points.txt", fujiPoints(20));
+  const auto query = [&] {
+    const Exit r = run(std::string(GLOBE_EXE) +
+                       " query --mode exact quantized-mesh:" + server->url("/qm/layer.json") +
+                       " --cache-dir " + (site / "cache").string() + " < " + points.string());
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    return heightsOf(r.output);
+  };
+  const auto tileRequests = [&](size_t from) {
+    const auto log = server->accessLog();
+    return static_cast<size_t>(std::count_if(
+        log.begin() + static_cast<ptrdiff_t>(from), log.end(),
+        [](const std::string& line) { return line.find(".terrain") != std::string::npos; }));
+  };
+  const std::vector<double> cold = query();
+  ASSERT_EQ(cold.size(), 20u);
+  EXPECT_GT(tileRequests(0), 0u);
+  size_t before = server->accessLog().size();
+  EXPECT_EQ(query(), cold);
+  EXPECT_EQ(tileRequests(before), 0u);
+  EXPECT_EQ(server->accessLog().size(), before + 1) << "layer.json alone";
+
+  // The same tree with an unversioned template: every tile revalidated.
+  std::ifstream in(tree / "layer.json");
+  std::string layer{std::istreambuf_iterator<char>(in), {}};
+  const std::string versioned = "?v={version}";
+  ASSERT_NE(layer.find(versioned), std::string::npos) << layer;
+  layer.erase(layer.find(versioned), versioned.size());
+  std::ofstream(tree / "layer.json") << layer;
+  before = server->accessLog().size();
+  EXPECT_EQ(query(), cold);
+  const size_t unversioned = tileRequests(before);
+  before = server->accessLog().size();
+  EXPECT_EQ(query(), cold);
+  EXPECT_EQ(tileRequests(before), unversioned);
+  EXPECT_GT(unversioned, 0u);
+}
+
 TEST(ExportTrees, QuantizedMeshTilesAreWhatClientsCheck) {
   // A level-9 tile over Fuji: the header's centre on the tile, edge lists on their edges (the
   // decoder checks both), 64×64×2 triangles, heights within their quantization.
@@ -168,6 +222,50 @@ TEST(ExportTrees, QuantizedMeshTilesAreWhatClientsCheck) {
   const auto& h = made.culling.horizonOcclusionPointScaled;
   EXPECT_GT(std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]), 1.0);
   EXPECT_GT(made.culling.boundingSphereRadiusMeters, 1000.0);
+}
+
+// A water mask (the extension ctb and Cesium ion serve) marks water in the blocks globe reads
+// from the tiles: a level-0 tileset at 1000 m whose tiles' west halves are water.
+TEST(ExportTrees, AWaterMaskMarksWaterInTheBlocksRead) {
+  const fs::path dir = globe::testing::freshTempDir("export-watermask") / "tiles";
+  const geo::Ellipsoid wgs84 = geo::Ellipsoid::wgs84();
+  for (uint32_t x = 0; x < 2; ++x) {
+    BlockMesh made =
+        quantizedMeshOfGrid({0, x, 0}, 65, std::vector<double>(65 * 65, 1000.0), wgs84);
+    made.mesh.waterMask.assign(256 * 256, 0);
+    for (size_t row = 0; row < 256; ++row) std::fill_n(&made.mesh.waterMask[row * 256], 128, 255);
+    fs::create_directories(dir / "0" / std::to_string(x));
+    const auto bytes = formats::encodeQuantizedMesh(made.mesh, made.culling);
+    std::ofstream(dir / "0" / std::to_string(x) / "0.terrain", std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()),
+               static_cast<std::streamsize>(bytes.size()));
+  }
+  std::ofstream(dir / "layer.json")
+      << R"({"tilejson":"2.1.0","format":"quantized-mesh-1.0","version":"1.0.0","scheme":"tms",)"
+      << R"("tiles":["{z}/{x}/{y}.terrain"],"projection":"EPSG:4326","extensions":["watermask"],)"
+      << R"("available":[[{"startX":0,"startY":0,"endX":1,"endY":0}]]})";
+  auto source = services::openTerrainSource("quantized-mesh:" + dir.string(),
+                                            terrain::SeaSurface::Water, nullptr);
+  ASSERT_TRUE(source) << source.error();
+  auto block = (*source)->loadBlock({0, 1, 0});
+  ASSERT_TRUE(block) << block.error();
+  const uint32_t n = block->verticesPerSide;
+  size_t water = 0, land = 0;
+  for (uint32_t row = 0; row < n; ++row) {
+    for (uint32_t column = 0; column < n; ++column) {
+      const int16_t code = block->at(row, column);
+      // Inside each half (the middle column is where the mask's edge falls).
+      if (column < n / 2 - 1) {
+        EXPECT_TRUE(terrain::isWater(code)) << row << "," << column << ": " << code;
+        water += terrain::isWater(code) ? 1 : 0;
+      } else if (column > n / 2 + 1) {
+        EXPECT_EQ(code, 1000) << row << "," << column;
+        land += code == 1000 ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GT(water, 0u);
+  EXPECT_GT(land, 0u);
 }
 
 // The centre of pixel (column, row) of Web-Mercator tile (z, x, y), degrees.

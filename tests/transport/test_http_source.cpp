@@ -215,6 +215,38 @@ TEST(HttpTileStore, NeighboursAreReadByOneRequestAndCachedEachOnItsOwn) {
   EXPECT_EQ(blockRanges(served.server->accessLog(), before), 0u);
 }
 
+// Offline, a family read together whose cache holds only some of its blocks: those load, the
+// others fail naming what is missing (a group is never failed whole).
+TEST(HttpTileStore, OfflineAFamilyPartlyCachedLoadsWhatTheCacheHolds) {
+  Served served;
+  ASSERT_TRUE(served.server);
+  TempDir cacheDir;
+  const auto fuji = geo::GeographicTilingScheme::positionToTile(geo::degreesToRadians(138.73),
+                                                                geo::degreesToRadians(35.36), 5);
+  ASSERT_TRUE(fuji);
+  const std::array<geo::TileId, 4> family = fuji->children();
+  {
+    auto online = openRemote(served.url(), std::make_shared<HttpClient>(quickSettings()),
+                             cacheIn(cacheDir.path()));
+    ASSERT_TRUE(online);
+    for (size_t i = 0; i < 2; ++i) ASSERT_TRUE(online->load(family[i]));
+  }
+  auto offline = openRemote(served.url(), nullptr, cacheIn(cacheDir.path()), quickRetries(true));
+  ASSERT_TRUE(offline);
+  ASSERT_TRUE(offline->summary(family[0]));
+  const auto loaded = offline->loadTogether(family);
+  ASSERT_EQ(loaded.size(), 4u);
+  for (size_t i = 0; i < 4; ++i) {
+    if (i < 2) {
+      EXPECT_TRUE(loaded[i] && *loaded[i]) << (loaded[i] ? "absent" : loaded[i].error());
+    } else {
+      ASSERT_FALSE(loaded[i]) << geo::tileName(family[i]);
+      EXPECT_NE(loaded[i].error().find("not in the disk cache (offline)"), std::string::npos)
+          << loaded[i].error();
+    }
+  }
+}
+
 TEST(HttpTileStore, OfflineServesWhatTheCacheHoldsAndNamesWhatItLacks) {
   Served served;
   ASSERT_TRUE(served.server);

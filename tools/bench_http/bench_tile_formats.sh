@@ -30,7 +30,7 @@ PROXY_PORT=$(free_port)
 FUJI=138,35,139.5,36
 "$TILER" -q -o "$WORK/www/pyramid" data/dem/ETOPO20.DEM data/dem/W002N52.DEM \
   data/dem/E138N35_FUJI.DEM data/dem/zion-srtm3.tif
-export_log() { "$TILER" export "$@" | sed 's/^/    /' >> "$WORK/export.log"; }
+export_log() { "$TILER" export "$@" | sed "s|$WORK/||; s/^/    /" >> "$WORK/export.log"; }
 export_log --format quantized-mesh -o "$WORK/www/qm" --levels 0-4 "$WORK/www/pyramid"
 export_log --format quantized-mesh -o "$WORK/www/qm" --levels 5-12 --bounds $FUJI "$WORK/www/pyramid"
 export_log --format terrarium -o "$WORK/www/terrarium" --levels 0-3 "$WORK/www/pyramid"
@@ -126,8 +126,10 @@ $ROWS
   each onto a 65-vertex block, so it draws more triangles for the same surface.
 * **Terrarium PNG**: one GET per 256×256 Web-Mercator tile, resampled into geographic blocks as
   it loads; zooms 4–11 exist only over Fuji's square (404 elsewhere: the parent is drawn).
-* **warm**: the same disk cache again: the pack pyramid revalidates its manifest (one 304); the
-  tile trees revalidate \`layer.json\` or nothing, their tiles served from the cache.
+* **warm**: the same disk cache again. The pack pyramid revalidates its manifest (one 304) and
+  trusts its cached packs; the quantized-mesh tree revalidates \`layer.json\`, and its tiles'
+  URLs carry the tree's version (\`{version}\`), so cached tiles are used without asking; an XYZ
+  template names no version, so each Terrarium tile is revalidated (a 304 each).
 DOC
 mv "$OUT.tmp" "$OUT"
 cat "$OUT"

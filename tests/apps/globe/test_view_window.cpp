@@ -478,6 +478,52 @@ TEST(GlobeViewWindow, HudIsDrawnAndKTakesAScreenshot) {
   EXPECT_LT(differing, 640u * 360 / 2) << "the rest of the view is the same";
 }
 
+// A layer's attribution is drawn at the HUD's bottom right: a K screenshot with an XYZ layer
+// that names its source against one of the same layer that names none.
+TEST(GlobeViewWindow, TheHudShowsTheLayersAttribution) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const auto dir = globe::testing::freshTempDir("view-attribution");
+  const std::string tiles =
+      std::string(GLOBE_SOURCE_DIR) +
+      "/tests/data/interop/raster-tiles/xyz-osm-carto-world-z0-3/{z}/{x}/{y}.png";
+  const auto shot = [&](const std::string& name, const std::string& layer) {
+    const auto record = dir / name;
+    std::filesystem::create_directories(record);
+    const ShellRun run = runUnderXvfb(
+        "view-attribution-" + name,
+        globeView("--size 640x360 --log --record-dir " + record.string() + " --layer '" + layer +
+                  "' --camera 138.73,35.36,3000000 > log.txt &\n") +
+            "VIEW=$!\n" + kFindWindow +
+            "sleep 1\nxdotool key --window $WID k\n"
+            "for i in $(seq 200); do grep -q 'wrote screenshot' log.txt && break; sleep 0.1; done\n"
+            "xdotool keydown --window $WID Escape\n"
+            "wait $VIEW; echo exit=$?\n"
+            "cat log.txt\n");
+    EXPECT_EQ(valuesOf(run.output)["exit"], "0") << run.output;
+    auto image = globe::formats::loadImageRgba(writtenFile(run.output, "screenshot"));
+    EXPECT_TRUE(image) << image.error() << run.output;
+    return image ? *image : globe::formats::ImageRgba{};
+  };
+  const auto named = shot("named", "xyz:" + tiles + "?attribution=OpenStreetMap%20contributors");
+  const auto unnamed = shot("unnamed", "xyz:" + tiles);
+  ASSERT_EQ(named.pixels.size(), size_t{640 * 360 * 4});
+  ASSERT_EQ(unnamed.pixels.size(), named.pixels.size());
+  // Pixels that differ, in the bottom-right corner and elsewhere (but the status lines).
+  size_t corner = 0, elsewhere = 0;
+  for (int y = 0; y < 360; ++y) {
+    for (int x = 0; x < 640; ++x) {
+      const size_t k = static_cast<size_t>(y * 640 + x) * 4;
+      if (std::abs(named.pixels[k] - unnamed.pixels[k]) <= 40) continue;
+      if (x < 400 && y < 110) continue;  // the status lines: timings differ from run to run
+      (x >= 320 && y >= 320 ? corner : elsewhere) += 1;
+    }
+  }
+  std::printf("attribution: %zu pixels differ in the corner, %zu elsewhere\n", corner, elsewhere);
+  EXPECT_GT(corner, 100u) << "the attribution's text in the bottom-right corner";
+  EXPECT_LT(elsewhere, 200u) << "the rest of the view is the same";
+}
+
 // P starts recording, W flies, P stops and writes a path file `globe play` reads.
 TEST(GlobeViewWindow, PRecordsTheFlownPathAsJson) {
   SKIP_WITHOUT("xvfb-run");
