@@ -1,32 +1,30 @@
-// "Go to" in `globe view`: a typed "lat, lon" (decimal degrees, latitude first, as map sites take
-// it) or the name of a place from a small gazetteer compiled into the program: peaks, parks and
-// towns of the bundled data (Mount Fuji, Zion, eastern England) and a few world cities.
+// "Go to" in `globe view` and `--go-to` on view and snapshot: a typed position in any common
+// form (places/coordinates.hpp) or a place's name from the bundled gazetteer (GeoNames, Natural
+// Earth and the bundled data's landmarks: places/gazetteer.hpp), the best match taken.
 #pragma once
 
-#include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
+#include "camera/camera_pose.hpp"
 #include "core/result.hpp"
 
 namespace globe::app {
 
-struct Place {
-  const char* name;
-  double latitudeDegrees;
-  double longitudeDegrees;
-};
-
-std::span<const Place> gazetteer();
-
 struct GoToTarget {
-  std::string name;  // the place's name, or the coordinates as typed back
+  std::string name;  // the place's name (", country"), or the position as typed back
   double latitudeDegrees = 0;
   double longitudeDegrees = 0;
 };
 
-// "35.36, 138.73", "35.36 138.73", or a place name (case and spaces ignored; a unique prefix such
-// as "angels" will do). Errors say what was wrong and name a few places.
+// "35.36, 138.73", "138.73 35.36", "35°21'38\"N 138°43'39\"E", or a place name ("mount FUJI",
+// "Zurich", "Paris, US"). Errors start "go to:" and say what was wrong.
 Result<GoToTarget> parseGoTo(std::string_view text);
+// Where `--go-to` puts the camera: as the window's go-to lands, ~15 km from the place looking at
+// it 35 degrees down, from the south (north up); its height is above the terrain.
+camera::CameraPose goToPose(const GoToTarget& target);
+// The best few places for what is typed so far, for the window's suggestions ("Name, CC").
+std::vector<std::string> goToSuggestions(std::string_view text, size_t count);
 
 }  // namespace globe::app

@@ -40,8 +40,8 @@ std::string imageryStatus(const HudState& s) {
   if (s.layers.empty()) return {};
   std::string text = "lighting " + std::string(terrain::toString(s.lighting)) + "  layers";
   for (size_t k = 0; k < s.layers.size(); ++k) {
-    text += format("%s%s%zu %s %.0f%%", k == 0 ? " " : "  ", k == s.selectedLayer ? ">" : "",
-                   k + 1, s.layers[k].shown ? "on" : "off", 100.0 * s.layers[k].opacity);
+    text += format("%s%s%zu %s %.0f%%", k == 0 ? " " : "  ", k == s.selectedLayer ? ">" : "", k + 1,
+                   s.layers[k].shown ? "on" : "off", 100.0 * s.layers[k].opacity);
   }
   return text;
 }
@@ -69,7 +69,10 @@ std::vector<std::string> hudStatusLines(const HudState& s, bool withFrameTime) {
                            s.underCursor->latitudeDegrees()) +
                     meters(s.underCursor->heightMeters));
   }
-  if (s.prompt) lines.push_back("go to: " + *s.prompt + "_   (Enter: go, Esc: cancel)");
+  if (s.prompt) {
+    lines.push_back("go to: " + *s.prompt + "_   (Enter: go, Esc: cancel)");
+    for (const std::string& place : s.suggestions) lines.push_back("       " + place);
+  }
   if (!s.message.empty()) lines.push_back(s.message);
   std::string tiles = format("tiles %zu drawn, %zu loading", s.tilesDrawn, s.tilesLoading);
   if (withFrameTime && s.frameMilliseconds > 0) {

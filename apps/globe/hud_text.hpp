@@ -32,8 +32,9 @@ struct HudState {
   // distance a pixel spans at the centre of the view (NaN: no ground there; the scale bar).
   std::optional<geo::Cartographic> underCursor;
   double metersPerPixel = std::numeric_limits<double>::quiet_NaN();
-  std::optional<std::string> prompt;  // the go-to text being typed (G)
-  std::string message;                // what the last go-to said (an error)
+  std::optional<std::string> prompt;     // the go-to text being typed (G)
+  std::vector<std::string> suggestions;  // the gazetteer's best places for it
+  std::string message;                   // what the last go-to said (an error)
   // The imagery controls (L, 1-4, [ ]): said only with layers.
   struct Layer {
     bool shown = true;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "apps/globe/camera_argument.hpp"
+#include "apps/globe/go_to.hpp"
 #include "apps/globe/snapshot_command.hpp"
 #include "apps/globe/subcommands.hpp"
 
@@ -21,11 +22,28 @@ struct SnapshotArguments {
   std::string sse = "2";  // numbers as text: checked and named by parseNumberArgument
   uint32_t maxLoadLevel = geo::kMaxLevel;
   bool noAttribution = false;
+  std::string goTo;
 };
 
 int runSnapshotCommand(const SnapshotArguments& arguments, const CommonArguments& common,
                        const CommandContext& context) {
-  auto pose = parseCameraArgument(arguments.camera);
+  if (arguments.camera.empty() == arguments.goTo.empty()) {
+    std::fprintf(stderr, "globe snapshot: give --camera or --go-to (one of them)\n");
+    return 2;
+  }
+  Result<camera::CameraPose> pose = makeError("");
+  bool aboveTerrain = arguments.aboveTerrain;
+  if (!arguments.goTo.empty()) {
+    auto target = parseGoTo(arguments.goTo);
+    if (!target) {
+      std::fprintf(stderr, "globe snapshot: %s\n", target.error().c_str());
+      return 2;
+    }
+    pose = goToPose(*target);
+    aboveTerrain = true;
+  } else {
+    pose = parseCameraArgument(arguments.camera);
+  }
   auto size = parseSizeArgument(arguments.size);
   auto sse = parseNumberArgument("--sse", arguments.sse, 0.1, 10000);
   if (!pose || !size || !sse) {
@@ -39,7 +57,7 @@ int runSnapshotCommand(const SnapshotArguments& arguments, const CommonArguments
   SnapshotOptions options;
   options.pyramid = arguments.pyramid;
   options.pose = *pose;
-  options.heightAboveTerrain = arguments.aboveTerrain;
+  options.heightAboveTerrain = aboveTerrain;
   options.widthPixels = size->first;
   options.heightPixels = size->second;
   options.output = arguments.output;
@@ -67,11 +85,12 @@ Subcommand addSnapshotCommand(CLI::App& app, CommonArguments& common) {
       "snapshot", "render one view headless (OSMesa) once every tile it needs is loaded");
   auto arguments = std::make_shared<SnapshotArguments>();
   addPyramidArgument(*snapshot, arguments->pyramid, common);
-  snapshot
-      ->add_option("--camera", arguments->camera,
-                   "LON,LAT,HEIGHT[,HEADING,PITCH,ROLL]: degrees, metres above the ellipsoid; "
-                   "heading 0 = north, pitch -90 = straight down (default)")
-      ->required();
+  snapshot->add_option("--camera", arguments->camera,
+                       "LON,LAT,HEIGHT[,HEADING,PITCH,ROLL]: degrees, metres above the ellipsoid; "
+                       "heading 0 = north, pitch -90 = straight down (default)");
+  snapshot->add_option("--go-to", arguments->goTo,
+                       "a place's name (globe search) or a position: the camera ~15 km from it, "
+                       "looking at it from the south (instead of --camera)");
   snapshot->add_option("--size", arguments->size, "WxH pixels")->capture_default_str();
   snapshot->add_option("-o,--output", arguments->output, "PNG file to write")->required();
   snapshot->add_flag("--above-terrain", arguments->aboveTerrain,

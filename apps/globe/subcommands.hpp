@@ -23,5 +23,6 @@ Subcommand addQueryCommand(CLI::App& app, CommonArguments& common);
 Subcommand addViewCommand(CLI::App& app, CommonArguments& common);
 Subcommand addPlayCommand(CLI::App& app, CommonArguments& common);
 Subcommand addSourcesCommand(CLI::App& app, CommonArguments& common);
+Subcommand addSearchCommand(CLI::App& app, CommonArguments& common);
 
 }  // namespace globe::app

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "apps/globe/camera_argument.hpp"
+#include "apps/globe/go_to.hpp"
 #include "apps/globe/subcommands.hpp"
 #include "apps/globe/view_command.hpp"
 
@@ -19,6 +20,7 @@ struct ViewArguments {
   std::string recordDirectory;
   int frames = 0;
   bool log = false;
+  std::string goTo;
 };
 
 int runViewCommand(const ViewArguments& arguments, const CommonArguments& common,
@@ -43,6 +45,13 @@ int runViewCommand(const ViewArguments& arguments, const CommonArguments& common
   options.frames = arguments.frames;
   options.log = arguments.log;
   options.recordDirectory = arguments.recordDirectory;
+  if (!arguments.goTo.empty()) {
+    if (auto target = parseGoTo(arguments.goTo); !target) {
+      std::fprintf(stderr, "globe view: %s\n", target.error().c_str());
+      return 2;
+    }
+    options.goTo = arguments.goTo;
+  }
   if (!applySceneArguments("view", common, context, options.scene)) return 2;
   // A server that failed may come back: its tiles are asked for again every 10 s.
   bool remote = transport::isHttpUrl(arguments.pyramid);
@@ -69,6 +78,8 @@ Subcommand addViewCommand(CLI::App& app, CommonArguments& common) {
                    "LON,LAT,HEIGHT[,HEADING,PITCH,ROLL] to start from")
       ->capture_default_str();
   view->add_option("--size", arguments->size, "WxH window size")->capture_default_str();
+  view->add_option("--go-to", arguments->goTo,
+                   "fly to a place's name (globe search) or a position as the window opens");
   addImageryOption(*view, arguments->imagery);
   view->add_option("--frames", arguments->frames,
                    "redraw continuously and quit after N frames (tests)");

@@ -182,6 +182,7 @@ Result<ViewReport> runView(const ViewOptions& options) {
   camera::CameraController controller(navigator.home());
   ViewInput input;
   input.navigator = &navigator;
+  input.goToRequest = options.goTo;
   GLFWwindow* handle = (*window)->window();
   input.imagery.lighting = options.scene.imageryLighting;
   input.imagery.layerCount = static_cast<uint32_t>(
@@ -196,6 +197,8 @@ Result<ViewReport> runView(const ViewOptions& options) {
   };
   setViewport();
   PathRecorder recorder;
+  std::optional<std::string> suggestedFor;  // the go-to text the suggestions are for
+  std::vector<std::string> suggestions;
 
   const bool continuous = options.frames > 0;
   const auto start = Clock::now();
@@ -289,7 +292,15 @@ Result<ViewReport> runView(const ViewOptions& options) {
       hudState.recording = recorder.recording();
       hudState.keyframes = recorder.keyframes().size();
       hudState.flyingTo = navigator.flyingTo();
-      if (input.promptOpen) hudState.prompt = input.promptText;
+      if (input.promptOpen) {
+        // The gazetteer searched again only when the text changes (tens of ms a search).
+        if (!suggestedFor || *suggestedFor != input.promptText) {
+          suggestions = goToSuggestions(input.promptText, 5);
+          suggestedFor = input.promptText;
+        }
+        hudState.prompt = input.promptText;
+        hudState.suggestions = suggestions;
+      }
       hudState.message = input.promptMessage;
       if (input.cursorKnown) {
         if (const auto ground = navigator.groundAt(glm::dvec2(input.lastX, input.lastY))) {

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "camera/camera_pose.hpp"
 #include "scene/terrain_scene.hpp"
@@ -32,6 +33,8 @@ struct ViewOptions {
   // Where P (recorded paths, globe-path-*.json) and K/F12 (screenshots, globe-shot-*.png) write;
   // empty: the current directory.
   std::filesystem::path recordDirectory;
+  // A place or position to fly to as the window opens (as typed in its go-to box, G).
+  std::optional<std::string> goTo;
 };
 
 struct ViewReport {

@@ -11,7 +11,8 @@ BUILD=${2:?build directory}
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 cmake --install "$BUILD" --prefix "$WORK/prefix" >"$WORK/install.log"
-for f in bin/globe bin/globe-tiler share/man/man1/globe.1.gz share/man/man1/globe-tiler.1.gz; do
+for f in bin/globe bin/globe-tiler share/man/man1/globe.1.gz share/man/man1/globe-tiler.1.gz \
+  share/globe/places.tsv.gz share/globe/places-SOURCES.md; do
   [ -e "$WORK/prefix/$f" ] || { echo "not installed: $f" >&2; cat "$WORK/install.log" >&2; exit 1; }
 done
 "$WORK/prefix/bin/globe" --version | grep -q '^globe [0-9]' || { echo "globe --version" >&2; exit 1; }
@@ -59,6 +60,11 @@ unshare -m bash -c "
   cd /
   env -u GLOBE_SHADER_DIR '$WORK/globe-copy' snapshot '$WORK/pyramid' ${VIEW[*]} \
     -o '$WORK/installed.png' >/dev/null
+  # The installed gazetteer, with the checkout's hidden too.
+  mount -t tmpfs none '$SOURCE/data/places'
+  env -u GLOBE_PLACES '$WORK/prefix/bin/globe' search Fuji --limit 1 > '$WORK/search.csv'
 "
+grep -q '^"Mount Fuji, JP",' "$WORK/search.csv" ||
+  { echo "installed globe search: $(cat "$WORK/search.csv")" >&2; exit 1; }
 cmp "$WORK/build-tree.png" "$WORK/installed.png"
-echo "installed globe renders byte-identical images with the checkout's shaders hidden"
+echo "installed globe renders byte-identical images with the checkout's shaders hidden, and searches its installed gazetteer"

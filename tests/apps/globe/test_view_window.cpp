@@ -680,7 +680,7 @@ TEST(GlobeViewWindow, GoToReachesThePlace) {
   const auto values = valuesOf(run.output);
   ASSERT_EQ(values.count("exit"), 1u) << run.output;
   EXPECT_EQ(values.at("exit"), "0") << run.output;
-  EXPECT_NE(run.output.find("go to Angels Landing (37.26920, -112.94800)"), std::string::npos)
+  EXPECT_NE(run.output.find("go to Angels Landing, US (37.26920, -112.94800)"), std::string::npos)
       << run.output;
   const LoggedCamera camera = loggedCamera(run.output);
   ASSERT_TRUE(camera.found) << run.output;

@@ -1,0 +1,267 @@
+#include "places/name_fold.hpp"
+
+#include <cstdint>
+
+namespace globe::places {
+namespace {
+
+// ASCII for U+00C0..U+017F (Latin-1 Supplement letters, Latin Extended-A), "" where none.
+constexpr const char* kLatin[] = {
+    // U+00C0
+    "a",
+    "a",
+    "a",
+    "a",
+    "a",
+    "a",
+    "ae",
+    "c",
+    "e",
+    "e",
+    "e",
+    "e",
+    "i",
+    "i",
+    "i",
+    "i",
+    // U+00D0
+    "d",
+    "n",
+    "o",
+    "o",
+    "o",
+    "o",
+    "o",
+    "",
+    "o",
+    "u",
+    "u",
+    "u",
+    "u",
+    "y",
+    "th",
+    "ss",
+    // U+00E0
+    "a",
+    "a",
+    "a",
+    "a",
+    "a",
+    "a",
+    "ae",
+    "c",
+    "e",
+    "e",
+    "e",
+    "e",
+    "i",
+    "i",
+    "i",
+    "i",
+    // U+00F0
+    "d",
+    "n",
+    "o",
+    "o",
+    "o",
+    "o",
+    "o",
+    "",
+    "o",
+    "u",
+    "u",
+    "u",
+    "u",
+    "y",
+    "th",
+    "y",
+    // U+0100
+    "a",
+    "a",
+    "a",
+    "a",
+    "a",
+    "a",
+    "c",
+    "c",
+    "c",
+    "c",
+    "c",
+    "c",
+    "c",
+    "c",
+    "d",
+    "d",
+    // U+0110
+    "d",
+    "d",
+    "e",
+    "e",
+    "e",
+    "e",
+    "e",
+    "e",
+    "e",
+    "e",
+    "e",
+    "e",
+    "g",
+    "g",
+    "g",
+    "g",
+    // U+0120
+    "g",
+    "g",
+    "g",
+    "g",
+    "h",
+    "h",
+    "h",
+    "h",
+    "i",
+    "i",
+    "i",
+    "i",
+    "i",
+    "i",
+    "i",
+    "i",
+    // U+0130
+    "i",
+    "i",
+    "ij",
+    "ij",
+    "j",
+    "j",
+    "k",
+    "k",
+    "k",
+    "l",
+    "l",
+    "l",
+    "l",
+    "l",
+    "l",
+    "l",
+    // U+0140
+    "l",
+    "l",
+    "l",
+    "n",
+    "n",
+    "n",
+    "n",
+    "n",
+    "n",
+    "n",
+    "n",
+    "n",
+    "o",
+    "o",
+    "o",
+    "o",
+    // U+0150
+    "o",
+    "o",
+    "oe",
+    "oe",
+    "r",
+    "r",
+    "r",
+    "r",
+    "r",
+    "r",
+    "s",
+    "s",
+    "s",
+    "s",
+    "s",
+    "s",
+    // U+0160
+    "s",
+    "s",
+    "t",
+    "t",
+    "t",
+    "t",
+    "t",
+    "t",
+    "u",
+    "u",
+    "u",
+    "u",
+    "u",
+    "u",
+    "u",
+    "u",
+    // U+0170
+    "u",
+    "u",
+    "u",
+    "u",
+    "w",
+    "w",
+    "y",
+    "y",
+    "y",
+    "z",
+    "z",
+    "z",
+    "z",
+    "z",
+    "z",
+    "s",
+};
+
+}  // namespace
+
+std::string foldName(std::string_view utf8) {
+  std::string out;
+  bool space = false;
+  const auto emit = [&](std::string_view piece) {
+    if (piece.empty()) {
+      space = !out.empty();
+      return;
+    }
+    if (space) out.push_back(' ');
+    space = false;
+    out.append(piece);
+  };
+  for (size_t i = 0; i < utf8.size();) {
+    const auto c = static_cast<unsigned char>(utf8[i]);
+    if (c < 0x80) {
+      ++i;
+      if ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9')) {
+        emit(std::string_view(reinterpret_cast<const char*>(&c), 1));
+      } else if (c >= 'A' && c <= 'Z') {
+        const char lower = static_cast<char>(c - 'A' + 'a');
+        emit(std::string_view(&lower, 1));
+      } else {
+        emit("");
+      }
+      continue;
+    }
+    // A multi-byte sequence: its code point when well formed, else skipped as a separator.
+    const size_t length = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 1;
+    uint32_t code = length == 2 ? c & 0x1FU : length == 3 ? c & 0x0FU : c & 0x07U;
+    bool good = length > 1 && i + length <= utf8.size();
+    for (size_t k = 1; good && k < length; ++k) {
+      const auto next = static_cast<unsigned char>(utf8[i + k]);
+      good = (next & 0xC0U) == 0x80U;
+      code = (code << 6) | (next & 0x3FU);
+    }
+    i += good ? length : 1;
+    if (!good) {
+      emit("");
+    } else if (code >= 0xC0 && code <= 0x17F) {
+      emit(kLatin[code - 0xC0]);
+    } else if (code >= 0x300 && code <= 0x36F) {
+      // A combining accent (decomposed text): dropped.
+    } else {
+      emit("");
+    }
+  }
+  return out;
+}
+
+}  // namespace globe::places
