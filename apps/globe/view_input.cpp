@@ -44,6 +44,22 @@ bool trackFlyKey(camera::FlyKeys& keys, int key, bool down) {
   }
 }
 
+// F11: the window over the whole primary monitor and back to where and how large it was.
+void toggleFullscreen(GLFWwindow* window, ViewInput& input) {
+  if (glfwGetWindowMonitor(window) != nullptr) {
+    const auto& r = input.windowedRect;
+    glfwSetWindowMonitor(window, nullptr, r[0], r[1], r[2], r[3], GLFW_DONT_CARE);
+    return;
+  }
+  GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+  const GLFWvidmode* mode = monitor != nullptr ? glfwGetVideoMode(monitor) : nullptr;
+  if (mode == nullptr) return;  // no monitor to fill (a headless display without RandR)
+  auto& r = input.windowedRect;
+  glfwGetWindowPos(window, &r[0], &r[1]);
+  glfwGetWindowSize(window, &r[2], &r[3]);
+  glfwSetWindowMonitor(window, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
+}
+
 // Keys that do the same in both modes; false when the key is not one of them.
 bool commonKey(GLFWwindow* window, ViewInput& input, int key) {
   switch (key) {
@@ -75,6 +91,9 @@ bool commonKey(GLFWwindow* window, ViewInput& input, int key) {
       return true;
     case GLFW_KEY_N:
       input.navigator->northUp();
+      return true;
+    case GLFW_KEY_F11:
+      toggleFullscreen(window, input);
       return true;
     default:
       return false;
@@ -122,10 +141,12 @@ bool orbitKey(ViewInput& input, int key) {
       return true;
     case GLFW_KEY_EQUAL:  // '+' is shift + '=' on most layouts
     case GLFW_KEY_KP_ADD:
+    case GLFW_KEY_PAGE_UP:  // Google Earth's
       navigator.zoom(1);
       return true;
     case GLFW_KEY_MINUS:
     case GLFW_KEY_KP_SUBTRACT:
+    case GLFW_KEY_PAGE_DOWN:
       navigator.zoom(-1);
       return true;
     default:
@@ -150,10 +171,12 @@ bool flyKey(ViewInput& input, int key) {
       return true;
     case GLFW_KEY_EQUAL:
     case GLFW_KEY_KP_ADD:
+    case GLFW_KEY_PAGE_UP:
       navigator.changeSpeed(1);
       return true;
     case GLFW_KEY_MINUS:
     case GLFW_KEY_KP_SUBTRACT:
+    case GLFW_KEY_PAGE_DOWN:
       navigator.changeSpeed(-1);
       return true;
     default:
@@ -236,7 +259,8 @@ void onMouseButton(GLFWwindow* window, int button, int action, int mods) {
       return;
     }
     input.leftDown = down;
-    input.shiftDrag = down && (mods & GLFW_MOD_SHIFT) != 0;
+    // Shift or Ctrl + drag tilts and turns (Ctrl as CesiumJS and Google Earth have it).
+    input.shiftDrag = down && (mods & (GLFW_MOD_SHIFT | GLFW_MOD_CONTROL)) != 0;
     if (down && !input.shiftDrag) input.navigator->grab(glm::dvec2(input.lastX, input.lastY));
     if (!down) input.navigator->release();
     if (down) {
@@ -253,8 +277,8 @@ void onMouseButton(GLFWwindow* window, int button, int action, int mods) {
         input.lastClickY = input.lastY;
       }
     }
-  } else if (button == GLFW_MOUSE_BUTTON_RIGHT) {
-    input.rightDown = down;
+  } else if (button == GLFW_MOUSE_BUTTON_RIGHT || button == GLFW_MOUSE_BUTTON_MIDDLE) {
+    input.rightDown = down;  // the middle button tilts and turns too (CesiumJS, Google Earth)
   }
 }
 

@@ -53,6 +53,9 @@ struct ViewInput {
   bool screenshotRequested = false;
   bool helpVisible = false;
 
+  // Where the window was, and how large, before F11 made it fill the monitor (x, y, w, h).
+  std::array<int, 4> windowedRect{0, 0, 1280, 720};
+
   // Mouse state.
   bool leftDown = false, rightDown = false, shiftDrag = false;
   double lastX = 0, lastY = 0;

@@ -9,12 +9,15 @@
 #include <array>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <glm/geometric.hpp>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "camera/fly_to.hpp"
 #include "camera/orbit_controls.hpp"
@@ -232,6 +235,52 @@ TEST(GlobeViewWindow, KeysAndScrollZoomInAndEscapeQuits) {
   const double height = loggedHeightMeters(run.output);
   EXPECT_GT(height, 0) << run.output;
   EXPECT_LT(height, 30000) << run.output;
+}
+
+// The habits people bring: PgUp zooms in as + does (Google Earth), and F11 fills the screen
+// (Xvfb's 1280x720): a K screenshot after it is the screen's size, and after F11 again the
+// window's.
+TEST(GlobeViewWindow, PageUpZoomsAndF11FillsTheScreen) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const auto dir = globe::testing::freshTempDir("view-habits");
+  const ShellRun run = runUnderXvfb(
+      "view-habits",
+      globeView("--size 320x180 --log --record-dir " + dir.string() +
+                " --camera 138.73,35.36,50000 > log.txt &\n") +
+          "VIEW=$!\n" + kFindWindow +
+          "xdotool key --window $WID Prior Prior Prior Prior\n"
+          "xdotool key --window $WID F11\n"
+          "sleep 1\n"
+          "xdotool key --window $WID k\n"
+          "for i in $(seq 100); do grep -q 'wrote screenshot' log.txt && break; sleep 0.1; done\n"
+          "xdotool key --window $WID F11\n"
+          "sleep 1\n"
+          "xdotool key --window $WID k\n"
+          "for i in $(seq 100); do [ \"$(grep -c 'wrote screenshot' log.txt)\" -ge 2 ] && break; "
+          "sleep 0.1; done\n"
+          "xdotool keydown --window $WID Escape\n"
+          "wait $VIEW; echo exit=$?\n"
+          "cat log.txt\n");
+  const auto values = valuesOf(run.output);
+  ASSERT_EQ(values.count("exit"), 1u) << run.output;
+  EXPECT_EQ(values.at("exit"), "0") << run.output;
+  const double height = loggedHeightMeters(run.output);
+  EXPECT_GT(height, 0) << run.output;
+  EXPECT_LT(height, 30000) << run.output;  // four presses of 0.8 from 50 km
+  std::vector<std::filesystem::path> shots;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().extension() == ".png") shots.push_back(entry.path());
+  }
+  std::sort(shots.begin(), shots.end());
+  ASSERT_EQ(shots.size(), 2u) << run.output;
+  auto full = globe::formats::loadImageRgba(shots[0]);
+  auto windowed = globe::formats::loadImageRgba(shots[1]);
+  ASSERT_TRUE(full && windowed);
+  EXPECT_EQ(full->widthPixels, 1280) << run.output;
+  EXPECT_EQ(full->heightPixels, 720) << run.output;
+  EXPECT_EQ(windowed->widthPixels, 320) << run.output;
+  EXPECT_EQ(windowed->heightPixels, 180) << run.output;
 }
 
 TEST(GlobeViewWindow, IdleWindowUsesAlmostNoCpu) {
@@ -599,6 +648,45 @@ TEST(GlobeViewWindow, ScrollZoomsTowardTheCursor) {
   EXPECT_GT(camera.lon, 138.55) << "toward the cursor (east)\n" << run.output;
   EXPECT_GT(camera.lat, 35.22) << "toward the cursor (north)\n" << run.output;
   EXPECT_LT(camera.height, 40000) << run.output;
+}
+
+// Middle-drag and Ctrl + left-drag turn the view as right-drag does (CesiumJS, Google Earth).
+TEST(GlobeViewWindow, MiddleAndCtrlDragTurnTheViewAsRightDragDoes) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  for (const auto& [name, press, release] :
+       {std::tuple<std::string, std::string, std::string>{"middle", "mousedown --window $WID 2",
+                                                          "mouseup --window $WID 2"},
+        {"ctrl", "keydown --window $WID ctrl mousedown --window $WID 1",
+         "mouseup --window $WID 1 keyup --window $WID ctrl"}}) {
+    SCOPED_TRACE(name);
+    const ShellRun run = runUnderXvfb(
+        "view-turn-" + name,
+        globeView("--size 640x360 --log --camera 138.60,35.20,15000,30,-40,0 > log.txt &\n") +
+            "VIEW=$!\n" + kFindWindow +
+            "for i in $(seq 100); do grep -q 'view complete' log.txt && break; sleep 0.1; done\n"
+            "xdotool mousemove --window $WID 320 180 " +
+            press +
+            "\n"
+            "for x in 340 360 380 400 420; do xdotool mousemove --window $WID $x 170; sleep 0.05; "
+            "done\n"
+            "xdotool " +
+            release + "\n" + std::string(kWaitUntilStill) +
+            "xdotool keydown --window $WID Escape\n"
+            "wait $VIEW; echo exit=$?\n"
+            "cat log.txt\n");
+    const auto values = valuesOf(run.output);
+    ASSERT_EQ(values.count("exit"), 1u) << run.output;
+    EXPECT_EQ(values.at("exit"), "0") << run.output;
+    const size_t at = ("\n" + run.output).find("\ncamera ");
+    ASSERT_NE(at, std::string::npos) << run.output;
+    double lon = 0, lat = 0, height = 0, heading = 0, pitch = 0;
+    ASSERT_EQ(std::sscanf(run.output.c_str() + at, "camera %lf,%lf,%lf,%lf,%lf", &lon, &lat,
+                          &height, &heading, &pitch),
+              5)
+        << run.output;
+    EXPECT_GT(heading, 40) << "the drag turned the view\n" << run.output;
+  }
 }
 
 // Right-drag tilts and turns about the ground point at the centre of the view (Google Earth,
