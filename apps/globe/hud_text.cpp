@@ -74,6 +74,8 @@ std::vector<std::string> hudStatusLines(const HudState& s, bool withFrameTime) {
     for (const std::string& place : s.suggestions) lines.push_back("       " + place);
   }
   if (!s.message.empty()) lines.push_back(s.message);
+  if (!s.network.empty()) lines.push_back("network: " + s.network);
+  if (!s.warning.empty()) lines.push_back("! " + s.warning);
   std::string tiles = format("tiles %zu drawn, %zu loading", s.tilesDrawn, s.tilesLoading);
   if (withFrameTime && s.frameMilliseconds > 0) {
     tiles += format("  frame %.1f ms (%.0f fps)", s.frameMilliseconds, 1000 / s.frameMilliseconds);
@@ -108,21 +110,19 @@ std::optional<ScaleBarLength> scaleBarLength(double metersPerPixel, double maxim
 std::vector<std::string> hudHelpLines() {
   return {
       "F / Tab      switch orbit <-> fly",
-      "orbit:  left-drag rotates the globe; right-, middle-, Shift- or Ctrl-drag",
-      "        tilts and turns; scroll, +/- or PgUp/PgDn zoom, arrows pan,",
-      "        double-click flies to the point",
+      "orbit:  left-drag rotates; right/middle/Shift/Ctrl-drag tilts and turns",
+      "        scroll, +/-, PgUp/PgDn zoom; arrows pan; double-click flies there",
       "fly:    W/S forward/back, A/D left/right, E/Q up/down, Shift x5",
       "        drag (either button) or arrows look, scroll changes the speed",
       "        speed = max(2 m/s, clearance per second)",
       "P            start/stop recording the path (globe-path-*.json)",
-      "K / F12      screenshot (globe-shot-*.png)",
+      "K / F12      screenshot (globe-shot-*.png); F11 full screen",
       "R            back to the start camera",
       "G            go to a place or a position (type, then Enter)",
       "N            north up (or click the compass rose, top right)",
       "L            lighting on imagery: auto -> on -> off",
       "1 - 4        show / hide layer 1-4 (and select it for [ ])",
       "[ / ]        the selected layer's opacity -/+ 10%",
-      "F11          full screen, and back",
       "H / F1       this help",
       "Esc          quit",
   };

@@ -35,6 +35,8 @@ struct HudState {
   std::optional<std::string> prompt;     // the go-to text being typed (G)
   std::vector<std::string> suggestions;  // the gazetteer's best places for it
   std::string message;                   // what the last go-to said (an error)
+  std::string warning;                   // the latest warning (a server failing), while recent
+  std::string network;                   // failed loads and their retries, when any failed
   // The imagery controls (L, 1-4, [ ]): said only with layers.
   struct Layer {
     bool shown = true;

@@ -22,6 +22,7 @@
 #include "apps/globe/hud_text.hpp"
 #include "apps/globe/imagery.hpp"
 #include "apps/globe/path_recorder.hpp"
+#include "apps/globe/recent_warning.hpp"
 #include "apps/globe/renderer_gpu.hpp"
 #include "apps/globe/view_input.hpp"
 #include "camera/camera_controller.hpp"
@@ -133,7 +134,11 @@ std::vector<render::HudItem> hudItems(std::vector<std::string> status, bool help
 
 Result<ViewReport> runView(const ViewOptions& options) {
   if (!options.pose.isFinite()) return makeError("the camera pose is not finite");
-  auto scene = scene::TerrainScene::open(options.pyramid, options.scene);
+  // Warnings go to stderr and, the latest for a while, to the HUD.
+  auto recentWarning = std::make_shared<RecentWarning>();
+  scene::SceneOptions sceneOptions = options.scene;
+  sceneOptions.warnings = RecentWarning::wrap(options.scene.warnings, recentWarning);
+  auto scene = scene::TerrainScene::open(options.pyramid, sceneOptions);
   if (!scene) return Error{scene.error()};
   // Who the terrain and imagery are from, shown at the bottom right as their services ask.
   const std::vector<std::string> attributions = (*scene)->attributions();
@@ -302,6 +307,18 @@ Result<ViewReport> runView(const ViewOptions& options) {
         hudState.suggestions = suggestions;
       }
       hudState.message = input.promptMessage;
+      hudState.warning = recentWarning->shown();
+      const streaming::LoaderCounters loads = (*scene)->loader().counters();
+      if (loads.failed > 0) {
+        hudState.network =
+            std::to_string(loads.failed) + " tile load" + (loads.failed == 1 ? "" : "s") +
+            " failed" +
+            (options.scene.retryFailedLoadsSeconds > 0
+                 ? ", retried every " +
+                       std::to_string(static_cast<int>(options.scene.retryFailedLoadsSeconds)) +
+                       " s"
+                 : "");
+      }
       if (input.cursorKnown) {
         if (const auto ground = navigator.groundAt(glm::dvec2(input.lastX, input.lastY))) {
           hudState.underCursor = geo::ecefToCartographic(ellipsoid, *ground);

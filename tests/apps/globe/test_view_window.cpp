@@ -24,6 +24,7 @@
 #include "formats/image_io.hpp"
 #include "geo/ecef.hpp"
 #include "tests/support/imagery_test_layers.hpp"
+#include "tests/support/nginx_server.hpp"
 #include "tests/support/test_constants.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 
@@ -470,6 +471,61 @@ TEST(GlobeViewWindow, LayerAndLightingKeysChangeTheFrame) {
               differing(draped, hidden), differing(draped, unlit), pixels);
   EXPECT_GT(differing(draped, hidden), pixels / 4) << "the ramp instead of Blue Marble";
   EXPECT_GT(differing(draped, unlit), pixels / 100) << "the relief's shading gone";
+}
+
+// A server failing shows in the window, not only on stderr: with one level's packs answered
+// HTTP 500 the HUD says what the server said ("! URL: HTTP 500; drawing coarser tiles there"),
+// a line more of text than the same view from a healthy server (60 rows against 51).
+TEST(GlobeViewWindow, AFailingServerIsSaidInTheHud) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const auto dir = globe::testing::freshTempDir("view-network");
+  std::filesystem::create_directories(dir / "www");
+  std::filesystem::copy(globe::testing::bundledPyramid(), dir / "www/pyramid",
+                        std::filesystem::copy_options::recursive);
+  auto server =
+      globe::testing::NginxServer::start({dir / "www", "location /pyramid/L9/ { return 500; }"});
+  ASSERT_TRUE(server);
+  const auto shotOf = [&](const std::string& name, const std::string& url) {
+    const auto record = dir / name;
+    std::filesystem::create_directories(record);
+    const ShellRun run = runUnderXvfb(
+        "view-network-" + name,
+        "timeout 120 " + std::string(GLOBE_EXE) + " view " + url +
+            " --size 640x360 --log --http-timeout 5 --cache-dir " + (record / "cache").string() +
+            " --record-dir " + record.string() +
+            " --camera 138.73,35.36,30000,0,-60,0 > log.txt 2>&1 &\n"
+            "VIEW=$!\n" +
+            kFindWindow +
+            "sleep 3\nxdotool key --window $WID k\n"
+            "for i in $(seq 200); do grep -q 'wrote screenshot' log.txt && break; sleep 0.1; done\n"
+            "xdotool keydown --window $WID Escape\n"
+            "wait $VIEW; echo exit=$?\n"
+            "cat log.txt\n");
+    EXPECT_EQ(valuesOf(run.output)["exit"], "0") << run.output;
+    auto image = globe::formats::loadImageRgba(writtenFile(run.output, "screenshot"));
+    EXPECT_TRUE(image) << image.error() << run.output;
+    return std::pair{image ? *image : globe::formats::ImageRgba{}, run.output};
+  };
+  const auto [failing, failingLog] = shotOf("failing", server->url("/pyramid"));
+  const auto [healthy, healthyLog] = shotOf("healthy", (dir / "www/pyramid").string());
+  EXPECT_NE(failingLog.find("HTTP 500"), std::string::npos) << failingLog;  // stderr too
+  // Text rows (a row with white text pixels) in the status area, top left.
+  const auto textRows = [](const globe::formats::ImageRgba& image) {
+    size_t rows = 0;
+    for (int y = 0; y < std::min(image.heightPixels, 300); ++y) {
+      size_t white = 0;
+      for (int x = 0; x < 400; ++x) {
+        const uint8_t* p = &image.pixels[static_cast<size_t>(y * image.widthPixels + x) * 4];
+        if (p[0] >= 220 && p[1] >= 220 && p[2] >= 150) ++white;
+      }
+      rows += white > 2 ? 1 : 0;
+    }
+    return rows;
+  };
+  std::printf("status text rows: failing server %zu, healthy %zu\n", textRows(failing),
+              textRows(healthy));
+  EXPECT_GE(textRows(failing), textRows(healthy) + 6) << "the server's error, a line more";
 }
 
 // H shows the help and K takes a screenshot with the HUD: its top-left corner has text where the
