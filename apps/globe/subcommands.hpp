@@ -24,5 +24,6 @@ Subcommand addViewCommand(CLI::App& app, CommonArguments& common);
 Subcommand addPlayCommand(CLI::App& app, CommonArguments& common);
 Subcommand addSourcesCommand(CLI::App& app, CommonArguments& common);
 Subcommand addSearchCommand(CLI::App& app, CommonArguments& common);
+Subcommand addProfileCommand(CLI::App& app, CommonArguments& common);
 
 }  // namespace globe::app

@@ -1,0 +1,196 @@
+// Lines from the files people have (a real GPX track and route, the route as GeoJSON, KML),
+// geodesic lengths and areas against known values, and `globe profile` over the bundled pyramid:
+// its samples' heights are `globe query --mode exact`'s, its length the geodesics'.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "measure/elevation_profile.hpp"
+#include "measure/geodesic_path.hpp"
+#include "measure/path_files.hpp"
+#include "tests/support/tiler_test_fixture.hpp"
+
+namespace globe::measure {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kPaths = fs::path(GLOBE_SOURCE_DIR) / "tests/data/interop/paths";
+
+struct Exit {
+  int code = -1;
+  std::string output;
+};
+
+Exit run(const std::string& command) {
+  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
+  Exit r;
+  char buffer[4096];
+  while (pipe != nullptr && std::fgets(buffer, sizeof buffer, pipe) != nullptr) r.output += buffer;
+  const int status = pipe != nullptr ? ::pclose(pipe) : -1;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::vector<std::vector<double>> csvRows(const std::string& text) {
+  std::vector<std::vector<double>> rows;
+  std::istringstream lines(text);
+  std::string line;
+  std::getline(lines, line);  // header
+  while (std::getline(lines, line)) {
+    std::vector<double> row;
+    std::istringstream fields(line);
+    std::string field;
+    while (std::getline(fields, field, ',')) row.push_back(std::stod(field));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST(PathFiles, AGpxTrackARouteAndItsGeoJsonTwin) {
+  auto track = readPathFile(kPaths / "Mojstrovka.gpx");
+  ASSERT_TRUE(track) << track.error();
+  EXPECT_EQ(track->size(), 184u);
+  EXPECT_NEAR(track->front().latitudeDegrees, 46.434981, 1e-9);
+  EXPECT_NEAR(track->front().elevationMeters, 1614.678, 1e-9);
+  auto route = readPathFile(kPaths / "trek.gpx");
+  ASSERT_TRUE(route) << route.error();
+  EXPECT_EQ(route->size(), 120u);
+  auto geojson = readPathFile(kPaths / "trek.geojson");
+  ASSERT_TRUE(geojson) << geojson.error();
+  ASSERT_EQ(geojson->size(), route->size());
+  for (size_t i = 0; i < route->size(); ++i) {
+    EXPECT_NEAR((*geojson)[i].longitudeDegrees, (*route)[i].longitudeDegrees, 1e-6);
+    EXPECT_NEAR((*geojson)[i].latitudeDegrees, (*route)[i].latitudeDegrees, 1e-6);
+    EXPECT_NEAR((*geojson)[i].elevationMeters, (*route)[i].elevationMeters, 1e-6);
+  }
+}
+
+TEST(PathFiles, KmlLinesAndBadFilesNamed) {
+  const fs::path dir = globe::testing::freshTempDir("measure-paths");
+  std::ofstream(dir / "line.kml")
+      << "<?xml version=\"1.0\"?><kml xmlns=\"http://www.opengis.net/kml/2.2\"><Document>"
+         "<Placemark><LineString><coordinates>138.7,35.3,100 138.8,35.4,200\n 138.9,35.5"
+         "</coordinates></LineString></Placemark></Document></kml>";
+  auto kml = readPathFile(dir / "line.kml");
+  ASSERT_TRUE(kml) << kml.error();
+  ASSERT_EQ(kml->size(), 3u);
+  EXPECT_DOUBLE_EQ((*kml)[1].elevationMeters, 200);
+  EXPECT_TRUE(std::isnan((*kml)[2].elevationMeters));
+  const std::pair<const char*, const char*> bad[] = {
+      {"<gpx><wpt lat=\"1\" lon=\"2\"/></gpx>", "no line"},
+      {"<gpx><trk><trkseg><trkpt lat=\"1\"/></trkseg></trk></gpx>", "without lat and lon"},
+      {"<kml><LineString><coordinates>1;2 3,4</coordinates></LineString></kml>", "coordinate"},
+      {"<svg/>", "neither GPX nor KML"},
+      {"<gpx><trk>", "not XML"},
+      {"{\"type\":\"LineString\",\"coordinates\":[[0,0],[200,95]]}", "outside"},
+      {"[1, 2]", "neither GPX, KML nor GeoJSON"},
+  };
+  for (const auto& [text, says] : bad) {
+    std::ofstream(dir / "bad.txt") << text;
+    auto read = readPathFile(dir / "bad.txt");
+    ASSERT_FALSE(read) << text;
+    EXPECT_EQ(read.error().rfind((dir / "bad.txt").string(), 0), 0u) << read.error();
+    EXPECT_NE(read.error().find(says), std::string::npos) << read.error();
+  }
+  EXPECT_FALSE(readPathFile(dir / "missing.gpx"));
+}
+
+TEST(Geodesics, KnownLengthsAndAreas) {
+  // One degree of the equator: a·π/180; a quarter meridian of WGS84: 10,001,965.729 m.
+  EXPECT_NEAR(geodesicLengthMeters({{0, 0}, {1, 0}}), 6378137.0 * std::numbers::pi / 180, 1e-6);
+  EXPECT_NEAR(geodesicLengthMeters({{0, 0}, {0, 90}}), 10001965.729, 1e-3);
+  // Samples: every vertex kept, no gap wider than asked, the last at the full length.
+  const std::vector<PathPoint> path{{0, 0, 0}, {0.5, 0, 100}, {0.5, 0.3, 40}};
+  const auto samples = sampleGeodesic(path, 1000);
+  EXPECT_NEAR(samples.back().distanceMeters, geodesicLengthMeters(path), 1e-6);
+  for (size_t i = 1; i < samples.size(); ++i) {
+    EXPECT_LE(samples[i].distanceMeters - samples[i - 1].distanceMeters, 1000 + 1e-9);
+  }
+  EXPECT_NEAR(samples[28].sourceElevationMeters, 100 * 28 / 56.0, 1e-9);  // 56 steps on leg 1
+  // A 1°×1° cell at the equator: the authalic sphere says 1.2363e10 m²; the ellipsoid a little
+  // less.
+  const double area = ringAreaSquareMeters({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  EXPECT_NEAR(area, 1.2363e10, 0.01 * 1.2363e10);
+}
+
+TEST(GlobeProfile, HeightsAreTheExactSurfaceAndTheLengthTheGeodesics) {
+  const fs::path dir = globe::testing::freshTempDir("measure-profile");
+  // Across Mount Fuji's summit (the bundled 3″ DEM), west to east.
+  std::ofstream(dir / "fuji.geojson")
+      << R"({"type":"Feature","geometry":{"type":"LineString","coordinates":)"
+      << R"([[138.68,35.355],[138.7274,35.3606],[138.78,35.37]]}})";
+  const std::string pyramid = globe::testing::bundledPyramid().string();
+  const Exit profile = run(std::string(GLOBE_EXE) + " profile " + pyramid + " " +
+                           (dir / "fuji.geojson").string() + " -o " + (dir / "fuji.csv").string());
+  ASSERT_EQ(profile.code, 0) << profile.output;
+  std::ifstream in(dir / "fuji.csv");
+  const std::string csv{std::istreambuf_iterator<char>(in), {}};
+  EXPECT_EQ(csv.rfind("distance_m,lon,lat,height_m,slope_deg\n", 0), 0u) << csv.substr(0, 200);
+  const auto rows = csvRows(csv);
+  ASSERT_GT(rows.size(), 100u);
+  // Sampled at least at the pyramid's finest spacing (level 14: 0.000687°, ~62 m east-west here).
+  double widest = 0;
+  for (size_t i = 1; i < rows.size(); ++i) widest = std::max(widest, rows[i][0] - rows[i - 1][0]);
+  EXPECT_LT(widest, 63.0);
+  EXPECT_NEAR(rows.back()[0],
+              geodesicLengthMeters({{138.68, 35.355}, {138.7274, 35.3606}, {138.78, 35.37}}), 0.01);
+  // The heights are `globe query --mode exact`'s at the same points; the summit is ~3,776 m.
+  {
+    std::ofstream points(dir / "points.txt");
+    points.precision(12);
+    for (const auto& r : rows) points << r[1] << "," << r[2] << "\n";
+  }
+  const Exit query = run(std::string(GLOBE_EXE) + " query --mode exact " + pyramid + " < " +
+                         (dir / "points.txt").string());
+  ASSERT_EQ(query.code, 0) << query.output;
+  std::istringstream answers(query.output);
+  std::string line;
+  size_t compared = 0;
+  double highest = 0;
+  while (std::getline(answers, line) && compared < rows.size()) {
+    double lon = 0, lat = 0, h = 0;
+    int level = 0;
+    if (std::sscanf(line.c_str(), "%lf,%lf,%d,%lf", &lon, &lat, &level, &h) != 4) continue;
+    // Within 1 cm: the CSV gives positions to 1e-7 degrees (1 cm), on slopes up to ~40 degrees.
+    EXPECT_NEAR(rows[compared][3], h, 0.01) << line;
+    highest = std::max(highest, rows[compared][3]);
+    ++compared;
+  }
+  EXPECT_EQ(compared, rows.size());
+  EXPECT_NEAR(highest, 3776, 60);
+  // Slopes: the rise over the run to the next sample, in degrees.
+  EXPECT_NEAR(
+      rows[10][4],
+      std::atan2(rows[11][3] - rows[10][3], rows[11][0] - rows[10][0]) * 180 / std::numbers::pi,
+      0.01);
+}
+
+TEST(GlobeProfile, AGpxTrackKeepsItsOwnElevationsBeside) {
+  const fs::path dir = globe::testing::freshTempDir("measure-gpx");
+  const Exit profile =
+      run(std::string(GLOBE_EXE) + " profile " + globe::testing::bundledPyramid().string() + " " +
+          (kPaths / "Mojstrovka.gpx").string() + " -o " + (dir / "m.csv").string());
+  ASSERT_EQ(profile.code, 0) << profile.output;
+  std::ifstream in(dir / "m.csv");
+  const std::string csv{std::istreambuf_iterator<char>(in), {}};
+  EXPECT_EQ(csv.rfind("distance_m,lon,lat,height_m,slope_deg,path_elevation_m\n", 0), 0u);
+  const auto rows = csvRows(csv);
+  ASSERT_GE(rows.size(), 184u);
+  EXPECT_NEAR(rows.front()[5], 1614.678, 1e-3);  // the track's first <ele>
+  const Exit bad =
+      run(std::string(GLOBE_EXE) + " profile " + globe::testing::bundledPyramid().string() +
+          " /nonexistent.gpx -o " + (dir / "x.csv").string());
+  EXPECT_EQ(bad.code, 1);
+  EXPECT_NE(bad.output.find("/nonexistent.gpx"), std::string::npos) << bad.output;
+  EXPECT_FALSE(fs::exists(dir / "x.csv"));
+}
+
+}  // namespace
+}  // namespace globe::measure
