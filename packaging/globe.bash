@@ -6,7 +6,7 @@ _globe_complete() {
   local program=$1 current=${COMP_WORDS[COMP_CWORD]}
   local subcommands="" subcommand="" word
   case "${program##*/}" in
-    globe) subcommands="info snapshot query view play sources search profile" ;;
+    globe) subcommands="info snapshot query view play sources search profile views" ;;
     globe-tiler) subcommands="imagery water-mask export" ;;
   esac
   for word in "${COMP_WORDS[@]:1:COMP_CWORD-1}"; do

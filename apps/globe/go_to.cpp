@@ -51,6 +51,18 @@ camera::CameraPose goToPose(const GoToTarget& target) {
                                          -kDistanceMeters * std::sin(pitch), 0, kPitchDegrees, 0);
 }
 
+Result<camera::SavedView> savedViewNamed(const std::string& name) {
+  const auto file = camera::userViewsFile();
+  auto views = camera::readSavedViews(file);
+  if (!views) return Error{views.error()};
+  if (const camera::SavedView* view = camera::findSavedView(*views, name)) return *view;
+  std::string names;
+  for (const camera::SavedView& v : *views) names += (names.empty() ? "" : ", ") + v.name;
+  return makeError(
+      "no view named \"" + name + "\" in " + file.string() +
+      (names.empty() ? " (none saved: V in the window saves one)" : " (" + names + ")"));
+}
+
 std::vector<std::string> goToSuggestions(std::string_view text, size_t count) {
   std::vector<std::string> suggestions;
   if (places::foldName(text).size() < 2 || places::parseCoordinates(text)) return suggestions;

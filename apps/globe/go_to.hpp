@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "camera/camera_pose.hpp"
+#include "camera/saved_views.hpp"
 #include "core/result.hpp"
 
 namespace globe::app {
@@ -24,6 +25,9 @@ Result<GoToTarget> parseGoTo(std::string_view text);
 // Where `--go-to` puts the camera: as the window's go-to lands, ~15 km from the place looking at
 // it 35 degrees down, from the south (north up); its height is above the terrain.
 camera::CameraPose goToPose(const GoToTarget& target);
+// The view saved under `name` (V in the window; camera/saved_views.hpp), or an error listing
+// the saved names.
+Result<camera::SavedView> savedViewNamed(const std::string& name);
 // The best few places for what is typed so far, for the window's suggestions ("Name, CC").
 std::vector<std::string> goToSuggestions(std::string_view text, size_t count);
 

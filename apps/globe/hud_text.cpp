@@ -70,7 +70,9 @@ std::vector<std::string> hudStatusLines(const HudState& s, bool withFrameTime) {
                     meters(s.underCursor->heightMeters));
   }
   if (s.prompt) {
-    lines.push_back("go to: " + *s.prompt + "_   (Enter: go, Esc: cancel)");
+    lines.push_back(s.promptSavesView
+                        ? "save view as: " + *s.prompt + "_   (Enter: save, Esc: cancel)"
+                        : "go to: " + *s.prompt + "_   (Enter: go, Esc: cancel)");
     for (const std::string& place : s.suggestions) lines.push_back("       " + place);
   }
   if (!s.message.empty()) lines.push_back(s.message);
@@ -118,7 +120,7 @@ std::vector<std::string> hudHelpLines() {
       "P            start/stop recording the path (globe-path-*.json)",
       "K / F12      screenshot (globe-shot-*.png); F11 full screen",
       "R            back to the start camera",
-      "G            go to a place or a position (type, then Enter)",
+      "G / V        go to a place, position or saved view / save this view",
       "N            north up (or click the compass rose, top right)",
       "L            lighting on imagery: auto -> on -> off",
       "1 - 4        show / hide layer 1-4 (and select it for [ ])",

@@ -32,7 +32,8 @@ struct HudState {
   // distance a pixel spans at the centre of the view (NaN: no ground there; the scale bar).
   std::optional<geo::Cartographic> underCursor;
   double metersPerPixel = std::numeric_limits<double>::quiet_NaN();
-  std::optional<std::string> prompt;     // the go-to text being typed (G)
+  std::optional<std::string> prompt;  // the go-to text (G), or a view's name (V), being typed
+  bool promptSavesView = false;
   std::vector<std::string> suggestions;  // the gazetteer's best places for it
   std::string message;                   // what the last go-to said (an error)
   std::string warning;                   // the latest warning (a server failing), while recent

@@ -25,10 +25,11 @@ int main(int argc, char** argv) {
   }
   common.sources = std::make_shared<const globe::services::NamedSources>(std::move(*sources));
   const std::vector<globe::app::Subcommand> subcommands = {
-      globe::app::addInfoCommand(app, common),  globe::app::addSnapshotCommand(app, common),
-      globe::app::addQueryCommand(app, common), globe::app::addViewCommand(app, common),
-      globe::app::addPlayCommand(app, common),  globe::app::addSourcesCommand(app, common),
-      globe::app::addSearchCommand(app, common), globe::app::addProfileCommand(app, common)};
+      globe::app::addInfoCommand(app, common),   globe::app::addSnapshotCommand(app, common),
+      globe::app::addQueryCommand(app, common),  globe::app::addViewCommand(app, common),
+      globe::app::addPlayCommand(app, common),   globe::app::addSourcesCommand(app, common),
+      globe::app::addSearchCommand(app, common), globe::app::addProfileCommand(app, common),
+      globe::app::addViewsCommand(app, common)};
 
   CLI11_PARSE(app, argc, argv);
   const auto context = globe::app::makeCommandContext(common);

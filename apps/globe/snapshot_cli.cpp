@@ -23,17 +23,28 @@ struct SnapshotArguments {
   uint32_t maxLoadLevel = geo::kMaxLevel;
   bool noAttribution = false;
   std::string goTo;
+  std::string view;
+  CLI::Option* cameraOption = nullptr;  // count() > 0: --camera was given (even empty)
 };
 
 int runSnapshotCommand(const SnapshotArguments& arguments, const CommonArguments& common,
                        const CommandContext& context) {
-  if (arguments.camera.empty() == arguments.goTo.empty()) {
-    std::fprintf(stderr, "globe snapshot: give --camera or --go-to (one of them)\n");
+  const bool camera = arguments.cameraOption != nullptr && arguments.cameraOption->count() > 0;
+  if (int{camera} + int{!arguments.goTo.empty()} + int{!arguments.view.empty()} != 1) {
+    std::fprintf(stderr, "globe snapshot: give --camera, --go-to or --view (one of them)\n");
     return 2;
   }
   Result<camera::CameraPose> pose = makeError("");
   bool aboveTerrain = arguments.aboveTerrain;
-  if (!arguments.goTo.empty()) {
+  if (!arguments.view.empty()) {
+    auto view = savedViewNamed(arguments.view);
+    if (!view) {
+      std::fprintf(stderr, "globe snapshot: %s\n", view.error().c_str());
+      return 2;
+    }
+    pose = view->pose;
+    aboveTerrain = view->heightAboveTerrain;
+  } else if (!arguments.goTo.empty()) {
     auto target = parseGoTo(arguments.goTo);
     if (!target) {
       std::fprintf(stderr, "globe snapshot: %s\n", target.error().c_str());
@@ -85,12 +96,15 @@ Subcommand addSnapshotCommand(CLI::App& app, CommonArguments& common) {
       "snapshot", "render one view headless (OSMesa) once every tile it needs is loaded");
   auto arguments = std::make_shared<SnapshotArguments>();
   addPyramidArgument(*snapshot, arguments->pyramid, common);
-  snapshot->add_option("--camera", arguments->camera,
-                       "LON,LAT,HEIGHT[,HEADING,PITCH,ROLL]: degrees, metres above the ellipsoid; "
-                       "heading 0 = north, pitch -90 = straight down (default)");
+  arguments->cameraOption = snapshot->add_option(
+      "--camera", arguments->camera,
+      "LON,LAT,HEIGHT[,HEADING,PITCH,ROLL]: degrees, metres above the ellipsoid; "
+      "heading 0 = north, pitch -90 = straight down (default)");
   snapshot->add_option("--go-to", arguments->goTo,
                        "a place's name (globe search) or a position: the camera ~15 km from it, "
                        "looking at it from the south (instead of --camera)");
+  snapshot->add_option("--view", arguments->view,
+                       "a view saved by name (V in the window, globe views) instead of --camera");
   snapshot->add_option("--size", arguments->size, "WxH pixels")->capture_default_str();
   snapshot->add_option("-o,--output", arguments->output, "PNG file to write")->required();
   snapshot->add_flag("--above-terrain", arguments->aboveTerrain,

@@ -25,5 +25,6 @@ Subcommand addPlayCommand(CLI::App& app, CommonArguments& common);
 Subcommand addSourcesCommand(CLI::App& app, CommonArguments& common);
 Subcommand addSearchCommand(CLI::App& app, CommonArguments& common);
 Subcommand addProfileCommand(CLI::App& app, CommonArguments& common);
+Subcommand addViewsCommand(CLI::App& app, CommonArguments& common);
 
 }  // namespace globe::app

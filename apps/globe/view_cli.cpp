@@ -21,6 +21,7 @@ struct ViewArguments {
   int frames = 0;
   bool log = false;
   std::string goTo;
+  std::string view;
 };
 
 int runViewCommand(const ViewArguments& arguments, const CommonArguments& common,
@@ -45,6 +46,15 @@ int runViewCommand(const ViewArguments& arguments, const CommonArguments& common
   options.frames = arguments.frames;
   options.log = arguments.log;
   options.recordDirectory = arguments.recordDirectory;
+  if (!arguments.view.empty()) {
+    auto view = savedViewNamed(arguments.view);
+    if (!view) {
+      std::fprintf(stderr, "globe view: %s\n", view.error().c_str());
+      return 2;
+    }
+    options.pose = view->pose;
+    options.heightAboveTerrain = view->heightAboveTerrain;
+  }
   if (!arguments.goTo.empty()) {
     if (auto target = parseGoTo(arguments.goTo); !target) {
       std::fprintf(stderr, "globe view: %s\n", target.error().c_str());
@@ -80,6 +90,9 @@ Subcommand addViewCommand(CLI::App& app, CommonArguments& common) {
   view->add_option("--size", arguments->size, "WxH window size")->capture_default_str();
   view->add_option("--go-to", arguments->goTo,
                    "fly to a place's name (globe search) or a position as the window opens");
+  view->add_option("--view", arguments->view,
+                   "start from a view saved by name (V in the window, globe views)")
+      ->excludes("--camera");
   addImageryOption(*view, arguments->imagery);
   view->add_option("--frames", arguments->frames,
                    "redraw continuously and quit after N frames (tests)");

@@ -27,6 +27,7 @@
 #include "apps/globe/view_input.hpp"
 #include "camera/camera_controller.hpp"
 #include "camera/navigator.hpp"
+#include "camera/saved_views.hpp"
 #include "collision/surface_probe.hpp"
 #include "formats/image_io.hpp"
 #include "geo/ecef.hpp"
@@ -37,6 +38,22 @@
 
 namespace globe::app {
 namespace {
+
+// V then a name: the current pose saved under it in the user's views file; what to say back.
+std::string saveView(const std::string& name, const camera::CameraPose& pose) {
+  if (name.empty()) return "save view: type a name";
+  const std::filesystem::path file = camera::userViewsFile();
+  auto views = camera::readSavedViews(file);
+  if (!views) return "save view: " + views.error();
+  camera::putSavedView(*views, {name, pose, false});
+  if (auto written = camera::writeSavedViews(file, *views); !written) {
+    return "save view: " + written.error();
+  }
+  std::printf("saved view %s in %s\n", name.c_str(), file.string().c_str());
+  std::fflush(stdout);
+  return "saved view \"" + name + "\" (" + std::to_string(views->size()) + " in " + file.string() +
+         ")";
+}
 
 constexpr const char* kTitlePrefix = "globe";  // tests find the window by this name
 using Clock = std::chrono::steady_clock;
@@ -140,6 +157,13 @@ Result<ViewReport> runView(const ViewOptions& options) {
   sceneOptions.warnings = RecentWarning::wrap(options.scene.warnings, recentWarning);
   auto scene = scene::TerrainScene::open(options.pyramid, sceneOptions);
   if (!scene) return Error{scene.error()};
+  camera::CameraPose startPose = options.pose;
+  if (options.heightAboveTerrain) {
+    auto ground = (*scene)->terrainHeightMeters(startPose.position.longitudeRadians,
+                                                startPose.position.latitudeRadians);
+    if (!ground) return Error{ground.error()};
+    startPose.position.heightMeters += *ground;
+  }
   // Who the terrain and imagery are from, shown at the bottom right as their services ask.
   const std::vector<std::string> attributions = (*scene)->attributions();
   render::GlfwWindowOptions windowOptions;
@@ -174,14 +198,14 @@ Result<ViewReport> runView(const ViewOptions& options) {
   // Picks march through the tiles drawn now (the scene keeps one array, updated each frame).
   const terrain::RenderingTileArray& drawnArray = (*scene)->renderingTileArray();
   camera::Navigator navigator(
-      ellipsoid, options.pose, fovY, [&](double lon, double lat) -> std::optional<double> {
+      ellipsoid, startPose, fovY, [&](double lon, double lat) -> std::optional<double> {
         const auto surface = collision::surfaceHeightAt(drawnArray, ellipsoid, lon, lat,
                                                         collision::SurfaceModel::Exact);
         if (!surface || !surface->found) return std::nullopt;
         return surface->heightMeters;
       });
   // A start pose orbit mode cannot show is changed, and said so (never silently).
-  for (const std::string& clamp : camera::describeStartClamp(options.pose, navigator.home())) {
+  for (const std::string& clamp : camera::describeStartClamp(startPose, navigator.home())) {
     std::fprintf(stderr, "globe view: --camera %s\n", clamp.c_str());
   }
   camera::CameraController controller(navigator.home());
@@ -246,6 +270,32 @@ Result<ViewReport> runView(const ViewOptions& options) {
           std::fflush(stdout);
         }
       }
+      if (input.saveViewRequest) {
+        input.promptMessage = saveView(*input.saveViewRequest, controller.pose());
+        input.saveViewRequest.reset();
+        input.changed = true;
+      }
+      if (input.goToRequest) {
+        // A saved view by its name first, then a place or a position.
+        auto views = camera::readSavedViews(camera::userViewsFile());
+        const camera::SavedView* view =
+            views ? camera::findSavedView(*views, *input.goToRequest) : nullptr;
+        if (view != nullptr) {
+          camera::CameraPose pose = view->pose;
+          if (view->heightAboveTerrain) {
+            if (auto ground = (*scene)->terrainHeightMeters(pose.position.longitudeRadians,
+                                                            pose.position.latitudeRadians)) {
+              pose.position.heightMeters += *ground;
+            }
+          }
+          navigator.flyToPose(pose);
+          input.promptMessage.clear();
+          std::printf("go to view %s\n", view->name.c_str());
+          std::fflush(stdout);
+          input.goToRequest.reset();
+          input.changed = true;
+        }
+      }
       if (input.goToRequest) {
         auto target = parseGoTo(*input.goToRequest);
         input.goToRequest.reset();
@@ -304,7 +354,8 @@ Result<ViewReport> runView(const ViewOptions& options) {
           suggestedFor = input.promptText;
         }
         hudState.prompt = input.promptText;
-        hudState.suggestions = suggestions;
+        hudState.promptSavesView = input.promptSavesView;
+        if (!input.promptSavesView) hudState.suggestions = suggestions;
       }
       hudState.message = input.promptMessage;
       hudState.warning = recentWarning->shown();

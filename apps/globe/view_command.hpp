@@ -23,6 +23,7 @@ inline constexpr std::chrono::milliseconds kLoadingRedrawInterval{100};
 struct ViewOptions {
   std::filesystem::path pyramid;
   camera::CameraPose pose;
+  bool heightAboveTerrain = false;  // the pose's height is above the terrain (a saved KML view)
   int widthPixels = 1280, heightPixels = 720;
   std::optional<std::filesystem::path> imagery;  // equirectangular world image to drape
   scene::SceneOptions scene;

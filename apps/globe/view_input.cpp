@@ -85,7 +85,9 @@ bool commonKey(GLFWwindow* window, ViewInput& input, int key) {
       input.helpVisible = !input.helpVisible;
       return true;
     case GLFW_KEY_G:
+    case GLFW_KEY_V:
       input.promptOpen = input.promptSwallowG = true;
+      input.promptSavesView = key == GLFW_KEY_V;
       input.promptText.clear();
       input.promptMessage.clear();
       return true;
@@ -188,7 +190,7 @@ bool flyKey(ViewInput& input, int key) {
 // deletes; the text itself comes from the character callback.
 void promptKey(ViewInput& input, int key) {
   if (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER) {
-    input.goToRequest = input.promptText;
+    (input.promptSavesView ? input.saveViewRequest : input.goToRequest) = input.promptText;
     input.promptOpen = false;
   } else if (key == GLFW_KEY_ESCAPE) {
     input.promptOpen = false;
@@ -205,7 +207,7 @@ void onChar(GLFWwindow* window, unsigned int codepoint) {
   // The G that opened the prompt arrives as a character too: it is not part of the text.
   if (input.promptSwallowG) {
     input.promptSwallowG = false;
-    if (codepoint == 'g' || codepoint == 'G') return;
+    if (codepoint == 'g' || codepoint == 'G' || codepoint == 'v' || codepoint == 'V') return;
   }
   if (codepoint >= 0x20 && codepoint < 0x7f && input.promptText.size() < 80) {
     input.promptText.push_back(static_cast<char>(codepoint));

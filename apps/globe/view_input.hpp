@@ -39,9 +39,11 @@ struct ViewInput {
   // "Go to" (G): the text typed so far while the prompt is open (it takes every key), the text
   // entered (Enter) for the loop to parse, and what the loop says back (an error).
   bool promptOpen = false;
-  bool promptSwallowG = false;  // the G key's own character is not text
+  bool promptSwallowG = false;   // the opening key's own character (G or V) is not text
+  bool promptSavesView = false;  // V: the prompt names the current view to save
   std::string promptText;
   std::optional<std::string> goToRequest;
+  std::optional<std::string> saveViewRequest;  // V then a name then Enter
   std::string promptMessage;
   // The compass (top right, window pixels): a click there, or N, turns the view north up.
   glm::dvec2 compassTopLeft{-1.0}, compassBottomRight{-1.0};

@@ -145,6 +145,13 @@ void Navigator::goTo(double longitudeRadians, double latitudeRadians) {
   startFlyTo(flyToEndPose(ellipsoid_, current_, point, settings), settings.durationSeconds);
 }
 
+void Navigator::flyToPose(const CameraPose& end) {
+  if (!end.isFinite()) return;
+  const double way = glm::distance(cameraFrame(ellipsoid_, end).positionEcefMeters,
+                                   cameraFrame(ellipsoid_, current_).positionEcefMeters);
+  startFlyTo(end, goToSeconds(way));
+}
+
 void Navigator::northUp() {
   userMoved();
   if (mode_ == NavigationMode::Fly) {

@@ -57,6 +57,8 @@ class Navigator {
   // about the centre's ground (orbit) or levels the view facing north (fly); reset goes home.
   bool flyToPixel(glm::dvec2 pixel);
   void goTo(double longitudeRadians, double latitudeRadians);
+  // Flies to a pose as it is (a saved view), taking as long as a go-to of that way.
+  void flyToPose(const CameraPose& end);
   void northUp();
   void reset();
 

@@ -123,7 +123,8 @@ TEST(GlobeSearch, SnapshotGoToANameIsGoingToItsPosition) {
   const auto both = test::runGlobe("snapshot " + pyramid + " --go-to Fuji --camera 0,0,1e7 -o " +
                                    (dir / "x.png").string());
   EXPECT_EQ(both.exitCode, 2);
-  EXPECT_NE(both.output.find("--camera or --go-to"), std::string::npos) << both.output;
+  EXPECT_NE(both.output.find("--camera, --go-to or --view (one of them)"), std::string::npos)
+      << both.output;
   const auto unknown = test::runGlobe("view " + pyramid + " --go-to Xqzzyx --frames 1");
   EXPECT_EQ(unknown.exitCode, 2);
   EXPECT_NE(unknown.output.find("no place named \"Xqzzyx\""), std::string::npos) << unknown.output;

@@ -473,6 +473,70 @@ TEST(GlobeViewWindow, LayerAndLightingKeysChangeTheFrame) {
   EXPECT_GT(differing(draped, unlit), pixels / 100) << "the relief's shading gone";
 }
 
+// V then a name saves the view; `globe views` lists it, exports it as KML and imports it
+// elsewhere; `--view NAME` draws it as `--camera` with the same numbers does.
+TEST(GlobeViewWindow, VSavesTheViewByNameAndItComesBack) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const auto dir = globe::testing::freshTempDir("view-saved");
+  const std::string config = "XDG_CONFIG_HOME=" + (dir / "config").string() + " ";
+  const ShellRun run = runUnderXvfb(
+      "view-saved",
+      "export " + config + "\n" +
+          globeView("--size 320x180 --log --camera 138.60,35.20,15000,30,-40,0 > log.txt &\n") +
+          "VIEW=$!\n" + kFindWindow +
+          "for i in $(seq 100); do grep -q 'view complete' log.txt && break; sleep 0.1; done\n"
+          "xdotool key --window $WID v\n"
+          "xdotool type --window $WID --delay 30 'Fuji south'\n"
+          "xdotool key --window $WID Return\n"
+          "for i in $(seq 100); do grep -q 'saved view' log.txt && break; sleep 0.1; done\n"
+          "xdotool keydown --window $WID Escape\n"
+          "wait $VIEW; echo exit=$?\n"
+          "cat log.txt\n");
+  EXPECT_EQ(valuesOf(run.output)["exit"], "0") << run.output;
+  EXPECT_NE(run.output.find("saved view Fuji south"), std::string::npos) << run.output;
+  const auto globe = [&](const std::string& env, const std::string& arguments) {
+    return runShell(env + std::string(GLOBE_EXE) + " " + arguments);
+  };
+  const ShellRun listed = globe(config, "views --json");
+  ASSERT_EQ(listed.exitCode, 0) << listed.output;
+  const auto json = nlohmann::json::parse(listed.output.substr(listed.output.find('{')));
+  ASSERT_EQ(json["views"].size(), 1u) << listed.output;
+  EXPECT_EQ(json["views"][0]["name"], "Fuji south");
+  const auto& c = json["views"][0]["camera"];
+  EXPECT_NEAR(c[0].get<double>(), 138.60, 1e-6) << listed.output;
+  EXPECT_NEAR(c[2].get<double>(), 15000, 1) << listed.output;
+  EXPECT_NEAR(c[3].get<double>(), 30, 1e-3) << listed.output;
+  // Out as KML, into another user's views.
+  const std::string kml = (dir / "views.kml").string();
+  ASSERT_EQ(globe(config, "views --export " + kml).exitCode, 0);
+  const std::string other = "XDG_CONFIG_HOME=" + (dir / "other").string() + " ";
+  const ShellRun imported = globe(other, "views --import " + kml);
+  ASSERT_EQ(imported.exitCode, 0) << imported.output;
+  EXPECT_NE(globe(other, "views").output.find("Fuji south"), std::string::npos);
+  // --view draws what --camera with its numbers draws.
+  char camera[200];
+  std::snprintf(camera, sizeof camera, "%.9f,%.9f,%.4f,%.9f,%.9f,%.9f", c[0].get<double>(),
+                c[1].get<double>(), c[2].get<double>(), c[3].get<double>(), c[4].get<double>(),
+                c[5].get<double>());
+  const std::string pyramid = globe::testing::bundledPyramid().string();
+  ASSERT_EQ(globe(other, "snapshot " + pyramid + " --view 'fuji SOUTH' --size 320x180 -o " +
+                             (dir / "a.png").string())
+                .exitCode,
+            0);
+  ASSERT_EQ(globe("", "snapshot " + pyramid + " --camera " + camera + " --size 320x180 -o " +
+                          (dir / "b.png").string())
+                .exitCode,
+            0);
+  auto a = globe::formats::loadImageRgba(dir / "a.png");
+  auto b = globe::formats::loadImageRgba(dir / "b.png");
+  ASSERT_TRUE(a && b);
+  EXPECT_EQ(a->pixels, b->pixels);
+  const ShellRun missing = globe(other, "snapshot " + pyramid + " --view Nowhere -o x.png");
+  EXPECT_EQ(missing.exitCode, 2);
+  EXPECT_NE(missing.output.find("Fuji south"), std::string::npos) << missing.output;
+}
+
 // A server failing shows in the window, not only on stderr: with one level's packs answered
 // HTTP 500 the HUD says what the server said ("! URL: HTTP 500; drawing coarser tiles there"),
 // a line more of text than the same view from a healthy server (60 rows against 51).
