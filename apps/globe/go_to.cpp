@@ -69,7 +69,7 @@ std::vector<std::string> goToSuggestions(std::string_view text, size_t count) {
   auto gazetteer = loadPlaces();
   if (!gazetteer) return suggestions;
   for (const places::Place* p : (*gazetteer)->search(text, count)) {
-    suggestions.push_back(placeLabel(*p));
+    suggestions.push_back(places::asciiForDisplay(placeLabel(*p)));  // the HUD draws ASCII
   }
   return suggestions;
 }

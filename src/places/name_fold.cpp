@@ -264,4 +264,40 @@ std::string foldName(std::string_view utf8) {
   return out;
 }
 
+std::string asciiForDisplay(std::string_view utf8) {
+  std::string out;
+  for (size_t i = 0; i < utf8.size();) {
+    const auto c = static_cast<unsigned char>(utf8[i]);
+    if (c < 0x80) {
+      out.push_back(c >= 0x20 && c < 0x7F ? static_cast<char>(c) : '?');
+      ++i;
+      continue;
+    }
+    const size_t length = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 1;
+    uint32_t code = length == 2 ? c & 0x1FU : length == 3 ? c & 0x0FU : c & 0x07U;
+    bool good = length > 1 && i + length <= utf8.size();
+    for (size_t k = 1; good && k < length; ++k) {
+      const auto next = static_cast<unsigned char>(utf8[i + k]);
+      good = (next & 0xC0U) == 0x80U;
+      code = (code << 6) | (next & 0x3FU);
+    }
+    i += good ? length : 1;
+    if (good && code >= 0x300 && code <= 0x36F) continue;  // a combining accent: dropped
+    std::string piece = good && code >= 0xC0 && code <= 0x17F ? kLatin[code - 0xC0] : "";
+    if (piece.empty()) {
+      out.push_back('?');
+      continue;
+    }
+    // Capitals: U+00C0..U+00DE (but the multiplication sign), and in Latin Extended-A the even
+    // code points, the odd ones in U+0139..U+0148 and U+0179..U+017E (Ĺ..Ň, Ź..Ž), and Ÿ.
+    const bool oddCapitals = (code >= 0x139 && code <= 0x148) || (code >= 0x179 && code <= 0x17E);
+    const bool capital =
+        (code >= 0xC0 && code <= 0xDE) || code == 0x178 ||
+        (code >= 0x100 && code != 0x138 && code != 0x17F && (code % 2 == 1) == oddCapitals);
+    if (capital) piece[0] = static_cast<char>(piece[0] - 'a' + 'A');
+    out += piece;
+  }
+  return out;
+}
+
 }  // namespace globe::places

@@ -9,5 +9,9 @@
 namespace globe::places {
 
 std::string foldName(std::string_view utf8);
+// A name for a display that draws ASCII only (the window's HUD): ASCII kept as it is, Latin
+// letters with accents as their base letters ("Zürich" as "Zurich", "Ålesund" as "Alesund"),
+// anything else '?'.
+std::string asciiForDisplay(std::string_view utf8);
 
 }  // namespace globe::places

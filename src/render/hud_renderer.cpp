@@ -35,8 +35,24 @@ void appendQuad(std::vector<HudVertex>& out, glm::vec2 a, glm::vec2 b, glm::vec2
   for (const glm::vec2& p : {a, b, c, a, c, d}) out.push_back({p, rgba});
 }
 
+// What stb's font can draw: printable ASCII, and newlines it lays out. Anything else (a UTF-8
+// place name, a control byte) is one '?' per character; stb would read before its glyph table.
+std::string drawableText(const std::string& line) {
+  std::string text;
+  for (size_t i = 0; i < line.size(); ++i) {
+    const auto c = static_cast<unsigned char>(line[i]);
+    if (c >= 0x80) {
+      if ((c & 0xC0U) == 0x80U) continue;  // a continuation byte of the '?' already written
+      text.push_back('?');
+    } else {
+      text.push_back(c >= 0x20 && c < 0x7F ? static_cast<char>(c) : '?');
+    }
+  }
+  return text;
+}
+
 int lineWidthFontPixels(const std::string& line) {
-  std::string text = line;  // stb wants a mutable string
+  std::string text = drawableText(line);  // stb wants a mutable string
   return stb_easy_font_width(text.data());
 }
 
@@ -61,7 +77,7 @@ void appendBlock(std::vector<HudVertex>& out, std::vector<FontVertex>& quads,
     appendQuad(out, p, {p.x + size.x, p.y}, p + size, {p.x, p.y + size.y}, block.backgroundRgba);
   }
   for (size_t row = 0; row < block.lines.size(); ++row) {
-    std::string text = block.lines[row];
+    std::string text = drawableText(block.lines[row]);
     quads.resize(text.size() * 80 + 16);  // stb uses ~270 bytes (17 vertices) a character
     const int count = stb_easy_font_print(0, 0, text.data(), nullptr, quads.data(),
                                           static_cast<int>(quads.size() * sizeof(FontVertex)));

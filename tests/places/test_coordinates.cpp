@@ -82,5 +82,14 @@ TEST(NameFold, AccentsCaseAndPunctuation) {
   EXPECT_EQ(foldName("bad \xFF\xFE bytes"), "bad bytes");
 }
 
+TEST(NameFold, AsciiForADisplayThatDrawsNothingElse) {
+  EXPECT_EQ(asciiForDisplay("Zürich, CH"), "Zurich, CH");
+  EXPECT_EQ(asciiForDisplay("Ålesund"), "Alesund");
+  EXPECT_EQ(asciiForDisplay("São Paulo"), "Sao Paulo");
+  EXPECT_EQ(asciiForDisplay("Łódź"), "Lodz");
+  EXPECT_EQ(asciiForDisplay("東京"), "??");
+  EXPECT_EQ(asciiForDisplay("a\tb\xFF"), "a?b?");
+}
+
 }  // namespace
 }  // namespace globe::places

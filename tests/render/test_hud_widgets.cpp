@@ -105,3 +105,22 @@ TEST(HudWidgets, TheScaleBarSpansItsLengthAndCarriesItsLabel) {
 
 }  // namespace
 }  // namespace globe::render
+
+namespace globe::render {
+namespace {
+
+// Text the font cannot draw (a UTF-8 place name, a control byte) is laid out as one '?' a
+// character, never read from before stb's glyph table (UBSan caught that with "Zürich").
+TEST(HudText, CharactersTheFontLacksAreQuestionMarks) {
+  HudTextBlock utf8;
+  utf8.lines = {"Z\xC3\xBCrich, CH", "\xE6\x9D\xB1\xE4\xBA\xAC\t\xFF"};
+  HudTextBlock ascii;
+  ascii.lines = {"Z?rich, CH", "????"};  // two CJK characters, a tab, a stray byte
+  EXPECT_EQ(hudBlockSizePixels(utf8), hudBlockSizePixels(ascii));
+  const std::vector<HudTextBlock> blocks{utf8};
+  const std::vector<HudTextBlock> same{ascii};
+  EXPECT_EQ(buildHudTriangles(blocks).size(), buildHudTriangles(same).size());
+}
+
+}  // namespace
+}  // namespace globe::render
