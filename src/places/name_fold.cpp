@@ -1,6 +1,7 @@
 #include "places/name_fold.hpp"
 
 #include <cstdint>
+#include <optional>
 
 namespace globe::places {
 namespace {
@@ -213,6 +214,28 @@ constexpr const char* kLatin[] = {
     "s",
 };
 
+// The code point at utf8[i], i moved past it; nullopt for a malformed sequence (i moved one byte).
+std::optional<uint32_t> nextCodePoint(std::string_view utf8, size_t& i) {
+  const auto c = static_cast<unsigned char>(utf8[i]);
+  if (c < 0x80) {
+    ++i;
+    return c;
+  }
+  const size_t length = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 1;
+  uint32_t code = length == 2 ? c & 0x1FU : length == 3 ? c & 0x0FU : c & 0x07U;
+  bool good = length > 1 && i + length <= utf8.size();
+  for (size_t k = 1; good && k < length; ++k) {
+    const auto next = static_cast<unsigned char>(utf8[i + k]);
+    good = (next & 0xC0U) == 0x80U;
+    code = (code << 6) | (next & 0x3FU);
+  }
+  i += good ? length : 1;
+  return good ? std::optional<uint32_t>(code) : std::nullopt;
+}
+
+bool isLatin(uint32_t code) { return code >= 0xC0 && code <= 0x17F; }
+bool isCombiningAccent(uint32_t code) { return code >= 0x300 && code <= 0x36F; }
+
 }  // namespace
 
 std::string foldName(std::string_view utf8) {
@@ -228,36 +251,16 @@ std::string foldName(std::string_view utf8) {
     out.append(piece);
   };
   for (size_t i = 0; i < utf8.size();) {
-    const auto c = static_cast<unsigned char>(utf8[i]);
-    if (c < 0x80) {
-      ++i;
-      if ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9')) {
-        emit(std::string_view(reinterpret_cast<const char*>(&c), 1));
-      } else if (c >= 'A' && c <= 'Z') {
-        const char lower = static_cast<char>(c - 'A' + 'a');
-        emit(std::string_view(&lower, 1));
-      } else {
-        emit("");
-      }
-      continue;
-    }
-    // A multi-byte sequence: its code point when well formed, else skipped as a separator.
-    const size_t length = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 1;
-    uint32_t code = length == 2 ? c & 0x1FU : length == 3 ? c & 0x0FU : c & 0x07U;
-    bool good = length > 1 && i + length <= utf8.size();
-    for (size_t k = 1; good && k < length; ++k) {
-      const auto next = static_cast<unsigned char>(utf8[i + k]);
-      good = (next & 0xC0U) == 0x80U;
-      code = (code << 6) | (next & 0x3FU);
-    }
-    i += good ? length : 1;
-    if (!good) {
-      emit("");
-    } else if (code >= 0xC0 && code <= 0x17F) {
-      emit(kLatin[code - 0xC0]);
-    } else if (code >= 0x300 && code <= 0x36F) {
-      // A combining accent (decomposed text): dropped.
-    } else {
+    const std::optional<uint32_t> code = nextCodePoint(utf8, i);
+    if (code && ((*code >= 'a' && *code <= 'z') || (*code >= '0' && *code <= '9'))) {
+      const char same = static_cast<char>(*code);
+      emit(std::string_view(&same, 1));
+    } else if (code && *code >= 'A' && *code <= 'Z') {
+      const char lower = static_cast<char>(*code - 'A' + 'a');
+      emit(std::string_view(&lower, 1));
+    } else if (code && isLatin(*code)) {
+      emit(kLatin[*code - 0xC0]);
+    } else if (!code || !isCombiningAccent(*code)) {  // a combining accent is dropped
       emit("");
     }
   }
@@ -267,33 +270,23 @@ std::string foldName(std::string_view utf8) {
 std::string asciiForDisplay(std::string_view utf8) {
   std::string out;
   for (size_t i = 0; i < utf8.size();) {
-    const auto c = static_cast<unsigned char>(utf8[i]);
-    if (c < 0x80) {
-      out.push_back(c >= 0x20 && c < 0x7F ? static_cast<char>(c) : '?');
-      ++i;
+    const std::optional<uint32_t> code = nextCodePoint(utf8, i);
+    if (code && *code < 0x80) {
+      out.push_back(*code >= 0x20 && *code < 0x7F ? static_cast<char>(*code) : '?');
       continue;
     }
-    const size_t length = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 1;
-    uint32_t code = length == 2 ? c & 0x1FU : length == 3 ? c & 0x0FU : c & 0x07U;
-    bool good = length > 1 && i + length <= utf8.size();
-    for (size_t k = 1; good && k < length; ++k) {
-      const auto next = static_cast<unsigned char>(utf8[i + k]);
-      good = (next & 0xC0U) == 0x80U;
-      code = (code << 6) | (next & 0x3FU);
-    }
-    i += good ? length : 1;
-    if (good && code >= 0x300 && code <= 0x36F) continue;  // a combining accent: dropped
-    std::string piece = good && code >= 0xC0 && code <= 0x17F ? kLatin[code - 0xC0] : "";
+    if (code && isCombiningAccent(*code)) continue;  // dropped
+    std::string piece = code && isLatin(*code) ? kLatin[*code - 0xC0] : "";
     if (piece.empty()) {
       out.push_back('?');
       continue;
     }
     // Capitals: U+00C0..U+00DE (but the multiplication sign), and in Latin Extended-A the even
     // code points, the odd ones in U+0139..U+0148 and U+0179..U+017E (Ĺ..Ň, Ź..Ž), and Ÿ.
-    const bool oddCapitals = (code >= 0x139 && code <= 0x148) || (code >= 0x179 && code <= 0x17E);
-    const bool capital =
-        (code >= 0xC0 && code <= 0xDE) || code == 0x178 ||
-        (code >= 0x100 && code != 0x138 && code != 0x17F && (code % 2 == 1) == oddCapitals);
+    const uint32_t c = *code;
+    const bool oddCapitals = (c >= 0x139 && c <= 0x148) || (c >= 0x179 && c <= 0x17E);
+    const bool capital = (c >= 0xC0 && c <= 0xDE) || c == 0x178 ||
+                         (c >= 0x100 && c != 0x138 && c != 0x17F && (c % 2 == 1) == oddCapitals);
     if (capital) piece[0] = static_cast<char>(piece[0] - 'a' + 'A');
     out += piece;
   }
