@@ -1,5 +1,6 @@
 #include "apps/globe/common_options.hpp"
 #include "apps/globe/stderr_warnings.hpp"
+#include "overlays/overlay_file.hpp"
 #include "services/imagery_services.hpp"
 #include "services/terrain_services.hpp"
 #include "services/url_template.hpp"
@@ -87,6 +88,12 @@ void addLayerOptions(CLI::App& command, CommonArguments& arguments) {
                      "bottom layer first. A water mask made "
                      "by `globe-tiler water-mask` (at most one) decides land and water where the "
                      "terrain is coarser; its opacity scales that");
+  command
+      .add_option("--overlay", arguments.overlayFiles,
+                  "KML, KMZ, GeoJSON or GPX file to show over the terrain: lines and "
+                  "polygons draped on the ground, placemarks with their icons and labels, "
+                  "ground overlays; repeat for more")
+      ->type_name("FILE");
   // A bare --lighting (before layers could be lit by resolution: the only way to light them)
   // still means on.
   command
@@ -155,6 +162,15 @@ bool applySceneArguments(const char* command, const CommonArguments& arguments,
       return false;
     }
     scene.layers.push_back(*layer);
+  }
+  for (const std::string& file : arguments.overlayFiles) {
+    auto document = overlays::readOverlayFile(file);
+    if (!document) {
+      std::fprintf(stderr, "globe %s: --overlay %s\n", command, document.error().c_str());
+      return false;
+    }
+    scene.overlays.push_back(
+        std::make_shared<const overlays::OverlayDocument>(std::move(*document)));
   }
   // A bare --lighting parses as "".
   const auto lighting = arguments.lighting.empty()

@@ -26,7 +26,8 @@ struct CommonArguments {
   std::string globeName = "wgs84";
   bool seaFloor = false;
   std::vector<std::string> layerTexts;
-  std::string lighting = "auto";  // --lighting auto | on | off; bare: on
+  std::vector<std::string> overlayFiles;  // --overlay
+  std::string lighting = "auto";          // --lighting auto | on | off; bare: on
   bool nominalLod = false;
   bool noSky = false;
   std::string cacheDirectory;
@@ -49,7 +50,7 @@ void addImageryOption(CLI::App& command, std::string& image);
 void addGlobeOption(CLI::App& command, CommonArguments& arguments);
 void addNetworkOptions(CLI::App& command, CommonArguments& arguments);
 void addSeaFloorOption(CLI::App& command, CommonArguments& arguments);
-// --layer, --lighting, --no-sky and --nominal-lod.
+// --layer, --overlay, --lighting, --no-sky and --nominal-lod.
 void addLayerOptions(CLI::App& command, CommonArguments& arguments);
 
 // What the chosen subcommand runs with, made from the shared options once they are parsed.

@@ -72,7 +72,9 @@ std::vector<std::string> hudStatusLines(const HudState& s, bool withFrameTime) {
   if (s.prompt) {
     lines.push_back(s.promptSavesView
                         ? "save view as: " + *s.prompt + "_   (Enter: save, Esc: cancel)"
-                        : "go to: " + *s.prompt + "_   (Enter: go, Esc: cancel)");
+                    : s.promptOpensFile ? "open KML/KMZ/GeoJSON/GPX: " + *s.prompt +
+                                              "_   (Enter: open, Esc: cancel)"
+                                        : "go to: " + *s.prompt + "_   (Enter: go, Esc: cancel)");
     for (const std::string& place : s.suggestions) lines.push_back("       " + place);
   }
   if (!s.message.empty()) lines.push_back(s.message);
@@ -120,7 +122,7 @@ std::vector<std::string> hudHelpLines() {
       "P            start/stop recording the path (globe-path-*.json)",
       "K / F12      screenshot (globe-shot-*.png); F11 full screen",
       "R            back to the start camera",
-      "G / V        go to a place, position or saved view / save this view",
+      "G / V / O    go to a place or saved view / save this view / open a file",
       "N            north up (or click the compass rose, top right)",
       "L            lighting on imagery: auto -> on -> off",
       "1 - 4        show / hide layer 1-4 (and select it for [ ])",

@@ -34,6 +34,7 @@ struct HudState {
   double metersPerPixel = std::numeric_limits<double>::quiet_NaN();
   std::optional<std::string> prompt;  // the go-to text (G), or a view's name (V), being typed
   bool promptSavesView = false;
+  bool promptOpensFile = false;
   std::vector<std::string> suggestions;  // the gazetteer's best places for it
   std::string message;                   // what the last go-to said (an error)
   std::string warning;                   // the latest warning (a server failing), while recent

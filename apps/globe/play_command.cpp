@@ -10,6 +10,7 @@
 #include <system_error>
 
 #include "apps/globe/elapsed.hpp"
+#include "apps/globe/overlay_drawing.hpp"
 #include "apps/globe/path_conversion.hpp"
 #include "apps/globe/playback_step.hpp"
 #include "apps/globe/renderer_gpu.hpp"
@@ -147,6 +148,8 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
   auto renderer = render::TerrainRenderer::create(rendererOptions);
   if (!renderer) return Error{renderer.error()};
   RendererGpu gpu(**renderer, options.scene);
+  auto labels = OverlayDrawing::create(scene);
+  if (!labels) return Error{labels.error()};
   const int width = surface->widthPixels, height = surface->heightPixels;
   PlaybackStep step(scene, gpu, path, width, height, std::chrono::seconds(options.timeoutSeconds));
   // The first collision test runs against a complete view at the scripted start.
@@ -165,6 +168,7 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
 
     const auto drawStart = Clock::now();
     const render::FrameStats stats = gpu.draw(scene);
+    if (*labels) (*labels)->draw(scene);
     record.tilesDrawn = stats.tilesDrawn;
     record.imageryTextureBytes = stats.imageryBytesResident;
     std::vector<uint8_t> pixels;

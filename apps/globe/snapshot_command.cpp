@@ -4,6 +4,7 @@
 
 #include "apps/globe/attribution_stamp.hpp"
 #include "apps/globe/imagery.hpp"
+#include "apps/globe/overlay_drawing.hpp"
 #include "apps/globe/renderer_gpu.hpp"
 #include "formats/image_io.hpp"
 #include "render/hud_renderer.hpp"
@@ -42,6 +43,9 @@ Result<SnapshotReport> runSnapshot(const SnapshotOptions& options) {
                                              std::chrono::seconds(options.timeoutSeconds));
   if (!frame) return Error{frame.error()};
   const render::FrameStats stats = gpu.draw(**scene);
+  auto labels = OverlayDrawing::create(**scene);
+  if (!labels) return Error{labels.error()};
+  if (*labels) (*labels)->draw(**scene);
   if (options.attribution) {
     if (auto block =
             attributionBlock((*scene)->attributions(), options.widthPixels, options.heightPixels)) {

@@ -21,6 +21,7 @@
 #include "apps/globe/go_to.hpp"
 #include "apps/globe/hud_text.hpp"
 #include "apps/globe/imagery.hpp"
+#include "apps/globe/overlay_drawing.hpp"
 #include "apps/globe/path_recorder.hpp"
 #include "apps/globe/recent_warning.hpp"
 #include "apps/globe/renderer_gpu.hpp"
@@ -31,6 +32,7 @@
 #include "collision/surface_probe.hpp"
 #include "formats/image_io.hpp"
 #include "geo/ecef.hpp"
+#include "overlays/overlay_file.hpp"
 #include "render/glfw_window_context.hpp"
 #include "render/hud_renderer.hpp"
 #include "render/hud_widgets.hpp"
@@ -53,6 +55,31 @@ std::string saveView(const std::string& name, const camera::CameraPose& pose) {
   std::fflush(stdout);
   return "saved view \"" + name + "\" (" + std::to_string(views->size()) + " in " + file.string() +
          ")";
+}
+
+// O then a path, or files dropped on the window: each read and shown with the overlays already
+// open; what to say back (the files opened, or why one could not be).
+std::string openOverlays(scene::TerrainScene& scene, RendererGpu& gpu,
+                         const std::vector<std::string>& files,
+                         std::unique_ptr<OverlayDrawing>& labels) {
+  std::vector<std::shared_ptr<const overlays::OverlayDocument>> documents =
+      scene.options().overlays;
+  std::string opened;
+  for (const std::string& file : files) {
+    auto document = overlays::readOverlayFile(file);
+    if (!document) return "open: " + document.error();
+    opened += (opened.empty() ? "" : ", ") + std::filesystem::path(file).filename().string();
+    documents.push_back(std::make_shared<const overlays::OverlayDocument>(std::move(*document)));
+  }
+  if (opened.empty()) return "open: type a file's path";
+  if (auto set = scene.setOverlays(std::move(documents), gpu); !set) return "open: " + set.error();
+  // A new renderer takes the new files' icons.
+  auto created = OverlayDrawing::create(scene);
+  if (!created) return "open: " + created.error();
+  labels = std::move(*created);
+  std::printf("opened %s\n", opened.c_str());
+  std::fflush(stdout);
+  return "opened " + opened;
 }
 
 constexpr const char* kTitlePrefix = "globe";  // tests find the window by this name
@@ -184,6 +211,8 @@ Result<ViewReport> runView(const ViewOptions& options) {
   RendererGpu gpu(**renderer, options.scene);
   auto hud = render::HudRenderer::create({});
   if (!hud) return Error{hud.error()};
+  auto labels = OverlayDrawing::create(**scene);
+  if (!labels) return Error{labels.error()};
   if (options.imagery) {
     if (auto draped = drapeImagery(**renderer, *options.imagery); !draped)
       return Error{draped.error()};
@@ -312,6 +341,41 @@ Result<ViewReport> runView(const ViewOptions& options) {
         input.changed = true;
       }
 
+      if (!input.openFileRequests.empty()) {
+        input.promptMessage = openOverlays(**scene, gpu, input.openFileRequests, *labels);
+        input.openFileRequests.clear();
+        input.changed = true;
+      }
+      if (input.clickRequest) {
+        if (*labels) {
+          const glm::dvec2 pixel = *input.clickRequest;
+          int windowWidth = 0, windowHeight = 0;
+          glfwGetWindowSize(handle, &windowWidth, &windowHeight);
+          std::optional<geo::Cartographic> ground;
+          double metersPerPixel = 0;
+          if (const auto groundEcef = navigator.groundAt(pixel)) {
+            ground = geo::ecefToCartographic(ellipsoid, *groundEcef);
+            metersPerPixel = glm::length(*groundEcef - (*scene)->view().cameraEcefMeters) * 2 *
+                             std::tan(fovY / 2) / std::max(windowHeight, 1);
+          }
+          // Label boxes are in framebuffer pixels, clicks in window pixels.
+          const double toFramebuffer = static_cast<double>(width) / std::max(windowWidth, 1);
+          const auto picked =
+              (*labels)->pick(**scene, pixel * toFramebuffer, ground, metersPerPixel);
+          (*labels)->select(picked);
+          if (picked) {
+            std::printf("placemark: %s\n", (*scene)
+                                               ->options()
+                                               .overlays[picked->document]
+                                               ->placemarks[picked->placemark]
+                                               .name.c_str());
+            std::fflush(stdout);
+          }
+        }
+        input.clickRequest.reset();
+        input.changed = true;
+      }
+
       // This frame's move, proposed to the controller, which checks it against the tiles drawn
       // now (QOTCD) and corrects it (stop, slide, heighten, raise).
       if (const auto proposal = navigator.update(frameSeconds)) {
@@ -355,7 +419,8 @@ Result<ViewReport> runView(const ViewOptions& options) {
         }
         hudState.prompt = input.promptText;
         hudState.promptSavesView = input.promptSavesView;
-        if (!input.promptSavesView) hudState.suggestions = suggestions;
+        hudState.promptOpensFile = input.promptOpensFile;
+        if (!input.promptSavesView && !input.promptOpensFile) hudState.suggestions = suggestions;
       }
       hudState.message = input.promptMessage;
       hudState.warning = recentWarning->shown();
@@ -418,6 +483,10 @@ Result<ViewReport> runView(const ViewOptions& options) {
           drawnHelp = input.helpVisible;
         }
         gpu.draw(**scene);
+        if (*labels) {
+          (*labels)->draw(**scene);
+          (*labels)->drawPanel(**scene, width, height);
+        }
         (*hud)->draw(width, height);
         if (input.screenshotRequested) {
           input.screenshotRequested = false;
@@ -466,6 +535,10 @@ Result<ViewReport> runView(const ViewOptions& options) {
     const int width = (*window)->framebufferWidthPixels();
     const int height = (*window)->framebufferHeightPixels();
     gpu.draw(**scene);
+    if (*labels) {
+      (*labels)->draw(**scene);
+      (*labels)->drawPanel(**scene, width, height);
+    }
     const std::vector<uint8_t> pixels = render::readPixelsRgba(width, height);
     if (auto written = formats::writePngAtomically(*options.screenshot, pixels, width, height);
         !written) {

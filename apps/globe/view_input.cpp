@@ -86,8 +86,10 @@ bool commonKey(GLFWwindow* window, ViewInput& input, int key) {
       return true;
     case GLFW_KEY_G:
     case GLFW_KEY_V:
+    case GLFW_KEY_O:  // Ctrl+O too: Google Earth's File > Open
       input.promptOpen = input.promptSwallowG = true;
       input.promptSavesView = key == GLFW_KEY_V;
+      input.promptOpensFile = key == GLFW_KEY_O;
       input.promptText.clear();
       input.promptMessage.clear();
       return true;
@@ -190,12 +192,20 @@ bool flyKey(ViewInput& input, int key) {
 // deletes; the text itself comes from the character callback.
 void promptKey(ViewInput& input, int key) {
   if (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER) {
-    (input.promptSavesView ? input.saveViewRequest : input.goToRequest) = input.promptText;
+    if (input.promptOpensFile) {
+      input.openFileRequests.push_back(input.promptText);
+    } else {
+      (input.promptSavesView ? input.saveViewRequest : input.goToRequest) = input.promptText;
+    }
     input.promptOpen = false;
   } else if (key == GLFW_KEY_ESCAPE) {
     input.promptOpen = false;
     input.promptMessage.clear();
   } else if (key == GLFW_KEY_BACKSPACE && !input.promptText.empty()) {
+    // The whole last character: its UTF-8 continuation bytes, then its lead byte.
+    while (input.promptText.size() > 1 && (input.promptText.back() & 0xc0) == 0x80) {
+      input.promptText.pop_back();
+    }
     input.promptText.pop_back();
   }
   input.changed = true;
@@ -207,15 +217,36 @@ void onChar(GLFWwindow* window, unsigned int codepoint) {
   // The G that opened the prompt arrives as a character too: it is not part of the text.
   if (input.promptSwallowG) {
     input.promptSwallowG = false;
-    if (codepoint == 'g' || codepoint == 'G' || codepoint == 'v' || codepoint == 'V') return;
+    if (codepoint == 'g' || codepoint == 'G' || codepoint == 'v' || codepoint == 'V' ||
+        codepoint == 'o' || codepoint == 'O') {
+      return;
+    }
   }
-  if (codepoint >= 0x20 && codepoint < 0x7f && input.promptText.size() < 80) {
+  // A file's path may be long and hold any character; names and positions are short.
+  const size_t limit = input.promptOpensFile ? 4096 : 80;
+  if (codepoint < 0x20 || codepoint == 0x7f || codepoint > 0x10ffff ||
+      input.promptText.size() + 4 > limit) {
+    return;
+  }
+  if (codepoint < 0x80) {
     input.promptText.push_back(static_cast<char>(codepoint));
-    input.changed = true;
+  } else if (codepoint < 0x800) {
+    input.promptText.push_back(static_cast<char>(0xc0 | (codepoint >> 6)));
+    input.promptText.push_back(static_cast<char>(0x80 | (codepoint & 0x3f)));
+  } else if (codepoint < 0x10000) {
+    input.promptText.push_back(static_cast<char>(0xe0 | (codepoint >> 12)));
+    input.promptText.push_back(static_cast<char>(0x80 | ((codepoint >> 6) & 0x3f)));
+    input.promptText.push_back(static_cast<char>(0x80 | (codepoint & 0x3f)));
+  } else {
+    input.promptText.push_back(static_cast<char>(0xf0 | (codepoint >> 18)));
+    input.promptText.push_back(static_cast<char>(0x80 | ((codepoint >> 12) & 0x3f)));
+    input.promptText.push_back(static_cast<char>(0x80 | ((codepoint >> 6) & 0x3f)));
+    input.promptText.push_back(static_cast<char>(0x80 | (codepoint & 0x3f)));
   }
+  input.changed = true;
 }
 
-void onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods*/) {
+void onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int mods) {
   ViewInput& input = inputOf(window);
   if (input.promptOpen) {
     if (action != GLFW_RELEASE) promptKey(input, key);
@@ -232,6 +263,8 @@ void onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods
       imageryKey(input.imagery, key, action == GLFW_PRESS) ||
       (input.navigator->mode() == camera::NavigationMode::Orbit ? orbitKey(input, key)
                                                                 : flyKey(input, key));
+  // With Ctrl held no character follows the key: nothing to swallow.
+  if (handled && input.promptOpen && (mods & GLFW_MOD_CONTROL) != 0) input.promptSwallowG = false;
   if (handled) input.changed = true;
 }
 
@@ -265,6 +298,14 @@ void onMouseButton(GLFWwindow* window, int button, int action, int mods) {
     input.shiftDrag = down && (mods & (GLFW_MOD_SHIFT | GLFW_MOD_CONTROL)) != 0;
     if (down && !input.shiftDrag) input.navigator->grab(glm::dvec2(input.lastX, input.lastY));
     if (!down) input.navigator->release();
+    if (down) {
+      input.pressX = input.lastX;
+      input.pressY = input.lastY;
+    } else if (std::abs(input.lastX - input.pressX) <= kDoubleClickPixels &&
+               std::abs(input.lastY - input.pressY) <= kDoubleClickPixels) {
+      input.clickRequest = glm::dvec2(input.lastX, input.lastY);  // a click, not a drag
+      input.changed = true;
+    }
     if (down) {
       const double now = glfwGetTime();
       if (now - input.lastClickSeconds <= kDoubleClickSeconds &&
@@ -306,6 +347,13 @@ void onCursor(GLFWwindow* window, double x, double y) {
 }
 
 void onRepaintNeeded(GLFWwindow* window) { inputOf(window).changed = true; }
+
+// Files dropped on the window are opened as overlays.
+void onDrop(GLFWwindow* window, int count, const char** paths) {
+  ViewInput& input = inputOf(window);
+  for (int i = 0; i < count; ++i) input.openFileRequests.emplace_back(paths[i]);
+  input.changed = true;
+}
 void onFramebufferSize(GLFWwindow* window, int, int) { inputOf(window).changed = true; }
 
 }  // namespace
@@ -318,6 +366,7 @@ void installViewCallbacks(GLFWwindow* window, ViewInput& input) {
   glfwSetMouseButtonCallback(window, onMouseButton);
   glfwSetCursorPosCallback(window, onCursor);
   glfwSetWindowRefreshCallback(window, onRepaintNeeded);
+  glfwSetDropCallback(window, onDrop);
   glfwSetFramebufferSizeCallback(window, onFramebufferSize);
 }
 

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/vec2.hpp>
 
@@ -41,9 +42,14 @@ struct ViewInput {
   bool promptOpen = false;
   bool promptSwallowG = false;   // the opening key's own character (G or V) is not text
   bool promptSavesView = false;  // V: the prompt names the current view to save
+  bool promptOpensFile = false;  // O: the prompt takes an overlay file's path
   std::string promptText;
   std::optional<std::string> goToRequest;
   std::optional<std::string> saveViewRequest;  // V then a name then Enter
+  // Overlay files to open: O then a path then Enter, or files dropped on the window.
+  std::vector<std::string> openFileRequests;
+  // A left click that did not drag (window pixels): the loop picks the placemark there.
+  std::optional<glm::dvec2> clickRequest;
   std::string promptMessage;
   // The compass (top right, window pixels): a click there, or N, turns the view north up.
   glm::dvec2 compassTopLeft{-1.0}, compassBottomRight{-1.0};
@@ -63,6 +69,7 @@ struct ViewInput {
   double lastX = 0, lastY = 0;
   bool cursorKnown = false;
   double lastClickSeconds = -1, lastClickX = 0, lastClickY = 0;
+  double pressX = 0, pressY = 0;  // where the left button went down
 };
 
 // Two left clicks this close in time and space are a double-click.

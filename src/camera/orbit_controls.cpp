@@ -89,82 +89,52 @@ void OrbitControls::zoomToward(double notches, const glm::dvec3& targetEcefMeter
   const double wanted = distance * std::pow(kZoomFactorPerNotch, notches);
   const double kept =
       std::clamp(wanted, limits_.minimumClearanceMeters, limits_.maximumHeightMeters);
-  const glm::dvec3 position = targetEcefMeters - toTarget * (kept / distance);
-  // Where the target is seen (camera coordinates): kept there with the horizon level (roll 0),
-  // so the ground under the cursor stays under it; heading and pitch are solved for (Newton).
-  const glm::dvec3 seen(glm::dot(toTarget, frame.right) / distance,
-                        glm::dot(toTarget, frame.up) / distance, 0.0);
-  if (!lookFrom(position, frame.forward, frame.up)) return;
-  const glm::dvec3 direction = toTarget / distance;
-  const auto residual = [&](double heading, double pitch) {
-    CameraPose trial = pose_;
-    trial.headingRadians = heading;
-    trial.pitchRadians = pitch;
-    const CameraFrame f = cameraFrame(ellipsoid_, trial);
-    return glm::dvec2(glm::dot(direction, f.right) - seen.x, glm::dot(direction, f.up) - seen.y);
-  };
-  // Orbit's pitch range: a solution past straight down (zooming out of a nadir view near an
-  // edge) is not reachable without a roll; then the nearest pose within the range is kept.
-  const auto inRange = [&](double pitch) {
-    return std::clamp(pitch, limits_.minimumPitchRadians, limits_.maximumPitchRadians);
-  };
-  const double startHeading = pose_.headingRadians, startPitch = inRange(pose_.pitchRadians);
-  double heading = startHeading, pitch = startPitch;
-  for (int iteration = 0; iteration < 6; ++iteration) {
-    const glm::dvec2 r = residual(heading, pitch);
-    if (std::abs(r.x) + std::abs(r.y) < 1e-12) break;
-    constexpr double kStep = 1e-7;
-    const glm::dvec2 dh = (residual(heading + kStep, pitch) - r) / kStep;
-    const glm::dvec2 dp = (residual(heading, pitch + kStep) - r) / kStep;
-    const double det = dh.x * dp.y - dp.x * dh.y;
-    if (!(std::abs(det) > 1e-12)) break;
-    heading -= (r.x * dp.y - dp.x * r.y) / det;
-    pitch = inRange(pitch - (dh.x * r.y - r.x * dh.y) / det);
-  }
-  const auto error = [&](double h, double p) {
-    const glm::dvec2 r = residual(h, p);
-    return std::abs(r.x) + std::abs(r.y);
-  };
-  if (std::isfinite(heading) && std::isfinite(pitch) &&
-      error(heading, pitch) < error(startHeading, startPitch)) {
-    pose_.headingRadians = heading;
-    pose_.pitchRadians = pitch;
-  }
-  // At the end of the pitch range (zooming out of a straight-down view off the centre) the look
-  // cannot turn far enough: the camera moves sideways instead, at the same height, until the
-  // target is seen where it was.
-  if (error(pose_.headingRadians, pose_.pitchRadians) > 1e-10)
-    seeFromNearby(targetEcefMeters, glm::dvec2(seen));
+  // Where the target is seen (camera right and up components of its direction): kept there.
+  const glm::dvec2 seen(glm::dot(toTarget, frame.right) / distance,
+                        glm::dot(toTarget, frame.up) / distance);
+  seeFromDistance(targetEcefMeters, seen, kept, toTarget / distance);
   clampPose();
 }
 
-void OrbitControls::seeFromNearby(const glm::dvec3& targetEcefMeters, glm::dvec2 seen) {
-  const auto residual = [&](double lon, double lat) {
-    CameraPose trial = pose_;
-    trial.position.longitudeRadians = lon;
-    trial.position.latitudeRadians = lat;
-    const CameraFrame f = cameraFrame(ellipsoid_, trial);
-    const glm::dvec3 direction = glm::normalize(targetEcefMeters - f.positionEcefMeters);
-    return glm::dvec2(glm::dot(direction, f.right) - seen.x, glm::dot(direction, f.up) - seen.y);
+void OrbitControls::seeFromDistance(const glm::dvec3& targetEcefMeters, glm::dvec2 seen,
+                                    double distanceMeters, const glm::dvec3& direction) {
+  // The camera at `distanceMeters` from the target in the direction u(a, b) = direction tilted
+  // by a and b toward two perpendiculars; its heading and pitch (in its own east-north-up frame)
+  // as they are, so a and b are solved for (Newton) until the target is seen at `seen`.
+  const glm::dvec3 side = std::abs(direction.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+  const glm::dvec3 e1 = glm::normalize(glm::cross(direction, side));
+  const glm::dvec3 e2 = glm::cross(direction, e1);
+  const auto placed = [&](double a, double b) {
+    const glm::dvec3 u = glm::normalize(direction + a * e1 + b * e2);
+    return geo::ecefToCartographic(ellipsoid_, targetEcefMeters - distanceMeters * u);
   };
-  double lon = pose_.position.longitudeRadians, lat = pose_.position.latitudeRadians;
-  const glm::dvec2 start = residual(lon, lat);
-  for (int iteration = 0; iteration < 8; ++iteration) {
-    const glm::dvec2 r = residual(lon, lat);
-    if (std::abs(r.x) + std::abs(r.y) < 1e-13) break;
-    constexpr double kStep = 1e-9;  // radians: ~6 mm on the ground
-    const glm::dvec2 dLon = (residual(lon + kStep, lat) - r) / kStep;
-    const glm::dvec2 dLat = (residual(lon, lat + kStep) - r) / kStep;
-    const double det = dLon.x * dLat.y - dLat.x * dLon.y;
+  const auto residual = [&](double a, double b) {
+    CameraPose trial = pose_;
+    const auto position = placed(a, b);
+    if (!position) return glm::dvec2(std::nan(""));
+    trial.position = *position;
+    const CameraFrame f = cameraFrame(ellipsoid_, trial);
+    const glm::dvec3 toTarget = glm::normalize(targetEcefMeters - f.positionEcefMeters);
+    return glm::dvec2(glm::dot(toTarget, f.right) - seen.x, glm::dot(toTarget, f.up) - seen.y);
+  };
+  const auto size = [](glm::dvec2 r) { return std::abs(r.x) + std::abs(r.y); };
+  double a = 0, b = 0;
+  for (int iteration = 0; iteration < 10; ++iteration) {
+    const glm::dvec2 r = residual(a, b);
+    if (!(size(r) > 1e-13)) break;
+    constexpr double kStep = 1e-8;
+    const glm::dvec2 dA = (residual(a + kStep, b) - r) / kStep;
+    const glm::dvec2 dB = (residual(a, b + kStep) - r) / kStep;
+    const double det = dA.x * dB.y - dB.x * dA.y;
     if (!(std::abs(det) > 1e-12)) break;
-    lon -= (r.x * dLat.y - dLat.x * r.y) / det;
-    lat -= (dLon.x * r.y - r.x * dLon.y) / det;
+    a -= (r.x * dB.y - dB.x * r.y) / det;
+    b -= (dA.x * r.y - r.x * dA.y) / det;
   }
-  const glm::dvec2 end = residual(lon, lat);
-  if (std::isfinite(lon) && std::isfinite(lat) &&
-      std::abs(end.x) + std::abs(end.y) < std::abs(start.x) + std::abs(start.y)) {
-    pose_.position.longitudeRadians = lon;
-    pose_.position.latitudeRadians = lat;
+  // Not solved (no such place, or it does not converge): along the line, the look kept.
+  if (!(size(residual(a, b)) < size(residual(0, 0)))) a = b = 0;
+  if (const auto position = placed(a, b)) {
+    pose_.position = *position;
+    pose_.rollRadians = 0;
   }
 }
 
@@ -175,22 +145,45 @@ bool OrbitControls::dragGrabbed(const glm::dvec3& grabbedEcefMeters, const glm::
   const CameraFrame frame = cameraFrame(ellipsoid_, pose_);
   // Where the ray meets the sphere through the grabbed point (the near side).
   const glm::dvec3& origin = frame.positionEcefMeters;
-  const double b = glm::dot(origin, rayEcef);
-  const double c = glm::dot(origin, origin) - radius * radius;
-  const double discriminant = b * b - c;
+  const double half = glm::dot(origin, rayEcef);
+  const double excess = glm::dot(origin, origin) - radius * radius;
+  const double discriminant = half * half - excess;
   if (!(discriminant >= 0)) return false;
-  const double along = -b - std::sqrt(discriminant);
+  const double along = -half - std::sqrt(discriminant);
   if (!(along > 0)) return false;
   const glm::dvec3 hit = glm::normalize(origin + along * rayEcef);
   const glm::dvec3 grabbed = grabbedEcefMeters / radius;
-  const glm::dvec3 axis = glm::cross(hit, grabbed);
-  const double sine = glm::length(axis), cosine = glm::dot(hit, grabbed);
-  if (!(sine > 1e-15)) return true;  // already there
-  // Rodrigues: the rotation by atan2(sine, cosine) about the unit axis.
-  const glm::dvec3 k = axis / sine;
-  const auto rotate = [&](const glm::dvec3& v) {
-    return v * cosine + glm::cross(k, v) * sine + k * glm::dot(k, v) * (1 - cosine);
+  // CesiumJS's rotate3D about a constrained axis: the globe turns about the polar axis and about
+  // the camera's own east axis (through the centre). Both carry the camera's east-north-up frame
+  // onto the new one, so the heading stays (north up stays up); a rotation about any other axis
+  // (the shortest from hit to grabbed) would turn it. First the latitude: the turn b about the
+  // east axis that brings the hit to the grabbed point's z.
+  const double longitude = pose_.position.longitudeRadians;
+  const glm::dvec3 meridian(std::cos(longitude), std::sin(longitude), 0);
+  const glm::dvec3 east(-std::sin(longitude), std::cos(longitude), 0);
+  const double u = glm::dot(hit, meridian), w = hit.z, reach = std::hypot(u, w);
+  if (!(reach > 1e-6)) return false;  // on the east axis: no turn about it moves the hit
+  // A turn by b about east takes (u, w) to z = reach·sin(phase − b); of the two solutions the
+  // smaller turn, and never the camera past the orbit's latitude limit (then the grab lags).
+  const double phase = std::atan2(w, u);
+  const double reached = std::asin(std::clamp(grabbed.z / reach, -1.0, 1.0));
+  double b = std::remainder(phase - reached, 2 * std::numbers::pi);
+  const double other = std::remainder(phase - std::numbers::pi + reached, 2 * std::numbers::pi);
+  if (std::abs(other) < std::abs(b)) b = other;
+  const double cameraLatitude = std::atan2(origin.z, std::hypot(origin.x, origin.y));
+  b = std::clamp(b, cameraLatitude - limits_.maximumLatitudeRadians,
+                 cameraLatitude + limits_.maximumLatitudeRadians);
+  const auto turn = [](const glm::dvec3& v, const glm::dvec3& k, double angle) {
+    // Rodrigues: v turned by angle about the unit axis k.
+    const double c = std::cos(angle), s = std::sin(angle);
+    return v * c + glm::cross(k, v) * s + k * glm::dot(k, v) * (1 - c);
   };
+  // Then the longitude: the turn about the polar axis that brings it to the grabbed point's.
+  const glm::dvec3 turnedHit = turn(hit, east, b);
+  const double a = std::atan2(grabbed.y, grabbed.x) - std::atan2(turnedHit.y, turnedHit.x);
+  const glm::dvec3 pole(0, 0, 1);
+  const auto rotate = [&](const glm::dvec3& v) { return turn(turn(v, east, b), pole, a); };
+  if (!std::isfinite(a + b)) return false;
   if (lookFrom(rotate(origin), rotate(frame.forward), rotate(frame.up))) clampPose();
   return true;
 }

@@ -44,14 +44,15 @@ class OrbitControls {
   // Multiplies the clearance above the terrain by factor^notches (notches > 0 zooms in).
   void zoom(double notches);
   // Zooms toward (notches > 0) or away from a ground point, Google Earth's way: the camera moves
-  // along the line to the point by 1 - factor^notches of the distance and keeps looking the same
-  // way, so the point stays under the same pixel (the cursor). Not nearer than the minimum
-  // clearance; a non-finite target is ignored.
+  // to 1 - factor^notches of its distance from the point and keeps its heading and pitch (north
+  // up stays up), placed so the point stays under the same pixel (the cursor). Not nearer than
+  // the minimum clearance; a non-finite target is ignored.
   void zoomToward(double notches, const glm::dvec3& targetEcefMeters);
   // Drags the globe so the grabbed ground point comes under the ray `rayEcef` (the unit direction
-  // through the cursor from the camera now): the camera turns about the globe's centre by the
-  // rotation that takes where the ray meets the grabbed point's sphere to that point. False (the
-  // pose unchanged) when the ray misses that sphere (the cursor left the globe).
+  // through the cursor from the camera now): the camera turns about the polar axis and about its
+  // own east axis through the globe's centre (CesiumJS's rotate3D with the Z axis constrained),
+  // so the heading is kept and north stays where it was on screen. False (the pose unchanged)
+  // when the ray misses the grabbed point's sphere (the cursor left the globe).
   bool dragGrabbed(const glm::dvec3& grabbedEcefMeters, const glm::dvec3& rayEcef);
   // Turns the view to face north about the ground point at the centre (it stays there) or, with
   // no ground there, in place; the pitch is kept.
@@ -72,9 +73,11 @@ class OrbitControls {
 
  private:
   void clampPose();
-  // Moves the camera over the ground (height, heading and pitch kept) until the target is seen
-  // at `seen` (camera right and up components of its unit direction).
-  void seeFromNearby(const glm::dvec3& targetEcefMeters, glm::dvec2 seen);
+  // Puts the camera `distanceMeters` from the target, about along `direction` (unit, camera to
+  // target), its heading and pitch kept, where it sees the target at `seen` (camera right and up
+  // components of its unit direction); roll 0.
+  void seeFromDistance(const glm::dvec3& targetEcefMeters, glm::dvec2 seen, double distanceMeters,
+                       const glm::dvec3& direction);
   // The pose at `positionEcefMeters` looking along the unit `forward` with `up` (the unit screen
   // up, which gives the heading looking straight down) and roll 0; false (the pose unchanged)
   // when it is not finite or the position is not on the globe.

@@ -12,6 +12,9 @@ namespace globe::places {
 namespace {
 
 constexpr uint64_t kMaxPlacesFileBytes = uint64_t{1} << 30;
+constexpr std::string_view kCountry = "country";
+// A division line only names a region for "NAME, DIVISION": its position is no place to go.
+constexpr std::string_view kDivision = "division";
 
 std::vector<std::string_view> split(std::string_view line, char separator) {
   std::vector<std::string_view> fields;
@@ -120,16 +123,22 @@ std::vector<const Place*> Gazetteer::search(std::string_view query, size_t limit
   }
   const std::string wanted = foldName(name);
   if (wanted.empty()) return {};
-  std::vector<std::string> countries;  // codes WHERE names
+  // WHERE as a country (its code or a name) or a first-level division (its code, or a name
+  // from the builder's division lines: "Texas", "Western Australia").
+  std::vector<std::string> countries;
+  std::vector<std::pair<std::string, std::string>> divisions;  // country, division code
   if (!where.empty()) {
-    for (size_t i = 0; i < places_.size(); ++i) {
-      if (places_[i].kind != "country") continue;
-      const auto& keys = keys_[i];
-      const bool named = std::any_of(keys.begin(), keys.end(), [&](const std::string& k) {
+    const auto names = [&](const std::vector<std::string>& keys) {
+      return std::any_of(keys.begin(), keys.end(), [&](const std::string& k) {
         return k == where || withoutSpaces(k) == withoutSpaces(where);
       });
-      if (named || foldName(places_[i].countryCode) == where) {
-        countries.push_back(places_[i].countryCode);
+    };
+    for (size_t i = 0; i < places_.size(); ++i) {
+      const Place& p = places_[i];
+      if (p.kind == kCountry && (names(keys_[i]) || foldName(p.countryCode) == where)) {
+        countries.push_back(p.countryCode);
+      } else if (p.kind == kDivision && names(keys_[i])) {
+        divisions.emplace_back(p.countryCode, p.divisionCode);
       }
     }
   }
@@ -137,6 +146,10 @@ std::vector<const Place*> Gazetteer::search(std::string_view query, size_t limit
     if (where.empty()) return true;
     if (std::find(countries.begin(), countries.end(), p.countryCode) != countries.end())
       return true;
+    if (std::find(divisions.begin(), divisions.end(), std::pair(p.countryCode, p.divisionCode)) !=
+        divisions.end()) {
+      return true;
+    }
     return foldName(p.countryCode) == where || foldName(p.divisionCode) == where;
   };
   // Places are by importance already: the first `limit` of each tier, tiers in order.
@@ -145,7 +158,7 @@ std::vector<const Place*> Gazetteer::search(std::string_view query, size_t limit
     int best = 4;
     for (const std::string& key : keys_[i]) best = std::min(best, matchTier(key, wanted));
     if (best >= 4 || tiers[static_cast<size_t>(best)].size() >= limit) continue;
-    if (!inWhere(places_[i])) continue;
+    if (places_[i].kind == kDivision || !inWhere(places_[i])) continue;
     tiers[static_cast<size_t>(best)].push_back(&places_[i]);
   }
   std::vector<const Place*> found;

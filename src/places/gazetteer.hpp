@@ -2,8 +2,9 @@
 // GeoNames and Natural Earth) searched by name: every place whose name or alternate name matches
 // the query, folded (name_fold.hpp), best first: an exact name before one the query begins, a
 // word of it begins, or it contains; then by importance (population; a peak's elevation). A
-// query "NAME, COUNTRY" keeps the places of that country (ISO code or name: "Paris, US",
-// "Paris, TX" by its first-level division code too).
+// query "NAME, WHERE" keeps the places of that country (ISO code or name: "Paris, US", "Paris,
+// France") or first-level division (its code, "Paris, TX", or its name, "Paris, Texas", from the
+// file's division lines).
 #pragma once
 
 #include <cstddef>
@@ -22,7 +23,8 @@ struct Place {
   std::string name;
   double latitudeDegrees = 0;
   double longitudeDegrees = 0;
-  std::string kind;         // city, country, peak, park, lake, bay, depression, pass
+  // city, country, peak, park, lake, bay, depression, pass; division (names one, never found)
+  std::string kind;
   std::string countryCode;  // ISO 3166-1 alpha-2, or empty
   std::string divisionCode;
   uint64_t population = 0;

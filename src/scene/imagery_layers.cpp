@@ -37,7 +37,7 @@ struct ImageryLayers::Layer {
   bool opaqueEverywhere = false;
   bool isWaterMask() const { return store->manifest().kind == formats::LayerKind::WaterMask; }
 
-  Layer(LayerOptions layerOptions, std::unique_ptr<streaming::ImageryTiles> layerStore,
+  Layer(LayerOptions layerOptions, std::shared_ptr<streaming::ImageryTiles> layerStore,
         core::TaskRunner& taskRunner, size_t decodedBytes)
       : options(std::move(layerOptions)),
         store(std::move(layerStore)),
@@ -137,9 +137,13 @@ Result<std::unique_ptr<ImageryLayers>> ImageryLayers::open(
   std::vector<std::unique_ptr<Layer>> opened;
   size_t colourLayers = 0, masks = 0;
   for (const LayerOptions& options : layers) {
-    auto store = services::openImageryTiles(options.directory.string(), network);
-    if (!store) return Error{store.error()};
-    const bool mask = (*store)->manifest().kind == formats::LayerKind::WaterMask;
+    std::shared_ptr<streaming::ImageryTiles> store = options.tiles;
+    if (!store) {
+      auto tiles = services::openImageryTiles(options.directory.string(), network);
+      if (!tiles) return Error{tiles.error()};
+      store = std::move(*tiles);
+    }
+    const bool mask = store->manifest().kind == formats::LayerKind::WaterMask;
     (mask ? masks : colourLayers) += 1;
     if (colourLayers > terrain::kMaxDrapeLayers) {
       return makeError("at most " + std::to_string(terrain::kMaxDrapeLayers) +
@@ -151,10 +155,34 @@ Result<std::unique_ptr<ImageryLayers>> ImageryLayers::open(
                        "into one with globe-tiler water-mask)");
     }
     opened.push_back(
-        std::make_unique<Layer>(options, std::move(*store), runner, budget.decodedBytes));
+        std::make_unique<Layer>(options, std::move(store), runner, budget.decodedBytes));
   }
   return std::unique_ptr<ImageryLayers>(
       new ImageryLayers(std::move(opened), budget, std::move(warnings)));
+}
+
+Result<void> ImageryLayers::setLayer(uint32_t index, const LayerOptions& options,
+                                     core::TaskRunner& runner, TileGpu& gpu,
+                                     std::shared_ptr<transport::Network> network) {
+  if (index > layers_.size()) return makeError("no imagery layer " + std::to_string(index));
+  if (index < layers_.size()) {
+    for (const auto& [tile, frame] : layers_[index]->textureLastUsedFrame) {
+      gpu.releaseImageryTile(index, tile);
+    }
+    layers_.erase(layers_.begin() + index);  // waits for its running loads
+  } else if (layers_.size() >= terrain::kMaxDrapeLayers) {
+    return makeError("at most " + std::to_string(terrain::kMaxDrapeLayers) + " imagery layers");
+  }
+  std::shared_ptr<streaming::ImageryTiles> store = options.tiles;
+  if (!store) {
+    auto opened = services::openImageryTiles(options.directory.string(), std::move(network));
+    if (!opened) return Error{opened.error()};
+    store = std::move(*opened);
+  }
+  layers_.insert(layers_.begin() + index,
+                 std::make_unique<Layer>(options, std::move(store), runner, budget_.decodedBytes));
+  if (preloaded_) return preload(*layers_[index], index, gpu);
+  return {};
 }
 
 std::vector<std::string> ImageryLayers::attributions() const {
@@ -243,7 +271,10 @@ Result<ImageryFrame> ImageryLayers::update(std::span<const geo::TileId> tiles,
         unknown = unknown || !answer;
         return answer.value_or(false);
       };
-      while (!has(want) && want.level > 0) want = want.parent();
+      // An overlay tile that is not there is clear: nothing to drape, not an ancestor's texels.
+      if (!layer.store->emptyWhereAbsent()) {
+        while (!has(want) && want.level > 0) want = want.parent();
+      }
       if (unknown) frame.complete = false;
       if (!has(want)) continue;  // the layer does not cover this tile (or not known yet)
       const geo::TileId target = terrain::ancestorAt(want, std::min(want.level, maximumLoadLevel));

@@ -22,6 +22,7 @@
 #include "geo/tile_id.hpp"
 #include "scene/tile_gpu.hpp"
 #include "streaming/imagery_source.hpp"
+#include "streaming/imagery_tiles.hpp"
 #include "terrain/tile_drape.hpp"
 #include "terrain/tile_selection.hpp"
 #include "transport/network_settings.hpp"
@@ -29,8 +30,17 @@
 namespace globe::scene {
 
 struct LayerOptions {
-  std::filesystem::path directory;  // made by `globe-tiler imagery`
+  LayerOptions() = default;
+  // Not an aggregate: {directory, opacity} stays complete as fields are added.
+  LayerOptions(std::filesystem::path layerDirectory, float layerOpacity = 1.0f,
+               std::shared_ptr<streaming::ImageryTiles> layerTiles = nullptr)
+      : directory(std::move(layerDirectory)), opacity(layerOpacity), tiles(std::move(layerTiles)) {}
+
+  std::filesystem::path directory;  // made by `globe-tiler imagery`, or a service
   float opacity = 1.0f;             // 0..1
+  // Tiles made by the program itself (the overlays' draped lines and polygons): used instead of
+  // opening `directory`, which then only names the layer.
+  std::shared_ptr<streaming::ImageryTiles> tiles;
 };
 
 // Parses --layer's "DIR" or "DIR,OPACITY" (opacity 0..1); errors name the argument.
@@ -98,6 +108,12 @@ class ImageryLayers {
   // (the Blue Marble), so the terrain's land and sea colours never do. Such a mask is neither
   // loaded nor drawn, nor refined for. Known once the level-0 tiles are loaded (first update).
   bool waterMaskHidden() const;
+
+  // Replaces layer `index` with one made from `options` (or adds it on top when index == size()):
+  // the old layer's loads finish and its textures leave the GPU first. For the window's overlays,
+  // which change as files are opened. Errors name the layer; the old one is gone either way.
+  Result<void> setLayer(uint32_t index, const LayerOptions& options, core::TaskRunner& runner,
+                        TileGpu& gpu, std::shared_ptr<transport::Network> network = nullptr);
 
   // Loader counters summed over the layers.
   streaming::LoaderCounters counters() const;

@@ -9,6 +9,7 @@
 #include "geo/ecef.hpp"
 #include "geo/frustum.hpp"
 #include "geo/tiling_scheme.hpp"
+#include "overlays/overlay_imagery.hpp"
 #include "scene/native_resolution.hpp"
 #include "services/terrain_services.hpp"
 #include "terrain/block_grid.hpp"
@@ -157,8 +158,20 @@ Result<std::unique_ptr<TerrainScene>> TerrainScene::open(const std::filesystem::
         std::max<unsigned>(sceneOptions.loaderThreads, transport::kRemoteLoadsInFlight);
   }
   std::unique_ptr<TerrainScene> scene(new TerrainScene(std::move(*store), sceneOptions));
-  if (!options.layers.empty()) {
-    auto layers = ImageryLayers::open(options.layers, scene->runner_, options.imageryBudget,
+  std::vector<LayerOptions> layerOptions = options.layers;
+  // The overlays' lines, polygons and ground overlays: a layer above the imagery.
+  if (std::shared_ptr<overlays::OverlayImagery> draped =
+          overlays::OverlayImagery::create(options.overlays, kOverlayLayerName);
+      !draped->empty()) {
+    LayerOptions overlayLayer;
+    overlayLayer.directory = kOverlayLayerName;
+    overlayLayer.tiles = std::move(draped);
+    layerOptions.push_back(std::move(overlayLayer));
+    scene->overlayLayer_ = static_cast<uint32_t>(layerOptions.size() - 1);
+  }
+  scene->pointMarks_ = scene::pointMarks(options.overlays);
+  if (!layerOptions.empty()) {
+    auto layers = ImageryLayers::open(layerOptions, scene->runner_, options.imageryBudget,
                                       options.network, options.warnings);
     if (!layers) return Error{layers.error()};
     scene->imagery_ = std::move(*layers);
@@ -166,6 +179,30 @@ Result<std::unique_ptr<TerrainScene>> TerrainScene::open(const std::filesystem::
         scene->store_->manifest().verticesPerSide, options.maximumScreenSpaceErrorPixels);
   }
   return scene;
+}
+
+Result<void> TerrainScene::setOverlays(
+    std::vector<std::shared_ptr<const overlays::OverlayDocument>> documents, TileGpu& gpu) {
+  options_.overlays = std::move(documents);
+  pointMarks_ = scene::pointMarks(options_.overlays);
+  LayerOptions layer;
+  layer.directory = kOverlayLayerName;
+  layer.tiles = overlays::OverlayImagery::create(options_.overlays, kOverlayLayerName);
+  if (!imagery_) {
+    auto opened = ImageryLayers::open({}, runner_, options_.imageryBudget, options_.network,
+                                      options_.warnings);
+    if (!opened) return Error{opened.error()};
+    imagery_ = std::move(*opened);
+  }
+  const uint32_t index = overlayLayer_.value_or(static_cast<uint32_t>(imagery_->size()));
+  if (auto set = imagery_->setLayer(index, layer, runner_, gpu, options_.network); !set) {
+    overlayLayer_.reset();
+    return set;
+  }
+  overlayLayer_ = index;
+  nominalErrorRegions_ = imagery_->nominalErrorRegions(store_->manifest().verticesPerSide,
+                                                       options_.maximumScreenSpaceErrorPixels);
+  return {};
 }
 
 Result<void> TerrainScene::uploadIfNeeded(const geo::TileId& tile,

@@ -19,6 +19,7 @@
 #include "core/warnings.hpp"
 #include "geo/ellipsoid.hpp"
 #include "scene/imagery_layers.hpp"
+#include "scene/overlay_points.hpp"
 #include "scene/tile_gpu.hpp"
 #include "streaming/background_pack_opens.hpp"
 #include "streaming/block_cache.hpp"
@@ -46,6 +47,9 @@ struct SceneOptions {
   terrain::SeaSurface sea = terrain::SeaSurface::Water;
   std::vector<LayerOptions> layers;  // imagery draped over the terrain, bottom layer first
   ImageryBudget imageryBudget;
+  // KML/KMZ, GeoJSON and GPX files read (--overlay): their lines, polygons and ground overlays
+  // drawn as a layer over the imagery, their points placed each frame (pointMarks()).
+  std::vector<std::shared_ptr<const overlays::OverlayDocument>> overlays;
   uint32_t maximumImageryLoadLevel = geo::kMaxLevel;  // imagery deeper than this is never loaded
   // --lighting: how much hill-shading the imagery takes (render::TerrainStyle::imageryLighting);
   // Auto: full where its texels are too coarse to carry the relief, gentle where they carry it.
@@ -98,6 +102,14 @@ class TerrainScene {
   // Per tile of tiles(), the imagery drawn on it (empty without layers).
   const std::vector<terrain::TileDrapes>& drapes() const { return drapes_; }
   const SceneOptions& options() const { return options_; }
+  // The overlays' visible points (scene/overlay_points.hpp), in file order.
+  std::span<const PointMark> pointMarks() const { return pointMarks_; }
+  // Shows these overlays instead of the options' (files opened in the window): their draped
+  // layer is replaced (or added on top of the imagery), its old textures released.
+  Result<void> setOverlays(std::vector<std::shared_ptr<const overlays::OverlayDocument>> documents,
+                           TileGpu& gpu);
+  // The imagery layer index of the overlays' draped layer, if there is one.
+  std::optional<uint32_t> overlayLayer() const { return overlayLayer_; }
 
   // Selects and streams the tiles for this pose; prepares what arrived on the GPU and releases
   // what has not been drawn for a while. Draw view() with tiles() and drapes() afterwards.
@@ -154,6 +166,9 @@ class TerrainScene {
   // fixed once the layers are open.
   std::vector<terrain::NominalErrorRegion> nominalErrorRegions_;
   std::vector<terrain::TileDrapes> drapes_;  // per tile of tiles_, with imagery
+  std::vector<PointMark> pointMarks_;
+  std::optional<uint32_t> overlayLayer_;
+  static constexpr const char* kOverlayLayerName = "overlays";
   std::vector<geo::TileId> tiles_;
   std::vector<std::shared_ptr<const terrain::HeightBlock>>
       blocks_;  // keep the array's blocks alive

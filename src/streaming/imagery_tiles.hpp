@@ -26,6 +26,10 @@ class ImageryTiles {
   // Who the imagery is from, to show beside the picture; empty when it does not say.
   virtual std::string attribution() const { return {}; }
 
+  // Whether a tile the layer lacks is empty (nothing to draw there) rather than not made at that
+  // level (draw the ancestor's): the overlays' draped layer, whose untouched tiles are clear.
+  virtual bool emptyWhereAbsent() const { return false; }
+
   // Whether the layer has this tile (may read an index). Thread-safe.
   virtual Result<bool> hasTile(const geo::TileId& tile) = 0;
   // The same without any I/O, for a render thread; NotOpen: hasTile (on a worker) must read an

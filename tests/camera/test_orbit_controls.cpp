@@ -50,9 +50,8 @@ TEST(OrbitControls, ZoomKeepsTheGroundUnderTheCursor) {
     SCOPED_TRACE(start.position.heightMeters);
     EXPECT_LT(pixelsOff(controls.pose(), cursor, ground), 0.5);
     controls.zoomToward(-5, ground);  // and out again
-    // Out of a straight-down view the point would need a look slightly past straight down (the
-    // ground's vertical turns under a camera moving sideways), which orbit's pitch range does
-    // not reach: the camera moves sideways instead, and the point stays under the cursor.
+    // Heading and pitch are kept (straight down stays straight down): the camera is placed
+    // where it sees the point under the cursor still.
     EXPECT_LT(pixelsOff(controls.pose(), cursor, ground), 0.5);
     EXPECT_GE(controls.pose().pitchRadians, -std::numbers::pi / 2 - 1e-12);
   }

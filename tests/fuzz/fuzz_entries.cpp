@@ -21,6 +21,7 @@
 #include "formats/quantized_mesh.hpp"
 #include "formats/terrain_layer_json.hpp"
 #include "formats/tile_edges.hpp"
+#include "overlays/overlay_file.hpp"
 #include "rasters/gtopo30_header.hpp"
 #include "services/tin_sampling.hpp"
 #include "services/tms_tilemap.hpp"
@@ -174,6 +175,30 @@ void serviceXml(const uint8_t* data, size_t size) {
   if (auto map = services::parseTmsTileMap(text, "fuzz.xml")) (void)map->hrefs.size();
 }
 
+void overlayFile(const uint8_t* data, size_t size) {
+  // A new name each time: GDAL's /vsizip/ remembers archives by name.
+  static unsigned calls = 0;
+  for (const char* extension : {".kml", ".geojson", ".gpx", ".kmz"}) {
+    const auto path = writeTemp(data, size, ("-" + std::to_string(++calls) + extension).c_str());
+    auto document = overlays::readOverlayFile(path);
+    if (document) {
+      size_t positions = 0;
+      for (const auto& placemark : document->placemarks) {
+        for (const auto& geometry : placemark.geometries) {
+          for (const auto& ring : geometry.rings) positions += ring.size();
+        }
+      }
+      volatile size_t n = positions + document->groundOverlays.size();
+      (void)n;
+    } else {
+      volatile size_t n = document.error().size();
+      (void)n;
+    }
+    std::error_code ignored;
+    std::filesystem::remove(path, ignored);
+  }
+}
+
 Entry entryNamed(std::string_view target) {
   if (target == "gtopo30_header") return gtopo30Header;
   if (target == "pack") return pack;
@@ -187,6 +212,7 @@ Entry entryNamed(std::string_view target) {
   if (target == "elevation_image") return elevationImage;
   if (target == "pmtiles") return pmtiles;
   if (target == "service_xml") return serviceXml;
+  if (target == "overlay_file") return overlayFile;
   return nullptr;
 }
 

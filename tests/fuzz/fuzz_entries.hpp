@@ -33,6 +33,9 @@ void pmtiles(const uint8_t* data, size_t size);
 // A service's XML: as a WMTS GetCapabilities document and as a TMS tile map.
 void serviceXml(const uint8_t* data, size_t size);
 
+// An overlay file (overlays/overlay_file.hpp) saved as .kml, .geojson, .gpx and .kmz, each read.
+void overlayFile(const uint8_t* data, size_t size);
+
 // The entry for a corpus folder name (gtopo30_header, pack, ...), or nullptr.
 using Entry = void (*)(const uint8_t*, size_t);
 Entry entryNamed(std::string_view target);

@@ -1,6 +1,7 @@
 // Lines from the files people have (a real GPX track and route, the route as GeoJSON, KML),
 // geodesic lengths and areas against known values, and `globe profile` over the bundled pyramid:
-// its samples' heights are `globe query --mode exact`'s, its length the geodesics'.
+// its samples' heights are `globe query --mode exact`'s, its length the geodesics', its chart
+// (--png) filled highest where the summit is.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,9 +13,12 @@
 #include <string>
 #include <vector>
 
+#include "formats/image_io.hpp"
+#include "measure/chart_axis.hpp"
 #include "measure/elevation_profile.hpp"
 #include "measure/geodesic_path.hpp"
 #include "measure/path_files.hpp"
+#include "measure/profile_chart.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 
 namespace globe::measure {
@@ -190,6 +194,113 @@ TEST(GlobeProfile, AGpxTrackKeepsItsOwnElevationsBeside) {
   EXPECT_EQ(bad.code, 1);
   EXPECT_NE(bad.output.find("/nonexistent.gpx"), std::string::npos) << bad.output;
   EXPECT_FALSE(fs::exists(dir / "x.csv"));
+}
+
+TEST(ChartAxis, StepsOfOneTwoOrFiveTimesAPowerOfTen) {
+  EXPECT_DOUBLE_EQ(niceStep(3776, 5), 1000);
+  EXPECT_DOUBLE_EQ(niceStep(3776, 8), 500);
+  EXPECT_DOUBLE_EQ(niceStep(9.87, 10), 1);
+  EXPECT_DOUBLE_EQ(niceStep(0.3, 3), 0.1);
+  EXPECT_DOUBLE_EQ(niceStep(130, 10), 20);
+  const AxisRange range = niceAxis(1234, 3776, 6, 10);
+  EXPECT_DOUBLE_EQ(range.step, 500);
+  EXPECT_DOUBLE_EQ(range.low, 1000);
+  EXPECT_DOUBLE_EQ(range.high, 4000);
+  // A flat profile still gets a span to draw in.
+  const AxisRange flat = niceAxis(0, 0, 5, 10);
+  EXPECT_LT(flat.low, 0);
+  EXPECT_GT(flat.high, 0);
+}
+
+// A pixel of the chart's colours (the terrain's fill, the file's line), not the white
+// background, the grey grid or the black text.
+bool coloured(const formats::ImageRgba& image, int x, int y) {
+  const uint8_t* p = &image.pixels[(static_cast<size_t>(y) * image.widthPixels + x) * 4];
+  return std::max({p[0], p[1], p[2]}) - std::min({p[0], p[1], p[2]}) > 25;
+}
+
+// The first coloured row from the plot's top down in column x (the plot's bottom without one).
+int topOfFill(const formats::ImageRgba& image, const ChartPlotArea& area, int x) {
+  const int bottom = static_cast<int>(area.top + area.height) - 1;
+  for (int y = static_cast<int>(area.top) + 1; y < bottom; ++y) {
+    if (coloured(image, x, y)) return y;
+  }
+  return bottom;
+}
+
+TEST(GlobeProfile, APngChartFilledHighestAtTheSummit) {
+  const fs::path dir = globe::testing::freshTempDir("measure-chart");
+  std::ofstream(dir / "fuji.geojson")
+      << R"({"type":"Feature","geometry":{"type":"LineString","coordinates":)"
+      << R"([[138.68,35.355],[138.7274,35.3606],[138.78,35.37]]}})";
+  const std::string command = std::string(GLOBE_EXE) + " profile " +
+                              globe::testing::bundledPyramid().string() + " " +
+                              (dir / "fuji.geojson").string();
+  const Exit profile = run(command + " -o " + (dir / "fuji.csv").string() + " --png " +
+                           (dir / "fuji.png").string() + " --png-size 900x360");
+  ASSERT_EQ(profile.code, 0) << profile.output;
+  auto image = formats::loadImageRgba(dir / "fuji.png");
+  ASSERT_TRUE(image) << image.error();
+  EXPECT_EQ(image->widthPixels, 900);
+  EXPECT_EQ(image->heightPixels, 360);
+  std::ifstream in(dir / "fuji.csv");
+  const auto rows = csvRows(std::string{std::istreambuf_iterator<char>(in), {}});
+  ASSERT_GT(rows.size(), 100u);
+  const auto summit = std::max_element(rows.begin(), rows.end(),
+                                       [](const auto& a, const auto& b) { return a[3] < b[3]; });
+  const ChartPlotArea area = profileChartPlotArea(900, 360);
+  const int summitX = static_cast<int>(area.left + area.width * (*summit)[0] / rows.back()[0]);
+  const int startX = static_cast<int>(area.left) + 3;
+  const int summitTop = topOfFill(*image, area, summitX);
+  const int startTop = topOfFill(*image, area, startX);
+  // The summit (~3,776 m) stands well above the start (~1,400 m) on a 0..4,000-ish m axis.
+  EXPECT_LT(summitTop + area.height / 4, startTop) << summitTop << " " << startTop;
+  // Filled down to the axis under both, white outside the plot, no second line without <ele>.
+  EXPECT_TRUE(coloured(*image, summitX, static_cast<int>(area.top + area.height) - 3));
+  EXPECT_TRUE(coloured(*image, startX, static_cast<int>(area.top + area.height) - 3));
+  EXPECT_EQ(image->pixels[0], 255);
+  int orange = 0;
+  for (size_t i = 0; i < image->pixels.size(); i += 4) {
+    const auto* p = &image->pixels[i];
+    orange += p[0] > p[1] + 60 && p[0] > p[2] + 100;
+  }
+  EXPECT_EQ(orange, 0);
+
+  // Bad sizes are refused before any work, naming the option; nothing is written.
+  for (const char* size : {"100x50", "wide", "800x", "800x400x2"}) {
+    const Exit bad = run(command + " --png " + (dir / "bad.png").string() + " --png-size " + size);
+    EXPECT_EQ(bad.code, 1) << size;
+    EXPECT_NE(bad.output.find("--png-size"), std::string::npos) << bad.output;
+    EXPECT_FALSE(fs::exists(dir / "bad.png")) << size;
+  }
+  EXPECT_NE(run(command + " --png x.png --png-size 100x50").output.find("at least 300x150"),
+            std::string::npos);
+  const Exit nothing = run(command);
+  EXPECT_EQ(nothing.code, 1);
+  EXPECT_NE(nothing.output.find("nothing to write"), std::string::npos) << nothing.output;
+  // An unwritable place is named.
+  const Exit unwritable = run(command + " --png /nonexistent-dir/p.png");
+  EXPECT_EQ(unwritable.code, 1);
+  EXPECT_NE(unwritable.output.find("/nonexistent-dir/p.png"), std::string::npos)
+      << unwritable.output;
+}
+
+TEST(GlobeProfile, AGpxTracksChartDrawsItsOwnElevationsToo) {
+  const fs::path dir = globe::testing::freshTempDir("measure-gpx-chart");
+  const Exit profile =
+      run(std::string(GLOBE_EXE) + " profile " + globe::testing::bundledPyramid().string() + " " +
+          (kPaths / "Mojstrovka.gpx").string() + " --png " + (dir / "m.png").string());
+  ASSERT_EQ(profile.code, 0) << profile.output;
+  auto image = formats::loadImageRgba(dir / "m.png");
+  ASSERT_TRUE(image) << image.error();
+  EXPECT_EQ(image->widthPixels, 1000);  // the default size
+  EXPECT_EQ(image->heightPixels, 400);
+  int orange = 0;
+  for (size_t i = 0; i < image->pixels.size(); i += 4) {
+    const auto* p = &image->pixels[i];
+    orange += p[0] > p[1] + 60 && p[0] > p[2] + 100;
+  }
+  EXPECT_GT(orange, 500);  // the <ele> line along the chart, and its legend
 }
 
 }  // namespace

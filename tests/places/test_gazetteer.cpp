@@ -84,6 +84,48 @@ TEST(Gazetteer, ACountryOrDivisionAfterACommaChoosesAmongNamesakes) {
   EXPECT_TRUE(bundled().search("Paris, Atlantis", 3).empty());
 }
 
+// Divisions by name (tools/places/divisions.tsv, carried into the file by the builder): the
+// namesake in that state, province or nation, accents and case folded; the bare name is still
+// the best known one.
+TEST(Gazetteer, ADivisionByNameChoosesAmongNamesakes) {
+  struct Case {
+    const char* query;
+    const char* name;
+    const char* country;
+    const char* division;
+    double lat, lon;  // within 0.3 degrees
+  };
+  for (const Case& c :
+       {Case{"Paris, Texas", "Paris", "US", "TX", 33.66, -95.56},
+        Case{"Portland, Oregon", "Portland", "US", "OR", 45.52, -122.68},
+        Case{"London, Ontario", "London", "CA", "08", 42.98, -81.23},
+        Case{"Perth, Western Australia", "Perth", "AU", "08", -31.95, 115.86},
+        Case{"Cambridge, England", "Cambridge", "GB", "ENG", 52.2, 0.12},
+        Case{"  portland ,  OREGON ", "Portland", "US", "OR", 45.52, -122.68},
+        Case{"Munster, Nordrhein-Westfalen", "Münster", "DE", "07", 51.96, 7.63},
+        Case{"Leon, Guanajuato", "León de los Aldama", "MX", "11", 21.12, -101.68},
+        Case{"Santa Maria, Rio Grande do Sul", "Santa Maria", "BR", "23", -29.68, -53.81}}) {
+    SCOPED_TRACE(c.query);
+    const auto found = bundled().search(c.query, 3);
+    ASSERT_FALSE(found.empty());
+    EXPECT_EQ(found[0]->name, c.name);
+    EXPECT_EQ(found[0]->countryCode, c.country);
+    EXPECT_EQ(found[0]->divisionCode, c.division);
+    EXPECT_NEAR(found[0]->latitudeDegrees, c.lat, 0.3);
+    EXPECT_NEAR(found[0]->longitudeDegrees, c.lon, 0.3);
+    for (const Place* p : found) EXPECT_EQ(p->divisionCode, c.division) << p->name;
+  }
+  // The bare name and the country by name as before; a division is never a result itself.
+  const auto paris = bundled().search("Paris", 3);
+  ASSERT_FALSE(paris.empty());
+  EXPECT_EQ(paris[0]->countryCode, "FR");
+  const auto france = bundled().search("Paris, France", 3);
+  ASSERT_FALSE(france.empty());
+  EXPECT_EQ(france[0]->countryCode, "FR");
+  for (const Place* p : bundled().search("Texas", 20)) EXPECT_NE(p->kind, "division");
+  EXPECT_TRUE(bundled().search("Paris, Narnia", 3).empty());
+}
+
 TEST(Gazetteer, PrefixesAndWordsFindPlacesBestKnownFirst) {
   const auto fujino = bundled().search("Fujinom", 3);
   ASSERT_FALSE(fujino.empty());

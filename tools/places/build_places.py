@@ -8,16 +8,24 @@
 * Natural Earth 1:110m admin-0 countries (public domain): name, ISO code, label point, population;
 * Natural Earth 1:110m elevation points (public domain): named peaks, depressions and passes;
 * the bundled data's own landmarks (tools/places/landmarks.tsv: the peaks and parks the bundled
-  DEMs show, positions from GNIS, GSI Japan and Ordnance Survey).
+  DEMs show, positions from GNIS, GSI Japan and Ordnance Survey);
+* first-level division names (tools/places/divisions.tsv: "Texas" for US TX, "Ontario" for CA 08)
+  for "NAME, DIVISION" queries, each checked against GeoNames: the division's largest place must
+  be the one the table names, or the build stops.
 
 One place a line, tab-separated: name, ASCII names (|-separated: the name folded, its
 alternates), latitude, longitude, kind (city, country, peak, park, depression, pass, landmark),
 country code, division code, population, elevation (m, or empty), importance (what ranking
 sorts by: population; a peak's elevation × 2,000, so Everest outranks a village named after it).
+A division is a line of kind "division" (importance 0, at the population-weighted mean of its
+places): what "NAME, DIVISION" names, never a search result itself.
 
-    build_places.py GEONAMES_CITIES1000 NE_COUNTRIES NE_ELEVATION_POINTS LANDMARKS OUT.tsv.gz
+    build_places.py GEONAMES_CITIES1000 NE_COUNTRIES NE_ELEVATION_POINTS LANDMARKS DIVISIONS \
+        OUT.tsv.gz
+    build_places.py --check-divisions GEONAMES_CITIES1000 DIVISIONS   (only the check)
 """
 import gzip
+import io
 import json
 import sys
 import unicodedata
@@ -25,6 +33,11 @@ import unicodedata
 
 # ASCII for U+00C0..U+017F, as src/places/name_fold.cpp folds them ("" : a separator).
 LATIN = ['a', 'a', 'a', 'a', 'a', 'a', 'ae', 'c', 'e', 'e', 'e', 'e', 'i', 'i', 'i', 'i', 'd', 'n', 'o', 'o', 'o', 'o', 'o', '', 'o', 'u', 'u', 'u', 'u', 'y', 'th', 'ss', 'a', 'a', 'a', 'a', 'a', 'a', 'ae', 'c', 'e', 'e', 'e', 'e', 'i', 'i', 'i', 'i', 'd', 'n', 'o', 'o', 'o', 'o', 'o', '', 'o', 'u', 'u', 'u', 'u', 'y', 'th', 'y', 'a', 'a', 'a', 'a', 'a', 'a', 'c', 'c', 'c', 'c', 'c', 'c', 'c', 'c', 'd', 'd', 'd', 'd', 'e', 'e', 'e', 'e', 'e', 'e', 'e', 'e', 'e', 'e', 'g', 'g', 'g', 'g', 'g', 'g', 'g', 'g', 'h', 'h', 'h', 'h', 'i', 'i', 'i', 'i', 'i', 'i', 'i', 'i', 'i', 'i', 'ij', 'ij', 'j', 'j', 'k', 'k', 'k', 'l', 'l', 'l', 'l', 'l', 'l', 'l', 'l', 'l', 'l', 'n', 'n', 'n', 'n', 'n', 'n', 'n', 'n', 'n', 'o', 'o', 'o', 'o', 'o', 'o', 'oe', 'oe', 'r', 'r', 'r', 'r', 'r', 'r', 's', 's', 's', 's', 's', 's', 's', 's', 't', 't', 't', 't', 't', 't', 'u', 'u', 'u', 'u', 'u', 'u', 'u', 'u', 'u', 'u', 'u', 'u', 'w', 'w', 'y', 'y', 'y', 'z', 'z', 'z', 'z', 'z', 'z', 's']
+
+
+# Natural Earth 1:110m says -99 for these countries' ISO code (a dispute over overseas parts):
+# without one "Paris, France" would find nothing.
+MISSING_ISO_A2 = {'France': 'FR', 'Norway': 'NO'}
 
 
 def fold(text):
@@ -74,8 +87,65 @@ def largest_polygon_centroid(geometry):
     return best[1], best[2]
 
 
+def read_divisions(path):
+    """(country, code, name, alternates, largest place) for each line of divisions.tsv."""
+    divisions = []
+    for line in open(path, encoding='utf-8'):
+        if line.startswith('#') or not line.strip():
+            continue
+        country, code, name, alternates, largest = line.rstrip('\n').split('\t')
+        divisions.append((country, code, name, [a for a in alternates.split('|') if a], largest))
+    return divisions
+
+
+def check_divisions(cities, divisions):
+    """The mismatches: each division's largest GeoNames place must be the one the table names
+    (a code matched to the wrong division's name shows up there)."""
+    largest = {}
+    for line in open(cities, encoding='utf-8'):
+        f = line.rstrip('\n').split('\t')
+        key, population = (f[8], f[10]), int(f[14] or 0)
+        if key not in largest or population > largest[key][0]:
+            largest[key] = (population, f[1])
+    wrong = []
+    for country, code, name, _, expected in divisions:
+        found = largest.get((country, code), (0, None))[1]
+        if found != expected:
+            wrong.append(f'{country} {code} {name}: the largest place is {found}, not {expected}')
+    return wrong
+
+
+def division_rows(cities, divisions):
+    """Gazetteer lines for the divisions, at the population-weighted mean of their places."""
+    sums = {}
+    for line in open(cities, encoding='utf-8'):
+        f = line.rstrip('\n').split('\t')
+        weight = max(int(f[14] or 0), 1)
+        s = sums.setdefault((f[8], f[10]), [0.0, 0.0, 0])
+        s[0] += float(f[4]) * weight
+        s[1] += float(f[5]) * weight
+        s[2] += weight
+    rows = []
+    for country, code, name, alternates, _ in divisions:
+        lat, lon, weight = sums[(country, code)]
+        keys = []
+        for n in [name] + alternates:
+            if fold(n) and fold(n) not in keys:
+                keys.append(fold(n))
+        rows.append((name, keys, lat / weight, lon / weight, 'division', country, code, 0, '', 0))
+    return rows
+
+
 def main():
-    cities, countries, points, landmarks, out = sys.argv[1:6]
+    if sys.argv[1] == '--check-divisions':
+        wrong = check_divisions(sys.argv[2], read_divisions(sys.argv[3]))
+        print('\n'.join(wrong) or f'{sys.argv[3]}: every division checked', file=sys.stderr)
+        sys.exit(1 if wrong else 0)
+    cities, countries, points, landmarks, divisions_file, out = sys.argv[1:7]
+    divisions = read_divisions(divisions_file)
+    wrong = check_divisions(cities, divisions)
+    if wrong:
+        sys.exit(f'{divisions_file}: divisions that GeoNames does not confirm:\n' + '\n'.join(wrong))
     rows = []
     for line in open(cities, encoding='utf-8'):
         f = line.rstrip('\n').split('\t')
@@ -94,7 +164,8 @@ def main():
                      f[15] or f[16], population))
     for feature in json.load(open(countries, encoding='utf-8'))['features']:
         p = feature['properties']
-        code = p['ISO_A2'] if p['ISO_A2'] != '-99' else p.get('ISO_A2_EH', '')
+        code = next((c for c in (p['ISO_A2'], p.get('ISO_A2_EH'), MISSING_ISO_A2.get(p['NAME']))
+                     if c and c != '-99'), '')
         keys = []
         for n in (p['NAME'], p['NAME_LONG'], p['ADMIN'], p['FORMAL_EN'] or '', p['ABBREV'] or ''):
             if n and fold(n) and fold(n) not in keys:
@@ -130,8 +201,12 @@ def main():
         importance = int(float(elevation) * 2000) if elevation else 1_000_000
         rows.append((name, keys, float(lat), float(lon), kind, country, '', 0, elevation,
                      importance))
-    rows.sort(key=lambda r: -r[9])
-    with gzip.open(out + '.tmp', 'wt', encoding='utf-8', compresslevel=9) as o:
+    rows += division_rows(cities, divisions)
+    rows.sort(key=lambda r: -r[9])  # stable: divisions (importance 0) last, in the table's order
+    # mtime 0 and no name in the gzip header: the same inputs give the same bytes.
+    with open(out + '.tmp', 'wb') as raw, \
+            gzip.GzipFile(filename='', fileobj=raw, mode='wb', compresslevel=9, mtime=0) as z, \
+            io.TextIOWrapper(z, encoding='utf-8', newline='\n') as o:
         for name, keys, lat, lon, kind, country, division, population, elevation, importance in rows:
             o.write(f'{name}\t{"|".join(keys)}\t{lat:.5f}\t{lon:.5f}\t{kind}\t{country}\t{division}'
                     f'\t{population}\t{elevation}\t{importance}\n')

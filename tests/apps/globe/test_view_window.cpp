@@ -956,3 +956,70 @@ TEST(GlobeViewWindow, DoubleClickFliesToThePoint) {
 }
 
 }  // namespace
+
+// Overlays in the window: a click on a placemark's icon names it (and opens its panel), O opens
+// a GeoJSON file whose polygon is then drawn, and a click inside the polygon picks it.
+TEST(GlobeViewWindow, ClickPicksPlacemarksAndOOpensAnOverlayFile) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const auto dir = globe::testing::freshTempDir("view-overlays");
+  const auto kml = dir / "summit.kml";
+  std::ofstream(kml) << R"(<?xml version="1.0" encoding="UTF-8"?>
+<kml xmlns="http://www.opengis.net/kml/2.2"><Document>
+<Placemark><name>Summit marker</name><description>Straight below the camera</description>
+<Point><coordinates>138.73,35.36,0</coordinates></Point></Placemark>
+</Document></kml>)";
+  // South-west of the centre: about 80 px left of and 50 px below it at 20 km.
+  const auto geojson = dir / "square.geojson";
+  std::ofstream(geojson) << R"({"type": "FeatureCollection", "features": [{"type": "Feature",
+  "properties": {"name": "Test square", "fill": "#ff00ff", "fill-opacity": 1.0},
+  "geometry": {"type": "Polygon", "coordinates": [[[138.68, 35.33], [138.70, 35.33],
+  [138.70, 35.35], [138.68, 35.35], [138.68, 35.33]]]}}]})";
+  const auto shot = dir / "final.png";
+  const ShellRun run = runUnderXvfb(
+      "view-overlays-run",
+      globeView("--size 640x360 --log --camera 138.73,35.36,20000,0,-90,0 --overlay " +
+                kml.string() + " --screenshot " + shot.string() + " > log.txt &\n") +
+          "VIEW=$!\n" + kFindWindow + kWaitUntilStill +
+          "xdotool mousemove --window $WID 320 180 click --window $WID 1\n"
+          "for i in $(seq 100); do grep -q 'placemark: Summit' log.txt && break; sleep 0.1; done\n"
+          "sleep 0.5\n"
+          "xdotool key --window $WID o\n"
+          "xdotool type --window $WID '" +
+          geojson.string() +
+          "'\n"
+          "xdotool key --window $WID Return\n"
+          "for i in $(seq 100); do grep -q 'opened square' log.txt && break; sleep 0.1; done\n" +
+          kWaitUntilStill +
+          "xdotool mousemove --window $WID 241 228 click --window $WID 1\n"
+          "for i in $(seq 100); do grep -q 'placemark: Test' log.txt && break; sleep 0.1; done\n"
+          "sleep 0.5\n"
+          "xdotool keydown --window $WID Escape\n"
+          "wait $VIEW; echo exit=$?\n"
+          "cat log.txt\n");
+  const auto values = valuesOf(run.output);
+  ASSERT_EQ(values.count("exit"), 1u) << run.output;
+  EXPECT_EQ(values.at("exit"), "0") << run.output;
+  EXPECT_NE(run.output.find("placemark: Summit marker"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("opened square.geojson"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("placemark: Test square"), std::string::npos) << run.output;
+  auto image = globe::formats::loadImageRgba(shot);
+  ASSERT_TRUE(image) << image.error();
+  const auto count = [&](int x0, int y0, int x1, int y1, auto&& test) {
+    size_t n = 0;
+    for (int y = y0; y < y1; ++y) {
+      for (int x = x0; x < x1; ++x) {
+        n += test(&image->pixels[static_cast<size_t>(y * image->widthPixels + x) * 4]);
+      }
+    }
+    return n;
+  };
+  const auto magenta = [](const uint8_t* p) { return p[0] > 180 && p[1] < 90 && p[2] > 180; };
+  EXPECT_GT(count(221, 208, 261, 248, magenta), 800u) << "the opened polygon is drawn";
+  EXPECT_EQ(count(300, 0, 640, 360, magenta), 0u) << "and nowhere east of it";
+  // The picked placemark's panel at the top right: its name in white on a dark box.
+  const auto white = [](const uint8_t* p) { return p[0] > 235 && p[1] > 235 && p[2] > 235; };
+  const auto dark = [](const uint8_t* p) { return p[0] < 60 && p[1] < 60 && p[2] < 60; };
+  EXPECT_GT(count(440, 0, 640, 60, white), 40u);
+  EXPECT_GT(count(440, 0, 640, 60, dark), 1000u);
+}

@@ -1,0 +1,95 @@
+#include "overlays/overlay_images.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <span>
+#include <string_view>
+
+#include "overlays/xml_elements.hpp"
+
+namespace globe::overlays {
+namespace {
+
+constexpr uint64_t kMaxImageFileBytes = uint64_t{256} << 20;
+
+bool startsWithNoCase(std::string_view text, std::string_view prefix) {
+  return text.size() >= prefix.size() &&
+         std::equal(prefix.begin(), prefix.end(), text.begin(), [](char a, char b) {
+           return std::tolower(static_cast<unsigned char>(a)) ==
+                  std::tolower(static_cast<unsigned char>(b));
+         });
+}
+
+// "%20" and friends, which KML writers put in local hrefs too.
+std::string percentDecoded(std::string_view text) {
+  std::string out;
+  for (size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '%' && i + 2 < text.size() &&
+        std::isxdigit(static_cast<unsigned char>(text[i + 1])) &&
+        std::isxdigit(static_cast<unsigned char>(text[i + 2]))) {
+      out += static_cast<char>(std::stoi(std::string(text.substr(i + 1, 2)), nullptr, 16));
+      i += 2;
+    } else {
+      out += text[i];
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+OverlayImages::OverlayImages(std::filesystem::path kmlDirectory)
+    : directory_(std::move(kmlDirectory)) {}
+
+OverlayImages::OverlayImages(KmzArchive archive)
+    : directory_(archive.file.parent_path()), archive_(std::move(archive)) {}
+
+ResolvedImage OverlayImages::resolve(const std::string& rawHref) {
+  const std::string href(trimmed(rawHref));
+  if (href.empty()) return {};
+  if (auto cached = cache_.find(href); cached != cache_.end()) return cached->second;
+  ResolvedImage resolved;
+  if (startsWithNoCase(href, "http://") || startsWithNoCase(href, "https://")) {
+    resolved.href = href;  // fetched, if at all, by the caller
+  } else {
+    std::string local = percentDecoded(href);
+    if (startsWithNoCase(local, "file://")) local.erase(0, 7);
+    const std::filesystem::path path(local);
+    std::optional<ResolvedImage> inArchive;
+    if (archive_ && path.is_relative()) inArchive = fromArchive(local);
+    resolved =
+        inArchive ? std::move(*inArchive) : fromDisk(path.is_absolute() ? path : directory_ / path);
+  }
+  cache_.emplace(href, resolved);
+  return resolved;
+}
+
+std::optional<ResolvedImage> OverlayImages::fromArchive(const std::string& relative) {
+  const std::string entry = std::filesystem::path(relative).lexically_normal().generic_string();
+  if (entry.empty() || entry.starts_with("..")) return std::nullopt;
+  auto bytes = readKmzEntry(*archive_, entry, kMaxImageFileBytes);
+  if (bytes && !bytes->has_value()) return std::nullopt;  // not in the archive
+  ResolvedImage resolved{kmzEntryPath(*archive_, entry), nullptr};
+  if (bytes) {
+    resolved.image =
+        keep(formats::decodeImageRgba(std::span<const std::byte>(**bytes), resolved.href));
+  }
+  return resolved;
+}
+
+ResolvedImage OverlayImages::fromDisk(const std::filesystem::path& path) {
+  const std::filesystem::path normal = path.lexically_normal();
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(normal, ec);
+  ResolvedImage resolved{normal.string(), nullptr};
+  if (!ec && size <= kMaxImageFileBytes) resolved.image = keep(formats::loadImageRgba(normal));
+  return resolved;
+}
+
+std::shared_ptr<const formats::ImageRgba> OverlayImages::keep(Result<formats::ImageRgba> decoded) {
+  if (!decoded || decodedBytes_ + decoded->pixels.size() > kMaxDecodedBytes) return nullptr;
+  decodedBytes_ += decoded->pixels.size();
+  return std::make_shared<const formats::ImageRgba>(std::move(decoded).value());
+}
+
+}  // namespace globe::overlays

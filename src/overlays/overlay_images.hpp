@@ -1,0 +1,46 @@
+// Icon and ground overlay images named by a KML href, found and decoded once per document:
+// beside the KML on disk, or inside its KMZ (then beside the KMZ, where Google Earth also looks).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "formats/image_io.hpp"
+#include "overlays/kmz_archive.hpp"
+
+namespace globe::overlays {
+
+struct ResolvedImage {
+  std::string href;  // what the model records (overlay_model.hpp's Style::iconHref)
+  std::shared_ptr<const formats::ImageRgba> image;  // null: a URL, missing or undecodable
+};
+
+class OverlayImages {
+ public:
+  // Decoded pixels one document may hold in all: a file naming many large images still reads.
+  static constexpr uint64_t kMaxDecodedBytes = uint64_t{512} << 20;
+
+  // Relative hrefs resolve against kmlDirectory (absolute paths and file:// URLs as they are).
+  explicit OverlayImages(std::filesystem::path kmlDirectory);
+  // Relative hrefs resolve inside the archive first, then beside the .kmz.
+  explicit OverlayImages(KmzArchive archive);
+
+  // Never fails: whatever cannot be found or decoded gives a null image.
+  ResolvedImage resolve(const std::string& href);
+
+ private:
+  std::optional<ResolvedImage> fromArchive(const std::string& relative);
+  ResolvedImage fromDisk(const std::filesystem::path& path);
+  std::shared_ptr<const formats::ImageRgba> keep(Result<formats::ImageRgba> decoded);
+
+  std::filesystem::path directory_;
+  std::optional<KmzArchive> archive_;
+  std::map<std::string, ResolvedImage> cache_;
+  uint64_t decodedBytes_ = 0;
+};
+
+}  // namespace globe::overlays

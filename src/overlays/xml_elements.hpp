@@ -1,0 +1,33 @@
+// Small tinyxml2 helpers the KML and GPX readers share: elements by local name (KML and GPX
+// files use prefixes and several namespaces), their text, KML booleans and numbers.
+#pragma once
+
+#include <tinyxml2.h>
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace globe::overlays {
+
+// The element's name without a namespace prefix: "gx:Track" is "Track".
+std::string_view localName(const tinyxml2::XMLElement& element);
+
+// The first child element with this local name, or nullptr.
+const tinyxml2::XMLElement* child(const tinyxml2::XMLElement& parent, std::string_view name);
+
+// All the element's text and CDATA children joined, as written (no trimming).
+std::string textOf(const tinyxml2::XMLElement& element);
+
+// The text of the first child with this local name, trimmed; nullopt without that child.
+std::optional<std::string> childText(const tinyxml2::XMLElement& parent, std::string_view name);
+
+std::string_view trimmed(std::string_view text);
+
+// KML's xsd:boolean: "1"/"true" or "0"/"false"; nullopt for anything else.
+std::optional<bool> parseBoolean(std::string_view text);
+
+// A whole (trimmed) decimal number, locale-independent; nullopt when the text is not one.
+std::optional<double> parseNumber(std::string_view text);
+
+}  // namespace globe::overlays
