@@ -94,6 +94,9 @@ void addLayerOptions(CLI::App& command, CommonArguments& arguments) {
                   "polygons draped on the ground, placemarks with their icons and labels, "
                   "ground overlays; repeat for more")
       ->type_name("FILE");
+  command.add_flag("--overlay-hidden", arguments.overlayHidden,
+                   "also draw what the overlay files hide (KML visibility 0), as if every item "
+                   "were ticked");
   // A bare --lighting (before layers could be lit by resolution: the only way to light them)
   // still means on.
   command
@@ -169,6 +172,7 @@ bool applySceneArguments(const char* command, const CommonArguments& arguments,
       std::fprintf(stderr, "globe %s: --overlay %s\n", command, document.error().c_str());
       return false;
     }
+    if (arguments.overlayHidden) overlays::showEverything(*document);
     scene.overlays.push_back(
         std::make_shared<const overlays::OverlayDocument>(std::move(*document)));
   }

@@ -27,6 +27,7 @@ struct CommonArguments {
   bool seaFloor = false;
   std::vector<std::string> layerTexts;
   std::vector<std::string> overlayFiles;  // --overlay
+  bool overlayHidden = false;             // --overlay-hidden
   std::string lighting = "auto";          // --lighting auto | on | off; bare: on
   bool nominalLod = false;
   bool noSky = false;

@@ -86,6 +86,7 @@ std::vector<std::string> hudStatusLines(const HudState& s, bool withFrameTime) {
   }
   lines.push_back(tiles);
   if (std::string imagery = imageryStatus(s); !imagery.empty()) lines.push_back(std::move(imagery));
+  if (!s.ruler.empty()) lines.push_back(s.ruler);
   if (s.recording) lines.push_back(format("REC  %zu keyframes  (P stops)", s.keyframes));
   lines.push_back("H: help");
   return lines;
@@ -121,13 +122,13 @@ std::vector<std::string> hudHelpLines() {
       "        speed = max(2 m/s, clearance per second)",
       "P            start/stop recording the path (globe-path-*.json)",
       "K / F12      screenshot (globe-shot-*.png); F11 full screen",
-      "R            back to the start camera",
+      "R            back to the start camera; M ruler, Backspace undoes",
       "G / V / O    go to a place or saved view / save this view / open a file",
       "N            north up (or click the compass rose, top right)",
       "L            lighting on imagery: auto -> on -> off",
       "1 - 4        show / hide layer 1-4 (and select it for [ ])",
       "[ / ]        the selected layer's opacity -/+ 10%",
-      "H / F1       this help",
+      "H / F1       this help; X elevation profile of ruler / picked line",
       "Esc          quit",
   };
 }

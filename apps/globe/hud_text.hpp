@@ -39,6 +39,7 @@ struct HudState {
   std::string message;                   // what the last go-to said (an error)
   std::string warning;                   // the latest warning (a server failing), while recent
   std::string network;                   // failed loads and their retries, when any failed
+  std::string ruler;                     // the ruler's length and area, while it is on (M)
   // The imagery controls (L, 1-4, [ ]): said only with layers.
   struct Layer {
     bool shown = true;

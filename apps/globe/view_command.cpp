@@ -9,7 +9,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <memory>
+#include <optional>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -23,8 +26,11 @@
 #include "apps/globe/imagery.hpp"
 #include "apps/globe/overlay_drawing.hpp"
 #include "apps/globe/path_recorder.hpp"
+#include "apps/globe/profile_panel.hpp"
 #include "apps/globe/recent_warning.hpp"
 #include "apps/globe/renderer_gpu.hpp"
+#include "apps/globe/ruler.hpp"
+#include "apps/globe/ruler_overlay.hpp"
 #include "apps/globe/view_input.hpp"
 #include "camera/camera_controller.hpp"
 #include "camera/navigator.hpp"
@@ -57,13 +63,29 @@ std::string saveView(const std::string& name, const camera::CameraPose& pose) {
          ")";
 }
 
+using Documents = std::vector<std::shared_ptr<const overlays::OverlayDocument>>;
+
+// The user's documents and the ruler's shown in the scene; a new renderer takes their icons and
+// keeps the picked placemark when it is still one of the user's.
+Result<void> showOverlays(scene::TerrainScene& scene, RendererGpu& gpu, const Documents& user,
+                          const std::shared_ptr<const overlays::OverlayDocument>& ruler,
+                          std::unique_ptr<OverlayDrawing>& labels) {
+  if (auto set = scene.setOverlays(withRuler(user, ruler), gpu); !set) return set;
+  const auto selected = labels ? labels->selected() : std::nullopt;
+  auto created = OverlayDrawing::create(scene);
+  if (!created) return Error{created.error()};
+  labels = std::move(*created);
+  if (labels && selected && selected->document < user.size()) labels->select(selected);
+  return {};
+}
+
 // O then a path, or files dropped on the window: each read and shown with the overlays already
 // open; what to say back (the files opened, or why one could not be).
 std::string openOverlays(scene::TerrainScene& scene, RendererGpu& gpu,
-                         const std::vector<std::string>& files,
+                         const std::vector<std::string>& files, Documents& user,
+                         const std::shared_ptr<const overlays::OverlayDocument>& ruler,
                          std::unique_ptr<OverlayDrawing>& labels) {
-  std::vector<std::shared_ptr<const overlays::OverlayDocument>> documents =
-      scene.options().overlays;
+  Documents documents = user;
   std::string opened;
   for (const std::string& file : files) {
     auto document = overlays::readOverlayFile(file);
@@ -72,14 +94,37 @@ std::string openOverlays(scene::TerrainScene& scene, RendererGpu& gpu,
     documents.push_back(std::make_shared<const overlays::OverlayDocument>(std::move(*document)));
   }
   if (opened.empty()) return "open: type a file's path";
-  if (auto set = scene.setOverlays(std::move(documents), gpu); !set) return "open: " + set.error();
-  // A new renderer takes the new files' icons.
-  auto created = OverlayDrawing::create(scene);
-  if (!created) return "open: " + created.error();
-  labels = std::move(*created);
+  if (auto shown = showOverlays(scene, gpu, documents, ruler, labels); !shown) {
+    return "open: " + shown.error();
+  }
+  user = std::move(documents);
   std::printf("opened %s\n", opened.c_str());
   std::fflush(stdout);
   return "opened " + opened;
+}
+
+// Where a ground point is drawn in the last frame, window pixels; nullopt behind the camera.
+std::optional<glm::dvec2> windowPixelOf(const terrain::RenderView& view,
+                                        const geo::Ellipsoid& ellipsoid, const RulerPoint& point,
+                                        double toWindow) {
+  const glm::dvec3 ecef = geo::cartographicToEcef(
+      ellipsoid, geo::Cartographic::fromDegrees(point.longitudeDegrees, point.latitudeDegrees,
+                                                point.heightMeters));
+  const glm::dvec4 clip = view.projection * view.viewMatrix * glm::dvec4(ecef, 1.0);
+  if (!(clip.w > 0)) return std::nullopt;
+  return glm::dvec2((clip.x / clip.w + 1.0) * 0.5 * view.widthPixels,
+                    (1.0 - clip.y / clip.w) * 0.5 * view.heightPixels) *
+         toWindow;
+}
+
+// What X profiles: the ruler's path (two points or more), else the picked placemark's first line.
+std::vector<measure::PathPoint> profilePath(const Ruler& ruler, const scene::TerrainScene& scene,
+                                            const OverlayDrawing* labels) {
+  if (ruler.points().size() >= 2) return ruler.path();
+  if (labels == nullptr || !labels->selected()) return {};
+  const overlays::PlacemarkRef ref = *labels->selected();
+  return placemarkLine(scene.options().overlays[ref.document]->placemarks[ref.placemark])
+      .value_or(std::vector<measure::PathPoint>());
 }
 
 constexpr const char* kTitlePrefix = "globe";  // tests find the window by this name
@@ -213,6 +258,14 @@ Result<ViewReport> runView(const ViewOptions& options) {
   if (!hud) return Error{hud.error()};
   auto labels = OverlayDrawing::create(**scene);
   if (!labels) return Error{labels.error()};
+  auto profilePanel = ProfilePanel::create();
+  if (!profilePanel) return Error{profilePanel.error()};
+  // The files given and opened, kept apart from the ruler's path (M) shown after them.
+  Documents userOverlays = (*scene)->options().overlays;
+  Ruler ruler;
+  std::shared_ptr<const overlays::OverlayDocument> rulerOverlay;
+  uint64_t rulerRevisionShown = 0;
+  bool profileShown = false;
   if (options.imagery) {
     if (auto draped = drapeImagery(**renderer, *options.imagery); !draped)
       return Error{draped.error()};
@@ -342,8 +395,35 @@ Result<ViewReport> runView(const ViewOptions& options) {
       }
 
       if (!input.openFileRequests.empty()) {
-        input.promptMessage = openOverlays(**scene, gpu, input.openFileRequests, *labels);
+        input.promptMessage =
+            openOverlays(**scene, gpu, input.openFileRequests, userOverlays, rulerOverlay, *labels);
         input.openFileRequests.clear();
+        input.changed = true;
+      }
+      // The ruler: M turns it on, or off and clears it; a click adds a point; Backspace undoes.
+      if (input.rulerOn != ruler.active()) ruler.setActive(input.rulerOn);
+      if (input.rulerUndoRequested) {
+        input.rulerUndoRequested = false;
+        ruler.undo();
+      }
+      if (input.clickRequest && input.rulerOn) {
+        if (const auto ground = navigator.groundAt(*input.clickRequest)) {
+          if (const auto at = geo::ecefToCartographic(ellipsoid, *ground)) {
+            int windowWidth = 0;
+            glfwGetWindowSize(handle, &windowWidth, nullptr);
+            const double toWindow = static_cast<double>(windowWidth) / std::max(width, 1);
+            const RulerPoint point{at->longitudeDegrees(), at->latitudeDegrees(), at->heightMeters};
+            ruler.click(point, *input.clickRequest,
+                        ruler.points().empty() ? std::nullopt
+                                               : windowPixelOf((*scene)->view(), ellipsoid,
+                                                               ruler.points().front(), toWindow));
+            if (!ruler.closed()) {
+              std::printf("ruler point %zu: %.7f,%.7f\n", ruler.points().size(),
+                          point.longitudeDegrees, point.latitudeDegrees);
+            }
+          }
+        }
+        input.clickRequest.reset();
         input.changed = true;
       }
       if (input.clickRequest) {
@@ -362,8 +442,10 @@ Result<ViewReport> runView(const ViewOptions& options) {
           const double toFramebuffer = static_cast<double>(width) / std::max(windowWidth, 1);
           const auto picked =
               (*labels)->pick(**scene, pixel * toFramebuffer, ground, metersPerPixel);
-          (*labels)->select(picked);
-          if (picked) {
+          // The ruler's own marks are not placemarks to pick.
+          (*labels)->select(picked && picked->document < userOverlays.size() ? picked
+                                                                             : std::nullopt);
+          if ((*labels)->selected()) {
             std::printf("placemark: %s\n", (*scene)
                                                ->options()
                                                .overlays[picked->document]
@@ -374,6 +456,45 @@ Result<ViewReport> runView(const ViewOptions& options) {
         }
         input.clickRequest.reset();
         input.changed = true;
+      }
+
+      if (ruler.revision() != rulerRevisionShown) {
+        rulerRevisionShown = ruler.revision();
+        rulerOverlay = rulerDocument(ruler);
+        if (auto shown = showOverlays(**scene, gpu, userOverlays, rulerOverlay, *labels); !shown) {
+          input.promptMessage = "ruler: " + shown.error();
+        }
+        std::printf("%s\n", rulerLogLine(ruler).c_str());
+        std::fflush(stdout);
+        input.changed = true;
+      }
+      // X: the chart of profilePath(), remade when it changes; hidden while there is none.
+      if (input.profileVisible) {
+        const std::vector<measure::PathPoint> path = profilePath(ruler, **scene, labels->get());
+        if (path.size() < 2) {
+          (*profilePanel)->clear();
+          if (!profileShown) {
+            input.promptMessage = "profile: measure a path (M) or pick a line first";
+            input.profileVisible = false;
+          }
+        } else if (auto updated =
+                       (*profilePanel)->update(path, (*scene)->store(), ellipsoid, width, height);
+                   !updated) {
+          input.promptMessage = "profile: " + updated.error();
+          input.profileVisible = false;
+        } else if (*updated) {
+          if (input.promptMessage.starts_with("profile: ")) input.promptMessage.clear();
+          std::printf("profile: %zu samples, %.2f m, min %.1f m, max %.1f m\n", (*updated)->samples,
+                      (*updated)->lengthMeters, (*updated)->lowestMeters,
+                      (*updated)->highestMeters);
+          std::fflush(stdout);
+          redraw = true;
+        }
+        profileShown = input.profileVisible;
+      } else if (profileShown) {
+        (*profilePanel)->clear();
+        profileShown = false;
+        redraw = true;
       }
 
       // This frame's move, proposed to the controller, which checks it against the tiles drawn
@@ -423,6 +544,7 @@ Result<ViewReport> runView(const ViewOptions& options) {
         if (!input.promptSavesView && !input.promptOpensFile) hudState.suggestions = suggestions;
       }
       hudState.message = input.promptMessage;
+      if (ruler.active()) hudState.ruler = rulerHudLine(ruler);
       hudState.warning = recentWarning->shown();
       const streaming::LoaderCounters loads = (*scene)->loader().counters();
       if (loads.failed > 0) {
@@ -487,6 +609,8 @@ Result<ViewReport> runView(const ViewOptions& options) {
           (*labels)->draw(**scene);
           (*labels)->drawPanel(**scene, width, height);
         }
+        // Above the scale bar at the bottom left.
+        (*profilePanel)->draw(width, height, height >= 600 ? 68.0f : 34.0f);
         (*hud)->draw(width, height);
         if (input.screenshotRequested) {
           input.screenshotRequested = false;

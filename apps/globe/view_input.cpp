@@ -96,6 +96,15 @@ bool commonKey(GLFWwindow* window, ViewInput& input, int key) {
     case GLFW_KEY_N:
       input.navigator->northUp();
       return true;
+    case GLFW_KEY_M:
+      input.rulerOn = !input.rulerOn;
+      return true;
+    case GLFW_KEY_BACKSPACE:
+      input.rulerUndoRequested = input.rulerOn;
+      return input.rulerOn;
+    case GLFW_KEY_X:
+      input.profileVisible = !input.profileVisible;
+      return true;
     case GLFW_KEY_F11:
       toggleFullscreen(window, input);
       return true;
@@ -306,7 +315,7 @@ void onMouseButton(GLFWwindow* window, int button, int action, int mods) {
       input.clickRequest = glm::dvec2(input.lastX, input.lastY);  // a click, not a drag
       input.changed = true;
     }
-    if (down) {
+    if (down && !input.rulerOn) {  // the ruler's clicks may come fast
       const double now = glfwGetTime();
       if (now - input.lastClickSeconds <= kDoubleClickSeconds &&
           std::abs(input.lastX - input.lastClickX) <= kDoubleClickPixels &&

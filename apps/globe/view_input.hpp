@@ -48,7 +48,11 @@ struct ViewInput {
   std::optional<std::string> saveViewRequest;  // V then a name then Enter
   // Overlay files to open: O then a path then Enter, or files dropped on the window.
   std::vector<std::string> openFileRequests;
-  // A left click that did not drag (window pixels): the loop picks the placemark there.
+  bool rulerOn = false;             // M; double-clicks do not fly while it is on
+  bool rulerUndoRequested = false;  // Backspace
+  bool profileVisible = false;      // X: the elevation chart of the ruler's or picked line
+  // A left click that did not drag (window pixels): the loop picks the placemark there, or with
+  // the ruler on adds the ground point there to it.
   std::optional<glm::dvec2> clickRequest;
   std::string promptMessage;
   // The compass (top right, window pixels): a click there, or N, turns the view north up.

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <numbers>
@@ -272,13 +274,6 @@ void drawHeaderAndLegend(cairo_t* cr, const Frame& f, double lowest, double high
   });
 }
 
-cairo_status_t appendBytes(void* closure, const unsigned char* data, unsigned int length) {
-  auto* bytes = static_cast<std::vector<std::byte>*>(closure);
-  const auto* first = reinterpret_cast<const std::byte*>(data);
-  bytes->insert(bytes->end(), first, first + length);
-  return CAIRO_STATUS_SUCCESS;
-}
-
 double terrainHeight(const ProfileRow& r) { return r.heightMeters; }
 double fileElevation(const ProfileRow& r) { return r.sample.sourceElevationMeters; }
 
@@ -290,20 +285,18 @@ ChartPlotArea profileChartPlotArea(int widthPixels, int heightPixels) {
   return {left, top, widthPixels - left - right, heightPixels - top - bottom};
 }
 
-Result<void> writeProfileChartPng(const std::vector<ProfileRow>& rows,
-                                  const std::filesystem::path& png, int widthPixels,
-                                  int heightPixels) {
+Result<formats::ImageRgba> drawProfileChart(const std::vector<ProfileRow>& rows, int widthPixels,
+                                            int heightPixels) {
   if (widthPixels < kMinChartWidthPixels || heightPixels < kMinChartHeightPixels ||
       widthPixels > kMaxChartSidePixels || heightPixels > kMaxChartSidePixels) {
-    return makeError(png.string() + ": a chart of " + std::to_string(widthPixels) + "x" +
+    return makeError("a chart of " + std::to_string(widthPixels) + "x" +
                      std::to_string(heightPixels) + " pixels is out of range (" +
                      std::to_string(kMinChartWidthPixels) + "x" +
                      std::to_string(kMinChartHeightPixels) + " to " +
                      std::to_string(kMaxChartSidePixels) + " on a side)");
   }
   if (rows.size() < 2 || !(rows.back().sample.distanceMeters > 0)) {
-    return makeError(png.string() +
-                     ": a profile chart needs a path of two or more distinct points");
+    return makeError("a profile chart needs a path of two or more distinct points");
   }
   const double scale = chartScale(widthPixels, heightPixels);
   Frame frame;
@@ -360,19 +353,37 @@ Result<void> writeProfileChartPng(const std::vector<ProfileRow>& rows,
   drawHeaderAndLegend(cr, frame, lowestRow->heightMeters, highestRow->heightMeters, withFile,
                       widthPixels, scale);
 
-  std::vector<std::byte> bytes;
   cairo_surface_flush(surface.get());
   if (const cairo_status_t status = cairo_status(cr); status != CAIRO_STATUS_SUCCESS) {
-    return makeError(png.string() +
-                     ": drawing the chart failed: " + cairo_status_to_string(status));
+    return makeError(std::string("drawing the chart failed: ") + cairo_status_to_string(status));
   }
-  if (const cairo_status_t status =
-          cairo_surface_write_to_png_stream(surface.get(), appendBytes, &bytes);
-      status != CAIRO_STATUS_SUCCESS) {
-    return makeError(png.string() +
-                     ": encoding the chart failed: " + cairo_status_to_string(status));
+  // Cairo's RGB24 is a native-endian 0xXXRRGGBB word a pixel.
+  formats::ImageRgba image{widthPixels, heightPixels, {}};
+  image.pixels.resize(static_cast<size_t>(widthPixels) * static_cast<size_t>(heightPixels) * 4);
+  const unsigned char* data = cairo_image_surface_get_data(surface.get());
+  const auto stride = static_cast<size_t>(cairo_image_surface_get_stride(surface.get()));
+  for (size_t y = 0; y < static_cast<size_t>(heightPixels); ++y) {
+    for (size_t x = 0; x < static_cast<size_t>(widthPixels); ++x) {
+      uint32_t word = 0;
+      std::memcpy(&word, data + y * stride + x * 4, sizeof word);
+      uint8_t* out = &image.pixels[(y * static_cast<size_t>(widthPixels) + x) * 4];
+      out[0] = static_cast<uint8_t>(word >> 16);
+      out[1] = static_cast<uint8_t>(word >> 8);
+      out[2] = static_cast<uint8_t>(word);
+      out[3] = 255;
+    }
   }
-  return transport::writeFileAtomically(png, std::span<const std::byte>(bytes));
+  return image;
+}
+
+Result<void> writeProfileChartPng(const std::vector<ProfileRow>& rows,
+                                  const std::filesystem::path& png, int widthPixels,
+                                  int heightPixels) {
+  auto image = drawProfileChart(rows, widthPixels, heightPixels);
+  if (!image) return makeError(png.string() + ": " + image.error());
+  auto bytes = formats::encodePng(*image);
+  if (!bytes) return makeError(png.string() + ": encoding the chart failed: " + bytes.error());
+  return transport::writeFileAtomically(png, std::span<const std::byte>(*bytes));
 }
 
 }  // namespace globe::measure

@@ -1,13 +1,14 @@
 // An elevation profile as a chart a person reads at a glance: the terrain's height against the
 // distance along the path as a filled area, axes with round ticks (m or km), the lowest and
 // highest points marked, the total length, and the file's own elevations (a GPX track's <ele>)
-// as a second line when it has them. PNG through cairo.
+// as a second line when it has them. Drawn by cairo into an image, or written as a PNG.
 #pragma once
 
 #include <filesystem>
 #include <vector>
 
 #include "core/result.hpp"
+#include "formats/image_io.hpp"
 #include "measure/elevation_profile.hpp"
 
 namespace globe::measure {
@@ -26,8 +27,13 @@ struct ChartPlotArea {
 };
 ChartPlotArea profileChartPlotArea(int widthPixels, int heightPixels);
 
-// Draws `rows` (two or more, distances increasing) and writes the PNG atomically (a temporary
-// name, then renamed). Errors name the file: a size out of range, a failed draw or write.
+// Draws `rows` (two or more, distances increasing) into an opaque image of that size. Errors: a
+// size out of range, too few rows, a failed draw.
+Result<formats::ImageRgba> drawProfileChart(const std::vector<ProfileRow>& rows, int widthPixels,
+                                            int heightPixels);
+
+// drawProfileChart, then the PNG written atomically (a temporary name, then renamed). Errors name
+// the file.
 Result<void> writeProfileChartPng(const std::vector<ProfileRow>& rows,
                                   const std::filesystem::path& png, int widthPixels,
                                   int heightPixels);

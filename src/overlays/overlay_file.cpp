@@ -107,4 +107,9 @@ Result<OverlayDocument> readOverlayFile(const std::filesystem::path& file) {
                    "'<' nor '{')");
 }
 
+void showEverything(OverlayDocument& document) {
+  for (Placemark& placemark : document.placemarks) placemark.visible = true;
+  for (GroundOverlay& overlay : document.groundOverlays) overlay.visible = true;
+}
+
 }  // namespace globe::overlays

@@ -16,4 +16,8 @@ inline constexpr uint64_t kMaxOverlayFileBytes = uint64_t{512} << 20;
 // for KMZ zip). Errors name the file and what is wrong.
 Result<OverlayDocument> readOverlayFile(const std::filesystem::path& file);
 
+// Makes every placemark and ground overlay visible (KML's <visibility>0</visibility> and hidden
+// Folders ignored), for users who want all a file holds without ticking items one by one.
+void showEverything(OverlayDocument& document);
+
 }  // namespace globe::overlays

@@ -285,6 +285,39 @@ TEST(GlobeProfile, APngChartFilledHighestAtTheSummit) {
       << unwritable.output;
 }
 
+// The chart drawn in memory (the window's): its size, white margins, the terrain filled.
+TEST(ProfileChart, DrawnIntoAnImageInMemory) {
+  std::vector<ProfileRow> rows;
+  for (int i = 0; i <= 100; ++i) {
+    ProfileRow row;
+    row.sample.distanceMeters = 50.0 * i;
+    row.heightMeters = 1000 + 800 * std::sin(i * std::numbers::pi / 100);
+    rows.push_back(row);
+  }
+  auto image = drawProfileChart(rows, 320, 150);
+  ASSERT_TRUE(image) << image.error();
+  EXPECT_EQ(image->widthPixels, 320);
+  EXPECT_EQ(image->heightPixels, 150);
+  ASSERT_EQ(image->pixels.size(), 320u * 150 * 4);
+  size_t green = 0, dark = 0;
+  for (size_t i = 0; i < image->pixels.size(); i += 4) {
+    const uint8_t* p = &image->pixels[i];
+    EXPECT_EQ(p[3], 255);
+    green += p[1] > p[0] + 30 && p[1] > p[2] + 30;
+    dark += p[0] < 100 && p[1] < 100 && p[2] < 100;
+  }
+  EXPECT_GT(green, 320u * 150 / 20) << "the terrain's fill";
+  EXPECT_GT(dark, 300u) << "axes and text";
+  EXPECT_EQ(image->pixels[0], 255) << "white at the corner";
+  // The plot's middle column is filled near the axis, white near the top (the hump's at 1,800 m).
+  const ChartPlotArea area = profileChartPlotArea(320, 150);
+  EXPECT_TRUE(coloured(*image, static_cast<int>(area.left + area.width / 2),
+                       static_cast<int>(area.top + area.height) - 3));
+  // Bad sizes and too few rows are errors, without a file to name.
+  EXPECT_FALSE(drawProfileChart(rows, 100, 50));
+  EXPECT_FALSE(drawProfileChart({rows[0]}, 320, 150));
+}
+
 TEST(GlobeProfile, AGpxTracksChartDrawsItsOwnElevationsToo) {
   const fs::path dir = globe::testing::freshTempDir("measure-gpx-chart");
   const Exit profile =

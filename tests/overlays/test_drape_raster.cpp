@@ -3,12 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <memory>
 #include <vector>
 
 #include "geo/tiling_scheme.hpp"
 #include "overlays/drape_raster.hpp"
 #include "overlays/drape_set.hpp"
+#include "overlays/overlay_file.hpp"
 #include "overlays/overlay_imagery.hpp"
 
 namespace globe::overlays {
@@ -205,6 +207,35 @@ TEST(OverlayImagery, OnlyTilesNearTheFeaturesArePresentAndPointsAloneMakeNoLayer
   EXPECT_FALSE(absent->has_value());
   EXPECT_EQ(layer->manifest().pixelGrid, formats::ImageryPixelGrid::Edges);
   EXPECT_NEAR(layer->manifest().bounds.west, 138.7, 1e-9);
+}
+
+}  // namespace
+}  // namespace globe::overlays
+
+namespace globe::overlays {
+namespace {
+
+// The real KMZ's ground overlay (hidden in its file, shown when asked) lands on Etna's tile.
+TEST(DrapeRaster, TheEtnaKmzGroundOverlayIsDrawnWhenShown) {
+  auto read = readOverlayFile(std::filesystem::path(GLOBE_SOURCE_DIR) /
+                              "tests/data/interop/overlays/etna.kmz");
+  ASSERT_TRUE(read) << read.error();
+  {
+    const std::shared_ptr<const OverlayDocument> hidden = std::make_shared<OverlayDocument>(*read);
+    EXPECT_TRUE(makeDrapeSet(std::span(&hidden, 1)).empty()) << "visibility 0 in the file";
+  }
+  showEverything(*read);
+  const std::shared_ptr<const OverlayDocument> document = std::make_shared<OverlayDocument>(*read);
+  const DrapeSet set = makeDrapeSet(std::span(&document, 1));
+  ASSERT_EQ(set.images.size(), 1u);
+  const auto tile =
+      geo::GeographicTilingScheme::positionToTile(15.0 * M_PI / 180, 37.7 * M_PI / 180, 8);
+  ASSERT_TRUE(tile);
+  ASSERT_TRUE(touchesTile(set, *tile, kSize));
+  const formats::ImageRgba image = drawTile(set, *tile, kSize);
+  size_t opaque = 0;
+  for (size_t i = 3; i < image.pixels.size(); i += 4) opaque += image.pixels[i] == 255;
+  EXPECT_GT(opaque, image.pixels.size() / 4 / 2);
 }
 
 }  // namespace

@@ -51,14 +51,41 @@ const GoldenView kViews[] = {
     {"wash_water_mask", "--camera 0.3,52.9,60000 --layer @coast"},
     {"coast_suruga_bay_water_mask", "--camera 138.62,34.85,9000,10,-25,0 --layer @coast"},
     {"europe_water_mask", "--camera 2,54,2500000 --layer @coast"},
+    // Overlays: draped lines and polygons, labels decluttered and hidden
+    // by terrain, 3D walls, a ground overlay from a KMZ, real files from the ecosystem.
+    {"fuji_overlays",
+     "--camera 138.80,35.25,9000,315,-25,0 --overlay @repo/data/overlays/fuji-demo.kml"},
+    {"globe_countries_places",
+     "--camera 10,30,12000000 --layer @bm"
+     " --overlay @data/interop/overlays/ne_110m_admin_0_countries.geojson"
+     " --overlay @data/interop/overlays/ne_110m_rivers_lake_centerlines.geojson"
+     " --overlay @data/interop/overlays/ne_110m_populated_places_simple.geojson"},
+    {"etna_ground_overlay",
+     "--camera 14.98,37.20,70000,0,-50,0 --overlay-hidden"
+     " --overlay @data/interop/overlays/etna.kmz"},
+    {"alaska_gnis_labels",
+     "--camera -150,62,3500000 --overlay @data/interop/overlays/gnis-ak-first-101.kml"},
+    {"manchester_metrolink",
+     "--camera -2.24,53.36,14000,0,-55,0"
+     " --overlay @data/interop/overlays/tfgm-Metrolink_Lines_Functional.kml"
+     " --overlay @data/interop/overlays/tfgm-Metrolink_Stops_Functional.kml"},
 };
 
-// The view's arguments with the layer placeholders replaced by the layers (tiled once).
+// The view's arguments with the layer placeholders replaced by the layers (tiled once) and @data/
+// by the checkout's tests/data/, @repo/ by the checkout.
 std::string expandLayers(std::string arguments) {
   const std::pair<const char*, const fs::path& (*)()> layers[] = {
       {"@bm", globe::testing::blueMarbleLayer},
       {"@zion", globe::testing::zionLayer},
       {"@coast", globe::testing::coastMask}};
+  const std::pair<std::string, std::string> directories[] = {
+      {"@data/", std::string(GLOBE_SOURCE_DIR) + "/tests/data/"},
+      {"@repo/", std::string(GLOBE_SOURCE_DIR) + "/"}};
+  for (const auto& [token, directory] : directories) {
+    for (size_t at = arguments.find(token); at != std::string::npos; at = arguments.find(token)) {
+      arguments.replace(at, token.size(), directory);
+    }
+  }
   for (const auto& [token, layer] : layers) {
     for (size_t at = arguments.find(token); at != std::string::npos; at = arguments.find(token)) {
       arguments.replace(at, std::string(token).size(), layer().string());

@@ -256,3 +256,32 @@ TEST(NonFiniteInput, QueryNamesEveryNonFiniteLineAndStillAnswersTheGoodOnes) {
 }
 
 }  // namespace
+
+namespace {
+
+// Bad overlay files on every command that takes --overlay: the file and the problem are named,
+// nothing is drawn (exit 2), never a crash.
+TEST(NonFiniteInput, BadOverlayFilesAreNamed) {
+  const fs::path dir = freshTempDir("bad-overlays");
+  {
+    std::ofstream(dir / "nan.kml") << R"(<kml><Placemark><name>Bad</name><Point>
+<coordinates>nan,35</coordinates></Point></Placemark></kml>)";
+  }
+  { std::ofstream(dir / "text.geojson") << "this is not JSON"; }
+  { std::ofstream(dir / "zip.kmz") << "PK\x03\x04 truncated"; }
+  const std::string snapshot = "snapshot PYRAMID -o OUT/x.png --camera 138,35,1000 --overlay ";
+  const std::string play = "play PYRAMID " + std::string(GLOBE_SOURCE_DIR) +
+                           "/data/paths/fuji-demo.json --no-frames --out OUT/play --overlay ";
+  expectRefused({
+      {snapshot + (dir / "nan.kml").string(), "nan.kml", 2},
+      {snapshot + (dir / "nan.kml").string(), "Bad", 2},
+      {snapshot + (dir / "text.geojson").string(), "text.geojson", 2},
+      {snapshot + (dir / "zip.kmz").string(), "zip.kmz", 2},
+      {snapshot + (dir / "missing.gpx").string(), "missing.gpx", 2},
+      {play + (dir / "nan.kml").string(), "globe play: --overlay", 2},
+      {"view PYRAMID --frames 1 --overlay " + (dir / "text.geojson").string(),
+       "globe view: --overlay", 2},
+  });
+}
+
+}  // namespace

@@ -1,9 +1,10 @@
 // `globe view`: orbit-control math, and the real window under Xvfb: a screenshot shows terrain,
 // keys and the scroll wheel zoom, Escape quits, an idle window uses almost no CPU; fly mode moves
 // the camera and keeps it above the terrain, the HUD is drawn, P records a path, double-click
-// flies to a point.
+// flies to a point, M measures and X shows the profile.
 #include <gtest/gtest.h>
 #include <unistd.h>
+#include <GeographicLib/Geodesic.hpp>
 
 #include <algorithm>
 #include <array>
@@ -14,6 +15,7 @@
 #include <glm/geometric.hpp>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <set>
 #include <string>
 #include <tuple>
@@ -1022,4 +1024,159 @@ TEST(GlobeViewWindow, ClickPicksPlacemarksAndOOpensAnOverlayFile) {
   const auto dark = [](const uint8_t* p) { return p[0] < 60 && p[1] < 60 && p[2] < 60; };
   EXPECT_GT(count(440, 0, 640, 60, white), 40u);
   EXPECT_GT(count(440, 0, 640, 60, dark), 1000u);
+}
+
+// The ruler (M) and the elevation chart (X): two clicks 200 px apart measure the geodesic between
+// the ground points clicked, four and a click back on the first close a ring whose area is the
+// quadrilateral's, Backspace reopens it then removes a point, X draws the chart at the bottom left
+// and M ends the ruler.
+TEST(GlobeViewWindow, MMeasuresClickedPointsAndXShowsTheirProfile) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const auto dir = globe::testing::freshTempDir("view-ruler");
+  // Waits until the log has at least $2 lines matching $1.
+  const std::string waitFor =
+      "waitfor() { for i in $(seq 150); do [ $(grep -c \"$1\" log.txt) -ge $2 ] && return; "
+      "sleep 0.1; done; }\n";
+  const std::string shoot =
+      "xdotool key --window $WID k\n"
+      "waitfor 'wrote screenshot' $SHOTS; SHOTS=$((SHOTS + 1))\n";
+  const ShellRun run = runUnderXvfb(
+      "view-ruler-run", globeView("--size 640x360 --log --record-dir " + dir.string() +
+                                  " --camera 138.73,35.36,20000,0,-90,0 > log.txt &\n") +
+                            "VIEW=$!\n" + waitFor + kFindWindow + kWaitUntilStill +
+                            "xdotool key --window $WID m\n"
+                            "xdotool mousemove --window $WID 220 180 click --window $WID 1\n"
+                            "waitfor '^ruler: 1 points' 1\n"
+                            "xdotool mousemove --window $WID 420 180 click --window $WID 1\n"
+                            "waitfor '^ruler: 2 points' 1\n"
+                            "xdotool mousemove --window $WID 420 80 click --window $WID 1\n"
+                            "waitfor '^ruler: 3 points' 1\n"
+                            "xdotool mousemove --window $WID 220 80 click --window $WID 1\n"
+                            "waitfor '^ruler: 4 points' 1\n"
+                            "xdotool mousemove --window $WID 222 181 click --window $WID 1\n"
+                            "waitfor 'area' 1\n"
+                            "xdotool key --window $WID BackSpace\n"
+                            "waitfor '^ruler: 4 points' 3\n"
+                            "xdotool key --window $WID BackSpace\n"
+                            "waitfor '^ruler: 3 points' 2\n" +
+                            kWaitUntilStill + "SHOTS=1\n" + shoot +
+                            "xdotool key --window $WID x\n"
+                            "waitfor '^profile: ' 1\n" +
+                            kWaitUntilStill + shoot +
+                            "xdotool key --window $WID m\n"
+                            "waitfor '^ruler: 0 points' 1\n" +
+                            kWaitUntilStill + shoot +
+                            "xdotool keydown --window $WID Escape\n"
+                            "wait $VIEW; echo exit=$?\n"
+                            "cat log.txt\n");
+  const auto values = valuesOf(run.output);
+  ASSERT_EQ(values.count("exit"), 1u) << run.output;
+  EXPECT_EQ(values.at("exit"), "0") << run.output;
+
+  // The points clicked and each "ruler: N points, L m[, area A m2]" line, in order.
+  std::vector<std::array<double, 2>> points;
+  struct Measure {
+    int points;
+    double lengthMeters, areaSquareMeters;
+  };
+  std::vector<Measure> measures;
+  for (size_t at = 0; at < run.output.size();) {
+    const size_t end = std::min(run.output.find('\n', at), run.output.size());
+    const std::string line = run.output.substr(at, end - at);
+    at = end + 1;
+    int n = 0;
+    double lon = 0, lat = 0, length = 0, area = -1;
+    if (std::sscanf(line.c_str(), "ruler point %d: %lf,%lf", &n, &lon, &lat) == 3) {
+      points.push_back({lon, lat});
+    } else if (std::sscanf(line.c_str(), "ruler: %d points, %lf m, area %lf m2", &n, &length,
+                           &area) >= 2) {
+      measures.push_back({n, length, area});
+    }
+  }
+  ASSERT_EQ(points.size(), 4u) << run.output;
+  ASSERT_EQ(measures.size(), 8u) << run.output;
+  const GeographicLib::Geodesic& wgs84 = GeographicLib::Geodesic::WGS84();
+  const auto distance = [&](const std::array<double, 2>& a, const std::array<double, 2>& b) {
+    double meters = 0;
+    wgs84.Inverse(a[1], a[0], b[1], b[0], meters);
+    return meters;
+  };
+  // Two points 200 px apart at ~40 m a pixel; the length is their geodesic's.
+  EXPECT_EQ(measures[1].points, 2);
+  const double expected = distance(points[0], points[1]);
+  std::printf("two points: %.1f m, GeographicLib %.1f m\n", measures[1].lengthMeters, expected);
+  EXPECT_GT(expected, 5000);
+  EXPECT_LT(expected, 12000);
+  EXPECT_NEAR(measures[1].lengthMeters, expected, expected * 0.01);
+  // The closed ring: its perimeter, and the area of the quadrilateral on a local plane.
+  const Measure& ring = measures[4];
+  EXPECT_EQ(ring.points, 4);
+  ASSERT_GT(ring.areaSquareMeters, 0) << run.output;
+  double perimeter = 0, twiceArea = 0;
+  const double metersPerDegreeLat = 110'950, lat0 = points[0][1] * std::numbers::pi / 180;
+  const double metersPerDegreeLon = 111'320 * std::cos(lat0) * 1.0011;  // WGS84's N at 35 N
+  for (size_t i = 0; i < 4; ++i) {
+    const auto& a = points[i];
+    const auto& b = points[(i + 1) % 4];
+    perimeter += distance(a, b);
+    twiceArea +=
+        (a[0] - points[0][0]) * metersPerDegreeLon * (b[1] - points[0][1]) * metersPerDegreeLat -
+        (b[0] - points[0][0]) * metersPerDegreeLon * (a[1] - points[0][1]) * metersPerDegreeLat;
+  }
+  std::printf("ring: %.1f m around, %.0f m2; plane %.0f m2\n", ring.lengthMeters,
+              ring.areaSquareMeters, std::abs(twiceArea) / 2);
+  EXPECT_NEAR(ring.lengthMeters, perimeter, perimeter * 0.01);
+  EXPECT_NEAR(ring.areaSquareMeters, std::abs(twiceArea) / 2, std::abs(twiceArea) / 2 * 0.03);
+  // Backspace reopened the ring, then removed its last point; M cleared it.
+  EXPECT_EQ(measures[5].points, 4);
+  EXPECT_LT(measures[5].areaSquareMeters, 0);
+  EXPECT_EQ(measures[6].points, 3);
+  EXPECT_EQ(measures[7].points, 0);
+  EXPECT_EQ(measures[7].lengthMeters, 0);
+  EXPECT_NE(run.output.find("profile: "), std::string::npos) << run.output;
+  size_t samples = 0;
+  double profileLength = 0, low = 0, high = 0;
+  const size_t profileAt = run.output.find("\nprofile: ");
+  ASSERT_NE(profileAt, std::string::npos) << run.output;
+  ASSERT_EQ(std::sscanf(run.output.c_str() + profileAt + 1,
+                        "profile: %zu samples, %lf m, min %lf m, max %lf m", &samples,
+                        &profileLength, &low, &high),
+            4)
+      << run.output;
+  EXPECT_NEAR(profileLength, measures[6].lengthMeters, 1) << "the three points' path";
+  EXPECT_GT(samples, 50u);
+  EXPECT_LT(low, high);
+  EXPECT_GT(high, 1500) << "Fuji's flanks";
+
+  // The screenshots before X, with the chart, and after M: the chart fills the bottom left.
+  std::vector<std::string> shots;
+  for (size_t at = 0; (at = run.output.find("wrote screenshot ", at)) != std::string::npos;) {
+    at += 17;
+    shots.push_back(run.output.substr(at, run.output.find('\n', at) - at));
+  }
+  ASSERT_EQ(shots.size(), 3u) << run.output;
+  std::vector<globe::formats::ImageRgba> images;
+  for (const std::string& shot : shots) {
+    auto image = globe::formats::loadImageRgba(shot);
+    ASSERT_TRUE(image) << image.error();
+    images.push_back(std::move(*image));
+  }
+  const auto differing = [&](const globe::formats::ImageRgba& a,
+                             const globe::formats::ImageRgba& b) {
+    size_t n = 0;
+    for (int y = 360 - 34 - 150; y < 360 - 34; ++y) {
+      for (int x = 8; x < 8 + 320; ++x) {
+        const size_t k = static_cast<size_t>(y * a.widthPixels + x) * 4;
+        n += std::abs(a.pixels[k] - b.pixels[k]) + std::abs(a.pixels[k + 1] - b.pixels[k + 1]) +
+                 std::abs(a.pixels[k + 2] - b.pixels[k + 2]) >
+             60;
+      }
+    }
+    return n;
+  };
+  std::printf("chart corner: %zu pixels differ with the chart, %zu after M (of %d)\n",
+              differing(images[0], images[1]), differing(images[0], images[2]), 320 * 150);
+  EXPECT_GT(differing(images[0], images[1]), 320u * 150 / 3) << shots[1];
+  EXPECT_LT(differing(images[0], images[2]), 320u * 150 / 20) << shots[2];
 }
