@@ -146,8 +146,10 @@ Result<std::unique_ptr<ImageryLayers>> ImageryLayers::open(
     const bool mask = store->manifest().kind == formats::LayerKind::WaterMask;
     (mask ? masks : colourLayers) += 1;
     if (colourLayers > terrain::kMaxDrapeLayers) {
-      return makeError("at most " + std::to_string(terrain::kMaxDrapeLayers) +
-                       " imagery layers (and one water mask)");
+      return makeError(
+          "at most " + std::to_string(terrain::kMaxDrapeLayers) +
+          " imagery layers (and one water mask); the overlays' draped lines and polygons "
+          "take one");
     }
     if (masks > 1) {
       return makeError(options.directory.string() +

@@ -375,3 +375,38 @@ TEST(GlobePlaySea, TheCameraStopsAtTheWaterSurfaceUnlessTheSeaFloorIsShown) {
 
 }  // namespace
 }  // namespace globe::app
+
+namespace globe::app {
+namespace {
+
+// Playback draws overlays too: the bundled Fuji tour's frames with data/overlays/fuji-demo.kml
+// differ from the same frames without it, the collision log does not (overlays never move the
+// camera).
+TEST(GlobePlayFormats, OverlaysAreDrawnInPlayback) {
+  const fs::path dir = freshTempDir("play-overlays");
+  const std::string common = bundledPyramid().string() + " " + std::string(GLOBE_SOURCE_DIR) +
+                             "/data/paths/fuji-tour.kml --fps 0.5 --size 160x90 --out ";
+  const PlayRun plain = runGlobe(common + (dir / "plain").string());
+  ASSERT_EQ(plain.exitCode, 0) << plain.output;
+  const PlayRun overlaid = runGlobe(common + (dir / "overlaid").string() + " --overlay " +
+                                    std::string(GLOBE_SOURCE_DIR) + "/data/overlays/fuji-demo.kml");
+  ASSERT_EQ(overlaid.exitCode, 0) << overlaid.output;
+  size_t frames = 0, differing = 0;
+  for (const auto& entry : fs::directory_iterator(dir / "plain" / "frames")) {
+    const fs::path other = dir / "overlaid" / "frames" / entry.path().filename();
+    ASSERT_TRUE(fs::exists(other)) << other;
+    ++frames;
+    differing += readFile(entry.path()) != readFile(other);
+  }
+  EXPECT_GT(frames, 5u);
+  EXPECT_GT(differing, frames / 2) << "the trail, the zone, the wall and the labels show";
+  const auto plainRows = readLog(dir / "plain" / "log.csv");
+  const auto overlaidRows = readLog(dir / "overlaid" / "log.csv");
+  ASSERT_EQ(plainRows.size(), overlaidRows.size());
+  for (size_t i = 0; i < plainRows.size(); ++i) {
+    EXPECT_EQ(plainRows[i].at("clearance_m"), overlaidRows[i].at("clearance_m")) << i;
+  }
+}
+
+}  // namespace
+}  // namespace globe::app
