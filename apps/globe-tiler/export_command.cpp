@@ -61,9 +61,10 @@ int exportTree(const std::string& format, const std::string& out, const std::str
   }
   const auto start = std::chrono::steady_clock::now();
   const geo::Ellipsoid ellipsoid = geo::Ellipsoid::wgs84();
-  auto report = format == "quantized-mesh"
-                    ? publish::exportQuantizedMesh(**store, region, out, ellipsoid)
-                    : publish::exportTerrarium(**store, region, out, ellipsoid);
+  auto report =
+      format == "quantized-mesh" ? publish::exportQuantizedMesh(**store, region, out, ellipsoid)
+      : format == "terrain-rgb"  ? publish::exportTerrainRgb(**store, region, out, ellipsoid)
+                                 : publish::exportTerrarium(**store, region, out, ellipsoid);
   if (!report) {
     std::fprintf(stderr, "globe-tiler export: %s\n", report.error().c_str());
     return 1;
@@ -82,16 +83,18 @@ int exportTree(const std::string& format, const std::string& out, const std::str
 int runExportCommand(int argc, char** argv) {
   CLI::App app{
       "Export a pyramid for other viewers: a tile tree (--format quantized-mesh for CesiumJS, "
-      "terrarium for MapLibre and others), or one block as a standalone GTOPO30 .DEM/.HDR",
+      "terrarium or terrain-rgb for MapLibre and others), or one block as a standalone GTOPO30 "
+      ".DEM/.HDR",
       "globe-tiler export"};
   std::string format, out, levels, bounds;
   std::vector<std::string> positional;
-  app.add_option("--format", format, "quantized-mesh | terrarium (a tile tree into -o DIR)")
-      ->check(CLI::IsMember({"quantized-mesh", "terrarium"}));
+  app.add_option("--format", format,
+                 "quantized-mesh | terrarium | terrain-rgb (a tile tree into -o DIR)")
+      ->check(CLI::IsMember({"quantized-mesh", "terrarium", "terrain-rgb"}));
   app.add_option("-o,--output", out, "the tree's directory (with --format)");
   app.add_option("--levels", levels,
-                 "A-B: pyramid levels (quantized-mesh) or Web-Mercator zooms (terrarium); "
-                 "default all (terrarium: 0 to 22, as deep as the pyramid has data)");
+                 "A-B: pyramid levels (quantized-mesh) or Web-Mercator zooms (terrarium, "
+                 "terrain-rgb); default all (zooms: 0 to 22, as deep as the pyramid has data)");
   app.add_option("--bounds", bounds, "W,S,E,N degrees: the region exported (default the world)");
   app.add_option("ARGS", positional,
                  "with --format: PYRAMID; without: PYRAMID L X Y OUT_STEM (one block as GTOPO30 "

@@ -50,9 +50,22 @@ std::array<uint8_t, 3> terrariumPixel(double heightMeters) {
           static_cast<uint8_t>(v & 0xFFU)};
 }
 
-Result<ExportReport> exportTerrarium(streaming::TerrainSource& source, const ExportRegion& region,
-                                     const std::filesystem::path& outDir,
-                                     const geo::Ellipsoid& ellipsoid) {
+std::array<uint8_t, 3> terrainRgbPixel(double heightMeters) {
+  const double value =
+      std::clamp(std::round((heightMeters + 10000.0) * 10.0), 0.0, 256.0 * 65536.0 - 1.0);
+  const auto v = static_cast<uint32_t>(value);
+  return {static_cast<uint8_t>(v >> 16), static_cast<uint8_t>((v >> 8) & 0xFFU),
+          static_cast<uint8_t>(v & 0xFFU)};
+}
+
+namespace {
+
+using PixelEncoding = std::array<uint8_t, 3> (*)(double heightMeters);
+
+Result<ExportReport> exportElevationPngs(streaming::TerrainSource& source,
+                                         const ExportRegion& region,
+                                         const std::filesystem::path& outDir,
+                                         const geo::Ellipsoid& ellipsoid, PixelEncoding encode) {
   PyramidSurface surface(source, ellipsoid);
   ExportReport report;
   const uint32_t lastZoom = std::min(region.maxLevel, 22U);
@@ -82,7 +95,7 @@ Result<ExportReport> exportTerrarium(streaming::TerrainSource& source, const Exp
                       ((x + (c + 0.5) / kTileSize) / tiles * 360 - 180) * std::numbers::pi / 180;
                   auto h = surface.heightMeters(lon, lat, level);
                   if (!h) return Error{h.error()};
-                  const auto pixel = terrariumPixel(*h);
+                  const auto pixel = encode(*h);
                   std::copy(pixel.begin(), pixel.end(), &image.pixels[(r * kTileSize + c) * 4]);
                 }
               }
@@ -94,6 +107,20 @@ Result<ExportReport> exportTerrarium(streaming::TerrainSource& source, const Exp
     }
   }
   return report;
+}
+
+}  // namespace
+
+Result<ExportReport> exportTerrarium(streaming::TerrainSource& source, const ExportRegion& region,
+                                     const std::filesystem::path& outDir,
+                                     const geo::Ellipsoid& ellipsoid) {
+  return exportElevationPngs(source, region, outDir, ellipsoid, terrariumPixel);
+}
+
+Result<ExportReport> exportTerrainRgb(streaming::TerrainSource& source, const ExportRegion& region,
+                                      const std::filesystem::path& outDir,
+                                      const geo::Ellipsoid& ellipsoid) {
+  return exportElevationPngs(source, region, outDir, ellipsoid, terrainRgbPixel);
 }
 
 }  // namespace globe::publish

@@ -1,7 +1,8 @@
-// A pyramid as Terrarium elevation tiles: DIR/{z}/{x}/{y}.png, 256×256 Web-Mercator XYZ, each
-// pixel the exact surface at its centre encoded as (R·256 + G + B/256) − 32768 m, from the
-// pyramid level whose vertex spacing first matches the pixel's (coarser where the pyramid stops).
-// What MapLibre's raster-dem (encoding "terrarium") and globe's terrarium: source read.
+// A pyramid as elevation PNG tiles: DIR/{z}/{x}/{y}.png, 256×256 Web-Mercator XYZ, each pixel the
+// exact surface at its centre, from the pyramid level whose vertex spacing first matches the
+// pixel's (coarser where the pyramid stops). Terrarium encodes (R·256 + G + B/256) − 32768 m,
+// Mapbox's Terrain-RGB −10000 + (R·65536 + G·256 + B)·0.1 m. What MapLibre's raster-dem
+// (encoding "terrarium" or "mapbox") and globe's terrarium: and terrain-rgb: sources read.
 #pragma once
 
 #include <array>
@@ -20,7 +21,13 @@ Result<ExportReport> exportTerrarium(streaming::TerrainSource& source, const Exp
                                      const std::filesystem::path& outDir,
                                      const geo::Ellipsoid& ellipsoid);
 
+Result<ExportReport> exportTerrainRgb(streaming::TerrainSource& source, const ExportRegion& region,
+                                      const std::filesystem::path& outDir,
+                                      const geo::Ellipsoid& ellipsoid);
+
 // The Terrarium pixel of a height, rounded to 1/256 m and clamped to what the encoding holds.
 std::array<uint8_t, 3> terrariumPixel(double heightMeters);
+// The Terrain-RGB pixel of a height, rounded to 0.1 m and clamped to what the encoding holds.
+std::array<uint8_t, 3> terrainRgbPixel(double heightMeters);
 
 }  // namespace globe::publish

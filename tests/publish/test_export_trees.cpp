@@ -313,6 +313,45 @@ TEST(ExportTrees, TerrariumPixelsAreTheExactSurfaceAtTheirCentres) {
   EXPECT_EQ(terrariumPixel(1e9), (std::array<uint8_t, 3>{255, 255, 255}));  // clamped
 }
 
+// The same tile as Terrain-RGB (Mapbox's encoding, 0.1 m steps): each pixel within 0.05 m of the
+// exact surface at its centre, decoded here by the published formula.
+TEST(ExportTrees, TerrainRgbPixelsAreTheExactSurfaceAtTheirCentres) {
+  const fs::path out = globe::testing::freshTempDir("export-terrain-rgb") / "t";
+  const Exit r = run(tiler() + "--format terrain-rgb -o " + out.string() +
+                     " --levels 10 --bounds 138.7,35.3,138.8,35.4 " +
+                     globe::testing::bundledPyramid().string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("terrain-rgb tiles written"), std::string::npos) << r.output;
+  const int z = 10;
+  const int x = static_cast<int>((138.75 + 180) / 360 * 1024);
+  const double latRadians = 35.35 * std::numbers::pi / 180;
+  const int y = static_cast<int>(
+      (1 - std::log(std::tan(latRadians) + 1 / std::cos(latRadians)) / std::numbers::pi) / 2 *
+      1024);
+  auto image = formats::loadImageRgba(out / std::to_string(z) / std::to_string(x) /
+                                      (std::to_string(y) + ".png"));
+  ASSERT_TRUE(image) << image.error();
+  ASSERT_EQ(image->widthPixels, 256);
+  std::vector<Point> points;
+  std::vector<double> decoded;
+  std::mt19937 random(7);
+  std::uniform_int_distribution<int> pixel(0, 255);
+  for (int i = 0; i < 100; ++i) {
+    const int column = pixel(random), row = pixel(random);
+    points.push_back(pixelCentre(z, x, y, column, row));
+    const uint8_t* p = &image->pixels[(static_cast<size_t>(row) * 256 + column) * 4];
+    decoded.push_back(-10000.0 + (p[0] * 65536.0 + p[1] * 256.0 + p[2]) * 0.1);
+  }
+  const fs::path file = writePoints(out.parent_path() / "points.txt", points);
+  const std::vector<double> d = sortedDifferences(decoded, exactHeights(file, "13"));
+  ASSERT_EQ(d.size(), 100u);
+  EXPECT_LT(d.back(), 0.05 + 1e-6) << "median " << d[50];
+  EXPECT_EQ(terrainRgbPixel(0.0), (std::array<uint8_t, 3>{1, 134, 160}));  // 100000
+  EXPECT_EQ(terrainRgbPixel(-10000.0), (std::array<uint8_t, 3>{0, 0, 0}));
+  EXPECT_EQ(terrainRgbPixel(-20000.0), (std::array<uint8_t, 3>{0, 0, 0}));   // clamped
+  EXPECT_EQ(terrainRgbPixel(3776.04), (std::array<uint8_t, 3>{2, 26, 32}));  // 137760
+}
+
 TEST(ExportTrees, BadArgumentsAreClearErrors) {
   const std::string pyramid = globe::testing::bundledPyramid().string();
   const fs::path out = globe::testing::freshTempDir("export-bad") / "x";
