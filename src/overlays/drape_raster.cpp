@@ -98,12 +98,6 @@ void drawImage(cairo_t* cairo, const TileFrame& frame, const DrapedImage& image,
   cairo_surface_destroy(source);
 }
 
-double widestLine(const DrapeSet& set) {
-  double widest = 1;
-  for (const DrapedShape& shape : set.shapes) widest = std::max(widest, shape.lineWidthPixels);
-  return widest;
-}
-
 DegreesBox shifted(const DegreesBox& box, double shift) {
   return {box.west + shift, box.south, box.east + shift, box.north};
 }
@@ -123,7 +117,7 @@ DegreesBox tileReach(const geo::TileId& tile, int tileSizePixels, double maxLine
 
 bool touchesTile(const DrapeSet& set, const geo::TileId& tile, int tileSizePixels) {
   if (set.empty()) return false;
-  const DegreesBox reach = tileReach(tile, tileSizePixels, widestLine(set));
+  const DegreesBox reach = tileReach(tile, tileSizePixels, set.widestLinePixels);
   bool anyShift = false;
   for (const double shift : kShifts) anyShift |= shifted(set.bounds, shift).intersects(reach);
   if (!anyShift) return false;
@@ -143,7 +137,7 @@ formats::ImageRgba drawTile(const DrapeSet& set, const geo::TileId& tile, int ti
   out.widthPixels = out.heightPixels = tileSizePixels;
   out.pixels.assign(static_cast<size_t>(tileSizePixels) * tileSizePixels * 4, 0);
   const TileFrame frame = frameOf(tile, tileSizePixels);
-  const DegreesBox reach = tileReach(tile, tileSizePixels, widestLine(set));
+  const DegreesBox reach = tileReach(tile, tileSizePixels, set.widestLinePixels);
 
   std::vector<uint32_t> argb(static_cast<size_t>(tileSizePixels) * tileSizePixels, 0);
   cairo_surface_t* surface = cairo_image_surface_create_for_data(

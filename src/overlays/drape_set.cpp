@@ -119,6 +119,7 @@ DrapeSet makeDrapeSet(std::span<const std::shared_ptr<const OverlayDocument>> do
         shape.fill = shape.closed && placemark.style.fill;
         shape.outline = !shape.closed || placemark.style.outline;
         grow(set.bounds, shape.box);
+        set.widestLinePixels = std::max(set.widestLinePixels, shape.lineWidthPixels);
         (shape.closed ? set.shapes : lines).push_back(std::move(shape));
       }
     }

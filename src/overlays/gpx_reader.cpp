@@ -20,14 +20,9 @@ class GpxReader {
 
   Result<OverlayDocument> read(std::string_view text) {
     tinyxml2::XMLDocument xml;
-    if (xml.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
-      return makeError(where_ + ": not XML (" + std::string(xml.ErrorStr()) + ")");
-    }
-    const XMLElement* root = xml.RootElement();
-    if (root == nullptr || localName(*root) != "gpx") {
-      return makeError(where_ + ": not GPX (the root element is <" +
-                       std::string(root != nullptr ? root->Name() : "") + ">, not <gpx>)");
-    }
+    auto parsed = parseRootElement(xml, text, where_, "gpx", "GPX");
+    if (!parsed) return Error{parsed.error()};
+    const XMLElement* root = *parsed;
     const XMLElement* metadata = child(*root, "metadata");  // GPX 1.1; 1.0 names the root
     document_.name = childText(metadata != nullptr ? *metadata : *root, "name").value_or("");
     if (document_.name.empty()) document_.name = document_.file.filename().string();

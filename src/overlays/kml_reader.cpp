@@ -59,14 +59,9 @@ class KmlReader {
 
   Result<OverlayDocument> read(std::string_view text) {
     tinyxml2::XMLDocument xml;
-    if (xml.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
-      return makeError(where_ + ": not XML (" + std::string(xml.ErrorStr()) + ")");
-    }
-    const XMLElement* root = xml.RootElement();
-    if (root == nullptr || localName(*root) != "kml") {
-      return makeError(where_ + ": not KML (the root element is <" +
-                       std::string(root != nullptr ? root->Name() : "") + ">, not <kml>)");
-    }
+    auto parsed = parseRootElement(xml, text, where_, "kml", "KML");
+    if (!parsed) return Error{parsed.error()};
+    const XMLElement* root = *parsed;
     if (auto collected = collectStyles(*root, 0); !collected) return Error{collected.error()};
     if (auto features = readContainer(*root, "", true, 0, true); !features) {
       return Error{features.error()};

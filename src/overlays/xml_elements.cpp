@@ -54,4 +54,20 @@ std::optional<double> parseNumber(std::string_view text) {
   return value;
 }
 
+Result<const tinyxml2::XMLElement*> parseRootElement(tinyxml2::XMLDocument& xml,
+                                                     std::string_view text,
+                                                     const std::string& where,
+                                                     std::string_view root, std::string_view kind) {
+  if (xml.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
+    return makeError(where + ": not XML (" + std::string(xml.ErrorStr()) + ")");
+  }
+  const tinyxml2::XMLElement* element = xml.RootElement();
+  if (element == nullptr || localName(*element) != root) {
+    return makeError(where + ": not " + std::string(kind) + " (the root element is <" +
+                     std::string(element != nullptr ? element->Name() : "") + ">, not <" +
+                     std::string(root) + ">)");
+  }
+  return element;
+}
+
 }  // namespace globe::overlays

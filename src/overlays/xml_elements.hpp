@@ -8,6 +8,8 @@
 #include <string>
 #include <string_view>
 
+#include "core/result.hpp"
+
 namespace globe::overlays {
 
 // The element's name without a namespace prefix: "gx:Track" is "Track".
@@ -23,6 +25,13 @@ std::string textOf(const tinyxml2::XMLElement& element);
 std::optional<std::string> childText(const tinyxml2::XMLElement& parent, std::string_view name);
 
 std::string_view trimmed(std::string_view text);
+
+// Parses `text` into `xml` and returns its root element, which must have the local name `root`;
+// errors name `where` and say "not XML (why)" or "not KIND (the root element is <x>, not <root>)".
+Result<const tinyxml2::XMLElement*> parseRootElement(tinyxml2::XMLDocument& xml,
+                                                     std::string_view text,
+                                                     const std::string& where,
+                                                     std::string_view root, std::string_view kind);
 
 // KML's xsd:boolean: "1"/"true" or "0"/"false"; nullopt for anything else.
 std::optional<bool> parseBoolean(std::string_view text);
