@@ -7,7 +7,7 @@ _globe_complete() {
   local subcommands="" subcommand="" word
   case "${program##*/}" in
     globe) subcommands="info snapshot query view play sources search profile views" ;;
-    globe-tiler) subcommands="imagery water-mask export" ;;
+    globe-tiler) subcommands="imagery water-mask export export-imagery" ;;
   esac
   for word in "${COMP_WORDS[@]:1:COMP_CWORD-1}"; do
     case " $subcommands " in *" $word "*) subcommand=$word; break ;; esac

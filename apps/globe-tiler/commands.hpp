@@ -8,6 +8,8 @@ namespace globe::tiler_app {
 int runTileCommand(int argc, char** argv);
 // globe-tiler export: a tile tree for other viewers (--format), or one block as a GTOPO30 file.
 int runExportCommand(int argc, char** argv);
+// globe-tiler export-imagery --format xyz|tms|pmtiles -o OUT LAYER: a layer for web maps.
+int runExportImageryCommand(int argc, char** argv);
 // globe-tiler imagery -o LAYER INPUT...: imagery to a layer.
 int runImageryCommand(int argc, char** argv);
 // globe-tiler water-mask -o LAYER POLYGONS...: land polygons to a water-mask layer.

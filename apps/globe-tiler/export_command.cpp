@@ -1,11 +1,14 @@
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <string>
+#include <thread>
 
 #include "apps/globe-tiler/commands.hpp"
 #include "geo/ellipsoid.hpp"
+#include "publish/heightmap_export.hpp"
 #include "publish/quantized_mesh_export.hpp"
 #include "publish/terrarium_export.hpp"
 #include "streaming/tile_store.hpp"
@@ -14,40 +17,17 @@
 namespace globe::tiler_app {
 namespace {
 
-// "A-B" or "A" into the region's levels.
-bool parseLevels(const std::string& text, publish::ExportRegion& region) {
-  unsigned first = 0, last = 0;
-  char extra = 0;
-  if (std::sscanf(text.c_str(), "%u-%u%c", &first, &last, &extra) == 2 && first <= last) {
-  } else if (std::sscanf(text.c_str(), "%u%c", &first, &extra) == 1) {
-    last = first;
-  } else {
-    return false;
-  }
-  region.minLevel = first;
-  region.maxLevel = last;
-  return true;
-}
-
-bool parseBounds(const std::string& text, publish::ExportRegion& region) {
-  double w = 0, s = 0, e = 0, n = 0;
-  char extra = 0;
-  if (std::sscanf(text.c_str(), "%lf,%lf,%lf,%lf%c", &w, &s, &e, &n, &extra) != 4) return false;
-  if (!(w >= -180 && e <= 180 && w < e && s >= -90 && n <= 90 && s < n)) return false;
-  region = {region.minLevel, region.maxLevel, w, s, e, n};
-  return true;
-}
-
 // globe-tiler export --format F -o DIR PYRAMID: a tile tree for web viewers.
 int exportTree(const std::string& format, const std::string& out, const std::string& pyramid,
-               const std::string& levels, const std::string& bounds) {
+               const std::string& levels, const std::string& bounds, bool webp,
+               double meshErrorFraction, unsigned threads) {
   publish::ExportRegion region;
-  if (!levels.empty() && !parseLevels(levels, region)) {
+  if (!levels.empty() && !publish::parseExportLevels(levels, region)) {
     std::fprintf(stderr, "globe-tiler export: --levels must be A-B or A, not '%s'\n",
                  levels.c_str());
     return 2;
   }
-  if (!bounds.empty() && !parseBounds(bounds, region)) {
+  if (!bounds.empty() && !publish::parseExportBounds(bounds, region)) {
     std::fprintf(stderr,
                  "globe-tiler export: --bounds must be W,S,E,N in degrees (W < E, S < N), not "
                  "'%s'\n",
@@ -61,10 +41,14 @@ int exportTree(const std::string& format, const std::string& out, const std::str
   }
   const auto start = std::chrono::steady_clock::now();
   const geo::Ellipsoid ellipsoid = geo::Ellipsoid::wgs84();
+  const auto tiles =
+      webp ? publish::ElevationTileFormat::WebpLossless : publish::ElevationTileFormat::Png;
   auto report =
-      format == "quantized-mesh" ? publish::exportQuantizedMesh(**store, region, out, ellipsoid)
-      : format == "terrain-rgb"  ? publish::exportTerrainRgb(**store, region, out, ellipsoid)
-                                 : publish::exportTerrarium(**store, region, out, ellipsoid);
+      format == "quantized-mesh" ? publish::exportQuantizedMesh(**store, region, out, ellipsoid,
+                                                                meshErrorFraction, threads)
+      : format == "heightmap"    ? publish::exportHeightmap(**store, region, out, ellipsoid)
+      : format == "terrain-rgb"  ? publish::exportTerrainRgb(**store, region, out, ellipsoid, tiles)
+                                 : publish::exportTerrarium(**store, region, out, ellipsoid, tiles);
   if (!report) {
     std::fprintf(stderr, "globe-tiler export: %s\n", report.error().c_str());
     return 1;
@@ -82,19 +66,35 @@ int exportTree(const std::string& format, const std::string& out, const std::str
 
 int runExportCommand(int argc, char** argv) {
   CLI::App app{
-      "Export a pyramid for other viewers: a tile tree (--format quantized-mesh for CesiumJS, "
-      "terrarium or terrain-rgb for MapLibre and others), or one block as a standalone GTOPO30 "
-      ".DEM/.HDR",
+      "Export a pyramid for other viewers: a tile tree (--format quantized-mesh or heightmap for "
+      "CesiumJS, terrarium or terrain-rgb for MapLibre and others), or one block as a standalone "
+      "GTOPO30 .DEM/.HDR",
       "globe-tiler export"};
   std::string format, out, levels, bounds;
   std::vector<std::string> positional;
+  bool webp = false;
+  double meshErrorFraction = 1.0;
+  unsigned threads = std::max(1U, std::thread::hardware_concurrency());
   app.add_option("--format", format,
-                 "quantized-mesh | terrarium | terrain-rgb (a tile tree into -o DIR)")
-      ->check(CLI::IsMember({"quantized-mesh", "terrarium", "terrain-rgb"}));
+                 "quantized-mesh | heightmap | terrarium | terrain-rgb (a tile tree into -o DIR; "
+                 "heightmap: Cesium's heightmap-1.0)")
+      ->check(CLI::IsMember({"quantized-mesh", "heightmap", "terrarium", "terrain-rgb"}));
+  app.add_flag("--webp", webp,
+               "terrarium, terrain-rgb: tiles as lossless WebP ({z}/{x}/{y}.webp) instead of PNG "
+               "(always lossless: a lossy colour would be another height)");
+  app.add_option("--mesh-error", meshErrorFraction,
+                 "quantized-mesh: each tile's TIN lies within this fraction of the tile's "
+                 "geometric error (CesiumJS's estimate, 77 km / 2^level, what it refines by) of "
+                 "the surface; 0 keeps the whole 65×65 grid, the surface exactly (default 1)")
+      ->check(CLI::Range(0.0, 16.0));
+  app.add_option("-j,--threads", threads,
+                 "quantized-mesh: worker threads making tiles (default: every core)")
+      ->check(CLI::Range(1U, 1024U));
   app.add_option("-o,--output", out, "the tree's directory (with --format)");
-  app.add_option("--levels", levels,
-                 "A-B: pyramid levels (quantized-mesh) or Web-Mercator zooms (terrarium, "
-                 "terrain-rgb); default all (zooms: 0 to 22, as deep as the pyramid has data)");
+  app.add_option(
+      "--levels", levels,
+      "A-B: pyramid levels (quantized-mesh, heightmap) or Web-Mercator zooms (terrarium, "
+      "terrain-rgb); default all (zooms: 0 to 22, as deep as the pyramid has data)");
   app.add_option("--bounds", bounds, "W,S,E,N degrees: the region exported (default the world)");
   app.add_option("ARGS", positional,
                  "with --format: PYRAMID; without: PYRAMID L X Y OUT_STEM (one block as GTOPO30 "
@@ -106,7 +106,18 @@ int runExportCommand(int argc, char** argv) {
       std::fprintf(stderr, "globe-tiler export: --format needs -o DIR and one PYRAMID\n");
       return 2;
     }
-    return exportTree(format, out, positional[0], levels, bounds);
+    if (webp && format != "terrarium" && format != "terrain-rgb") {
+      std::fprintf(stderr,
+                   "globe-tiler export: --webp is for --format terrarium or terrain-rgb "
+                   "(lossless WebP elevation tiles), not '%s'\n",
+                   format.c_str());
+      return 2;
+    }
+    return exportTree(format, out, positional[0], levels, bounds, webp, meshErrorFraction, threads);
+  }
+  if (webp) {
+    std::fprintf(stderr, "globe-tiler export: --webp needs --format terrarium or terrain-rgb\n");
+    return 2;
   }
   if (positional.size() != 5) {
     std::fprintf(stderr,

@@ -1,7 +1,7 @@
 // globe-tiler: builds a lat/long quadtree pyramid of GTOPO30-encoded blocks from elevation rasters
 // (the default command), imagery layers (`imagery`), water masks from land polygons
-// (`water-mask`), and exports single blocks back to GTOPO30
-// (`export`).
+// (`water-mask`), exports single blocks back to GTOPO30 or pyramids as web tile trees
+// (`export`), and imagery layers as web tiles (`export-imagery`).
 #include <string>
 
 #include "apps/globe-tiler/commands.hpp"
@@ -9,6 +9,9 @@
 int main(int argc, char** argv) {
   const std::string command = argc > 1 ? argv[1] : "";
   if (command == "export") return globe::tiler_app::runExportCommand(argc - 1, argv + 1);
+  if (command == "export-imagery") {
+    return globe::tiler_app::runExportImageryCommand(argc - 1, argv + 1);
+  }
   if (command == "imagery") return globe::tiler_app::runImageryCommand(argc - 1, argv + 1);
   if (command == "water-mask") return globe::tiler_app::runWaterMaskCommand(argc - 1, argv + 1);
   return globe::tiler_app::runTileCommand(argc, argv);

@@ -71,6 +71,9 @@ Result<PmtilesHeader> decodePmtilesHeader(std::span<const std::byte> b, uint64_t
   h.southDegrees = i32(b, 106) / 1e7;
   h.eastDegrees = i32(b, 110) / 1e7;
   h.northDegrees = i32(b, 114) / 1e7;
+  h.centerZoom = u8(b, 118);
+  h.centerLongitudeDegrees = i32(b, 119) / 1e7;
+  h.centerLatitudeDegrees = i32(b, 123) / 1e7;
   auto within = [&](uint64_t offset, uint64_t length) {
     return offset <= fileBytes && length <= fileBytes - offset;
   };

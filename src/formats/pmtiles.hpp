@@ -38,6 +38,8 @@ struct PmtilesHeader {
   PmtilesTileType tileType = PmtilesTileType::Unknown;
   uint8_t minZoom = 0, maxZoom = 0;
   double westDegrees = -180, southDegrees = -90, eastDegrees = 180, northDegrees = 90;
+  uint8_t centerZoom = 0;
+  double centerLongitudeDegrees = 0, centerLatitudeDegrees = 0;
 };
 
 struct PmtilesEntry {
@@ -55,6 +57,10 @@ Result<std::vector<PmtilesEntry>> decodePmtilesDirectory(std::span<const std::by
                                                          const std::string& name);
 // The Hilbert tile id of z/x/y (z <= 26).
 uint64_t pmtilesTileId(uint32_t z, uint64_t x, uint64_t y);
+// Encoding, for the archives globe-tiler writes (publish/pmtiles_writer.hpp): the 127-byte
+// header, and a directory (entries in tile id order) before any compression.
+std::vector<std::byte> encodePmtilesHeader(const PmtilesHeader& header);
+std::vector<std::byte> encodePmtilesDirectory(std::span<const PmtilesEntry> entries);
 // The entry that holds `tileId` (a tile run covering it, or the leaf directory to search),
 // nullopt when the directory has none.
 std::optional<PmtilesEntry> findPmtilesEntry(const std::vector<PmtilesEntry>& entries,

@@ -74,5 +74,9 @@ struct HeightmapTile {
 };
 Result<HeightmapTile> decodeHeightmapTile(std::span<const std::byte> bytes,
                                           const std::string& name);
+// Encodes a tile (not gzip-compressed): each height as round((h + 1000) · 5) clamped to
+// 0..65535 (0.2 m steps), the child mask, then the water mask when the tile has one (1 or
+// 256×256 bytes). heightMeters holds kSide² values.
+std::vector<std::byte> encodeHeightmapTile(const HeightmapTile& tile);
 
 }  // namespace globe::formats

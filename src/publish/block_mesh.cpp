@@ -1,8 +1,10 @@
 #include "publish/block_mesh.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <utility>
 #include <vector>
 
 #include "geo/ecef.hpp"
@@ -41,47 +43,81 @@ std::array<double, 3> horizonOcclusionPoint(const std::vector<glm::dvec3>& posit
 
 }  // namespace
 
+GridTin wholeGridTin(uint32_t n) {
+  GridTin tin;
+  for (uint32_t i = 0; i < n * n; ++i) tin.samples.push_back(i);
+  const auto at = [n](uint32_t row, uint32_t column) { return row * n + column; };
+  for (uint32_t i = 0; i + 1 < n; ++i) {
+    for (uint32_t j = 0; j + 1 < n; ++j) {
+      tin.triangles.insert(tin.triangles.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      tin.triangles.insert(tin.triangles.end(), {at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  }
+  return tin;
+}
+
 BlockMesh quantizedMeshOfGrid(const geo::TileId& tile, uint32_t verticesPerSide,
                               const std::vector<double>& heightsMeters,
                               const geo::Ellipsoid& ellipsoid) {
+  return quantizedMeshOfTin(tile, verticesPerSide, heightsMeters, wholeGridTin(verticesPerSide),
+                            ellipsoid);
+}
+
+BlockMesh quantizedMeshOfTin(const geo::TileId& tile, uint32_t verticesPerSide,
+                             const std::vector<double>& heightsMeters, const GridTin& tin,
+                             const geo::Ellipsoid& ellipsoid) {
   const uint32_t n = verticesPerSide;
   const terrain::BlockGrid grid{tile, n};
   BlockMesh out;
   formats::QuantizedMesh& mesh = out.mesh;
+  // The culling volumes from every sample: the TIN's flat triangles lie within their hull.
   std::vector<glm::dvec3> positions;
   double lowest = INFINITY;
   double highest = -INFINITY;
   for (uint32_t row = 0; row < n; ++row) {
     for (uint32_t column = 0; column < n; ++column) {
       const double h = heightsMeters[size_t{row} * n + column];
-      // u east, v north: row 0 is the north edge.
-      mesh.u.push_back(
-          static_cast<uint16_t>(std::lround(double{formats::kQuantizedMax} * column / (n - 1))));
-      mesh.v.push_back(static_cast<uint16_t>(
-          std::lround(double{formats::kQuantizedMax} * (n - 1 - row) / (n - 1))));
-      mesh.heightMeters.push_back(h);
       positions.push_back(terrain::tileVertexEcefMeters(ellipsoid, grid, row, column, h));
       lowest = std::min(lowest, h);
       highest = std::max(highest, h);
     }
   }
-  mesh.minimumHeightMeters = static_cast<float>(lowest);
-  mesh.maximumHeightMeters = static_cast<float>(highest);
-  const auto at = [n](uint32_t row, uint32_t column) { return row * n + column; };
-  for (uint32_t i = 0; i + 1 < n; ++i) {
-    for (uint32_t j = 0; j + 1 < n; ++j) {
-      // The renderer's split: the north-west to south-east diagonal, counter-clockwise seen from
-      // above (u east, v north).
-      mesh.triangles.insert(mesh.triangles.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      mesh.triangles.insert(mesh.triangles.end(), {at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
+  double lowestVertex = INFINITY;
+  double highestVertex = -INFINITY;
+  // Border vertices by their position along the side (u or v), for the edge lists.
+  std::vector<std::pair<uint16_t, uint32_t>> west, south, east, north;
+  for (uint32_t sample : tin.samples) {
+    const uint32_t row = sample / n, column = sample % n;
+    const double h = heightsMeters[sample];
+    // u east, v north: row 0 is the north edge.
+    const auto u =
+        static_cast<uint16_t>(std::lround(double{formats::kQuantizedMax} * column / (n - 1)));
+    const auto v = static_cast<uint16_t>(
+        std::lround(double{formats::kQuantizedMax} * (n - 1 - row) / (n - 1)));
+    const auto index = static_cast<uint32_t>(mesh.u.size());
+    mesh.u.push_back(u);
+    mesh.v.push_back(v);
+    mesh.heightMeters.push_back(h);
+    lowestVertex = std::min(lowestVertex, h);
+    highestVertex = std::max(highestVertex, h);
+    if (column == 0) west.emplace_back(v, index);
+    if (column == n - 1) east.emplace_back(v, index);
+    if (row == n - 1) south.emplace_back(u, index);
+    if (row == 0) north.emplace_back(u, index);
   }
-  for (uint32_t k = 0; k < n; ++k) {
-    mesh.westEdge.push_back(at(n - 1 - k, 0));  // from the south, as v grows
-    mesh.eastEdge.push_back(at(n - 1 - k, n - 1));
-    mesh.southEdge.push_back(at(n - 1, k));  // from the west, as u grows
-    mesh.northEdge.push_back(at(0, k));
-  }
+  mesh.minimumHeightMeters = static_cast<float>(lowestVertex);
+  mesh.maximumHeightMeters = static_cast<float>(highestVertex);
+  mesh.triangles = tin.triangles;
+  const auto edge = [](std::vector<std::pair<uint16_t, uint32_t>>& side) {
+    std::sort(side.begin(), side.end());
+    std::vector<uint32_t> indices;
+    for (const auto& [position, index] : side) indices.push_back(index);
+    return indices;
+  };
+  mesh.westEdge = edge(west);  // from the south, as v grows
+  mesh.eastEdge = edge(east);
+  mesh.southEdge = edge(south);  // from the west, as u grows
+  mesh.northEdge = edge(north);
 
   // The centre: the rectangle's middle at the middle height (on the tile, as readers check).
   const geo::GlobeRectangle r = geo::GeographicTilingScheme::tileRectangle(tile);

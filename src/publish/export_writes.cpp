@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cstdio>
 #include <fstream>
 #include <string>
 #include <system_error>
@@ -34,6 +35,39 @@ Result<void> writeRenamed(const std::filesystem::path& path, std::span<const std
 }
 
 }  // namespace
+
+bool parseExportLevels(const std::string& text, ExportRegion& region) {
+  unsigned first = 0, last = 0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%u-%u%c", &first, &last, &extra) == 2 && first <= last) {
+  } else if (std::sscanf(text.c_str(), "%u%c", &first, &extra) == 1) {
+    last = first;
+  } else {
+    return false;
+  }
+  region.minLevel = first;
+  region.maxLevel = last;
+  return true;
+}
+
+bool parseExportBounds(const std::string& text, ExportRegion& region) {
+  double w = 0, s = 0, e = 0, n = 0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%lf,%lf,%lf,%lf%c", &w, &s, &e, &n, &extra) != 4) return false;
+  if (!(w >= -180 && e <= 180 && w < e && s >= -90 && n <= 90 && s < n)) return false;
+  region = {region.minLevel, region.maxLevel, w, s, e, n};
+  return true;
+}
+
+Result<void> writeFileReplacing(const std::filesystem::path& path,
+                                std::span<const std::byte> bytes) {
+  std::error_code error;
+  std::filesystem::create_directories(path.parent_path(), error);
+  if (error) {
+    return makeError(path.parent_path().string() + ": cannot create: " + error.message());
+  }
+  return writeRenamed(path, bytes);
+}
 
 Result<void> writeTileOnce(const std::filesystem::path& path,
                            const std::function<Result<std::vector<std::byte>>()>& make,

@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <functional>
 #include <span>
+#include <string>
+#include <vector>
 
 #include "core/result.hpp"
 
@@ -26,9 +28,19 @@ struct ExportRegion {
   double westDegrees = -180, southDegrees = -90, eastDegrees = 180, northDegrees = 90;
 };
 
+// "A-B" or "A" into the region's levels (or zooms); false when the text is neither.
+bool parseExportLevels(const std::string& text, ExportRegion& region);
+// "W,S,E,N" in degrees (W < E, S < N, within the world) into the region; false otherwise.
+bool parseExportBounds(const std::string& text, ExportRegion& region);
+
 // Calls make() and writes its bytes to `path` unless a file is already there.
 Result<void> writeTileOnce(const std::filesystem::path& path,
                            const std::function<Result<std::vector<std::byte>>()>& make,
                            ExportReport& report);
+
+// Writes `bytes` to `path` (its folder made), replacing a file there, atomically (a tile's fixed
+// child mask, layer.json).
+Result<void> writeFileReplacing(const std::filesystem::path& path,
+                                std::span<const std::byte> bytes);
 
 }  // namespace globe::publish

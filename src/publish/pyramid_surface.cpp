@@ -1,6 +1,7 @@
 #include "publish/pyramid_surface.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "collision/exact_surface.hpp"
 #include "geo/tiling_scheme.hpp"
@@ -30,21 +31,46 @@ Result<std::shared_ptr<const terrain::HeightBlock>> PyramidSurface::block(const 
   return loaded;
 }
 
-Result<double> PyramidSurface::heightMeters(double longitudeRadians, double latitudeRadians,
-                                            uint32_t maxLevel) {
-  const double lon = geo::wrapLongitudeRadians(longitudeRadians);
+Result<PyramidSurface::Finest> PyramidSurface::finest(double longitudeRadians,
+                                                      double latitudeRadians, uint32_t maxLevel) {
   const uint32_t deepest = std::min(maxLevel, source_.manifest().maxLevel());
   for (uint32_t level = deepest + 1; level-- > 0;) {
-    const auto tile = geo::GeographicTilingScheme::positionToTile(lon, latitudeRadians, level);
+    const auto tile =
+        geo::GeographicTilingScheme::positionToTile(longitudeRadians, latitudeRadians, level);
     if (!tile) return makeError("invalid position");
     auto found = block(*tile);
     if (!found) return Error{found.error()};
-    if (!*found) continue;
-    const terrain::ArrayTile arrayTile = terrain::makeArrayTile(*tile, **found);
-    return collision::exactTileSurfaceHeight(arrayTile, ellipsoid_, lon, latitudeRadians)
-        .heightMeters;
+    if (*found) return Finest{*tile, *found};
   }
-  return 0.0;
+  return Finest{};
+}
+
+Result<double> PyramidSurface::heightMeters(double longitudeRadians, double latitudeRadians,
+                                            uint32_t maxLevel) {
+  const double lon = geo::wrapLongitudeRadians(longitudeRadians);
+  auto found = finest(lon, latitudeRadians, maxLevel);
+  if (!found) return Error{found.error()};
+  if (!found->block) return 0.0;
+  const terrain::ArrayTile arrayTile = terrain::makeArrayTile(found->tile, *found->block);
+  return collision::exactTileSurfaceHeight(arrayTile, ellipsoid_, lon, latitudeRadians)
+      .heightMeters;
+}
+
+Result<bool> PyramidSurface::isWater(double longitudeRadians, double latitudeRadians,
+                                     uint32_t maxLevel) {
+  const double lon = geo::wrapLongitudeRadians(longitudeRadians);
+  auto found = finest(lon, latitudeRadians, maxLevel);
+  if (!found) return Error{found.error()};
+  if (!found->block) return false;
+  const auto rect = geo::GeographicTilingScheme::tileRectangle(found->tile);
+  const uint32_t n = found->block->verticesPerSide;
+  const auto nearest = [&](double fraction) {
+    return static_cast<size_t>(std::clamp(std::lround(fraction * (n - 1)), 0L, long{n} - 1));
+  };
+  const size_t column = nearest((lon - rect.westRadians) / (rect.eastRadians - rect.westRadians));
+  const size_t row =
+      nearest((rect.northRadians - latitudeRadians) / (rect.northRadians - rect.southRadians));
+  return terrain::isWater(found->block->heights[row * n + column]);
 }
 
 }  // namespace globe::publish

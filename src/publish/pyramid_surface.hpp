@@ -24,11 +24,21 @@ class PyramidSurface {
   // The surface height at a point from the finest tile of level <= maxLevel there; 0 m where the
   // pyramid has none. Errors: unreadable packs, naming them.
   Result<double> heightMeters(double longitudeRadians, double latitudeRadians, uint32_t maxLevel);
+  // Whether the vertex nearest the point, of the finest tile of level <= maxLevel there, is
+  // water (terrain::isWater): a water mask that agrees with the heights' vertices. False where
+  // the pyramid has no tile.
+  Result<bool> isWater(double longitudeRadians, double latitudeRadians, uint32_t maxLevel);
 
  private:
   static constexpr size_t kCachedBlocks = 512;
   // The tile's block, or null where the pyramid has no such tile.
   Result<std::shared_ptr<const terrain::HeightBlock>> block(const geo::TileId& tile);
+  // The finest tile of level <= maxLevel under the point and its block (null: none there).
+  struct Finest {
+    geo::TileId tile;
+    std::shared_ptr<const terrain::HeightBlock> block;
+  };
+  Result<Finest> finest(double longitudeRadians, double latitudeRadians, uint32_t maxLevel);
 
   streaming::TerrainSource& source_;
   geo::Ellipsoid ellipsoid_;

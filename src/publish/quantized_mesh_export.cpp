@@ -1,23 +1,23 @@
 #include "publish/quantized_mesh_export.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
-#include <cstdio>
-#include <span>
-#include <map>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <numbers>
-#include <set>
+#include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
-#include "core/crc32.hpp"
 #include "formats/deflate_bytes.hpp"
 #include "formats/pyramid_manifest.hpp"
-#include "formats/pack_format.hpp"
-#include "geo/tiling_scheme.hpp"
 #include "publish/block_mesh.hpp"
 #include "publish/pyramid_surface.hpp"
+#include "publish/terrain_layer_writer.hpp"
+#include "publish/tile_grid.hpp"
+#include "publish/tin_simplifier.hpp"
 #include "terrain/block_grid.hpp"
 
 namespace globe::publish {
@@ -27,97 +27,104 @@ namespace {
 // tile's geometric error as a 65×65 heightmap's, so a coarser grid would be refined too little.
 constexpr uint32_t kGridVertices = 65;
 
-// Tiles of the level whose rectangle meets the region (degrees), inside the packs it lists.
-std::vector<geo::TileId> candidateTiles(const formats::PyramidManifest& manifest, uint32_t level,
-                                        const ExportRegion& region) {
-  std::vector<geo::TileId> tiles;
-  if (level >= manifest.levels.size()) return tiles;
-  const uint32_t perSide = manifest.packTilesPerSide;
-  const double tileDegrees = 180.0 / std::ldexp(1.0, static_cast<int>(level));
-  const auto column = [&](double lon) { return std::floor((lon + 180.0) / tileDegrees); };
-  const auto row = [&](double lat) { return std::floor((90.0 - lat) / tileDegrees); };
-  const double x0 = column(region.westDegrees), x1 = column(region.eastDegrees);
-  const double y0 = row(region.northDegrees), y1 = row(region.southDegrees);
-  for (const formats::PackId& pack : manifest.levels[level].packs) {
-    for (uint32_t dy = 0; dy < perSide; ++dy) {
-      for (uint32_t dx = 0; dx < perSide; ++dx) {
-        const geo::TileId tile{level, pack.x * perSide + dx, pack.y * perSide + dy};
-        if (tile.x < x0 || tile.x > x1 || tile.y < y0 || tile.y > y1) continue;
-        tiles.push_back(tile);
-      }
-    }
-  }
-  return tiles;
+// CesiumJS's estimate of a tile's geometric error at level 0 (a 65-sample heightmap over each of
+// the 2 root tiles, TerrainProvider.getEstimatedLevelZeroGeometricErrorForAHeightmap), halved
+// with each level: what the client refines by, so what a tile's TIN may deviate by.
+double levelGeometricErrorMeters(const geo::Ellipsoid& ellipsoid, uint32_t level) {
+  constexpr double kHeightmapTerrainQuality = 0.25;
+  const double levelZero = ellipsoid.semiMajorAxisMeters * 2 * std::numbers::pi *
+                           kHeightmapTerrainQuality / (kGridVertices * 2);
+  return std::ldexp(levelZero, -static_cast<int>(level));
 }
 
-// The pyramid's exact surface at the tile's G×G grid, from its finest tile of level <= level.
-Result<std::vector<double>> gridHeights(PyramidSurface& surface, const geo::TileId& tile,
-                                        uint32_t level) {
+// The water mask (extension 2) from the sea classification at the grid's samples: one byte where
+// the tile is all land or all water, else 256×256 (rows from the north), each texel the nearest
+// sample's class. The grid's samples are the pyramid's finest where it has them.
+Result<std::vector<uint8_t>> waterMask(PyramidSurface& surface, const geo::TileId& tile,
+                                       uint32_t level) {
   const terrain::BlockGrid grid{tile, kGridVertices};
-  std::vector<double> heights;
-  heights.reserve(size_t{kGridVertices} * kGridVertices);
+  std::vector<uint8_t> water;
+  water.reserve(size_t{kGridVertices} * kGridVertices);
+  size_t wet = 0;
   for (uint32_t row = 0; row < kGridVertices; ++row) {
     const double lat = grid.latitudeDegrees(row) * std::numbers::pi / 180;
     for (uint32_t column = 0; column < kGridVertices; ++column) {
-      auto h =
-          surface.heightMeters(grid.longitudeDegrees(column) * std::numbers::pi / 180, lat, level);
-      if (!h) return Error{h.error()};
-      heights.push_back(*h);
+      auto isWater =
+          surface.isWater(grid.longitudeDegrees(column) * std::numbers::pi / 180, lat, level);
+      if (!isWater) return Error{isWater.error()};
+      water.push_back(*isWater ? 255 : 0);
+      wet += *isWater ? 1 : 0;
     }
   }
-  return heights;
-}
-
-// The tiles' version, in their URLs ({version}): what they are made from and how, so that a
-// client may keep a tile it has as long as the version is the same (tiles of a re-tiled
-// pyramid, or made by another exporter revision, get new URLs).
-std::string treeVersion(const formats::PyramidManifest& manifest) {
-  constexpr int kExporterRevision = 1;
-  const std::string made = formats::manifestToJson(manifest) + std::to_string(kExporterRevision);
-  char hex[16];
-  std::snprintf(hex, sizeof hex, "%08x",
-                core::crc32(std::as_bytes(std::span(made.data(), made.size()))));
-  return std::string("1.0.0-") + hex;
-}
-
-uint32_t tmsRow(const geo::TileId& tile) { return (1U << tile.level) - 1 - tile.y; }
-
-// `available` for one level: runs of present tiles along each TMS row, runs of equal extent on
-// consecutive rows merged into one rectangle.
-nlohmann::json availableRanges(const std::set<std::pair<uint32_t, uint32_t>>& rowColumn) {
-  std::map<std::pair<uint32_t, uint32_t>, std::vector<uint32_t>> rowsOfRun;  // (x0, x1) → rows
-  auto it = rowColumn.begin();
-  while (it != rowColumn.end()) {
-    const uint32_t row = it->first;
-    const uint32_t start = it->second;
-    uint32_t end = start;
-    ++it;
-    while (it != rowColumn.end() && it->first == row && it->second == end + 1) {
-      end = it->second;
-      ++it;
+  if (wet == 0) return std::vector<uint8_t>{0};
+  if (wet == water.size()) return std::vector<uint8_t>{255};
+  constexpr uint32_t kMaskSide = 256;
+  std::vector<uint8_t> mask(size_t{kMaskSide} * kMaskSide);
+  const auto nearest = [](uint32_t texel) {
+    return static_cast<uint32_t>(
+        std::lround((texel + 0.5) * (kGridVertices - 1) / double{kMaskSide}));
+  };
+  for (uint32_t row = 0; row < kMaskSide; ++row) {
+    for (uint32_t column = 0; column < kMaskSide; ++column) {
+      mask[size_t{row} * kMaskSide + column] =
+          water[size_t{nearest(row)} * kGridVertices + nearest(column)];
     }
-    rowsOfRun[{start, end}].push_back(row);
   }
+  return mask;
+}
+
+// Extension 4: which of the tile's children the tree holds, as a layer.json `available` level.
+std::string childrenMetadata(streaming::TerrainSource& source, const geo::TileId& tile,
+                             uint32_t lastLevel) {
   nlohmann::json ranges = nlohmann::json::array();
-  for (const auto& [run, rows] : rowsOfRun) {
-    size_t k = 0;
-    while (k < rows.size()) {
-      size_t last = k;
-      while (last + 1 < rows.size() && rows[last + 1] == rows[last] + 1) ++last;
+  if (tile.level < lastLevel) {
+    for (uint32_t child = 0; child < 4; ++child) {
+      const geo::TileId c{tile.level + 1, tile.x * 2 + (child & 1), tile.y * 2 + (child >> 1)};
+      auto summary = source.summary(c);
+      if (!summary || !*summary) continue;
       ranges.push_back(
-          {{"startX", run.first}, {"startY", rows[k]}, {"endX", run.second}, {"endY", rows[last]}});
-      k = last + 1;
+          {{"startX", c.x}, {"startY", tmsRow(c)}, {"endX", c.x}, {"endY", tmsRow(c)}});
     }
   }
-  return ranges;
+  return nlohmann::json{{"available", nlohmann::json::array({ranges})}}.dump();
 }
+
+// One tile: the grid's TIN within the tile's error, with normals, water mask and metadata.
+Result<std::vector<std::byte>> makeTile(PyramidSurface& surface, streaming::TerrainSource& source,
+                                        const geo::TileId& tile, uint32_t sampleLevel,
+                                        uint32_t lastLevel, double errorFraction,
+                                        const geo::Ellipsoid& ellipsoid) {
+  auto grid = sampleTileGrid(surface, tile, kGridVertices, sampleLevel);
+  if (!grid) return Error{grid.error()};
+  // 0: the whole grid, split as globe draws it, so that the tile is globe's surface exactly.
+  const GridTin tin =
+      errorFraction > 0
+          ? simplifyGrid(grid->heightsMeters, kGridVertices,
+                         errorFraction * levelGeometricErrorMeters(ellipsoid, tile.level))
+          : wholeGridTin(kGridVertices);
+  BlockMesh mesh = quantizedMeshOfTin(tile, kGridVertices, grid->heightsMeters, tin, ellipsoid);
+  for (uint32_t sample : tin.samples) {
+    mesh.mesh.normals.push_back(gridNormal(*grid, ellipsoid,
+                                           static_cast<int>(sample / kGridVertices),
+                                           static_cast<int>(sample % kGridVertices)));
+  }
+  auto water = waterMask(surface, tile, sampleLevel);
+  if (!water) return Error{water.error()};
+  mesh.mesh.waterMask = std::move(*water);
+  mesh.mesh.metadataJson = childrenMetadata(source, tile, lastLevel);
+  return formats::gzipCompress(formats::encodeQuantizedMesh(mesh.mesh, mesh.culling), 9);
+}
+
+// Bumped when the tiles' making changes: their URLs change with it.
+constexpr int kExporterRevision = 2;  // 2: simplified TINs, normals, water, metadata
 
 }  // namespace
 
 Result<ExportReport> exportQuantizedMesh(streaming::TerrainSource& source,
                                          const ExportRegion& region,
                                          const std::filesystem::path& outDir,
-                                         const geo::Ellipsoid& ellipsoid) {
+                                         const geo::Ellipsoid& ellipsoid, double errorFraction,
+                                         unsigned threads) {
   const formats::PyramidManifest& manifest = source.manifest();
   // A tile's grid holds the pyramid's level `extra` deeper (17-vertex blocks: 2 levels), so the
   // tree stops that much sooner.
@@ -126,76 +133,56 @@ Result<ExportReport> exportQuantizedMesh(streaming::TerrainSource& source,
   const auto sampleLevel = [&](uint32_t level) { return level + extra; };
   const uint32_t deepest = manifest.maxLevel() > extra ? manifest.maxLevel() - extra : 0;
   const uint32_t last = std::min(region.maxLevel, deepest);
-  PyramidSurface surface(source, ellipsoid);
-  ExportReport report;
+  // The present tiles first (their packs' indexes), then the tiles made by `threads` workers,
+  // each with its own surface (it caches blocks); a tile is the same whoever makes it.
+  std::vector<geo::TileId> tiles;
   for (uint32_t level = region.minLevel; level <= last; ++level) {
-    {
-      for (const geo::TileId& tile : candidateTiles(manifest, level, region)) {
-        auto summary = source.summary(tile);
-        if (!summary) return Error{summary.error()};
-        if (!*summary) continue;
-        const std::filesystem::path path = outDir / std::to_string(level) / std::to_string(tile.x) /
-                                           (std::to_string(tmsRow(tile)) + ".terrain");
-        auto written = writeTileOnce(
-            path,
-            [&]() -> Result<std::vector<std::byte>> {
-              auto heights = gridHeights(surface, tile, sampleLevel(tile.level));
-              if (!heights) return Error{heights.error()};
-              const BlockMesh mesh = quantizedMeshOfGrid(tile, kGridVertices, *heights, ellipsoid);
-              return formats::gzipCompress(formats::encodeQuantizedMesh(mesh.mesh, mesh.culling),
-                                           9);
-            },
-            report);
-        if (!written) return Error{written.error()};
+    for (const geo::TileId& tile : candidateTiles(manifest, level, region)) {
+      auto summary = source.summary(tile);
+      if (!summary) return Error{summary.error()};
+      if (*summary) tiles.push_back(tile);
+    }
+  }
+  const unsigned workers =
+      std::max(1U, std::min<unsigned>(threads, static_cast<unsigned>(tiles.size())));
+  std::vector<ExportReport> reports(workers);
+  std::atomic<size_t> next{0};
+  std::mutex failureMutex;
+  std::optional<std::string> failure;
+  const auto work = [&](unsigned worker) {
+    PyramidSurface surface(source, ellipsoid);
+    for (size_t i = next++; i < tiles.size(); i = next++) {
+      const geo::TileId& tile = tiles[i];
+      auto written = writeTileOnce(
+          terrainTilePath(outDir, tile),
+          [&]() -> Result<std::vector<std::byte>> {
+            return makeTile(surface, source, tile, sampleLevel(tile.level), last, errorFraction,
+                            ellipsoid);
+          },
+          reports[worker]);
+      if (!written) {
+        const std::lock_guard lock(failureMutex);
+        if (!failure) failure = written.error();
+        next = tiles.size();  // the others stop after their tile
+        return;
       }
     }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned worker = 1; worker < workers; ++worker) pool.emplace_back(work, worker);
+  work(0);
+  for (std::thread& thread : pool) thread.join();
+  if (failure) return makeError(*failure);
+  ExportReport report;
+  for (const ExportReport& r : reports) {
+    report.tilesWritten += r.tilesWritten;
+    report.tilesKept += r.tilesKept;
+    report.bytesWritten += r.bytesWritten;
   }
-  // What the tree holds, this run's tiles and earlier runs' (another region, other levels).
-  std::vector<std::set<std::pair<uint32_t, uint32_t>>> present;  // per level: (TMS row, column)
-  std::error_code walking;
-  for (auto it = std::filesystem::recursive_directory_iterator(outDir, walking);
-       !walking && it != std::filesystem::recursive_directory_iterator(); it.increment(walking)) {
-    const std::filesystem::path& path = it->path();
-    if (path.extension() != ".terrain" || it.depth() != 2) continue;
-    try {
-      const auto level =
-          static_cast<uint32_t>(std::stoul(path.parent_path().parent_path().filename()));
-      const auto x = static_cast<uint32_t>(std::stoul(path.parent_path().filename()));
-      const auto y = static_cast<uint32_t>(std::stoul(path.stem()));
-      if (level > geo::kMaxLevel) continue;
-      if (present.size() <= level) present.resize(level + 1);
-      present[level].insert({y, x});
-    } catch (const std::exception&) {
-      continue;  // not a tile of ours
-    }
-  }
-  nlohmann::json available = nlohmann::json::array();
-  for (const auto& level : present) available.push_back(availableRanges(level));
-  const nlohmann::json layer = {
-      {"tilejson", "2.1.0"},
-      {"name", outDir.filename().string()},
-      {"description", "Exported by globe-tiler from " + source.location()},
-      {"version", treeVersion(manifest)},
-      {"format", "quantized-mesh-1.0"},
-      {"scheme", "tms"},
-      {"tiles", {"{z}/{x}/{y}.terrain?v={version}"}},
-      {"projection", "EPSG:4326"},
-      {"bounds", {-180, -90, 180, 90}},
-      {"minzoom", 0},
-      {"maxzoom", present.empty() ? 0 : present.size() - 1},
-      {"available", available},
-      {"attribution", source.attribution()}};
-  const std::string text = layer.dump(1);
-  const std::vector<std::byte> bytes(reinterpret_cast<const std::byte*>(text.data()),
-                                     reinterpret_cast<const std::byte*>(text.data()) + text.size());
   // layer.json last and always rewritten: it lists what this and earlier runs wrote.
-  std::error_code error;
-  std::filesystem::create_directories(outDir, error);
-  std::filesystem::remove(outDir / "layer.json", error);
-  ExportReport ignored;
-  if (auto written = writeTileOnce(
-          outDir / "layer.json", [&]() -> Result<std::vector<std::byte>> { return bytes; },
-          ignored);
+  if (auto written = writeTerrainLayerJson(outDir, "quantized-mesh-1.0",
+                                           treeVersion(manifest, kExporterRevision), source,
+                                           {"octvertexnormals", "watermask", "metadata"});
       !written) {
     return Error{written.error()};
   }

@@ -8,26 +8,14 @@
 #include <vector>
 
 #include "formats/image_io.hpp"
+#include "formats/webp_lossless.hpp"
 #include "publish/pyramid_surface.hpp"
+#include "publish/web_mercator.hpp"
 
 namespace globe::publish {
 namespace {
 
-constexpr uint32_t kTileSize = 256;
-constexpr double kMaxMercatorLatitudeDegrees = 85.05112877980659;
-
-double mercatorRowOf(double latitudeDegrees, uint32_t zoom) {
-  const double lat =
-      std::clamp(latitudeDegrees, -kMaxMercatorLatitudeDegrees, kMaxMercatorLatitudeDegrees) *
-      std::numbers::pi / 180;
-  return (1 - std::log(std::tan(lat) + 1 / std::cos(lat)) / std::numbers::pi) / 2 *
-         std::ldexp(1.0, static_cast<int>(zoom));
-}
-
-double latitudeRadiansOfRow(double row, uint32_t zoom) {
-  const double n = std::numbers::pi * (1 - 2 * row / std::ldexp(1.0, static_cast<int>(zoom)));
-  return std::atan(std::sinh(n));
-}
+constexpr uint32_t kTileSize = kWebMercatorTileSizePixels;
 
 // The pyramid level whose vertex spacing (180° / 2^L / (N−1)) is no wider than a pixel at the
 // equator (360° / 2^z / 256).
@@ -65,31 +53,29 @@ using PixelEncoding = std::array<uint8_t, 3> (*)(double heightMeters);
 Result<ExportReport> exportElevationPngs(streaming::TerrainSource& source,
                                          const ExportRegion& region,
                                          const std::filesystem::path& outDir,
-                                         const geo::Ellipsoid& ellipsoid, PixelEncoding encode) {
+                                         const geo::Ellipsoid& ellipsoid, PixelEncoding encode,
+                                         ElevationTileFormat format) {
+  const bool webp = format == ElevationTileFormat::WebpLossless;
   PyramidSurface surface(source, ellipsoid);
   ExportReport report;
   const uint32_t lastZoom = std::min(region.maxLevel, 22U);
   for (uint32_t zoom = region.minLevel; zoom <= lastZoom; ++zoom) {
     const double tiles = std::ldexp(1.0, static_cast<int>(zoom));
-    const auto clampIndex = [&](double v) {
-      return static_cast<uint32_t>(std::clamp(std::floor(v), 0.0, tiles - 1));
-    };
-    const uint32_t x0 = clampIndex((region.westDegrees + 180) / 360 * tiles);
-    const uint32_t x1 = clampIndex((region.eastDegrees + 180) / 360 * tiles);
-    const uint32_t y0 = clampIndex(mercatorRowOf(region.northDegrees, zoom));
-    const uint32_t y1 = clampIndex(mercatorRowOf(region.southDegrees, zoom));
+    const WebMercatorTileRange range = webMercatorTilesOf(
+        region.westDegrees, region.southDegrees, region.eastDegrees, region.northDegrees, zoom);
+    const uint32_t x0 = range.firstX, x1 = range.lastX, y0 = range.firstY, y1 = range.lastY;
     const uint32_t level = levelForZoom(zoom, source.manifest().verticesPerSide);
     for (uint32_t y = y0; y <= y1; ++y) {
       for (uint32_t x = x0; x <= x1; ++x) {
-        const std::filesystem::path path =
-            outDir / std::to_string(zoom) / std::to_string(x) / (std::to_string(y) + ".png");
+        const std::filesystem::path path = outDir / std::to_string(zoom) / std::to_string(x) /
+                                           (std::to_string(y) + (webp ? ".webp" : ".png"));
         auto written = writeTileOnce(
             path,
             [&]() -> Result<std::vector<std::byte>> {
               formats::ImageRgba image{static_cast<int>(kTileSize), static_cast<int>(kTileSize),
                                        std::vector<uint8_t>(kTileSize * kTileSize * 4, 255)};
               for (uint32_t r = 0; r < kTileSize; ++r) {
-                const double lat = latitudeRadiansOfRow(y + (r + 0.5) / kTileSize, zoom);
+                const double lat = webMercatorLatitudeRadiansOfRow(y + (r + 0.5) / kTileSize, zoom);
                 for (uint32_t c = 0; c < kTileSize; ++c) {
                   const double lon =
                       ((x + (c + 0.5) / kTileSize) / tiles * 360 - 180) * std::numbers::pi / 180;
@@ -99,7 +85,7 @@ Result<ExportReport> exportElevationPngs(streaming::TerrainSource& source,
                   std::copy(pixel.begin(), pixel.end(), &image.pixels[(r * kTileSize + c) * 4]);
                 }
               }
-              return formats::encodePng(image);
+              return webp ? formats::encodeWebpLossless(image) : formats::encodePng(image);
             },
             report);
         if (!written) return Error{written.error()};
@@ -113,14 +99,14 @@ Result<ExportReport> exportElevationPngs(streaming::TerrainSource& source,
 
 Result<ExportReport> exportTerrarium(streaming::TerrainSource& source, const ExportRegion& region,
                                      const std::filesystem::path& outDir,
-                                     const geo::Ellipsoid& ellipsoid) {
-  return exportElevationPngs(source, region, outDir, ellipsoid, terrariumPixel);
+                                     const geo::Ellipsoid& ellipsoid, ElevationTileFormat format) {
+  return exportElevationPngs(source, region, outDir, ellipsoid, terrariumPixel, format);
 }
 
 Result<ExportReport> exportTerrainRgb(streaming::TerrainSource& source, const ExportRegion& region,
                                       const std::filesystem::path& outDir,
-                                      const geo::Ellipsoid& ellipsoid) {
-  return exportElevationPngs(source, region, outDir, ellipsoid, terrainRgbPixel);
+                                      const geo::Ellipsoid& ellipsoid, ElevationTileFormat format) {
+  return exportElevationPngs(source, region, outDir, ellipsoid, terrainRgbPixel, format);
 }
 
 }  // namespace globe::publish

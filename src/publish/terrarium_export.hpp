@@ -1,4 +1,5 @@
-// A pyramid as elevation PNG tiles: DIR/{z}/{x}/{y}.png, 256×256 Web-Mercator XYZ, each pixel the
+// A pyramid as elevation PNG tiles: DIR/{z}/{x}/{y}.png (or lossless .webp), 256×256 Web-Mercator
+// XYZ, each pixel the
 // exact surface at its centre, from the pyramid level whose vertex spacing first matches the
 // pixel's (coarser where the pyramid stops). Terrarium encodes (R·256 + G + B/256) − 32768 m,
 // Mapbox's Terrain-RGB −10000 + (R·65536 + G·256 + B)·0.1 m. What MapLibre's raster-dem
@@ -16,14 +17,19 @@
 
 namespace globe::publish {
 
+// The tiles' file format: WebP only lossless, since a lossy colour is another height.
+enum class ElevationTileFormat { Png, WebpLossless };
+
 // region's levels are Web-Mercator zooms here; its latitudes are clamped to the projection's.
 Result<ExportReport> exportTerrarium(streaming::TerrainSource& source, const ExportRegion& region,
                                      const std::filesystem::path& outDir,
-                                     const geo::Ellipsoid& ellipsoid);
+                                     const geo::Ellipsoid& ellipsoid,
+                                     ElevationTileFormat format = ElevationTileFormat::Png);
 
 Result<ExportReport> exportTerrainRgb(streaming::TerrainSource& source, const ExportRegion& region,
                                       const std::filesystem::path& outDir,
-                                      const geo::Ellipsoid& ellipsoid);
+                                      const geo::Ellipsoid& ellipsoid,
+                                      ElevationTileFormat format = ElevationTileFormat::Png);
 
 // The Terrarium pixel of a height, rounded to 1/256 m and clamped to what the encoding holds.
 std::array<uint8_t, 3> terrariumPixel(double heightMeters);

@@ -1,0 +1,503 @@
+#include "publish/tin_simplifier.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <queue>
+#include <unordered_set>
+#include <vector>
+
+namespace globe::publish {
+namespace {
+
+// Grid coordinates: x the column (east), y rows from the south (north up), so that
+// counter-clockwise is positive as in the output.
+struct GridPoint {
+  int x, y;
+};
+
+int64_t orient(GridPoint a, GridPoint b, GridPoint c) {
+  return int64_t{b.x - a.x} * (c.y - a.y) - int64_t{b.y - a.y} * (c.x - a.x);
+}
+
+// Whether d lies strictly inside the circle through the counter-clockwise a, b, c. Exact: the
+// coordinates are small integers. Strict, so that the grid's many cocircular quads never flip
+// back and forth.
+bool inCircle(GridPoint a, GridPoint b, GridPoint c, GridPoint d) {
+  const int64_t adx = a.x - d.x, ady = a.y - d.y;
+  const int64_t bdx = b.x - d.x, bdy = b.y - d.y;
+  const int64_t cdx = c.x - d.x, cdy = c.y - d.y;
+  const int64_t al = adx * adx + ady * ady;
+  const int64_t bl = bdx * bdx + bdy * bdy;
+  const int64_t cl = cdx * cdx + cdy * cdy;
+  return adx * (bdy * cl - bl * cdy) - ady * (bdx * cl - bl * cdx) + al * (bdx * cdy - bdy * cdx) >
+         0;
+}
+
+// The grid and the tolerance every pass works against.
+struct Grid {
+  const std::vector<double>& heightsMeters;
+  int side;
+
+  double heightAt(int x, int y) const {
+    return heightsMeters[static_cast<size_t>(side - 1 - y) * side + x];
+  }
+  bool onBorder(int x, int y) const { return x == 0 || y == 0 || x == side - 1 || y == side - 1; }
+  uint32_t sampleOf(GridPoint p) const {
+    return static_cast<uint32_t>((side - 1 - p.y) * side + p.x);
+  }
+};
+
+struct WorstSample {
+  double errorMeters = -1;
+  GridPoint at{-1, -1};
+};
+
+// The sample of the triangle farthest from its plane (border samples skipped where asked: the
+// sides' own simplification bounds them). The first in scan order on ties, so that the result
+// depends on the heights alone.
+WorstSample worstSampleIn(const Grid& grid, const std::array<GridPoint, 3>& v,
+                          const std::array<double, 3>& z, bool skipBorder) {
+  const int64_t area = orient(v[0], v[1], v[2]);
+  WorstSample worst;
+  if (area <= 0) return worst;
+  const int x0 = std::min({v[0].x, v[1].x, v[2].x}), x1 = std::max({v[0].x, v[1].x, v[2].x});
+  const int y0 = std::min({v[0].y, v[1].y, v[2].y}), y1 = std::max({v[0].y, v[1].y, v[2].y});
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      const GridPoint p{x, y};
+      const int64_t w0 = orient(v[1], v[2], p), w1 = orient(v[2], v[0], p),
+                    w2 = orient(v[0], v[1], p);
+      if (w0 < 0 || w1 < 0 || w2 < 0) continue;
+      if (skipBorder && grid.onBorder(x, y)) continue;
+      // A corner is exact; rounding in the weights must not make it a candidate again.
+      if ((w0 == area) || (w1 == area) || (w2 == area)) continue;
+      const double interpolated = (static_cast<double>(w0) * z[0] + static_cast<double>(w1) * z[1] +
+                                   static_cast<double>(w2) * z[2]) /
+                                  static_cast<double>(area);
+      const double error = std::fabs(interpolated - grid.heightAt(x, y));
+      if (error > worst.errorMeters) worst = {error, p};
+    }
+  }
+  return worst;
+}
+
+// Vertices chosen on one side of the square, its samples walked in a fixed direction: both tiles
+// sharing the side pass the same heights in the same order and so choose the same vertices.
+void simplifySide(const std::vector<double>& heights, size_t first, size_t last,
+                  double maxErrorMeters, std::vector<size_t>& chosen) {
+  if (last <= first + 1) return;
+  double worstError = -1;
+  size_t worst = first;
+  for (size_t k = first + 1; k < last; ++k) {
+    const double t = static_cast<double>(k - first) / static_cast<double>(last - first);
+    const double chord = heights[first] + (heights[last] - heights[first]) * t;
+    const double error = std::fabs(heights[k] - chord);
+    if (error > worstError) {
+      worstError = error;
+      worst = k;
+    }
+  }
+  if (worstError <= maxErrorMeters) return;
+  chosen.push_back(worst);
+  simplifySide(heights, first, worst, maxErrorMeters, chosen);
+  simplifySide(heights, worst, last, maxErrorMeters, chosen);
+}
+
+// Greedy insertion into a Delaunay triangulation kept in half-edge arrays (as delaunator and
+// delatin keep theirs): triangle t owns half-edges 3t, 3t+1, 3t+2.
+class GreedyInsertion {
+ public:
+  GreedyInsertion(const Grid& grid, double maxErrorMeters)
+      : grid_(grid), maxErrorMeters_(maxErrorMeters) {}
+
+  void run() {
+    const int m = grid_.side - 1;
+    const int sw = addVertex({0, 0}), se = addVertex({m, 0}), ne = addVertex({m, m}),
+              nw = addVertex({0, m});
+    fixedVertices = 4;
+    const int t0 = addTriangle(sw, se, ne, -1, -1, -1);
+    addTriangle(sw, ne, nw, t0 + 2, -1, -1);
+    for (const GridPoint& p : sideVertices()) insertOnBorder(p);
+    evaluating_ = true;
+    for (size_t t = 0; t < vertexTriangles.size() / 3; ++t) evaluate(static_cast<int>(t));
+    while (!queue_.empty()) {
+      const Queued top = queue_.top();
+      queue_.pop();
+      if (top.stamp != stamps_[static_cast<size_t>(top.triangle)]) continue;
+      const GridPoint candidate = candidates_[static_cast<size_t>(top.triangle)];
+      // Each sample is inserted once at most, so the loop ends after side² insertions.
+      if (!inserted_.insert(grid_.sampleOf(candidate)).second) continue;
+      split(top.triangle, addVertex(candidate));
+    }
+  }
+
+  std::vector<GridPoint> points;
+  std::vector<int> vertexTriangles;  // vertex indices into points
+  int fixedVertices = 0;             // points[0, fixedVertices) lie on the border
+
+ private:
+  struct Queued {
+    double errorMeters;
+    int triangle;
+    uint32_t stamp;
+    bool operator<(const Queued& other) const {
+      if (errorMeters != other.errorMeters) return errorMeters < other.errorMeters;
+      return triangle > other.triangle;  // the lower index first on ties: deterministic
+    }
+  };
+
+  int addVertex(GridPoint p) {
+    points.push_back(p);
+    heights_.push_back(grid_.heightAt(p.x, p.y));
+    return static_cast<int>(points.size()) - 1;
+  }
+
+  std::vector<GridPoint> sideVertices() const {
+    const int n = grid_.side;
+    std::vector<GridPoint> out;
+    // South and north walked west to east, west and east south to north.
+    const auto side = [&](auto pointAt) {
+      std::vector<double> heights;
+      for (int k = 0; k < n; ++k) {
+        const GridPoint p = pointAt(k);
+        heights.push_back(grid_.heightAt(p.x, p.y));
+      }
+      std::vector<size_t> chosen;
+      simplifySide(heights, 0, heights.size() - 1, maxErrorMeters_, chosen);
+      std::sort(chosen.begin(), chosen.end());
+      for (size_t k : chosen) out.push_back(pointAt(static_cast<int>(k)));
+    };
+    side([](int k) { return GridPoint{k, 0}; });
+    side([&](int k) { return GridPoint{k, n - 1}; });
+    side([](int k) { return GridPoint{0, k}; });
+    side([&](int k) { return GridPoint{n - 1, k}; });
+    return out;
+  }
+
+  void link(int a, int b) {
+    halfedges_[static_cast<size_t>(a)] = b;
+    if (b >= 0) halfedges_[static_cast<size_t>(b)] = a;
+  }
+
+  // Writes triangle (a, b, c) at half-edge index e (a new one when -1), linking its edges ab,
+  // bc, ca to their twins; returns its first half-edge.
+  int addTriangle(int a, int b, int c, int ab, int bc, int ca, int e = -1) {
+    if (e < 0) {
+      e = static_cast<int>(vertexTriangles.size());
+      vertexTriangles.insert(vertexTriangles.end(), {a, b, c});
+      halfedges_.insert(halfedges_.end(), {-1, -1, -1});
+      stamps_.push_back(0);
+      candidates_.push_back({-1, -1});
+    } else {
+      vertexTriangles[static_cast<size_t>(e)] = a;
+      vertexTriangles[static_cast<size_t>(e) + 1] = b;
+      vertexTriangles[static_cast<size_t>(e) + 2] = c;
+    }
+    link(e, ab);
+    link(e + 1, bc);
+    link(e + 2, ca);
+    if (evaluating_) evaluate(e / 3);
+    return e;
+  }
+
+  void evaluate(int t) {
+    const auto i = static_cast<size_t>(t) * 3;
+    const std::array<int, 3> v{vertexTriangles[i], vertexTriangles[i + 1], vertexTriangles[i + 2]};
+    const WorstSample worst =
+        worstSampleIn(grid_,
+                      {points[static_cast<size_t>(v[0])], points[static_cast<size_t>(v[1])],
+                       points[static_cast<size_t>(v[2])]},
+                      {heights_[static_cast<size_t>(v[0])], heights_[static_cast<size_t>(v[1])],
+                       heights_[static_cast<size_t>(v[2])]},
+                      true);
+    const uint32_t stamp = ++stamps_[static_cast<size_t>(t)];
+    candidates_[static_cast<size_t>(t)] = worst.at;
+    if (worst.errorMeters > maxErrorMeters_) queue_.push({worst.errorMeters, t, stamp});
+  }
+
+  GridPoint at(int halfedge) const {
+    return points[static_cast<size_t>(vertexTriangles[static_cast<size_t>(halfedge)])];
+  }
+  static int next(int e) { return e - e % 3 + (e + 1) % 3; }
+  static int prev(int e) { return e - e % 3 + (e + 2) % 3; }
+
+  void insertOnBorder(GridPoint p) {
+    const int v = addVertex(p);
+    fixedVertices = v + 1;
+    for (int e = 0; e < static_cast<int>(halfedges_.size()); ++e) {
+      if (halfedges_[static_cast<size_t>(e)] >= 0) continue;
+      const GridPoint s = at(e), f = at(next(e));
+      if (orient(s, f, p) != 0) continue;
+      if (std::min(s.x, f.x) <= p.x && p.x <= std::max(s.x, f.x) && std::min(s.y, f.y) <= p.y &&
+          p.y <= std::max(s.y, f.y)) {
+        splitEdge(e, v);
+        return;
+      }
+    }
+  }
+
+  // Inserts vertex v inside triangle t (on one of its edges when collinear with it).
+  void split(int t, int v) {
+    const int e0 = t * 3;
+    const GridPoint p = points[static_cast<size_t>(v)];
+    for (int k = 0; k < 3; ++k) {
+      if (orient(at(e0 + k), at(e0 + (k + 1) % 3), p) == 0) {
+        splitEdge(e0 + k, v);
+        return;
+      }
+    }
+    const int p0 = vertexTriangles[static_cast<size_t>(e0)],
+              p1 = vertexTriangles[static_cast<size_t>(e0) + 1],
+              p2 = vertexTriangles[static_cast<size_t>(e0) + 2];
+    const int h0 = halfedges_[static_cast<size_t>(e0)],
+              h1 = halfedges_[static_cast<size_t>(e0) + 1],
+              h2 = halfedges_[static_cast<size_t>(e0) + 2];
+    const int a = addTriangle(p0, p1, v, h0, -1, -1, e0);
+    const int b = addTriangle(p1, p2, v, h1, -1, a + 1);
+    const int c = addTriangle(p2, p0, v, h2, a + 2, b + 1);
+    legalize(a);
+    legalize(b);
+    legalize(c);
+  }
+
+  // Inserts vertex v on half-edge e (from s to f, o opposite), splitting the triangles on both
+  // sides of it.
+  void splitEdge(int e, int v) {
+    const int twin = halfedges_[static_cast<size_t>(e)];
+    const int e0 = e - e % 3;
+    const int s = vertexTriangles[static_cast<size_t>(e)],
+              f = vertexTriangles[static_cast<size_t>(next(e))],
+              o = vertexTriangles[static_cast<size_t>(prev(e))];
+    const int hn = halfedges_[static_cast<size_t>(next(e))],
+              hp = halfedges_[static_cast<size_t>(prev(e))];
+    if (twin < 0) {
+      const int a = addTriangle(o, s, v, hp, -1, -1, e0);
+      const int b = addTriangle(v, f, o, -1, hn, a + 2);
+      legalize(a);
+      legalize(b + 1);
+      return;
+    }
+    const int t0 = twin - twin % 3;
+    const int q = vertexTriangles[static_cast<size_t>(prev(twin))];
+    const int hbn = halfedges_[static_cast<size_t>(next(twin))],
+              hbp = halfedges_[static_cast<size_t>(prev(twin))];
+    const int a = addTriangle(o, s, v, hp, -1, -1, e0);
+    const int b = addTriangle(v, f, o, -1, hn, a + 2, t0);
+    const int c = addTriangle(q, f, v, hbp, b, -1);
+    const int d = addTriangle(s, q, v, hbn, c + 2, a + 1);
+    legalize(a);
+    legalize(b + 1);
+    legalize(c);
+    legalize(d);
+  }
+
+  // Flips half-edge e (opposite the newly inserted vertex) while the vertex across it lies
+  // inside the circle of e's triangle.
+  void legalize(int e) {
+    const int twin = halfedges_[static_cast<size_t>(e)];
+    if (twin < 0) return;
+    const int a0 = e - e % 3, b0 = twin - twin % 3;
+    const int al = next(e), ar = prev(e), bl = prev(twin), br = next(twin);
+    const int p0 = vertexTriangles[static_cast<size_t>(ar)],
+              pr = vertexTriangles[static_cast<size_t>(e)],
+              pl = vertexTriangles[static_cast<size_t>(al)],
+              p1 = vertexTriangles[static_cast<size_t>(bl)];
+    if (!inCircle(points[static_cast<size_t>(pr)], points[static_cast<size_t>(pl)],
+                  points[static_cast<size_t>(p0)], points[static_cast<size_t>(p1)])) {
+      return;
+    }
+    const int hal = halfedges_[static_cast<size_t>(al)], har = halfedges_[static_cast<size_t>(ar)],
+              hbl = halfedges_[static_cast<size_t>(bl)], hbr = halfedges_[static_cast<size_t>(br)];
+    const int a = addTriangle(p0, p1, pl, -1, hbl, hal, a0);
+    const int b = addTriangle(p1, p0, pr, a, har, hbr, b0);
+    legalize(a + 1);
+    legalize(b + 2);
+  }
+
+  const Grid& grid_;
+  double maxErrorMeters_;
+  bool evaluating_ = false;
+  std::vector<double> heights_;
+  std::vector<int> halfedges_;
+  std::vector<uint32_t> stamps_;
+  std::vector<GridPoint> candidates_;
+  std::priority_queue<Queued> queue_;
+  std::unordered_set<uint32_t> inserted_;
+};
+
+// Half-edge collapses of the inserted vertices (never the border's) onto a neighbour, each kept
+// only where every new triangle stays counter-clockwise and every sample it covers within the
+// error; repeated while a pass removes any.
+class Decimation {
+ public:
+  Decimation(const Grid& grid, double maxErrorMeters, std::vector<GridPoint> points,
+             const std::vector<int>& triangles, int fixedVertices)
+      : grid_(grid),
+        maxErrorMeters_(maxErrorMeters),
+        points_(std::move(points)),
+        fixedVertices_(fixedVertices),
+        incident_(points_.size()) {
+    for (size_t i = 0; i < triangles.size(); i += 3) {
+      addTriangle({triangles[i], triangles[i + 1], triangles[i + 2]});
+    }
+  }
+
+  void run() {
+    for (int pass = 0; pass < 8; ++pass) {
+      bool removedAny = false;
+      for (int v = static_cast<int>(points_.size()) - 1; v >= fixedVertices_; --v) {
+        removedAny = tryRemove(v) || removedAny;
+      }
+      if (!removedAny) break;
+    }
+  }
+
+  GridTin result() const {
+    GridTin tin;
+    std::vector<int> index(points_.size(), -1);
+    for (size_t t = 0; t < vertexTriangles.size(); ++t) {
+      if (!alive_[t]) continue;
+      for (int v : vertexTriangles[t]) {
+        auto& i = index[static_cast<size_t>(v)];
+        if (i < 0) {
+          i = static_cast<int>(tin.samples.size());
+          tin.samples.push_back(grid_.sampleOf(points_[static_cast<size_t>(v)]));
+        }
+        tin.triangles.push_back(static_cast<uint32_t>(i));
+      }
+    }
+    return tin;
+  }
+
+ private:
+  using Triangle = std::array<int, 3>;
+
+  void addTriangle(const Triangle& t) {
+    const int index = static_cast<int>(vertexTriangles.size());
+    vertexTriangles.push_back(t);
+    alive_.push_back(true);
+    for (int v : t) incident_[static_cast<size_t>(v)].push_back(index);
+  }
+
+  double heightOf(int v) const {
+    const GridPoint p = points_[static_cast<size_t>(v)];
+    return grid_.heightAt(p.x, p.y);
+  }
+
+  bool tryRemove(int v) {
+    std::vector<int> star;
+    for (int t : incident_[static_cast<size_t>(v)]) {
+      if (alive_[static_cast<size_t>(t)]) star.push_back(t);
+    }
+    std::vector<int> neighbours;
+    for (int t : star) {
+      for (int w : vertexTriangles[static_cast<size_t>(t)]) {
+        if (w != v && std::find(neighbours.begin(), neighbours.end(), w) == neighbours.end()) {
+          neighbours.push_back(w);
+        }
+      }
+    }
+    double bestError = INFINITY;
+    int best = -1;
+    for (int u : neighbours) {
+      const double error = collapseError(star, v, u, bestError);
+      if (error < bestError) {
+        bestError = error;
+        best = u;
+      }
+    }
+    if (best < 0 || bestError > maxErrorMeters_) return false;
+    for (int t : star) {
+      alive_[static_cast<size_t>(t)] = false;
+      Triangle moved = vertexTriangles[static_cast<size_t>(t)];
+      if (std::find(moved.begin(), moved.end(), best) != moved.end()) continue;
+      std::replace(moved.begin(), moved.end(), v, best);
+      addTriangle(moved);
+    }
+    return true;
+  }
+
+  // The largest error of the star's triangles with v moved onto u; INFINITY where one would fold
+  // over. Stops once above `enough` (a better neighbour is already known).
+  double collapseError(const std::vector<int>& star, int v, int u, double enough) const {
+    double worst = 0;
+    for (int t : star) {
+      Triangle moved = vertexTriangles[static_cast<size_t>(t)];
+      if (std::find(moved.begin(), moved.end(), u) != moved.end()) continue;
+      std::replace(moved.begin(), moved.end(), v, u);
+      const std::array<GridPoint, 3> corners{points_[static_cast<size_t>(moved[0])],
+                                             points_[static_cast<size_t>(moved[1])],
+                                             points_[static_cast<size_t>(moved[2])]};
+      if (orient(corners[0], corners[1], corners[2]) <= 0) return INFINITY;
+      const WorstSample sample = worstSampleIn(
+          grid_, corners, {heightOf(moved[0]), heightOf(moved[1]), heightOf(moved[2])}, true);
+      worst = std::max(worst, sample.errorMeters);
+      if (worst > maxErrorMeters_ || worst >= enough) return INFINITY;
+    }
+    return worst;
+  }
+
+  const Grid& grid_;
+  double maxErrorMeters_;
+  std::vector<GridPoint> points_;
+  int fixedVertices_;
+  std::vector<Triangle> vertexTriangles;
+  std::vector<bool> alive_;
+  std::vector<std::vector<int>> incident_;
+};
+
+}  // namespace
+
+GridTin simplifyGrid(const std::vector<double>& heightsMeters, uint32_t side,
+                     double maxErrorMeters) {
+  const Grid grid{heightsMeters, static_cast<int>(side)};
+  const double tolerance = std::max(0.0, maxErrorMeters);
+  GreedyInsertion insertion(grid, tolerance);
+  insertion.run();
+  Decimation decimation(grid, tolerance, insertion.points, insertion.vertexTriangles,
+                        insertion.fixedVertices);
+  decimation.run();
+  return decimation.result();
+}
+
+double maxTinErrorMeters(const std::vector<double>& heightsMeters, uint32_t side,
+                         const GridTin& tin) {
+  const Grid grid{heightsMeters, static_cast<int>(side)};
+  const auto pointOf = [&](uint32_t vertex) {
+    const uint32_t sample = tin.samples[vertex];
+    return GridPoint{static_cast<int>(sample % side), static_cast<int>(side - 1 - sample / side)};
+  };
+  // Every sample must be covered: one no triangle holds counts as an infinite error.
+  std::vector<double> errors(heightsMeters.size(), INFINITY);
+  for (size_t i = 0; i + 2 < tin.triangles.size(); i += 3) {
+    const std::array<GridPoint, 3> v{pointOf(tin.triangles[i]), pointOf(tin.triangles[i + 1]),
+                                     pointOf(tin.triangles[i + 2])};
+    const std::array<double, 3> z{heightsMeters[tin.samples[tin.triangles[i]]],
+                                  heightsMeters[tin.samples[tin.triangles[i + 1]]],
+                                  heightsMeters[tin.samples[tin.triangles[i + 2]]]};
+    const int64_t area = orient(v[0], v[1], v[2]);
+    if (area <= 0) return INFINITY;
+    const int x0 = std::min({v[0].x, v[1].x, v[2].x}), x1 = std::max({v[0].x, v[1].x, v[2].x});
+    const int y0 = std::min({v[0].y, v[1].y, v[2].y}), y1 = std::max({v[0].y, v[1].y, v[2].y});
+    for (int y = y0; y <= y1; ++y) {
+      for (int x = x0; x <= x1; ++x) {
+        const GridPoint p{x, y};
+        const int64_t w0 = orient(v[1], v[2], p), w1 = orient(v[2], v[0], p),
+                      w2 = orient(v[0], v[1], p);
+        if (w0 < 0 || w1 < 0 || w2 < 0) continue;
+        const double interpolated =
+            (static_cast<double>(w0) * z[0] + static_cast<double>(w1) * z[1] +
+             static_cast<double>(w2) * z[2]) /
+            static_cast<double>(area);
+        double& e = errors[grid.sampleOf(p)];
+        const double error = std::fabs(interpolated - grid.heightAt(x, y));
+        e = std::isinf(e) ? error : std::max(e, error);
+      }
+    }
+  }
+  return *std::max_element(errors.begin(), errors.end());
+}
+
+}  // namespace globe::publish
