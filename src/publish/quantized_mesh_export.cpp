@@ -97,10 +97,11 @@ Result<std::vector<std::byte>> makeTile(PyramidSurface& surface, streaming::Terr
   auto grid = sampleTileGrid(surface, tile, kGridVertices, sampleLevel);
   if (!grid) return Error{grid.error()};
   // 0: the whole grid, split as globe draws it, so that the tile is globe's surface exactly.
+  // The error in 3D (ECEF): a coarse tile's flat triangles must follow the globe's curve too.
   const GridTin tin =
       errorFraction > 0
-          ? simplifyGrid(grid->heightsMeters, kGridVertices,
-                         errorFraction * levelGeometricErrorMeters(ellipsoid, tile.level))
+          ? simplifyGridPositions(gridPositionsEcefMeters(*grid, ellipsoid), kGridVertices,
+                                  errorFraction * levelGeometricErrorMeters(ellipsoid, tile.level))
           : wholeGridTin(kGridVertices);
   BlockMesh mesh = quantizedMeshOfTin(tile, kGridVertices, grid->heightsMeters, tin, ellipsoid);
   for (uint32_t sample : tin.samples) {

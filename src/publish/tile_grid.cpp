@@ -5,6 +5,7 @@
 
 #include "geo/ecef.hpp"
 #include "terrain/block_grid.hpp"
+#include "terrain/tile_mesh.hpp"
 
 namespace globe::publish {
 namespace {
@@ -40,6 +41,21 @@ Result<TileGrid> sampleTileGrid(PyramidSurface& surface, const geo::TileId& tile
     }
   }
   return grid;
+}
+
+std::vector<std::array<double, 3>> gridPositionsEcefMeters(const TileGrid& grid,
+                                                           const geo::Ellipsoid& ellipsoid) {
+  const terrain::BlockGrid blockGrid{grid.tile, grid.side};
+  std::vector<std::array<double, 3>> positions;
+  positions.reserve(grid.heightsMeters.size());
+  for (uint32_t row = 0; row < grid.side; ++row) {
+    for (uint32_t column = 0; column < grid.side; ++column) {
+      const glm::dvec3 p = terrain::tileVertexEcefMeters(
+          ellipsoid, blockGrid, row, column, grid.heightsMeters[size_t{row} * grid.side + column]);
+      positions.push_back({p.x, p.y, p.z});
+    }
+  }
+  return positions;
 }
 
 std::array<float, 3> gridNormal(const TileGrid& grid, const geo::Ellipsoid& ellipsoid, int row,

@@ -30,6 +30,11 @@ struct TileGrid {
 Result<TileGrid> sampleTileGrid(PyramidSurface& surface, const geo::TileId& tile, uint32_t side,
                                 uint32_t maxLevel);
 
+// The grid's samples in ECEF metres (rows from the north): the same bits for a vertex shared with
+// a neighbour, whichever tile computes it.
+std::vector<std::array<double, 3>> gridPositionsEcefMeters(const TileGrid& grid,
+                                                           const geo::Ellipsoid& ellipsoid);
+
 // Unit normals (ECEF) of the surface at grid sample (row, column), by central differences over
 // the apron; the ellipsoid's normal where they degenerate (at a pole).
 std::array<float, 3> gridNormal(const TileGrid& grid, const geo::Ellipsoid& ellipsoid, int row,

@@ -35,13 +35,31 @@ bool inCircle(GridPoint a, GridPoint b, GridPoint c, GridPoint d) {
          0;
 }
 
-// The grid and the tolerance every pass works against.
+using Position = std::array<double, 3>;
+
+// The distance between a sample's position and the triangle's point at the sample's grid place
+// (the weights over the corners' positions, wSum their total).
+double distanceMeters(const std::array<int64_t, 3>& w, int64_t wSum,
+                      const std::array<Position, 3>& corners, const Position& sample) {
+  double squared = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double interpolated = (static_cast<double>(w[0]) * corners[0][axis] +
+                                 static_cast<double>(w[1]) * corners[1][axis] +
+                                 static_cast<double>(w[2]) * corners[2][axis]) /
+                                static_cast<double>(wSum);
+    const double d = interpolated - sample[axis];
+    squared += d * d;
+  }
+  return std::sqrt(squared);
+}
+
+// The samples' positions and the grid's shape every pass works on.
 struct Grid {
-  const std::vector<double>& heightsMeters;
+  const std::vector<Position>& positions;
   int side;
 
-  double heightAt(int x, int y) const {
-    return heightsMeters[static_cast<size_t>(side - 1 - y) * side + x];
+  const Position& positionAt(int x, int y) const {
+    return positions[static_cast<size_t>(side - 1 - y) * side + x];
   }
   bool onBorder(int x, int y) const { return x == 0 || y == 0 || x == side - 1 || y == side - 1; }
   uint32_t sampleOf(GridPoint p) const {
@@ -58,26 +76,40 @@ struct WorstSample {
 // sides' own simplification bounds them). The first in scan order on ties, so that the result
 // depends on the heights alone.
 WorstSample worstSampleIn(const Grid& grid, const std::array<GridPoint, 3>& v,
-                          const std::array<double, 3>& z, bool skipBorder) {
+                          const std::array<Position, 3>& corners, bool skipBorder) {
   const int64_t area = orient(v[0], v[1], v[2]);
   WorstSample worst;
   if (area <= 0) return worst;
   const int x0 = std::min({v[0].x, v[1].x, v[2].x}), x1 = std::max({v[0].x, v[1].x, v[2].x});
   const int y0 = std::min({v[0].y, v[1].y, v[2].y}), y1 = std::max({v[0].y, v[1].y, v[2].y});
+  // Each weight is an edge function, linear in x: per row, the span where all three are >= 0
+  // is found exactly in integers, and the weights stepped along it.
+  const std::array<int64_t, 3> stepX{-(v[2].y - v[1].y), -(v[0].y - v[2].y), -(v[1].y - v[0].y)};
   for (int y = y0; y <= y1; ++y) {
-    for (int x = x0; x <= x1; ++x) {
-      const GridPoint p{x, y};
-      const int64_t w0 = orient(v[1], v[2], p), w1 = orient(v[2], v[0], p),
-                    w2 = orient(v[0], v[1], p);
-      if (w0 < 0 || w1 < 0 || w2 < 0) continue;
-      if (skipBorder && grid.onBorder(x, y)) continue;
+    const GridPoint start{x0, y};
+    std::array<int64_t, 3> w{orient(v[1], v[2], start), orient(v[2], v[0], start),
+                             orient(v[0], v[1], start)};
+    int64_t first = x0, last = x1;
+    for (int k = 0; k < 3; ++k) {
+      if (stepX[k] == 0) {
+        if (w[k] < 0) first = last + 1;
+      } else if (stepX[k] > 0) {
+        if (w[k] < 0) first = std::max(first, x0 + (-w[k] + stepX[k] - 1) / stepX[k]);
+      } else {
+        if (w[k] < 0)
+          first = last + 1;
+        else
+          last = std::min(last, x0 + w[k] / -stepX[k]);
+      }
+    }
+    for (int k = 0; k < 3; ++k) w[k] += stepX[k] * (first - x0);
+    for (int64_t x = first; x <= last; ++x, w[0] += stepX[0], w[1] += stepX[1], w[2] += stepX[2]) {
+      if (skipBorder && grid.onBorder(static_cast<int>(x), y)) continue;
       // A corner is exact; rounding in the weights must not make it a candidate again.
-      if ((w0 == area) || (w1 == area) || (w2 == area)) continue;
-      const double interpolated = (static_cast<double>(w0) * z[0] + static_cast<double>(w1) * z[1] +
-                                   static_cast<double>(w2) * z[2]) /
-                                  static_cast<double>(area);
-      const double error = std::fabs(interpolated - grid.heightAt(x, y));
-      if (error > worst.errorMeters) worst = {error, p};
+      if (w[0] == area || w[1] == area || w[2] == area) continue;
+      const double error =
+          distanceMeters(w, area, corners, grid.positionAt(static_cast<int>(x), y));
+      if (error > worst.errorMeters) worst = {error, {static_cast<int>(x), y}};
     }
   }
   return worst;
@@ -85,15 +117,17 @@ WorstSample worstSampleIn(const Grid& grid, const std::array<GridPoint, 3>& v,
 
 // Vertices chosen on one side of the square, its samples walked in a fixed direction: both tiles
 // sharing the side pass the same heights in the same order and so choose the same vertices.
-void simplifySide(const std::vector<double>& heights, size_t first, size_t last,
+void simplifySide(const std::vector<Position>& positions, size_t first, size_t last,
                   double maxErrorMeters, std::vector<size_t>& chosen) {
   if (last <= first + 1) return;
   double worstError = -1;
   size_t worst = first;
   for (size_t k = first + 1; k < last; ++k) {
-    const double t = static_cast<double>(k - first) / static_cast<double>(last - first);
-    const double chord = heights[first] + (heights[last] - heights[first]) * t;
-    const double error = std::fabs(heights[k] - chord);
+    // The chord's point at the sample's place along the side, as a triangle interpolates it.
+    const auto along = static_cast<int64_t>(k - first), span = static_cast<int64_t>(last - first);
+    const double error =
+        distanceMeters({span - along, along, 0}, span,
+                       {positions[first], positions[last], positions[last]}, positions[k]);
     if (error > worstError) {
       worstError = error;
       worst = k;
@@ -101,8 +135,8 @@ void simplifySide(const std::vector<double>& heights, size_t first, size_t last,
   }
   if (worstError <= maxErrorMeters) return;
   chosen.push_back(worst);
-  simplifySide(heights, first, worst, maxErrorMeters, chosen);
-  simplifySide(heights, worst, last, maxErrorMeters, chosen);
+  simplifySide(positions, first, worst, maxErrorMeters, chosen);
+  simplifySide(positions, worst, last, maxErrorMeters, chosen);
 }
 
 // Greedy insertion into a Delaunay triangulation kept in half-edge arrays (as delaunator and
@@ -150,7 +184,7 @@ class GreedyInsertion {
 
   int addVertex(GridPoint p) {
     points.push_back(p);
-    heights_.push_back(grid_.heightAt(p.x, p.y));
+    positions_.push_back(grid_.positionAt(p.x, p.y));
     return static_cast<int>(points.size()) - 1;
   }
 
@@ -159,13 +193,13 @@ class GreedyInsertion {
     std::vector<GridPoint> out;
     // South and north walked west to east, west and east south to north.
     const auto side = [&](auto pointAt) {
-      std::vector<double> heights;
+      std::vector<Position> positions;
       for (int k = 0; k < n; ++k) {
         const GridPoint p = pointAt(k);
-        heights.push_back(grid_.heightAt(p.x, p.y));
+        positions.push_back(grid_.positionAt(p.x, p.y));
       }
       std::vector<size_t> chosen;
-      simplifySide(heights, 0, heights.size() - 1, maxErrorMeters_, chosen);
+      simplifySide(positions, 0, positions.size() - 1, maxErrorMeters_, chosen);
       std::sort(chosen.begin(), chosen.end());
       for (size_t k : chosen) out.push_back(pointAt(static_cast<int>(k)));
     };
@@ -209,8 +243,8 @@ class GreedyInsertion {
         worstSampleIn(grid_,
                       {points[static_cast<size_t>(v[0])], points[static_cast<size_t>(v[1])],
                        points[static_cast<size_t>(v[2])]},
-                      {heights_[static_cast<size_t>(v[0])], heights_[static_cast<size_t>(v[1])],
-                       heights_[static_cast<size_t>(v[2])]},
+                      {positions_[static_cast<size_t>(v[0])], positions_[static_cast<size_t>(v[1])],
+                       positions_[static_cast<size_t>(v[2])]},
                       true);
     const uint32_t stamp = ++stamps_[static_cast<size_t>(t)];
     candidates_[static_cast<size_t>(t)] = worst.at;
@@ -319,7 +353,7 @@ class GreedyInsertion {
   const Grid& grid_;
   double maxErrorMeters_;
   bool evaluating_ = false;
-  std::vector<double> heights_;
+  std::vector<Position> positions_;
   std::vector<int> halfedges_;
   std::vector<uint32_t> stamps_;
   std::vector<GridPoint> candidates_;
@@ -345,9 +379,13 @@ class Decimation {
   }
 
   void run() {
+    // A vertex is tried again only when a collapse changed its star since its last try.
+    dirty_.assign(points_.size(), true);
     for (int pass = 0; pass < 8; ++pass) {
       bool removedAny = false;
       for (int v = static_cast<int>(points_.size()) - 1; v >= fixedVertices_; --v) {
+        if (!dirty_[static_cast<size_t>(v)]) continue;
+        dirty_[static_cast<size_t>(v)] = false;
         removedAny = tryRemove(v) || removedAny;
       }
       if (!removedAny) break;
@@ -381,9 +419,9 @@ class Decimation {
     for (int v : t) incident_[static_cast<size_t>(v)].push_back(index);
   }
 
-  double heightOf(int v) const {
+  const Position& positionOf(int v) const {
     const GridPoint p = points_[static_cast<size_t>(v)];
-    return grid_.heightAt(p.x, p.y);
+    return grid_.positionAt(p.x, p.y);
   }
 
   bool tryRemove(int v) {
@@ -415,6 +453,7 @@ class Decimation {
       if (std::find(moved.begin(), moved.end(), best) != moved.end()) continue;
       std::replace(moved.begin(), moved.end(), v, best);
       addTriangle(moved);
+      for (int w : moved) dirty_[static_cast<size_t>(w)] = true;
     }
     return true;
   }
@@ -432,7 +471,7 @@ class Decimation {
                                              points_[static_cast<size_t>(moved[2])]};
       if (orient(corners[0], corners[1], corners[2]) <= 0) return INFINITY;
       const WorstSample sample = worstSampleIn(
-          grid_, corners, {heightOf(moved[0]), heightOf(moved[1]), heightOf(moved[2])}, true);
+          grid_, corners, {positionOf(moved[0]), positionOf(moved[1]), positionOf(moved[2])}, true);
       worst = std::max(worst, sample.errorMeters);
       if (worst > maxErrorMeters_ || worst >= enough) return INFINITY;
     }
@@ -446,13 +485,26 @@ class Decimation {
   std::vector<Triangle> vertexTriangles;
   std::vector<bool> alive_;
   std::vector<std::vector<int>> incident_;
+  std::vector<bool> dirty_;
 };
+
+// Heights as positions: the grid's place in samples, the height in metres. A triangle's point
+// then lies over the sample exactly, so the distance is the vertical error.
+std::vector<Position> heightPositions(const std::vector<double>& heightsMeters, uint32_t side) {
+  std::vector<Position> positions;
+  positions.reserve(heightsMeters.size());
+  for (size_t i = 0; i < heightsMeters.size(); ++i) {
+    positions.push_back(
+        {static_cast<double>(i % side), -static_cast<double>(i / side), heightsMeters[i]});
+  }
+  return positions;
+}
 
 }  // namespace
 
-GridTin simplifyGrid(const std::vector<double>& heightsMeters, uint32_t side,
-                     double maxErrorMeters) {
-  const Grid grid{heightsMeters, static_cast<int>(side)};
+GridTin simplifyGridPositions(const std::vector<std::array<double, 3>>& positionsMeters,
+                              uint32_t side, double maxErrorMeters) {
+  const Grid grid{positionsMeters, static_cast<int>(side)};
   const double tolerance = std::max(0.0, maxErrorMeters);
   GreedyInsertion insertion(grid, tolerance);
   insertion.run();
@@ -462,21 +514,31 @@ GridTin simplifyGrid(const std::vector<double>& heightsMeters, uint32_t side,
   return decimation.result();
 }
 
+GridTin simplifyGrid(const std::vector<double>& heightsMeters, uint32_t side,
+                     double maxErrorMeters) {
+  return simplifyGridPositions(heightPositions(heightsMeters, side), side, maxErrorMeters);
+}
+
 double maxTinErrorMeters(const std::vector<double>& heightsMeters, uint32_t side,
                          const GridTin& tin) {
-  const Grid grid{heightsMeters, static_cast<int>(side)};
+  return maxTinDistanceMeters(heightPositions(heightsMeters, side), side, tin);
+}
+
+double maxTinDistanceMeters(const std::vector<std::array<double, 3>>& positionsMeters,
+                            uint32_t side, const GridTin& tin) {
+  const Grid grid{positionsMeters, static_cast<int>(side)};
   const auto pointOf = [&](uint32_t vertex) {
     const uint32_t sample = tin.samples[vertex];
     return GridPoint{static_cast<int>(sample % side), static_cast<int>(side - 1 - sample / side)};
   };
   // Every sample must be covered: one no triangle holds counts as an infinite error.
-  std::vector<double> errors(heightsMeters.size(), INFINITY);
+  std::vector<double> errors(positionsMeters.size(), INFINITY);
   for (size_t i = 0; i + 2 < tin.triangles.size(); i += 3) {
     const std::array<GridPoint, 3> v{pointOf(tin.triangles[i]), pointOf(tin.triangles[i + 1]),
                                      pointOf(tin.triangles[i + 2])};
-    const std::array<double, 3> z{heightsMeters[tin.samples[tin.triangles[i]]],
-                                  heightsMeters[tin.samples[tin.triangles[i + 1]]],
-                                  heightsMeters[tin.samples[tin.triangles[i + 2]]]};
+    const std::array<Position, 3> corners{positionsMeters[tin.samples[tin.triangles[i]]],
+                                          positionsMeters[tin.samples[tin.triangles[i + 1]]],
+                                          positionsMeters[tin.samples[tin.triangles[i + 2]]]};
     const int64_t area = orient(v[0], v[1], v[2]);
     if (area <= 0) return INFINITY;
     const int x0 = std::min({v[0].x, v[1].x, v[2].x}), x1 = std::max({v[0].x, v[1].x, v[2].x});
@@ -484,15 +546,11 @@ double maxTinErrorMeters(const std::vector<double>& heightsMeters, uint32_t side
     for (int y = y0; y <= y1; ++y) {
       for (int x = x0; x <= x1; ++x) {
         const GridPoint p{x, y};
-        const int64_t w0 = orient(v[1], v[2], p), w1 = orient(v[2], v[0], p),
-                      w2 = orient(v[0], v[1], p);
-        if (w0 < 0 || w1 < 0 || w2 < 0) continue;
-        const double interpolated =
-            (static_cast<double>(w0) * z[0] + static_cast<double>(w1) * z[1] +
-             static_cast<double>(w2) * z[2]) /
-            static_cast<double>(area);
+        const std::array<int64_t, 3> w{orient(v[1], v[2], p), orient(v[2], v[0], p),
+                                       orient(v[0], v[1], p)};
+        if (w[0] < 0 || w[1] < 0 || w[2] < 0) continue;
         double& e = errors[grid.sampleOf(p)];
-        const double error = std::fabs(interpolated - grid.heightAt(x, y));
+        const double error = distanceMeters(w, area, corners, grid.positionAt(x, y));
         e = std::isinf(e) ? error : std::max(e, error);
       }
     }

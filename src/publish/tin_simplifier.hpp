@@ -12,6 +12,7 @@
 //    insertion keeps vertices that later insertions made unnecessary.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -35,5 +36,13 @@ GridTin simplifyGrid(const std::vector<double>& heightsMeters, uint32_t side,
 // The largest |interpolated − sample| over every grid sample (what simplifyGrid bounds).
 double maxTinErrorMeters(const std::vector<double>& heightsMeters, uint32_t side,
                          const GridTin& tin);
+
+// The same for samples with 3D positions (metres, any frame: ECEF for a tile on the globe, so
+// that the flat triangles' sag under the curved surface counts too): each sample within
+// maxErrorMeters of the triangle's point at the sample's place in the grid.
+GridTin simplifyGridPositions(const std::vector<std::array<double, 3>>& positionsMeters,
+                              uint32_t side, double maxErrorMeters);
+double maxTinDistanceMeters(const std::vector<std::array<double, 3>>& positionsMeters,
+                            uint32_t side, const GridTin& tin);
 
 }  // namespace globe::publish

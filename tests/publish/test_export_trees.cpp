@@ -9,9 +9,11 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <optional>
 #include <random>
+#include <span>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -258,6 +260,54 @@ TEST(ExportTrees, QuantizedMeshNeighboursShareTheirSidesAndTilesCarryExtensions)
   EXPECT_LT(wet, 256 * 256);      // and Ireland, Britain
   // Fuji is land.
   EXPECT_EQ(west->waterMask, std::vector<uint8_t>{0});
+}
+
+// Every tile of a tree decoded by @here/quantized-mesh-decoder (npm, tools/web) holds what
+// globe's decoder reads from it: vertices, triangles, edge lists, normals, water mask, the
+// heights' range, the metadata's children.
+TEST(ExportTrees, QuantizedMeshTilesDecodeWithTheNpmDecoder) {
+  if (!fs::exists(kSource / "tools/web/node_modules/@here/quantized-mesh-decoder/package.json")) {
+    GTEST_SKIP() << "tools/web/install.sh has not installed the npm decoder";
+  }
+  const fs::path out = globe::testing::freshTempDir("export-qm-npm") / "qm";
+  Exit e = run(tiler() + "--format quantized-mesh -o " + out.string() +
+               " --levels 0-10 --bounds 138.4,35.1,139,35.6 " +
+               globe::testing::bundledPyramid().string());
+  ASSERT_EQ(e.exitCode, 0) << e.output;
+  const Exit decoded =
+      run("node " + (kSource / "tests/tools/quantized_mesh_node_check.mjs").string() + " " +
+          out.string());
+  ASSERT_EQ(decoded.exitCode, 0) << decoded.output;
+  std::istringstream lines(decoded.output);
+  std::string line;
+  size_t tiles = 0;
+  while (std::getline(lines, line)) {
+    const auto j = nlohmann::json::parse(line);
+    const fs::path path = out / j["tile"].get<std::string>();
+    std::ifstream file(path, std::ios::binary);
+    const std::vector<char> chars{std::istreambuf_iterator<char>(file), {}};
+    auto bytes = formats::gunzipIfNeeded(std::as_bytes(std::span(chars.data(), chars.size())),
+                                         path.string(), 64 << 20);
+    ASSERT_TRUE(bytes) << bytes.error();
+    auto mesh = formats::decodeQuantizedMesh(*bytes, path.string());
+    ASSERT_TRUE(mesh) << mesh.error();
+    EXPECT_EQ(j["vertices"], mesh->vertexCount()) << path;
+    EXPECT_EQ(j["triangles"], mesh->triangleCount()) << path;
+    EXPECT_EQ(j["indicesOutOfRange"], 0) << path;
+    EXPECT_EQ(j["edges"], nlohmann::json({mesh->westEdge.size(), mesh->southEdge.size(),
+                                          mesh->eastEdge.size(), mesh->northEdge.size()}))
+        << path;
+    EXPECT_EQ(j["normals"], mesh->normals.size()) << path;
+    EXPECT_EQ(j["waterMaskBytes"], mesh->waterMask.size()) << path;
+    const double step = (mesh->maximumHeightMeters - mesh->minimumHeightMeters) / 32767.0 + 1e-3;
+    EXPECT_NEAR(j["lowestMeters"].get<double>(),
+                *std::min_element(mesh->heightMeters.begin(), mesh->heightMeters.end()), step);
+    EXPECT_NEAR(j["highestMeters"].get<double>(),
+                *std::max_element(mesh->heightMeters.begin(), mesh->heightMeters.end()), step);
+    EXPECT_EQ(j["metadata"], nlohmann::json::parse(mesh->metadataJson)) << path;
+    ++tiles;
+  }
+  EXPECT_GT(tiles, 20u);
 }
 
 // Tiles made by several threads are the tiles one thread makes, byte for byte.

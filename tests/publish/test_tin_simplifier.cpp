@@ -16,6 +16,7 @@
 #include "publish/tin_simplifier.hpp"
 #include "streaming/tile_store.hpp"
 #include "terrain/block_grid.hpp"
+#include "terrain/tile_mesh.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 
 namespace globe::publish {
@@ -134,6 +135,29 @@ TEST(TinSimplifier, NeighboursChooseTheSameVerticesOnTheirSharedSide) {
     EXPECT_EQ(shared, sideSamples(b, eastWest)) << tolerance;
     EXPECT_EQ(sideSamples(a, middleSouth), sideSamples(c, southNorth)) << tolerance;
   }
+}
+
+// A level-0 tile of the sea (all heights 0) at its geometric error (77 km): by heights alone two
+// triangles, but flat triangles across a hemisphere would cut 6,000 km into the globe; in ECEF
+// every sample stays within the error of the TIN.
+TEST(TinSimplifier, ACoarseTileFollowsTheGlobesCurveInEcef) {
+  const geo::TileId tile{0, 0, 0};
+  const terrain::BlockGrid grid{tile, kSide};
+  std::vector<std::array<double, 3>> positions;
+  for (uint32_t row = 0; row < kSide; ++row) {
+    for (uint32_t column = 0; column < kSide; ++column) {
+      const glm::dvec3 p =
+          terrain::tileVertexEcefMeters(geo::Ellipsoid::wgs84(), grid, row, column, 0.0);
+      positions.push_back({p.x, p.y, p.z});
+    }
+  }
+  const double toleranceMeters = 77067.0;
+  EXPECT_EQ(simplifyGrid(std::vector<double>(kSide * kSide, 0.0), kSide, toleranceMeters)
+                .triangleCount(),
+            2u);
+  const GridTin tin = simplifyGridPositions(positions, kSide, toleranceMeters);
+  EXPECT_GT(tin.triangleCount(), 50u);
+  EXPECT_LE(maxTinDistanceMeters(positions, kSide, tin), toleranceMeters);
 }
 
 TEST(TinSimplifier, TrianglesAreCounterClockwiseSeenFromAbove) {
