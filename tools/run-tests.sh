@@ -12,6 +12,9 @@ EXTRA=()
 if [ -n "${GLOBE_WERROR:-}" ]; then EXTRA+=(-DGLOBE_WERROR="$GLOBE_WERROR"); fi
 bash tools/configure.sh "$BUILD" "${EXTRA[@]}"
 cmake --build "$BUILD" -j"$(nproc)"
+# Chromium, node and npm (apt, where missing) and tools/web's pinned npm packages: the web
+# clients (CesiumJS, MapLibre) that tests/web shows the exports in.
+bash tools/web/install.sh
 # CTest starts the longest tests first when it knows their times; a new build directory does not,
 # so it gets the committed ones (without them the long tests may start last and the suite waits).
 COSTS=$BUILD/Testing/Temporary/CTestCostData.txt

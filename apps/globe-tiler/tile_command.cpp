@@ -19,7 +19,10 @@ int runTileCommand(int argc, char** argv) {
       "Builds a tile pyramid (lat/long quadtree of N×N GTOPO30-encoded blocks) from GTOPO30 "
       ".DEM/.HDR files or any raster GDAL opens.\nAlso: globe-tiler export PYRAMID L X Y "
       "OUT_STEM\n      "
+      "globe-tiler export --format quantized-mesh|heightmap|terrarium|terrain-rgb -o DIR PYRAMID "
+      "(for CesiumJS, MapLibre)\n      "
       "globe-tiler imagery -o LAYER_DIR INPUT... (imagery layers; see globe-tiler imagery --help)\n"
+      "      globe-tiler export-imagery --format xyz|tms|pmtiles -o OUT LAYER_DIR (for web maps)\n"
       "      globe-tiler water-mask -o LAYER_DIR POLYGONS... (water masks from land polygons)",
       "globe-tiler"};
   app.set_version_flag("--version",

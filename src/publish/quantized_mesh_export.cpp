@@ -97,11 +97,12 @@ Result<std::vector<std::byte>> makeTile(PyramidSurface& surface, streaming::Terr
   auto grid = sampleTileGrid(surface, tile, kGridVertices, sampleLevel);
   if (!grid) return Error{grid.error()};
   // 0: the whole grid, split as globe draws it, so that the tile is globe's surface exactly.
-  // The error in 3D (ECEF): a coarse tile's flat triangles must follow the globe's curve too.
+  // Between the samples and under the globe's curve too: what a client draws of the TIN.
   const GridTin tin =
       errorFraction > 0
-          ? simplifyGridPositions(gridPositionsEcefMeters(*grid, ellipsoid), kGridVertices,
-                                  errorFraction * levelGeometricErrorMeters(ellipsoid, tile.level))
+          ? simplifyTileGrid(grid->heightsMeters, grid->apronMeters,
+                             gridPositionsEcefMeters(*grid, ellipsoid), kGridVertices,
+                             errorFraction * levelGeometricErrorMeters(ellipsoid, tile.level))
           : wholeGridTin(kGridVertices);
   BlockMesh mesh = quantizedMeshOfTin(tile, kGridVertices, grid->heightsMeters, tin, ellipsoid);
   for (uint32_t sample : tin.samples) {

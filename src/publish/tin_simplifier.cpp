@@ -21,18 +21,16 @@ int64_t orient(GridPoint a, GridPoint b, GridPoint c) {
   return int64_t{b.x - a.x} * (c.y - a.y) - int64_t{b.y - a.y} * (c.x - a.x);
 }
 
-// Whether d lies strictly inside the circle through the counter-clockwise a, b, c. Exact: the
-// coordinates are small integers. Strict, so that the grid's many cocircular quads never flip
-// back and forth.
-bool inCircle(GridPoint a, GridPoint b, GridPoint c, GridPoint d) {
+// Positive where d lies inside the circle through the counter-clockwise a, b, c, zero on it.
+// Exact: the coordinates are small integers.
+int64_t inCircle(GridPoint a, GridPoint b, GridPoint c, GridPoint d) {
   const int64_t adx = a.x - d.x, ady = a.y - d.y;
   const int64_t bdx = b.x - d.x, bdy = b.y - d.y;
   const int64_t cdx = c.x - d.x, cdy = c.y - d.y;
   const int64_t al = adx * adx + ady * ady;
   const int64_t bl = bdx * bdx + bdy * bdy;
   const int64_t cl = cdx * cdx + cdy * cdy;
-  return adx * (bdy * cl - bl * cdy) - ady * (bdx * cl - bl * cdx) + al * (bdx * cdy - bdy * cdx) >
-         0;
+  return adx * (bdy * cl - bl * cdy) - ady * (bdx * cl - bl * cdx) + al * (bdx * cdy - bdy * cdx);
 }
 
 using Position = std::array<double, 3>;
@@ -57,6 +55,26 @@ double distanceMeters(const std::array<int64_t, 3>& w, int64_t wSum,
 struct Grid {
   const std::vector<Position>& positions;
   int side;
+  // Whether the surface between samples counts: the grid's own triangles, each cell split from
+  // north-west to south-east as globe draws it.
+  bool betweenSamples = false;
+  // The samples in ECEF, where a flat triangle's sag under the curved globe counts; null for a
+  // plain height field.
+  const std::vector<Position>* ecef = nullptr;
+  // The heights with a ring of the neighbours' samples ((side + 2)², rows from the north), so
+  // that a side's vertices can depend on the cells on both sides of it; null without.
+  const std::vector<double>* apronHeights = nullptr;
+
+  double apronHeightAt(int x, int y) const {  // x, y in [-1, side]
+    return (*apronHeights)[static_cast<size_t>(side - y) * (side + 2) + static_cast<size_t>(x + 1)];
+  }
+  // How far the cell with south-west corner (x, y) bends: its two diagonals' midpoints apart.
+  // A TIN edge along the other diagonal misses the drawn surface by this at the cell's centre.
+  double cellTwistMeters(int x, int y) const {
+    return std::fabs(apronHeightAt(x, y + 1) + apronHeightAt(x + 1, y) - apronHeightAt(x, y) -
+                     apronHeightAt(x + 1, y + 1)) /
+           2;
+  }
 
   const Position& positionAt(int x, int y) const {
     return positions[static_cast<size_t>(side - 1 - y) * side + x];
@@ -67,19 +85,113 @@ struct Grid {
   }
 };
 
+// How far a flat triangle through these samples lies below the globe's curve at most: the cap
+// under its circumscribed circle, r² / 2R on the polar radius (the smaller: more sag). A
+// triangle flat in ECEF (two corners at a pole) sags as its longest side's chord, L² / 8R.
+double sagMeters(const Grid& grid, const std::array<GridPoint, 3>& v) {
+  if (grid.ecef == nullptr) return 0;
+  constexpr double kPolarRadiusMeters = 6356752.314245;
+  std::array<Position, 3> p;
+  for (size_t k = 0; k < 3; ++k) p[k] = (*grid.ecef)[grid.sampleOf(v[k])];
+  const auto sub = [](const Position& a, const Position& b) {
+    return Position{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+  };
+  const auto norm = [](const Position& a) {
+    return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  };
+  const Position ab = sub(p[1], p[0]), ac = sub(p[2], p[0]), bc = sub(p[2], p[1]);
+  const Position cross{ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2],
+                       ab[0] * ac[1] - ab[1] * ac[0]};
+  const double lab = norm(ab), lac = norm(ac), lbc = norm(bc);
+  const double twiceArea = norm(cross);
+  const double longest = std::max({lab, lac, lbc});
+  if (twiceArea <= 1e-9 * longest * longest) return longest * longest / (8 * kPolarRadiusMeters);
+  const double radius = std::min(lab * lac * lbc / (2 * twiceArea), longest);
+  return radius * radius / (2 * kPolarRadiusMeters);
+}
+
 struct WorstSample {
   double errorMeters = -1;
-  GridPoint at{-1, -1};
+  GridPoint at{-1, -1};   // the sample to insert for it; (-1, -1) when there is none
+  GridPoint alt{-1, -1};  // another, should `at` be a vertex already
 };
 
-// The sample of the triangle farthest from its plane (border samples skipped where asked: the
-// sides' own simplification bounds them). The first in scan order on ties, so that the result
-// depends on the heights alone.
+struct Crossing {
+  double errorMeters = -1;
+  double x = 0, y = 0;
+  GridPoint from{-1, -1}, to{-1, -1};  // the grid line's samples either side of it
+};
+
+// Where the triangle's edges cross the grid's lines (columns, rows and the cells' north-west to
+// south-east diagonals), the distance between the edge (flat between its corners) and the
+// grid's surface there (flat between the line's two samples): with the samples, the only places
+// two piecewise-flat surfaces can be farthest apart.
+Crossing worstEdgeCrossing(const Grid& grid, const std::array<GridPoint, 3>& v,
+                           const std::array<Position, 3>& corners) {
+  Crossing worst;
+  const auto lerp = [](const Position& a, const Position& b, double t) {
+    return Position{a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2] + (b[2] - a[2]) * t};
+  };
+  const auto consider = [&](const Position& onEdge, const Position& onGrid, double x, double y,
+                            GridPoint from, GridPoint to) {
+    double squared = 0;
+    for (int axis = 0; axis < 3; ++axis)
+      squared += (onEdge[axis] - onGrid[axis]) * (onEdge[axis] - onGrid[axis]);
+    const double error = std::sqrt(squared);
+    if (error > worst.errorMeters) worst = {error, x, y, from, to};
+  };
+  for (int k = 0; k < 3; ++k) {
+    const GridPoint a = v[static_cast<size_t>(k)], b = v[static_cast<size_t>((k + 1) % 3)];
+    const Position& pa = corners[static_cast<size_t>(k)];
+    const Position& pb = corners[static_cast<size_t>((k + 1) % 3)];
+    const int dx = b.x - a.x, dy = b.y - a.y;
+    // Columns x = c: the crossing lies between rows y0 and y0 + 1 (skipped on a sample).
+    for (int c = std::min(a.x, b.x) + 1; c < std::max(a.x, b.x); ++c) {
+      const int numerator = (c - a.x) * dy;
+      if (numerator % dx == 0) continue;
+      const double t = static_cast<double>(c - a.x) / dx, y = a.y + t * dy;
+      const int y0 = static_cast<int>(std::floor(y));
+      consider(lerp(pa, pb, t), lerp(grid.positionAt(c, y0), grid.positionAt(c, y0 + 1), y - y0), c,
+               y, {c, y0}, {c, y0 + 1});
+    }
+    // Rows y = c.
+    for (int c = std::min(a.y, b.y) + 1; c < std::max(a.y, b.y); ++c) {
+      const int numerator = (c - a.y) * dx;
+      if (numerator % dy == 0) continue;
+      const double t = static_cast<double>(c - a.y) / dy, x = a.x + t * dx;
+      const int x0 = static_cast<int>(std::floor(x));
+      consider(lerp(pa, pb, t), lerp(grid.positionAt(x0, c), grid.positionAt(x0 + 1, c), x - x0), x,
+               c, {x0, c}, {x0 + 1, c});
+    }
+    // Diagonals x + y = c, from (x0, c − x0) (north-west) to (x0 + 1, c − x0 − 1).
+    const int sa = a.x + a.y, sb = b.x + b.y, ds = sb - sa;
+    for (int c = std::min(sa, sb) + 1; c < std::max(sa, sb); ++c) {
+      const int numerator = (c - sa) * dx;
+      if (numerator % ds == 0) continue;
+      const double t = static_cast<double>(c - sa) / ds, x = a.x + t * dx;
+      const int x0 = static_cast<int>(std::floor(x));
+      consider(lerp(pa, pb, t),
+               lerp(grid.positionAt(x0, c - x0), grid.positionAt(x0 + 1, c - x0 - 1), x - x0), x,
+               c - x, {x0, c - x0}, {x0 + 1, c - x0 - 1});
+    }
+  }
+  return worst;
+}
+
+// The triangle's largest error and the sample to insert for it: the sample farthest from the
+// triangle, or, where an edge crossing is farther (Grid::betweenSamples), the insertable sample
+// nearest that crossing. Border samples are skipped where asked (the sides' own simplification
+// bounds them). The first in scan order on ties, so that the result depends on the data alone.
 WorstSample worstSampleIn(const Grid& grid, const std::array<GridPoint, 3>& v,
                           const std::array<Position, 3>& corners, bool skipBorder) {
   const int64_t area = orient(v[0], v[1], v[2]);
   WorstSample worst;
   if (area <= 0) return worst;
+  const double sag = sagMeters(grid, v);
+  Crossing crossing = grid.betweenSamples ? worstEdgeCrossing(grid, v, corners) : Crossing{};
+  if (crossing.errorMeters >= 0) crossing.errorMeters += sag;
+  double nearestSquared = INFINITY;
+  GridPoint nearest{-1, -1};
   const int x0 = std::min({v[0].x, v[1].x, v[2].x}), x1 = std::max({v[0].x, v[1].x, v[2].x});
   const int y0 = std::min({v[0].y, v[1].y, v[2].y}), y1 = std::max({v[0].y, v[1].y, v[2].y});
   // Each weight is an edge function, linear in x: per row, the span where all three are >= 0
@@ -108,8 +220,32 @@ WorstSample worstSampleIn(const Grid& grid, const std::array<GridPoint, 3>& v,
       // A corner is exact; rounding in the weights must not make it a candidate again.
       if (w[0] == area || w[1] == area || w[2] == area) continue;
       const double error =
-          distanceMeters(w, area, corners, grid.positionAt(static_cast<int>(x), y));
+          distanceMeters(w, area, corners, grid.positionAt(static_cast<int>(x), y)) + sag;
       if (error > worst.errorMeters) worst = {error, {static_cast<int>(x), y}};
+      if (crossing.errorMeters > 0) {
+        const double d =
+            (static_cast<double>(x) - crossing.x) * (static_cast<double>(x) - crossing.x) +
+            (y - crossing.y) * (y - crossing.y);
+        if (d < nearestSquared) {
+          nearestSquared = d;
+          nearest = {static_cast<int>(x), y};
+        }
+      }
+    }
+  }
+  if (crossing.errorMeters > worst.errorMeters) {
+    worst = {crossing.errorMeters, nearest, {-1, -1}};
+    if (nearest.x < 0) {
+      // No sample of this triangle: the grid line's own samples, wherever they lie, the nearer
+      // first (never a side's: those are the sides' to choose).
+      GridPoint first = crossing.from, second = crossing.to;
+      const double toFrom = std::hypot(first.x - crossing.x, first.y - crossing.y);
+      const double toTo = std::hypot(second.x - crossing.x, second.y - crossing.y);
+      if (toTo < toFrom) std::swap(first, second);
+      const GridPoint none{-1, -1};
+      worst.at = skipBorder && grid.onBorder(first.x, first.y) ? none : first;
+      worst.alt = skipBorder && grid.onBorder(second.x, second.y) ? none : second;
+      if (worst.at.x < 0) std::swap(worst.at, worst.alt);
     }
   }
   return worst;
@@ -117,9 +253,18 @@ WorstSample worstSampleIn(const Grid& grid, const std::array<GridPoint, 3>& v,
 
 // Vertices chosen on one side of the square, its samples walked in a fixed direction: both tiles
 // sharing the side pass the same heights in the same order and so choose the same vertices.
-void simplifySide(const std::vector<Position>& positions, size_t first, size_t last,
-                  double maxErrorMeters, std::vector<size_t>& chosen) {
+void simplifySide(const std::vector<Position>& positions, const std::vector<Position>& ecef,
+                  size_t first, size_t last, double maxErrorMeters, std::vector<size_t>& chosen) {
   if (last <= first + 1) return;
+  // The chord's sag under the curve, L² / 8R (as sagMeters), where the side has ECEF positions.
+  double sag = 0;
+  if (!ecef.empty()) {
+    double squared = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+      squared += (ecef[last][axis] - ecef[first][axis]) * (ecef[last][axis] - ecef[first][axis]);
+    }
+    sag = squared / (8 * 6356752.314245);
+  }
   double worstError = -1;
   size_t worst = first;
   for (size_t k = first + 1; k < last; ++k) {
@@ -127,7 +272,8 @@ void simplifySide(const std::vector<Position>& positions, size_t first, size_t l
     const auto along = static_cast<int64_t>(k - first), span = static_cast<int64_t>(last - first);
     const double error =
         distanceMeters({span - along, along, 0}, span,
-                       {positions[first], positions[last], positions[last]}, positions[k]);
+                       {positions[first], positions[last], positions[last]}, positions[k]) +
+        sag;
     if (error > worstError) {
       worstError = error;
       worst = k;
@@ -135,8 +281,8 @@ void simplifySide(const std::vector<Position>& positions, size_t first, size_t l
   }
   if (worstError <= maxErrorMeters) return;
   chosen.push_back(worst);
-  simplifySide(positions, first, worst, maxErrorMeters, chosen);
-  simplifySide(positions, worst, last, maxErrorMeters, chosen);
+  simplifySide(positions, ecef, first, worst, maxErrorMeters, chosen);
+  simplifySide(positions, ecef, worst, last, maxErrorMeters, chosen);
 }
 
 // Greedy insertion into a Delaunay triangulation kept in half-edge arrays (as delaunator and
@@ -160,10 +306,13 @@ class GreedyInsertion {
       const Queued top = queue_.top();
       queue_.pop();
       if (top.stamp != stamps_[static_cast<size_t>(top.triangle)]) continue;
-      const GridPoint candidate = candidates_[static_cast<size_t>(top.triangle)];
+      const WorstSample candidate = candidates_[static_cast<size_t>(top.triangle)];
       // Each sample is inserted once at most, so the loop ends after side² insertions.
-      if (!inserted_.insert(grid_.sampleOf(candidate)).second) continue;
-      split(top.triangle, addVertex(candidate));
+      for (const GridPoint& p : {candidate.at, candidate.alt}) {
+        if (p.x < 0 || !inserted_.insert(grid_.sampleOf(p)).second) continue;
+        split(containing(top.triangle, p), addVertex(p));
+        break;
+      }
     }
   }
 
@@ -188,19 +337,42 @@ class GreedyInsertion {
     return static_cast<int>(points.size()) - 1;
   }
 
+  // The sides are held to half the error: the cells beside a side bend between its vertices
+  // and the interior's, which the side's own samples cannot see.
+  double sideErrorMeters() const {
+    return grid_.apronHeights != nullptr ? maxErrorMeters_ / 2 : maxErrorMeters_;
+  }
+
   std::vector<GridPoint> sideVertices() const {
     const int n = grid_.side;
     std::vector<GridPoint> out;
     // South and north walked west to east, west and east south to north.
     const auto side = [&](auto pointAt) {
-      std::vector<Position> positions;
+      std::vector<Position> positions, ecef;
       for (int k = 0; k < n; ++k) {
         const GridPoint p = pointAt(k);
         positions.push_back(grid_.positionAt(p.x, p.y));
+        if (grid_.ecef != nullptr) ecef.push_back((*grid_.ecef)[grid_.sampleOf(p)]);
       }
       std::vector<size_t> chosen;
-      simplifySide(positions, 0, positions.size() - 1, maxErrorMeters_, chosen);
+      simplifySide(positions, ecef, 0, positions.size() - 1, sideErrorMeters(), chosen);
+      // A sample beside a cell (on either side) that bends more than the error is kept: without
+      // it no TIN can follow that cell. Both tiles see the same four cells (the apron).
+      if (grid_.apronHeights != nullptr) {
+        for (int k = 1; k + 1 < n; ++k) {
+          // The four cells around the sample, two inside the tile and two beyond.
+          const GridPoint p = pointAt(k);
+          double twist = 0;
+          for (int dx = -1; dx <= 0; ++dx) {
+            for (int dy = -1; dy <= 0; ++dy) {
+              twist = std::max(twist, grid_.cellTwistMeters(p.x + dx, p.y + dy));
+            }
+          }
+          if (twist > sideErrorMeters()) chosen.push_back(static_cast<size_t>(k));
+        }
+      }
       std::sort(chosen.begin(), chosen.end());
+      chosen.erase(std::unique(chosen.begin(), chosen.end()), chosen.end());
       for (size_t k : chosen) out.push_back(pointAt(static_cast<int>(k)));
     };
     side([](int k) { return GridPoint{k, 0}; });
@@ -223,7 +395,7 @@ class GreedyInsertion {
       vertexTriangles.insert(vertexTriangles.end(), {a, b, c});
       halfedges_.insert(halfedges_.end(), {-1, -1, -1});
       stamps_.push_back(0);
-      candidates_.push_back({-1, -1});
+      candidates_.push_back({});
     } else {
       vertexTriangles[static_cast<size_t>(e)] = a;
       vertexTriangles[static_cast<size_t>(e) + 1] = b;
@@ -247,8 +419,10 @@ class GreedyInsertion {
                        positions_[static_cast<size_t>(v[2])]},
                       true);
     const uint32_t stamp = ++stamps_[static_cast<size_t>(t)];
-    candidates_[static_cast<size_t>(t)] = worst.at;
-    if (worst.errorMeters > maxErrorMeters_) queue_.push({worst.errorMeters, t, stamp});
+    candidates_[static_cast<size_t>(t)] = worst;
+    if (worst.errorMeters > maxErrorMeters_ && worst.at.x >= 0) {
+      queue_.push({worst.errorMeters, t, stamp});
+    }
   }
 
   GridPoint at(int halfedge) const {
@@ -270,6 +444,23 @@ class GreedyInsertion {
         return;
       }
     }
+  }
+
+  // The triangle holding p: t, usually; else found among all (a crossing's sample may lie beyond
+  // the triangles beside it).
+  int containing(int t, GridPoint p) const {
+    const auto holds = [&](int triangle) {
+      const auto e = static_cast<size_t>(triangle) * 3;
+      const GridPoint a = points[static_cast<size_t>(vertexTriangles[e])],
+                      b = points[static_cast<size_t>(vertexTriangles[e + 1])],
+                      c = points[static_cast<size_t>(vertexTriangles[e + 2])];
+      return orient(a, b, p) >= 0 && orient(b, c, p) >= 0 && orient(c, a, p) >= 0;
+    };
+    if (holds(t)) return t;
+    for (int other = 0; other < static_cast<int>(vertexTriangles.size() / 3); ++other) {
+      if (holds(other)) return other;
+    }
+    return t;
   }
 
   // Inserts vertex v inside triangle t (on one of its edges when collinear with it).
@@ -338,8 +529,18 @@ class GreedyInsertion {
               pr = vertexTriangles[static_cast<size_t>(e)],
               pl = vertexTriangles[static_cast<size_t>(al)],
               p1 = vertexTriangles[static_cast<size_t>(bl)];
-    if (!inCircle(points[static_cast<size_t>(pr)], points[static_cast<size_t>(pl)],
-                  points[static_cast<size_t>(p0)], points[static_cast<size_t>(p1)])) {
+    const int64_t inside =
+        inCircle(points[static_cast<size_t>(pr)], points[static_cast<size_t>(pl)],
+                 points[static_cast<size_t>(p0)], points[static_cast<size_t>(p1)]);
+    // On the circle (a grid cell, most often) either diagonal is Delaunay: the one running
+    // north-west to south-east, as globe splits its cells, so that the TIN bends where the
+    // drawn surface does. Never back, so no flip repeats.
+    const auto northWestToSouthEast = [&](int a, int b) {
+      const GridPoint pa = points[static_cast<size_t>(a)], pb = points[static_cast<size_t>(b)];
+      return int64_t{pb.x - pa.x} * (pb.y - pa.y) < 0;
+    };
+    if (inside < 0 ||
+        (inside == 0 && (northWestToSouthEast(pr, pl) || !northWestToSouthEast(p0, p1)))) {
       return;
     }
     const int hal = halfedges_[static_cast<size_t>(al)], har = halfedges_[static_cast<size_t>(ar)],
@@ -356,7 +557,7 @@ class GreedyInsertion {
   std::vector<Position> positions_;
   std::vector<int> halfedges_;
   std::vector<uint32_t> stamps_;
-  std::vector<GridPoint> candidates_;
+  std::vector<WorstSample> candidates_;
   std::priority_queue<Queued> queue_;
   std::unordered_set<uint32_t> inserted_;
 };
@@ -502,9 +703,9 @@ std::vector<Position> heightPositions(const std::vector<double>& heightsMeters, 
 
 }  // namespace
 
-GridTin simplifyGridPositions(const std::vector<std::array<double, 3>>& positionsMeters,
-                              uint32_t side, double maxErrorMeters) {
-  const Grid grid{positionsMeters, static_cast<int>(side)};
+namespace {
+
+GridTin simplify(const Grid& grid, double maxErrorMeters) {
   const double tolerance = std::max(0.0, maxErrorMeters);
   GreedyInsertion insertion(grid, tolerance);
   insertion.run();
@@ -514,33 +715,28 @@ GridTin simplifyGridPositions(const std::vector<std::array<double, 3>>& position
   return decimation.result();
 }
 
-GridTin simplifyGrid(const std::vector<double>& heightsMeters, uint32_t side,
-                     double maxErrorMeters) {
-  return simplifyGridPositions(heightPositions(heightsMeters, side), side, maxErrorMeters);
-}
-
-double maxTinErrorMeters(const std::vector<double>& heightsMeters, uint32_t side,
-                         const GridTin& tin) {
-  return maxTinDistanceMeters(heightPositions(heightsMeters, side), side, tin);
-}
-
-double maxTinDistanceMeters(const std::vector<std::array<double, 3>>& positionsMeters,
-                            uint32_t side, const GridTin& tin) {
-  const Grid grid{positionsMeters, static_cast<int>(side)};
+// The largest distance over every sample (and, with betweenSamples, every edge crossing).
+double maxDistance(const Grid& grid, const GridTin& tin) {
+  const auto side = static_cast<uint32_t>(grid.side);
   const auto pointOf = [&](uint32_t vertex) {
     const uint32_t sample = tin.samples[vertex];
     return GridPoint{static_cast<int>(sample % side), static_cast<int>(side - 1 - sample / side)};
   };
   // Every sample must be covered: one no triangle holds counts as an infinite error.
-  std::vector<double> errors(positionsMeters.size(), INFINITY);
+  std::vector<double> errors(grid.positions.size(), INFINITY);
+  double crossings = 0;
   for (size_t i = 0; i + 2 < tin.triangles.size(); i += 3) {
     const std::array<GridPoint, 3> v{pointOf(tin.triangles[i]), pointOf(tin.triangles[i + 1]),
                                      pointOf(tin.triangles[i + 2])};
-    const std::array<Position, 3> corners{positionsMeters[tin.samples[tin.triangles[i]]],
-                                          positionsMeters[tin.samples[tin.triangles[i + 1]]],
-                                          positionsMeters[tin.samples[tin.triangles[i + 2]]]};
+    const std::array<Position, 3> corners{grid.positions[tin.samples[tin.triangles[i]]],
+                                          grid.positions[tin.samples[tin.triangles[i + 1]]],
+                                          grid.positions[tin.samples[tin.triangles[i + 2]]]};
     const int64_t area = orient(v[0], v[1], v[2]);
     if (area <= 0) return INFINITY;
+    const double sag = sagMeters(grid, v);
+    if (grid.betweenSamples) {
+      crossings = std::max(crossings, worstEdgeCrossing(grid, v, corners).errorMeters + sag);
+    }
     const int x0 = std::min({v[0].x, v[1].x, v[2].x}), x1 = std::max({v[0].x, v[1].x, v[2].x});
     const int y0 = std::min({v[0].y, v[1].y, v[2].y}), y1 = std::max({v[0].y, v[1].y, v[2].y});
     for (int y = y0; y <= y1; ++y) {
@@ -550,12 +746,42 @@ double maxTinDistanceMeters(const std::vector<std::array<double, 3>>& positionsM
                                        orient(v[0], v[1], p)};
         if (w[0] < 0 || w[1] < 0 || w[2] < 0) continue;
         double& e = errors[grid.sampleOf(p)];
-        const double error = distanceMeters(w, area, corners, grid.positionAt(x, y));
+        const double error = distanceMeters(w, area, corners, grid.positionAt(x, y)) + sag;
         e = std::isinf(e) ? error : std::max(e, error);
       }
     }
   }
-  return *std::max_element(errors.begin(), errors.end());
+  return std::max(crossings, *std::max_element(errors.begin(), errors.end()));
+}
+
+}  // namespace
+
+GridTin simplifyTileGrid(const std::vector<double>& heightsMeters,
+                         const std::vector<double>& apronHeightsMeters,
+                         const std::vector<std::array<double, 3>>& ecefMeters, uint32_t side,
+                         double maxErrorMeters) {
+  const std::vector<Position> positions = heightPositions(heightsMeters, side);
+  return simplify(Grid{positions, static_cast<int>(side), true, &ecefMeters, &apronHeightsMeters},
+                  maxErrorMeters);
+}
+
+GridTin simplifyGrid(const std::vector<double>& heightsMeters, uint32_t side,
+                     double maxErrorMeters) {
+  const std::vector<Position> positions = heightPositions(heightsMeters, side);
+  return simplify(Grid{positions, static_cast<int>(side), false}, maxErrorMeters);
+}
+
+double maxTinErrorMeters(const std::vector<double>& heightsMeters, uint32_t side,
+                         const GridTin& tin) {
+  const std::vector<Position> positions = heightPositions(heightsMeters, side);
+  return maxDistance(Grid{positions, static_cast<int>(side), false}, tin);
+}
+
+double maxTileTinErrorMeters(const std::vector<double>& heightsMeters,
+                             const std::vector<std::array<double, 3>>& ecefMeters, uint32_t side,
+                             const GridTin& tin) {
+  const std::vector<Position> positions = heightPositions(heightsMeters, side);
+  return maxDistance(Grid{positions, static_cast<int>(side), true, &ecefMeters}, tin);
 }
 
 }  // namespace globe::publish

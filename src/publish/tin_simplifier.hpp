@@ -33,16 +33,25 @@ struct GridTin {
 GridTin simplifyGrid(const std::vector<double>& heightsMeters, uint32_t side,
                      double maxErrorMeters);
 
-// The largest |interpolated − sample| over every grid sample (what simplifyGrid bounds).
+// The largest |interpolated − sample| over every grid sample (what simplifyGrid bounds: the
+// error as martini and delatin define it, at the samples only).
 double maxTinErrorMeters(const std::vector<double>& heightsMeters, uint32_t side,
                          const GridTin& tin);
 
-// The same for samples with 3D positions (metres, any frame: ECEF for a tile on the globe, so
-// that the flat triangles' sag under the curved surface counts too): each sample within
-// maxErrorMeters of the triangle's point at the sample's place in the grid.
-GridTin simplifyGridPositions(const std::vector<std::array<double, 3>>& positionsMeters,
-                              uint32_t side, double maxErrorMeters);
-double maxTinDistanceMeters(const std::vector<std::array<double, 3>>& positionsMeters,
-                            uint32_t side, const GridTin& tin);
+// A tile's grid as globe draws it: the error also counts the surface between the samples (the
+// grid's own triangles, each cell split from north-west to south-east: every point where a TIN
+// edge crosses a grid line is checked too, and the sample nearest the worst such point inserted)
+// and the flat triangles' sag under the globe's curve, from the samples' ECEF positions
+// (side², rows from the north): a coarse tile's TIN must follow the Earth, not only the heights.
+// apronHeightsMeters ((side + 2)², the grid and the ring of the neighbours' samples around it):
+// a side also keeps each sample beside a cell, inside or beyond, that bends more than the error
+// (no TIN without that sample follows the cell), which both tiles sharing the side see alike.
+GridTin simplifyTileGrid(const std::vector<double>& heightsMeters,
+                         const std::vector<double>& apronHeightsMeters,
+                         const std::vector<std::array<double, 3>>& ecefMeters, uint32_t side,
+                         double maxErrorMeters);
+double maxTileTinErrorMeters(const std::vector<double>& heightsMeters,
+                             const std::vector<std::array<double, 3>>& ecefMeters, uint32_t side,
+                             const GridTin& tin);
 
 }  // namespace globe::publish
