@@ -19,6 +19,7 @@
 #include "measure/geodesic_path.hpp"
 #include "measure/path_files.hpp"
 #include "measure/profile_chart.hpp"
+#include "tests/support/command_run.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 
 namespace globe::measure {
@@ -27,20 +28,8 @@ namespace {
 namespace fs = std::filesystem;
 const fs::path kPaths = fs::path(GLOBE_SOURCE_DIR) / "tests/data/interop/paths";
 
-struct Exit {
-  int code = -1;
-  std::string output;
-};
-
-Exit run(const std::string& command) {
-  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
-  Exit r;
-  char buffer[4096];
-  while (pipe != nullptr && std::fgets(buffer, sizeof buffer, pipe) != nullptr) r.output += buffer;
-  const int status = pipe != nullptr ? ::pclose(pipe) : -1;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using Exit = globe::testing::CommandExit;
+using globe::testing::runCommand;
 
 std::vector<std::vector<double>> csvRows(const std::string& text) {
   std::vector<std::vector<double>> rows;
@@ -131,9 +120,10 @@ TEST(GlobeProfile, HeightsAreTheExactSurfaceAndTheLengthTheGeodesics) {
       << R"({"type":"Feature","geometry":{"type":"LineString","coordinates":)"
       << R"([[138.68,35.355],[138.7274,35.3606],[138.78,35.37]]}})";
   const std::string pyramid = globe::testing::bundledPyramid().string();
-  const Exit profile = run(std::string(GLOBE_EXE) + " profile " + pyramid + " " +
-                           (dir / "fuji.geojson").string() + " -o " + (dir / "fuji.csv").string());
-  ASSERT_EQ(profile.code, 0) << profile.output;
+  const Exit profile =
+      runCommand(std::string(GLOBE_EXE) + " profile " + pyramid + " " +
+                 (dir / "fuji.geojson").string() + " -o " + (dir / "fuji.csv").string());
+  ASSERT_EQ(profile.exitCode, 0) << profile.output;
   std::ifstream in(dir / "fuji.csv");
   const std::string csv{std::istreambuf_iterator<char>(in), {}};
   EXPECT_EQ(csv.rfind("distance_m,lon,lat,height_m,slope_deg\n", 0), 0u) << csv.substr(0, 200);
@@ -151,9 +141,9 @@ TEST(GlobeProfile, HeightsAreTheExactSurfaceAndTheLengthTheGeodesics) {
     points.precision(12);
     for (const auto& r : rows) points << r[1] << "," << r[2] << "\n";
   }
-  const Exit query = run(std::string(GLOBE_EXE) + " query --mode exact " + pyramid + " < " +
-                         (dir / "points.txt").string());
-  ASSERT_EQ(query.code, 0) << query.output;
+  const Exit query = runCommand(std::string(GLOBE_EXE) + " query --mode exact " + pyramid + " < " +
+                                (dir / "points.txt").string());
+  ASSERT_EQ(query.exitCode, 0) << query.output;
   std::istringstream answers(query.output);
   std::string line;
   size_t compared = 0;
@@ -179,9 +169,9 @@ TEST(GlobeProfile, HeightsAreTheExactSurfaceAndTheLengthTheGeodesics) {
 TEST(GlobeProfile, AGpxTrackKeepsItsOwnElevationsBeside) {
   const fs::path dir = globe::testing::freshTempDir("measure-gpx");
   const Exit profile =
-      run(std::string(GLOBE_EXE) + " profile " + globe::testing::bundledPyramid().string() + " " +
-          (kPaths / "Mojstrovka.gpx").string() + " -o " + (dir / "m.csv").string());
-  ASSERT_EQ(profile.code, 0) << profile.output;
+      runCommand(std::string(GLOBE_EXE) + " profile " + globe::testing::bundledPyramid().string() +
+                 " " + (kPaths / "Mojstrovka.gpx").string() + " -o " + (dir / "m.csv").string());
+  ASSERT_EQ(profile.exitCode, 0) << profile.output;
   std::ifstream in(dir / "m.csv");
   const std::string csv{std::istreambuf_iterator<char>(in), {}};
   EXPECT_EQ(csv.rfind("distance_m,lon,lat,height_m,slope_deg,path_elevation_m\n", 0), 0u);
@@ -189,9 +179,9 @@ TEST(GlobeProfile, AGpxTrackKeepsItsOwnElevationsBeside) {
   ASSERT_GE(rows.size(), 184u);
   EXPECT_NEAR(rows.front()[5], 1614.678, 1e-3);  // the track's first <ele>
   const Exit bad =
-      run(std::string(GLOBE_EXE) + " profile " + globe::testing::bundledPyramid().string() +
-          " /nonexistent.gpx -o " + (dir / "x.csv").string());
-  EXPECT_EQ(bad.code, 1);
+      runCommand(std::string(GLOBE_EXE) + " profile " + globe::testing::bundledPyramid().string() +
+                 " /nonexistent.gpx -o " + (dir / "x.csv").string());
+  EXPECT_EQ(bad.exitCode, 1);
   EXPECT_NE(bad.output.find("/nonexistent.gpx"), std::string::npos) << bad.output;
   EXPECT_FALSE(fs::exists(dir / "x.csv"));
 }
@@ -236,9 +226,9 @@ TEST(GlobeProfile, APngChartFilledHighestAtTheSummit) {
   const std::string command = std::string(GLOBE_EXE) + " profile " +
                               globe::testing::bundledPyramid().string() + " " +
                               (dir / "fuji.geojson").string();
-  const Exit profile = run(command + " -o " + (dir / "fuji.csv").string() + " --png " +
-                           (dir / "fuji.png").string() + " --png-size 900x360");
-  ASSERT_EQ(profile.code, 0) << profile.output;
+  const Exit profile = runCommand(command + " -o " + (dir / "fuji.csv").string() + " --png " +
+                                  (dir / "fuji.png").string() + " --png-size 900x360");
+  ASSERT_EQ(profile.exitCode, 0) << profile.output;
   auto image = formats::loadImageRgba(dir / "fuji.png");
   ASSERT_TRUE(image) << image.error();
   EXPECT_EQ(image->widthPixels, 900);
@@ -268,19 +258,20 @@ TEST(GlobeProfile, APngChartFilledHighestAtTheSummit) {
 
   // Bad sizes are refused before any work, naming the option; nothing is written.
   for (const char* size : {"100x50", "wide", "800x", "800x400x2"}) {
-    const Exit bad = run(command + " --png " + (dir / "bad.png").string() + " --png-size " + size);
-    EXPECT_EQ(bad.code, 1) << size;
+    const Exit bad =
+        runCommand(command + " --png " + (dir / "bad.png").string() + " --png-size " + size);
+    EXPECT_EQ(bad.exitCode, 1) << size;
     EXPECT_NE(bad.output.find("--png-size"), std::string::npos) << bad.output;
     EXPECT_FALSE(fs::exists(dir / "bad.png")) << size;
   }
-  EXPECT_NE(run(command + " --png x.png --png-size 100x50").output.find("at least 300x150"),
+  EXPECT_NE(runCommand(command + " --png x.png --png-size 100x50").output.find("at least 300x150"),
             std::string::npos);
-  const Exit nothing = run(command);
-  EXPECT_EQ(nothing.code, 1);
+  const Exit nothing = runCommand(command);
+  EXPECT_EQ(nothing.exitCode, 1);
   EXPECT_NE(nothing.output.find("nothing to write"), std::string::npos) << nothing.output;
   // An unwritable place is named.
-  const Exit unwritable = run(command + " --png /nonexistent-dir/p.png");
-  EXPECT_EQ(unwritable.code, 1);
+  const Exit unwritable = runCommand(command + " --png /nonexistent-dir/p.png");
+  EXPECT_EQ(unwritable.exitCode, 1);
   EXPECT_NE(unwritable.output.find("/nonexistent-dir/p.png"), std::string::npos)
       << unwritable.output;
 }
@@ -321,9 +312,9 @@ TEST(ProfileChart, DrawnIntoAnImageInMemory) {
 TEST(GlobeProfile, AGpxTracksChartDrawsItsOwnElevationsToo) {
   const fs::path dir = globe::testing::freshTempDir("measure-gpx-chart");
   const Exit profile =
-      run(std::string(GLOBE_EXE) + " profile " + globe::testing::bundledPyramid().string() + " " +
-          (kPaths / "Mojstrovka.gpx").string() + " --png " + (dir / "m.png").string());
-  ASSERT_EQ(profile.code, 0) << profile.output;
+      runCommand(std::string(GLOBE_EXE) + " profile " + globe::testing::bundledPyramid().string() +
+                 " " + (kPaths / "Mojstrovka.gpx").string() + " --png " + (dir / "m.png").string());
+  ASSERT_EQ(profile.exitCode, 0) << profile.output;
   auto image = formats::loadImageRgba(dir / "m.png");
   ASSERT_TRUE(image) << image.error();
   EXPECT_EQ(image->widthPixels, 1000);  // the default size

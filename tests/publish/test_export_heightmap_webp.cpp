@@ -25,6 +25,8 @@
 #include "geo/tile_id.hpp"
 #include "services/terrain_services.hpp"
 #include "terrain/height_block.hpp"
+#include "tests/publish/query_points.hpp"
+#include "tests/support/command_run.hpp"
 #include "tests/support/test_io_util.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 #include "transport/atomic_file.hpp"
@@ -35,50 +37,16 @@ namespace {
 namespace fs = std::filesystem;
 const fs::path kSource = GLOBE_SOURCE_DIR;
 
-struct Exit {
-  int exitCode = -1;
-  std::string output;
-};
+using Exit = globe::testing::CommandExit;
+using globe::testing::runCommand;
 
-Exit run(const std::string& command) {
-  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
-  Exit r;
-  char buffer[4096];
-  while (pipe != nullptr && std::fgets(buffer, sizeof buffer, pipe) != nullptr) r.output += buffer;
-  const int status = pipe != nullptr ? ::pclose(pipe) : -1;
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-struct Point {
-  double lon, lat;
-};
-
-fs::path writePoints(const fs::path& path, const std::vector<Point>& points) {
-  std::ofstream out(path);
-  out.precision(17);
-  for (const Point& p : points) out << p.lon << "," << p.lat << "\n";
-  return path;
-}
-
-// lon,lat,level,height lines; the heights in order.
-std::vector<double> heightsOf(const std::string& output) {
-  std::vector<double> heights;
-  std::istringstream lines(output);
-  std::string line;
-  while (std::getline(lines, line)) {
-    double lon = 0, lat = 0, h = 0;
-    int level = 0;
-    if (std::sscanf(line.c_str(), "%lf,%lf,%d,%lf", &lon, &lat, &level, &h) == 4) {
-      heights.push_back(h);
-    }
-  }
-  return heights;
-}
+using testing::heightsOf;
+using testing::Point;
+using testing::writePoints;
 
 std::vector<double> queryHeights(const std::string& source, const fs::path& points) {
-  const Exit r =
-      run(std::string(GLOBE_EXE) + " query --mode exact " + source + " < " + points.string());
+  const Exit r = runCommand(std::string(GLOBE_EXE) + " query --mode exact " + source + " < " +
+                            points.string());
   EXPECT_EQ(r.exitCode, 0) << r.output;
   return heightsOf(r.output);
 }
@@ -139,10 +107,10 @@ class ExportTreesHeightmap : public ::testing::Test {
   static void SetUpTestSuite() {
     tree_ = new fs::path(globe::testing::freshTempDir("export-heightmap") / "hm");
     const std::string pyramid = globe::testing::bundledPyramid().string();
-    first_ = new Exit(
-        run(tiler() + "--format heightmap -o " + tree_->string() + " --levels 0-2 " + pyramid));
-    second_ = new Exit(run(tiler() + "--format heightmap -o " + tree_->string() +
-                           " --levels 3-12 --bounds 138,35,139,36 " + pyramid));
+    first_ = new Exit(runCommand(tiler() + "--format heightmap -o " + tree_->string() +
+                                 " --levels 0-2 " + pyramid));
+    second_ = new Exit(runCommand(tiler() + "--format heightmap -o " + tree_->string() +
+                                  " --levels 3-12 --bounds 138,35,139,36 " + pyramid));
   }
   static void TearDownTestSuite() {
     delete tree_;
@@ -257,8 +225,8 @@ TEST_F(ExportTreesHeightmap, TilesHoldThePyramidsSurface) {
   const fs::path points = writePoints(tree_->parent_path() / "points.txt", fujiPoints(200, 31));
   const std::vector<double> exact = exactHeights(points);
   const Exit reference =
-      run("python3 " + (kSource / "tests/tools/heightmap_reference.py").string() + " " +
-          tree_->string() + " < " + points.string());
+      runCommand("python3 " + (kSource / "tests/tools/heightmap_reference.py").string() + " " +
+                 tree_->string() + " < " + points.string());
   ASSERT_EQ(reference.exitCode, 0) << reference.output;
   d = sortedDifferences(heightsOf(reference.output), exact);
   ASSERT_EQ(d.size(), 200u);
@@ -317,9 +285,9 @@ TEST_F(ExportTreesHeightmap, WaterMasksMarkTheSea) {
 }
 
 TEST_F(ExportTreesHeightmap, ARunAgainWritesNothing) {
-  const Exit again =
-      run(tiler() + "--format heightmap -o " + tree_->string() +
-          " --levels 3-12 --bounds 138,35,139,36 " + globe::testing::bundledPyramid().string());
+  const Exit again = runCommand(tiler() + "--format heightmap -o " + tree_->string() +
+                                " --levels 3-12 --bounds 138,35,139,36 " +
+                                globe::testing::bundledPyramid().string());
   ASSERT_EQ(again.exitCode, 0) << again.output;
   EXPECT_NE(again.output.find(": 0 heightmap tiles written"), std::string::npos) << again.output;
 }
@@ -359,10 +327,11 @@ TEST(ExportTrees, WebpTilesAreThePngTilesExactly) {
   const std::string region = " --levels 9-10 --bounds 138.7,35.3,138.8,35.4 ";
   for (const std::string format : {"terrarium", "terrain-rgb"}) {
     const fs::path png = dir / (format + "-png"), webp = dir / (format + "-webp");
-    const Exit a = run(tiler() + "--format " + format + " -o " + png.string() + region + pyramid);
+    const Exit a =
+        runCommand(tiler() + "--format " + format + " -o " + png.string() + region + pyramid);
     ASSERT_EQ(a.exitCode, 0) << a.output;
-    const Exit b =
-        run(tiler() + "--format " + format + " --webp -o " + webp.string() + region + pyramid);
+    const Exit b = runCommand(tiler() + "--format " + format + " --webp -o " + webp.string() +
+                              region + pyramid);
     ASSERT_EQ(b.exitCode, 0) << b.output;
     size_t compared = 0;
     for (const auto& entry : fs::recursive_directory_iterator(png)) {
@@ -385,8 +354,8 @@ TEST(ExportTrees, WebpTilesAreThePngTilesExactly) {
     }
     EXPECT_GE(compared, 2u) << format;
     // Resumed: the .webp tiles are the ones kept.
-    const Exit c =
-        run(tiler() + "--format " + format + " --webp -o " + webp.string() + region + pyramid);
+    const Exit c = runCommand(tiler() + "--format " + format + " --webp -o " + webp.string() +
+                              region + pyramid);
     EXPECT_NE(c.output.find(": 0 " + format + " tiles written"), std::string::npos) << c.output;
   }
   // globe reads the WebP tree as the PNG one.
@@ -406,17 +375,17 @@ TEST(ExportTrees, WebpIsOnlyForElevationImages) {
   const fs::path out = globe::testing::freshTempDir("export-bad-webp") / "x";
   for (const std::string format : {"quantized-mesh", "heightmap"}) {
     const Exit r =
-        run(tiler() + "--format " + format + " --webp -o " + out.string() + " " + pyramid);
+        runCommand(tiler() + "--format " + format + " --webp -o " + out.string() + " " + pyramid);
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find("--webp is for --format terrarium or terrain-rgb"), std::string::npos)
         << r.output;
     EXPECT_NE(r.output.find(format), std::string::npos) << r.output;
   }
-  const Exit block = run(tiler() + "--webp " + pyramid + " 0 0 0 " + out.string());
+  const Exit block = runCommand(tiler() + "--webp " + pyramid + " 0 0 0 " + out.string());
   EXPECT_EQ(block.exitCode, 2) << block.output;
   EXPECT_NE(block.output.find("--webp needs --format"), std::string::npos) << block.output;
   EXPECT_FALSE(fs::exists(out));
-  const Exit help = run(tiler() + "--help");
+  const Exit help = runCommand(tiler() + "--help");
   EXPECT_NE(help.output.find("heightmap"), std::string::npos) << help.output;
   EXPECT_NE(help.output.find("lossless"), std::string::npos) << help.output;
 }

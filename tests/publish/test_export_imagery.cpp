@@ -28,6 +28,7 @@
 #include "publish/pmtiles_writer.hpp"
 #include "services/imagery_services.hpp"
 #include "streaming/imagery_store.hpp"
+#include "tests/support/command_run.hpp"
 #include "tests/support/imagery_test_layers.hpp"
 #include "tests/support/test_io_util.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
@@ -38,20 +39,8 @@ namespace {
 namespace fs = std::filesystem;
 const fs::path kSource = GLOBE_SOURCE_DIR;
 
-struct Exit {
-  int exitCode = -1;
-  std::string output;
-};
-
-Exit run(const std::string& command) {
-  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
-  Exit r;
-  char buffer[4096];
-  while (pipe != nullptr && std::fgets(buffer, sizeof buffer, pipe) != nullptr) r.output += buffer;
-  const int status = pipe != nullptr ? ::pclose(pipe) : -1;
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using Exit = globe::testing::CommandExit;
+using globe::testing::runCommand;
 
 std::string exportImagery(const std::string& arguments) {
   return std::string(GLOBE_TILER_EXE) + " export-imagery " + arguments;
@@ -87,8 +76,8 @@ const ZionExports& zionExports() {
     ZionExports e{dir / "xyz", dir / "tms", dir / "zion.pmtiles"};
     for (const auto& [format, out] :
          {std::pair<std::string, fs::path>{"xyz", e.xyz}, {"tms", e.tms}, {"pmtiles", e.pmtiles}}) {
-      const Exit r = run(exportImagery("--format " + format + " -o " + out.string() + " " + kZion +
-                                       "--attribution 'USGS Landsat 8' " + layer));
+      const Exit r = runCommand(exportImagery("--format " + format + " -o " + out.string() + " " +
+                                              kZion + "--attribution 'USGS Landsat 8' " + layer));
       EXPECT_EQ(r.exitCode, 0) << r.output;
       std::printf("[ %s ] %s", format.c_str(), r.output.c_str());
     }
@@ -191,7 +180,7 @@ TEST(ExportImagery, TmsIsTheXyzTreeWithRowsFromTheSouth) {
   }
   // tilemapresource.xml: XML with a global-mercator TileSet per zoom (metres per pixel halving).
   const fs::path resource = e.tms / "tilemapresource.xml";
-  const Exit parsed = run(
+  const Exit parsed = runCommand(
       "python3 -c \"import sys, xml.etree.ElementTree as E; r = E.parse(sys.argv[1]).getroot(); "
       "s = r.find('TileSets'); print(r.find('SRS').text, s.get('profile'), "
       "[(t.get('href'), round(float(t.get('units-per-pixel')), 4)) for t in s])\" " +
@@ -204,10 +193,11 @@ TEST(ExportImagery, TmsIsTheXyzTreeWithRowsFromTheSouth) {
   // GDAL's WMS driver reads a TileMap document whose tile sets start at zoom 0: a Web-Mercator
   // raster of the deepest zoom's pixels.
   const fs::path fromZero = e.tms.parent_path() / "tms-from-0";
-  const Exit exported = run(exportImagery("--format tms --levels 0-10 -o " + fromZero.string() +
-                                          " " + globe::testing::zionLayer().string()));
+  const Exit exported =
+      runCommand(exportImagery("--format tms --levels 0-10 -o " + fromZero.string() + " " +
+                               globe::testing::zionLayer().string()));
   ASSERT_EQ(exported.exitCode, 0) << exported.output;
-  const Exit gdal = run("gdalinfo " + (fromZero / "tilemapresource.xml").string());
+  const Exit gdal = runCommand("gdalinfo " + (fromZero / "tilemapresource.xml").string());
   if (gdal.output.find("not found") != std::string::npos) GTEST_SKIP() << "no gdalinfo";
   EXPECT_EQ(gdal.exitCode, 0) << gdal.output;
   EXPECT_NE(gdal.output.find("Pseudo-Mercator"), std::string::npos) << gdal.output;
@@ -217,8 +207,9 @@ TEST(ExportImagery, TmsIsTheXyzTreeWithRowsFromTheSouth) {
 TEST(ExportImagery, PmtilesHoldsExactlyTheXyzTreesTiles) {
   const ZionExports& e = zionExports();
   const fs::path dump = e.pmtiles.parent_path() / "pmtiles-dump";
-  const Exit reference = run("python3 " + (kSource / "tests/tools/pmtiles_reference.py").string() +
-                             " " + e.pmtiles.string() + " " + dump.string());
+  const Exit reference =
+      runCommand("python3 " + (kSource / "tests/tools/pmtiles_reference.py").string() + " " +
+                 e.pmtiles.string() + " " + dump.string());
   ASSERT_EQ(reference.exitCode, 0) << reference.output;
   const auto summary = nlohmann::json::parse(reference.output);
   const auto& h = summary["header"];
@@ -324,8 +315,9 @@ TEST(ExportImagery, PmtilesWriterDeduplicatesAndSpillsIntoLeaves) {
   EXPECT_FALSE(fs::exists(archive.string() + ".tmp"));
   EXPECT_FALSE(fs::exists(archive.string() + ".tmp-tiles"));
 
-  const Exit reference = run("python3 " + (kSource / "tests/tools/pmtiles_reference.py").string() +
-                             " " + archive.string() + " -");
+  const Exit reference =
+      runCommand("python3 " + (kSource / "tests/tools/pmtiles_reference.py").string() + " " +
+                 archive.string() + " -");
   ASSERT_EQ(reference.exitCode, 0) << reference.output;
   const auto j = nlohmann::json::parse(reference.output);
   EXPECT_EQ(j["tiles"], tiles.size());
@@ -364,8 +356,9 @@ TEST(ExportImagery, PmtilesWriterDeduplicatesAndSpillsIntoLeaves) {
 TEST(ExportImagery, WebpAndJpegTilesAreReadBack) {
   const fs::path dir = globe::testing::freshTempDir("export-imagery-webp");
   const std::string layer = globe::testing::zionLayer().string();
-  const Exit webp = run(exportImagery("--format pmtiles --tile-format webp -o " +
-                                      (dir / "z.pmtiles").string() + " --levels 10 " + layer));
+  const Exit webp =
+      runCommand(exportImagery("--format pmtiles --tile-format webp -o " +
+                               (dir / "z.pmtiles").string() + " --levels 10 " + layer));
   ASSERT_EQ(webp.exitCode, 0) << webp.output;
   auto archive = services::openImageryTiles("pmtiles:" + (dir / "z.pmtiles").string(), nullptr);
   ASSERT_TRUE(archive) << archive.error();
@@ -374,8 +367,8 @@ TEST(ExportImagery, WebpAndJpegTilesAreReadBack) {
   auto image = (*archive)->loadImage(*tile);
   ASSERT_TRUE(image) << image.error();
   EXPECT_TRUE(image->has_value());
-  const Exit jpeg = run(exportImagery("--format xyz --tile-format jpeg -o " +
-                                      (dir / "jpeg").string() + " --levels 10 " + layer));
+  const Exit jpeg = runCommand(exportImagery("--format xyz --tile-format jpeg -o " +
+                                             (dir / "jpeg").string() + " --levels 10 " + layer));
   ASSERT_EQ(jpeg.exitCode, 0) << jpeg.output;
   const auto tiles = filesOf(dir / "jpeg", ".jpg");
   ASSERT_FALSE(tiles.empty());
@@ -398,22 +391,22 @@ TEST(ExportImagery, AKilledRunRunAgainCompletes) {
   const std::string archive =
       exportImagery("--format pmtiles -o " + (dir / "zion.pmtiles").string() + " " + kZion +
                     "--attribution 'USGS Landsat 8' " + layer);
-  run("timeout -s KILL 0.5 " + tree);
+  runCommand("timeout -s KILL 0.5 " + tree);
   // Killed (137) before it finished: no archive, not a half one.
-  if (run("timeout -s KILL 0.5 " + archive).exitCode == 137) {
+  if (runCommand("timeout -s KILL 0.5 " + archive).exitCode == 137) {
     EXPECT_FALSE(fs::exists(dir / "zion.pmtiles"));
   }
-  const Exit again = run(tree);
+  const Exit again = runCommand(tree);
   ASSERT_EQ(again.exitCode, 0) << again.output;
   EXPECT_EQ(filesOf(dir / "xyz", ".png"), filesOf(e.xyz, ".png"));
   EXPECT_EQ(readFile(dir / "xyz" / "tilejson.json"), readFile(e.xyz / "tilejson.json"));
-  const Exit archiveAgain = run(archive);
+  const Exit archiveAgain = runCommand(archive);
   ASSERT_EQ(archiveAgain.exitCode, 0) << archiveAgain.output;
   EXPECT_EQ(readFile(dir / "zion.pmtiles"), readFile(e.pmtiles));
   EXPECT_FALSE(fs::exists(dir / "zion.pmtiles.tmp"));
   EXPECT_FALSE(fs::exists(dir / "zion.pmtiles.tmp-tiles"));
   // Run a third time: every tile kept.
-  const Exit third = run(tree);
+  const Exit third = runCommand(tree);
   ASSERT_EQ(third.exitCode, 0) << third.output;
   EXPECT_NE(third.output.find(": 0 png tiles written"), std::string::npos) << third.output;
 }
@@ -426,33 +419,35 @@ TEST(ExportImagery, BadArgumentsAreClearErrors) {
     EXPECT_EQ(r.exitCode, code) << r.output;
     EXPECT_NE(r.output.find(text), std::string::npos) << r.output;
   };
-  expectError(run(exportImagery("--format xyz -o " + out + " /nonexistent/layer")), 1,
+  expectError(runCommand(exportImagery("--format xyz -o " + out + " /nonexistent/layer")), 1,
               "/nonexistent/layer");
-  expectError(run(exportImagery("--format xyz -o " + out + " --levels 9-3 " + layer)), 2,
+  expectError(runCommand(exportImagery("--format xyz -o " + out + " --levels 9-3 " + layer)), 2,
               "--levels must be A-B");
-  expectError(run(exportImagery("--format xyz -o " + out + " --levels 20 " + layer)), 1,
+  expectError(runCommand(exportImagery("--format xyz -o " + out + " --levels 20 " + layer)), 1,
               "finest is zoom 13");
-  expectError(run(exportImagery("--format xyz -o " + out + " --bounds 10,50,5,60 " + layer)), 2,
-              "--bounds must be W,S,E,N");
-  expectError(run(exportImagery("--format xyz -o " + out + " --bounds 0,0,10,10 " + layer)), 1,
-              "do not meet");
+  expectError(runCommand(exportImagery("--format xyz -o " + out + " --bounds 10,50,5,60 " + layer)),
+              2, "--bounds must be W,S,E,N");
+  expectError(runCommand(exportImagery("--format xyz -o " + out + " --bounds 0,0,10,10 " + layer)),
+              1, "do not meet");
   // Unwritable: a directory under a regular file; an archive where a directory is.
   globe::testing::writeText(dir / "file", "x");
-  expectError(run(exportImagery("--format xyz --levels 9 -o " + (dir / "file" / "t").string() +
-                                " " + layer)),
+  expectError(runCommand(exportImagery("--format xyz --levels 9 -o " +
+                                       (dir / "file" / "t").string() + " " + layer)),
               1, (dir / "file").string());
   fs::create_directories(dir / "d.pmtiles");
-  expectError(run(exportImagery("--format pmtiles --levels 9 -o " + (dir / "d.pmtiles").string() +
-                                " " + layer)),
+  expectError(runCommand(exportImagery("--format pmtiles --levels 9 -o " +
+                                       (dir / "d.pmtiles").string() + " " + layer)),
               1, "is a directory");
   // A tree of other tiles in the directory.
-  ASSERT_EQ(run(exportImagery("--format xyz --levels 9 -o " + out + " " + layer)).exitCode, 0);
-  expectError(run(exportImagery("--format tms --levels 9 -o " + out + " " + layer)), 1,
-              "an earlier export of other tiles");
-  EXPECT_NE(run(exportImagery("--format mbtiles -o " + out + " " + layer)).exitCode, 0);
-  EXPECT_NE(run(exportImagery("--format xyz --tile-format gif -o " + out + " " + layer)).exitCode,
+  ASSERT_EQ(runCommand(exportImagery("--format xyz --levels 9 -o " + out + " " + layer)).exitCode,
             0);
-  EXPECT_NE(run(exportImagery("-o " + out + " " + layer)).exitCode, 0);  // --format required
+  expectError(runCommand(exportImagery("--format tms --levels 9 -o " + out + " " + layer)), 1,
+              "an earlier export of other tiles");
+  EXPECT_NE(runCommand(exportImagery("--format mbtiles -o " + out + " " + layer)).exitCode, 0);
+  EXPECT_NE(
+      runCommand(exportImagery("--format xyz --tile-format gif -o " + out + " " + layer)).exitCode,
+      0);
+  EXPECT_NE(runCommand(exportImagery("-o " + out + " " + layer)).exitCode, 0);  // --format required
 }
 
 }  // namespace

@@ -26,6 +26,8 @@
 #include "publish/terrarium_export.hpp"
 #include "services/terrain_services.hpp"
 #include "terrain/height_block.hpp"
+#include "tests/publish/query_points.hpp"
+#include "tests/support/command_run.hpp"
 #include "tests/support/nginx_server.hpp"
 #include "tests/support/test_io_util.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
@@ -36,51 +38,17 @@ namespace {
 namespace fs = std::filesystem;
 const fs::path kSource = GLOBE_SOURCE_DIR;
 
-struct Exit {
-  int exitCode = -1;
-  std::string output;
-};
+using Exit = globe::testing::CommandExit;
+using globe::testing::runCommand;
 
-Exit run(const std::string& command) {
-  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
-  Exit r;
-  char buffer[4096];
-  while (pipe != nullptr && std::fgets(buffer, sizeof buffer, pipe) != nullptr) r.output += buffer;
-  const int status = pipe != nullptr ? ::pclose(pipe) : -1;
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-struct Point {
-  double lon, lat;
-};
-
-fs::path writePoints(const fs::path& path, const std::vector<Point>& points) {
-  std::ofstream out(path);
-  out.precision(12);
-  for (const Point& p : points) out << p.lon << "," << p.lat << "\n";
-  return path;
-}
-
-// lon,lat,level,height lines; the heights in order.
-std::vector<double> heightsOf(const std::string& output) {
-  std::vector<double> heights;
-  std::istringstream lines(output);
-  std::string line;
-  while (std::getline(lines, line)) {
-    double lon = 0, lat = 0, h = 0;
-    int level = 0;
-    if (std::sscanf(line.c_str(), "%lf,%lf,%d,%lf", &lon, &lat, &level, &h) == 4) {
-      heights.push_back(h);
-    }
-  }
-  return heights;
-}
+using testing::heightsOf;
+using testing::Point;
+using testing::writePoints;
 
 std::vector<double> exactHeights(const fs::path& points, const std::string& level = "") {
-  const Exit r = run(std::string(GLOBE_EXE) + " query --mode exact " +
-                     (level.empty() ? "" : "--level " + level + " ") +
-                     globe::testing::bundledPyramid().string() + " < " + points.string());
+  const Exit r = runCommand(std::string(GLOBE_EXE) + " query --mode exact " +
+                            (level.empty() ? "" : "--level " + level + " ") +
+                            globe::testing::bundledPyramid().string() + " < " + points.string());
   EXPECT_EQ(r.exitCode, 0) << r.output;
   return heightsOf(r.output);
 }
@@ -108,10 +76,11 @@ TEST(ExportTrees, QuantizedMeshHoldsThePyramidsSurface) {
   const fs::path out = globe::testing::freshTempDir("export-qm") / "qm";
   const std::string pyramid = globe::testing::bundledPyramid().string();
   // Two runs into one tree: the world's coarse levels, then Fuji's square to its finest.
-  Exit a = run(tiler() + "--format quantized-mesh -o " + out.string() + " --levels 0-3 " + pyramid);
+  Exit a = runCommand(tiler() + "--format quantized-mesh -o " + out.string() + " --levels 0-3 " +
+                      pyramid);
   ASSERT_EQ(a.exitCode, 0) << a.output;
-  Exit b = run(tiler() + "--format quantized-mesh -o " + out.string() +
-               " --levels 4-12 --bounds 138,35,139,36 " + pyramid);
+  Exit b = runCommand(tiler() + "--format quantized-mesh -o " + out.string() +
+                      " --levels 4-12 --bounds 138,35,139,36 " + pyramid);
   ASSERT_EQ(b.exitCode, 0) << b.output;
   EXPECT_NE(b.output.find("quantized-mesh tiles written"), std::string::npos) << b.output;
   // layer.json lists both runs' tiles: level 0's two, and level 12 over Fuji.
@@ -126,8 +95,8 @@ TEST(ExportTrees, QuantizedMeshHoldsThePyramidsSurface) {
   const fs::path points = writePoints(out.parent_path() / "points.txt", fujiPoints(200));
   const auto decoded = [&](const fs::path& tree, const fs::path& at) {
     const Exit reference =
-        run("python3 " + (kSource / "tests/tools/quantized_mesh_reference.py").string() + " " +
-            tree.string() + " < " + at.string());
+        runCommand("python3 " + (kSource / "tests/tools/quantized_mesh_reference.py").string() +
+                   " " + tree.string() + " < " + at.string());
     EXPECT_EQ(reference.exitCode, 0) << reference.output;
     return heightsOf(reference.output);
   };
@@ -143,8 +112,8 @@ TEST(ExportTrees, QuantizedMeshHoldsThePyramidsSurface) {
   // --mesh-error 0 keeps every sample: the summit's tiles then equal the surface within the
   // quantization and the chord's sag over a level-12 cell (< 1 mm).
   const fs::path exact = out.parent_path() / "exact";
-  Exit e = run(tiler() + "--format quantized-mesh --mesh-error 0 -o " + exact.string() +
-               " --levels 12 --bounds 138.70,35.33,138.78,35.39 " + pyramid);
+  Exit e = runCommand(tiler() + "--format quantized-mesh --mesh-error 0 -o " + exact.string() +
+                      " --levels 12 --bounds 138.70,35.33,138.78,35.39 " + pyramid);
   ASSERT_EQ(e.exitCode, 0) << e.output;
   std::vector<Point> summit;
   for (const Point& p : fujiPoints(2000)) {
@@ -159,8 +128,8 @@ TEST(ExportTrees, QuantizedMeshHoldsThePyramidsSurface) {
   EXPECT_LT(de.back(), 0.15);
 
   // Resumed: nothing written again.
-  Exit again = run(tiler() + "--format quantized-mesh -o " + out.string() +
-                   " --levels 4-12 --bounds 138,35,139,36 " + pyramid);
+  Exit again = runCommand(tiler() + "--format quantized-mesh -o " + out.string() +
+                          " --levels 4-12 --bounds 138,35,139,36 " + pyramid);
   ASSERT_EQ(again.exitCode, 0) << again.output;
   EXPECT_NE(again.output.find(": 0 quantized-mesh tiles written"), std::string::npos)
       << again.output;
@@ -173,10 +142,11 @@ TEST(ExportTrees, QuantizedMeshHoldsThePyramidsSurface) {
 TEST(ExportTrees, QuantizedMeshNeighboursShareTheirSidesAndTilesCarryExtensions) {
   const fs::path out = globe::testing::freshTempDir("export-qm-sides") / "qm";
   const std::string pyramid = globe::testing::bundledPyramid().string();
-  Exit a = run(tiler() + "--format quantized-mesh -o " + out.string() + " --levels 3 " + pyramid);
+  Exit a =
+      runCommand(tiler() + "--format quantized-mesh -o " + out.string() + " --levels 3 " + pyramid);
   ASSERT_EQ(a.exitCode, 0) << a.output;
-  Exit b = run(tiler() + "--format quantized-mesh -o " + out.string() +
-               " --levels 9-10 --bounds 138.6,35.3,139.0,35.6 " + pyramid);
+  Exit b = runCommand(tiler() + "--format quantized-mesh -o " + out.string() +
+                      " --levels 9-10 --bounds 138.6,35.3,139.0,35.6 " + pyramid);
   ASSERT_EQ(b.exitCode, 0) << b.output;
   const auto tileAt = [&](uint32_t level, uint32_t x, uint32_t tmsY) {
     const fs::path path =
@@ -270,13 +240,13 @@ TEST(ExportTrees, QuantizedMeshTilesDecodeWithTheNpmDecoder) {
     GTEST_SKIP() << "tools/web/install.sh has not installed the npm decoder";
   }
   const fs::path out = globe::testing::freshTempDir("export-qm-npm") / "qm";
-  Exit e = run(tiler() + "--format quantized-mesh -o " + out.string() +
-               " --levels 0-10 --bounds 138.4,35.1,139,35.6 " +
-               globe::testing::bundledPyramid().string());
+  Exit e = runCommand(tiler() + "--format quantized-mesh -o " + out.string() +
+                      " --levels 0-10 --bounds 138.4,35.1,139,35.6 " +
+                      globe::testing::bundledPyramid().string());
   ASSERT_EQ(e.exitCode, 0) << e.output;
   const Exit decoded =
-      run("node " + (kSource / "tests/tools/quantized_mesh_node_check.mjs").string() + " " +
-          out.string());
+      runCommand("node " + (kSource / "tests/tools/quantized_mesh_node_check.mjs").string() + " " +
+                 out.string());
   ASSERT_EQ(decoded.exitCode, 0) << decoded.output;
   std::istringstream lines(decoded.output);
   std::string line;
@@ -316,8 +286,8 @@ TEST(ExportTrees, QuantizedMeshThreadsMakeTheSameTree) {
   const std::string pyramid = globe::testing::bundledPyramid().string();
   for (const char* threads : {"1", "3"}) {
     const fs::path out = root / threads / "qm";
-    Exit e = run(tiler() + "--format quantized-mesh -j " + threads + " -o " + out.string() +
-                 " --levels 0-11 --bounds 138.5,35.2,139,35.6 " + pyramid);
+    Exit e = runCommand(tiler() + "--format quantized-mesh -j " + threads + " -o " + out.string() +
+                        " --levels 0-11 --bounds 138.5,35.2,139,35.6 " + pyramid);
     ASSERT_EQ(e.exitCode, 0) << e.output;
   }
   const auto one = globe::testing::checksums(root / "1" / "qm");
@@ -331,17 +301,17 @@ TEST(ExportTrees, QuantizedMeshThreadsMakeTheSameTree) {
 TEST(ExportTrees, AServedTreeIsKeptByItsVersion) {
   const fs::path site = globe::testing::freshTempDir("export-served");
   const fs::path tree = site / "www" / "qm";
-  const Exit exported =
-      run(tiler() + "--format quantized-mesh -o " + tree.string() +
-          " --levels 0-7 --bounds 138,35,139,36 " + globe::testing::bundledPyramid().string());
+  const Exit exported = runCommand(tiler() + "--format quantized-mesh -o " + tree.string() +
+                                   " --levels 0-7 --bounds 138,35,139,36 " +
+                                   globe::testing::bundledPyramid().string());
   ASSERT_EQ(exported.exitCode, 0) << exported.output;
   auto server = globe::testing::NginxServer::start({site / "www", ""});
   ASSERT_TRUE(server);
   const fs::path points = writePoints(site / "points.txt", fujiPoints(20));
   const auto query = [&] {
-    const Exit r = run(std::string(GLOBE_EXE) +
-                       " query --mode exact quantized-mesh:" + server->url("/qm/layer.json") +
-                       " --cache-dir " + (site / "cache").string() + " < " + points.string());
+    const Exit r = runCommand(std::string(GLOBE_EXE) + " query --mode exact quantized-mesh:" +
+                              server->url("/qm/layer.json") + " --cache-dir " +
+                              (site / "cache").string() + " < " + points.string());
     EXPECT_EQ(r.exitCode, 0) << r.output;
     return heightsOf(r.output);
   };
@@ -462,9 +432,9 @@ Point pixelCentre(int z, int x, int y, int column, int row) {
 
 TEST(ExportTrees, TerrariumPixelsAreTheExactSurfaceAtTheirCentres) {
   const fs::path out = globe::testing::freshTempDir("export-terrarium") / "t";
-  const Exit r = run(tiler() + "--format terrarium -o " + out.string() +
-                     " --levels 10 --bounds 138.7,35.3,138.8,35.4 " +
-                     globe::testing::bundledPyramid().string());
+  const Exit r = runCommand(tiler() + "--format terrarium -o " + out.string() +
+                            " --levels 10 --bounds 138.7,35.3,138.8,35.4 " +
+                            globe::testing::bundledPyramid().string());
   ASSERT_EQ(r.exitCode, 0) << r.output;
   // Zoom 10's pixel is 0.00137° wide: the pyramid's level 13 (0.00137°), as the exporter picks.
   const int z = 10;
@@ -501,9 +471,9 @@ TEST(ExportTrees, TerrariumPixelsAreTheExactSurfaceAtTheirCentres) {
 // exact surface at its centre, decoded here by the published formula.
 TEST(ExportTrees, TerrainRgbPixelsAreTheExactSurfaceAtTheirCentres) {
   const fs::path out = globe::testing::freshTempDir("export-terrain-rgb") / "t";
-  const Exit r = run(tiler() + "--format terrain-rgb -o " + out.string() +
-                     " --levels 10 --bounds 138.7,35.3,138.8,35.4 " +
-                     globe::testing::bundledPyramid().string());
+  const Exit r = runCommand(tiler() + "--format terrain-rgb -o " + out.string() +
+                            " --levels 10 --bounds 138.7,35.3,138.8,35.4 " +
+                            globe::testing::bundledPyramid().string());
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("terrain-rgb tiles written"), std::string::npos) << r.output;
   const int z = 10;
@@ -540,19 +510,19 @@ TEST(ExportTrees, BadArgumentsAreClearErrors) {
   const std::string pyramid = globe::testing::bundledPyramid().string();
   const fs::path out = globe::testing::freshTempDir("export-bad") / "x";
   const Exit levels =
-      run(tiler() + "--format terrarium -o " + out.string() + " --levels 9-3 " + pyramid);
+      runCommand(tiler() + "--format terrarium -o " + out.string() + " --levels 9-3 " + pyramid);
   EXPECT_EQ(levels.exitCode, 2);
   EXPECT_NE(levels.output.find("--levels must be A-B"), std::string::npos) << levels.output;
-  const Exit bounds =
-      run(tiler() + "--format terrarium -o " + out.string() + " --bounds 10,50,5,60 " + pyramid);
+  const Exit bounds = runCommand(tiler() + "--format terrarium -o " + out.string() +
+                                 " --bounds 10,50,5,60 " + pyramid);
   EXPECT_EQ(bounds.exitCode, 2);
   EXPECT_NE(bounds.output.find("--bounds must be W,S,E,N"), std::string::npos) << bounds.output;
   const Exit missing =
-      run(tiler() + "--format quantized-mesh -o " + out.string() + " /nonexistent/pyramid");
+      runCommand(tiler() + "--format quantized-mesh -o " + out.string() + " /nonexistent/pyramid");
   EXPECT_EQ(missing.exitCode, 1);
   EXPECT_NE(missing.output.find("/nonexistent/pyramid"), std::string::npos) << missing.output;
   EXPECT_FALSE(fs::exists(out / "layer.json"));
-  const Exit format = run(tiler() + "--format mbtiles -o " + out.string() + " " + pyramid);
+  const Exit format = runCommand(tiler() + "--format mbtiles -o " + out.string() + " " + pyramid);
   EXPECT_NE(format.exitCode, 0);
 }
 
