@@ -108,6 +108,7 @@ Result<void> PmtilesWriter::add(uint32_t zoom, uint32_t x, uint32_t y,
                      std::to_string(x) + "/" + std::to_string(y) + " given out of tile id order");
   }
   if (bytes.size() > UINT32_MAX) return makeError(archive_.string() + ": a tile over 4 GiB");
+  if (bytes.empty()) return makeError(archive_.string() + ": an empty tile");
   const auto length = static_cast<uint32_t>(bytes.size());
   // The same bytes stored before: point at them.
   std::optional<uint64_t> offset;
@@ -165,8 +166,9 @@ Result<PmtilesSummary> PmtilesWriter::finish(formats::PmtilesHeader header,
   const fs::path temporary = archive_.string() + ".tmp";
   std::FILE* out = std::fopen(temporary.c_str(), "wb");
   if (out == nullptr) return fileError(temporary, "create");
+  // An empty part (no leaf directories) has no data pointer to hand fwrite.
   const auto put = [&](std::span<const std::byte> bytes) {
-    return std::fwrite(bytes.data(), 1, bytes.size(), out) == bytes.size();
+    return bytes.empty() || std::fwrite(bytes.data(), 1, bytes.size(), out) == bytes.size();
   };
   bool ok = put(formats::encodePmtilesHeader(header)) && put(directories.root) && put(metadata) &&
             put(directories.leaves) && ::fseeko(spoolFile_, 0, SEEK_SET) == 0;
