@@ -4,8 +4,14 @@
 
 namespace globe::tiler_app {
 
-// globe-tiler -o PYRAMID INPUT...: elevation rasters to a pyramid.
-int runTileCommand(int argc, char** argv);
+// globe-tiler -o PYRAMID INPUT... (elevation rasters to a pyramid, or one shard of it with
+// --shard K/N), globe-tiler merge (after the shards) and globe-tiler plan --shards N.
+enum class TileCommandKind { Tile, Merge, Plan };
+int runTileCommand(int argc, char** argv, TileCommandKind kind = TileCommandKind::Tile);
+
+// Measured tiling rate of one shard on one core (docs/performance/sharded-tiling.md), the
+// planning step's default.
+inline constexpr double kMeasuredTilesPerSecond = 2000;
 // globe-tiler export: a tile tree for other viewers (--format), or one block as a GTOPO30 file.
 int runExportCommand(int argc, char** argv);
 // globe-tiler export-imagery --format xyz|tms|pmtiles -o OUT LAYER: a layer for web maps.

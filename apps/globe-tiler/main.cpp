@@ -14,5 +14,12 @@ int main(int argc, char** argv) {
   }
   if (command == "imagery") return globe::tiler_app::runImageryCommand(argc - 1, argv + 1);
   if (command == "water-mask") return globe::tiler_app::runWaterMaskCommand(argc - 1, argv + 1);
+  using globe::tiler_app::TileCommandKind;
+  if (command == "merge") {
+    return globe::tiler_app::runTileCommand(argc - 1, argv + 1, TileCommandKind::Merge);
+  }
+  if (command == "plan") {
+    return globe::tiler_app::runTileCommand(argc - 1, argv + 1, TileCommandKind::Plan);
+  }
   return globe::tiler_app::runTileCommand(argc, argv);
 }

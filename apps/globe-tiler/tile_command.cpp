@@ -5,16 +5,73 @@
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <cstdio>
+#include <fstream>
 #include <string>
+#include <vector>
 
 #include "apps/globe-tiler/progress_bar.hpp"
 #include "geo/ellipsoid.hpp"
 #include "globe_version.hpp"
+#include "tiling/shard_plan.hpp"
+#include "tiling/shard_report.hpp"
 #include "tiling/tiler.hpp"
 
 namespace globe::tiler_app {
 
-int runTileCommand(int argc, char** argv) {
+namespace {
+
+// --inputs FILE: one input a line; blank lines and lines starting with # are skipped.
+bool readInputList(const std::string& path, std::vector<std::string>& inputs) {
+  std::ifstream file(path);
+  if (!file) {
+    std::fprintf(stderr, "globe-tiler: --inputs %s: cannot read it\n", path.c_str());
+    return false;
+  }
+  for (std::string line; std::getline(file, line);) {
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#') continue;
+    const auto last = line.find_last_not_of(" \t\r");
+    inputs.push_back(line.substr(first, last - first + 1));
+  }
+  if (file.bad()) {
+    std::fprintf(stderr, "globe-tiler: --inputs %s: read failed\n", path.c_str());
+    return false;
+  }
+  return true;
+}
+
+int printShardPlan(const tiling::TilerOptions& options, double tilesPerSecond) {
+  auto plan = tiling::planShards(options);
+  if (!plan) {
+    std::fprintf(stderr, "globe-tiler: %s\n", plan.error().c_str());
+    return 1;
+  }
+  std::printf("%u shards of the packs at level %u (deepest level %u, %llu tiles in all)\n",
+              options.shardCount, plan->shardLevel, plan->maxLevel,
+              static_cast<unsigned long long>(plan->wholeTiles));
+  std::printf("%-7s %8s %12s %8s %14s %14s\n", "shard", "units", "tiles", "sources", "source MB",
+              "expected");
+  auto row = [&](const std::string& name, const tiling::ShardPlanRow& r) {
+    const double seconds = static_cast<double>(r.tiles) / tilesPerSecond;
+    std::printf("%-7s %8llu %12llu %8llu %14.1f %14s\n", name.c_str(),
+                static_cast<unsigned long long>(r.units), static_cast<unsigned long long>(r.tiles),
+                static_cast<unsigned long long>(r.sources),
+                static_cast<double>(r.sourceBytes) / 1e6, formatDuration(seconds).c_str());
+  };
+  for (size_t k = 0; k < plan->shards.size(); ++k) {
+    row(std::to_string(k) + "/" + std::to_string(options.shardCount), plan->shards[k]);
+  }
+  row("merge", plan->merge);
+  std::printf(
+      "expected: at %.0f tiles per second per shard (--tiles-per-second), before the "
+      "time to condition the sources\n",
+      tilesPerSecond);
+  return 0;
+}
+
+}  // namespace
+
+int runTileCommand(int argc, char** argv, TileCommandKind kind) {
   CLI::App app{
       "Builds a tile pyramid (lat/long quadtree of N×N GTOPO30-encoded blocks) from GTOPO30 "
       ".DEM/.HDR files or any raster GDAL opens.\nAlso: globe-tiler export PYRAMID L X Y "
@@ -23,16 +80,42 @@ int runTileCommand(int argc, char** argv) {
       "(for CesiumJS, MapLibre)\n      "
       "globe-tiler imagery -o LAYER_DIR INPUT... (imagery layers; see globe-tiler imagery --help)\n"
       "      globe-tiler export-imagery --format xyz|tms|pmtiles -o OUT LAYER_DIR (for web maps)\n"
-      "      globe-tiler water-mask -o LAYER_DIR POLYGONS... (water masks from land polygons)",
+      "      globe-tiler water-mask -o LAYER_DIR POLYGONS... (water masks from land polygons)\n"
+      "      globe-tiler --shard K/N -o OUT INPUT..., then globe-tiler merge -o OUT INPUT... "
+      "(on many machines; globe-tiler plan --shards N INPUT... first)",
       "globe-tiler"};
   app.set_version_flag("--version",
                        std::string("globe-tiler ") + kVersion + " (" + kSourceRevision + ")");
   tiling::TilerOptions options;
   std::string output, globeName = "wgs84";
   uint32_t maxLevel = 0;
-  app.add_option("-o,--output", output, "pyramid directory to create (or resume)")->required();
-  app.add_option("INPUT", options.inputs, "elevation rasters; the finest wins where they overlap")
-      ->required();
+  auto* outputOption =
+      app.add_option("-o,--output", output, "pyramid directory to create (or resume)");
+  if (kind != TileCommandKind::Plan) outputOption->required();
+  app.add_option("INPUT", options.inputs,
+                 "elevation rasters (paths, /vsicurl/ URLs); the finest wins where they overlap");
+  std::string inputList;
+  app.add_option("--inputs", inputList, "a file listing more inputs, one a line (# comments)");
+  std::string shard;
+  uint32_t shardLevel = 0, shardCount = 0;
+  double tilesPerSecond = kMeasuredTilesPerSecond;
+  CLI::Option* shardLevelOption = nullptr;
+  if (kind == TileCommandKind::Tile) {
+    app.add_option("--shard", shard,
+                   "K/N: build shard K of N (from 0) into the shared output; then globe-tiler "
+                   "merge");
+  }
+  if (kind != TileCommandKind::Merge) {
+    shardLevelOption =
+        app.add_option("--shard-level", shardLevel,
+                       "level whose packs are cut into shards (default: two above the deepest)");
+  }
+  if (kind == TileCommandKind::Plan) {
+    app.add_option("--shards", shardCount, "how many shards")->required();
+    app.add_option("--tiles-per-second", tilesPerSecond,
+                   "one shard's tiling rate, for the expected times")
+        ->capture_default_str();
+  }
   app.add_option("-n,--block-size", options.verticesPerSide, "vertices per block side, 2^k+1")
       ->capture_default_str();
   auto* maxLevelOption = app.add_option("--max-level", maxLevel,
@@ -77,6 +160,23 @@ int runTileCommand(int argc, char** argv) {
       "error.\n"
       "  - A raster with fewer than 2x2 valid samples is refused.");
   CLI11_PARSE(app, argc, argv);
+  if (!inputList.empty() && !readInputList(inputList, options.inputs)) return 2;
+  if (options.inputs.empty()) {
+    std::fprintf(stderr, "globe-tiler: no inputs: give rasters or --inputs FILE\n");
+    return 2;
+  }
+  if (!shard.empty()) {
+    auto spec = tiling::parseShardSpec(shard);
+    if (!spec) {
+      std::fprintf(stderr, "globe-tiler: %s\n", spec.error().c_str());
+      return 2;
+    }
+    options.role = tiling::TilerRole::Shard;
+    options.shardIndex = spec->index;
+    options.shardCount = spec->count;
+  }
+  if (kind == TileCommandKind::Merge) options.role = tiling::TilerRole::Merge;
+  if (shardLevelOption != nullptr && shardLevelOption->count() > 0) options.shardLevel = shardLevel;
   if (zUnitsOption->count() > 0) options.vertical.units = zUnits;
   if (zScaleOption->count() > 0) options.vertical.metersPerUnit = zScale;
 
@@ -91,6 +191,14 @@ int runTileCommand(int argc, char** argv) {
     return 2;
   }
   options.globeModel = *model;
+  if (kind == TileCommandKind::Plan) {
+    options.shardCount = shardCount;
+    if (!(tilesPerSecond > 0)) {
+      std::fprintf(stderr, "globe-tiler: --tiles-per-second must be above 0\n");
+      return 2;
+    }
+    return printShardPlan(options, tilesPerSecond);
+  }
 
   auto report = tiling::runTiler(options);
   if (!report) {
@@ -99,6 +207,29 @@ int runTileCommand(int argc, char** argv) {
   }
   for (const std::string& warning : report->warnings) {
     std::fprintf(stderr, "globe-tiler: warning: %s\n", warning.c_str());
+  }
+  if (options.role == tiling::TilerRole::Shard) {
+    std::printf(
+        "%s: shard %u/%u: %llu tiles (%llu packs built, %llu reused), %llu sources "
+        "read, %llu height fragments for the merge, in %s\n",
+        output.c_str(), options.shardIndex, options.shardCount,
+        static_cast<unsigned long long>(report->tiles),
+        static_cast<unsigned long long>(report->packsBuilt),
+        static_cast<unsigned long long>(report->packsReused),
+        static_cast<unsigned long long>(report->sourcesConditioned),
+        static_cast<unsigned long long>(report->fragments),
+        formatDuration(report->seconds).c_str());
+    return 0;
+  }
+  if (options.role == tiling::TilerRole::Merge) {
+    std::printf(
+        "%s: merged: %llu tiles above the shard level (%llu packs), %llu sources read, in "
+        "%s; manifest written\n",
+        output.c_str(), static_cast<unsigned long long>(report->tiles),
+        static_cast<unsigned long long>(report->packsBuilt + report->packsReused),
+        static_cast<unsigned long long>(report->sourcesConditioned),
+        formatDuration(report->seconds).c_str());
+    return 0;
   }
   const double mb = static_cast<double>(report->sourceBytes) / 1e6;
   std::printf(

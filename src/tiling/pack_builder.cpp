@@ -86,34 +86,17 @@ double geometricErrorOfDeviations(std::span<double> deviationsMeters) {
 Result<formats::Pack> buildPack(const formats::PackId& id, const formats::PackLayout& layout,
                                 const TilingPlan& plan, const std::vector<TilerSource>& sources,
                                 const std::map<formats::PackId, formats::Pack>& childPacks,
-                                const geo::Ellipsoid& ellipsoid, PackBuildStats& stats) {
+                                const geo::Ellipsoid& ellipsoid, PackBuildStats& stats,
+                                const PrecomputedSamples& precomputed) {
   const uint32_t n = layout.verticesPerSide;
   formats::Pack pack = formats::Pack::empty(id, layout);
   const std::vector<geo::TileId> tiles = plan.tilesInPack(id);
 
-  // One strip per row of tiles: the sampler caches the source rows the strip needs.
+  // One strip per row of tiles: the samplers cache the source rows the strip needs.
   for (size_t begin = 0; begin < tiles.size();) {
     size_t end = begin;
     while (end < tiles.size() && tiles[end].y == tiles[begin].y) ++end;
-    const terrain::BlockGrid westTile{tiles[begin], n};
-    const terrain::BlockGrid eastTile{tiles[end - 1], n};
-    SourceSampler sampler(sources, id.level, westTile.longitudeDegrees(0),
-                          eastTile.longitudeDegrees(n - 1));
-    // The apron holds what the neighbouring tiles hold: their vertices are inherited from the
-    // finest level that has tiles there, i.e. sampled with every source taking part.
-    const double spacing = terrain::vertexSpacingDegrees(id.level, n);
-    const double reach = terrain::kApronWidth * spacing;
-    SourceSampler apronSampler(sources, plan.maxLevel(), westTile.longitudeDegrees(0) - reach,
-                               eastTile.longitudeDegrees(n - 1) + reach);
-    // Beyond a pole the apron lies on the opposite meridians (BlockGrid::wrappedVertex).
-    const bool polar =
-        tiles[begin].y == 0 || tiles[begin].y + 1 == geo::GeographicTilingScheme::tilesY(id.level);
-    std::optional<SourceSampler> overThePole;
-    if (polar) {
-      overThePole.emplace(sources, plan.maxLevel(), westTile.longitudeDegrees(0) + 180.0 - reach,
-                          eastTile.longitudeDegrees(n - 1) + 180.0 + reach);
-    }
-
+    StripSamplers samplers(sources, plan, tiles[begin], tiles[end - 1], n);
     for (size_t t = begin; t < end; ++t) {
       const geo::TileId& tile = tiles[t];
       const size_t slot = formats::slotOf(tile, layout.tilesPerSide);
@@ -151,35 +134,27 @@ Result<formats::Pack> buildPack(const formats::PackId& id, const formats::PackLa
         childrenRange->include(childEntry.subtreeRange);
       }
 
-      const terrain::BlockGrid grid{tile, n};
-      for (uint32_t i = 0; i < n; ++i) {
-        const double latitude = grid.latitudeDegrees(i);
-        for (uint32_t j = 0; j < n; ++j) {
-          const size_t k = size_t{i} * n + j;
-          if (filled[k]) {
-            ++stats.inheritedVertices;
-            continue;
-          }
-          auto height = sampler.sample(grid.longitudeDegrees(j), latitude);
-          if (!height) return Error{height.error()};
-          block[k] = *height;
-          ++stats.sampledVertices;
-        }
-      }
+      stats.inheritedVertices +=
+          static_cast<uint64_t>(std::count(filled.begin(), filled.end(), true));
       std::span<int16_t> apron = pack.apron(slot);
-      const auto side = static_cast<int>(n);
-      constexpr int w = terrain::kApronWidth;
-      for (int row = -w; row < side + w; ++row) {
-        for (int column = -w; column < side + w; ++column) {
-          if (row >= 0 && row < side && column >= 0 && column < side) continue;
-          const terrain::BlockGrid::Vertex where = grid.wrappedVertex(row, column);
-          const bool beyondPole =
-              (row < 0 && tile.y == 0) ||
-              (row >= side && tile.y + 1 == geo::GeographicTilingScheme::tilesY(tile.level));
-          SourceSampler& apronFrom = beyondPole ? *overThePole : apronSampler;
-          auto height = apronFrom.sample(where.longitudeDegrees, where.latitudeDegrees);
-          if (!height) return Error{height.error()};
-          apron[terrain::apronIndex(row, column, n)] = *height;
+      for (const SamplePosition& position : sourcePositions(plan, tile, n)) {
+        std::optional<int16_t> height;
+        if (precomputed.table != nullptr) height = precomputed.table->find(slot, position.index);
+        if (!height && precomputed.mustHold && precomputed.mustHold(position)) {
+          return makeError("tile " + std::to_string(tile.level) + "/" + std::to_string(tile.x) +
+                           "/" + std::to_string(tile.y) +
+                           ": a height the shards read is missing (a shard's samples lost?)");
+        }
+        if (!height) {
+          auto sampled = samplers.sample(position);
+          if (!sampled) return Error{sampled.error()};
+          height = *sampled;
+          if (position.index < n * n) ++stats.sampledVertices;
+        }
+        if (position.index < n * n) {
+          block[position.index] = *height;
+        } else {
+          apron[position.index - n * n] = *height;
         }
       }
       if (water && land) {
@@ -196,7 +171,7 @@ Result<formats::Pack> buildPack(const formats::PackId& id, const formats::PackLa
       if (childrenRange) entry.subtreeRange.include(*childrenRange);
       ++stats.tiles;
     }
-    stats.sourceRowReads += sampler.rowReads();
+    stats.sourceRowReads += samplers.rowReads();
     begin = end;
   }
   return pack;

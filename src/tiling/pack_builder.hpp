@@ -9,6 +9,7 @@
 #include "core/result.hpp"
 #include "formats/pack_format.hpp"
 #include "geo/ellipsoid.hpp"
+#include "tiling/sample_table.hpp"
 #include "tiling/source_sampler.hpp"
 #include "tiling/source_set.hpp"
 #include "tiling/tiling_plan.hpp"
@@ -37,6 +38,7 @@ inline constexpr double kDeviationMaxFraction = 0.4;
 double geometricErrorOfDeviations(std::span<double> deviationsMeters);
 
 // childPacks: the finished packs of the next finer level under this pack (absent ones omitted).
+// precomputed: heights the shards read (the merge); the rest are read from `sources`.
 // Each tile's geometric error is that of its children's vertices from its surface, and at
 // least its children's own errors (0 for a tile of the finest data), so it never decreases going
 // up; and at least terrain::geometricErrorMeters of its level where its children hold both water
@@ -46,6 +48,7 @@ double geometricErrorOfDeviations(std::span<double> deviationsMeters);
 Result<formats::Pack> buildPack(const formats::PackId& id, const formats::PackLayout& layout,
                                 const TilingPlan& plan, const std::vector<TilerSource>& sources,
                                 const std::map<formats::PackId, formats::Pack>& childPacks,
-                                const geo::Ellipsoid& ellipsoid, PackBuildStats& stats);
+                                const geo::Ellipsoid& ellipsoid, PackBuildStats& stats,
+                                const PrecomputedSamples& precomputed = {});
 
 }  // namespace globe::tiling

@@ -23,16 +23,9 @@ bool extentsMeet(const formats::BoundsDegrees& a, const formats::BoundsDegrees& 
 
 }  // namespace
 
-Result<std::vector<formats::SourceConditioning>> conditionSources(
-    std::vector<TilerSource>& sources, const ConditioningOptions& options) {
+std::vector<std::vector<size_t>> coarserSourcesReaching(const std::vector<TilerSource>& sources) {
   const size_t count = sources.size();
-  auto sameStep = [&](size_t a, size_t b) {
-    return sources[a].stepDegrees <= sources[b].stepDegrees * (1 + kSameStepTolerance) &&
-           sources[b].stepDegrees <= sources[a].stepDegrees * (1 + kSameStepTolerance);
-  };
-  // coarser[i]: the sources coarser than i that reach it, finest first.
   std::vector<std::vector<size_t>> coarser(count);
-  std::vector<uint8_t> neededAsCoarser(count, 0);
   for (size_t i = 0; i < count; ++i) {
     for (size_t j = i + 1; j < count; ++j) {
       if (sources[j].stepDegrees <= sources[i].stepDegrees * (1 + kSameStepTolerance)) continue;
@@ -41,8 +34,28 @@ Result<std::vector<formats::SourceConditioning>> conditionSources(
         continue;
       }
       coarser[i].push_back(j);
-      neededAsCoarser[j] = 1;
     }
+  }
+  return coarser;
+}
+
+double bendMarginDegrees(const std::vector<TilerSource>& sources,
+                         const std::vector<size_t>& coarserReaching) {
+  if (coarserReaching.empty()) return 0.0;
+  return kBendMarginCoarserCells * sources[coarserReaching.front()].stepDegrees;
+}
+
+Result<std::vector<formats::SourceConditioning>> conditionSources(
+    std::vector<TilerSource>& sources, const ConditioningOptions& options) {
+  const size_t count = sources.size();
+  auto sameStep = [&](size_t a, size_t b) {
+    return sources[a].stepDegrees <= sources[b].stepDegrees * (1 + kSameStepTolerance) &&
+           sources[b].stepDegrees <= sources[a].stepDegrees * (1 + kSameStepTolerance);
+  };
+  const std::vector<std::vector<size_t>> coarser = coarserSourcesReaching(sources);
+  std::vector<uint8_t> neededAsCoarser(count, 0);
+  for (const auto& list : coarser) {
+    for (size_t j : list) neededAsCoarser[j] = 1;
   }
 
   std::vector<std::shared_ptr<conditioning::DemGrid>> grids(count);
@@ -81,10 +94,7 @@ Result<std::vector<formats::SourceConditioning>> conditionSources(
     const conditioning::GridCoarserSources coarserSources(coarserGrids);
     conditioning::ConditionOptions conditionOptions;
     conditionOptions.noDataIsWater = source.noDataIsWater;
-    if (!coarser[i].empty()) {
-      conditionOptions.bendMarginDegrees =
-          kBendMarginCoarserCells * sources[coarser[i].front()].stepDegrees;
-    }
+    conditionOptions.bendMarginDegrees = bendMarginDegrees(sources, coarser[i]);
     const conditioning::ConditionStats stats = conditioning::conditionGrid(
         *grid, coarserGrids.empty() ? nullptr : &coarserSources, conditionOptions);
     report[i] = {stats.noDataSamples,

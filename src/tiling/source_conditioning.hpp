@@ -26,6 +26,14 @@ struct ConditioningOptions {
   uint64_t memoryBudgetBytes = uint64_t{256} << 20;
 };
 
+// coarser[i]: the sources coarser than source i that reach it, finest first: the ones its
+// conditioning reads (sources finest first, openSources' order).
+std::vector<std::vector<size_t>> coarserSourcesReaching(const std::vector<TilerSource>& sources);
+
+// The bend margin a source gets from the coarser sources reaching it (0 with none).
+double bendMarginDegrees(const std::vector<TilerSource>& sources,
+                         const std::vector<size_t>& coarserReaching);
+
 // sources: finest first (openSources' order). Returns each source's conditioning, same order.
 Result<std::vector<formats::SourceConditioning>> conditionSources(
     std::vector<TilerSource>& sources, const ConditioningOptions& options = {});

@@ -6,9 +6,12 @@
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
+#include <numeric>
+#include <optional>
 #include <thread>
 
 #include "formats/pack_format.hpp"
@@ -16,7 +19,11 @@
 #include "formats/vertical_units.hpp"
 #include "geo/tiling_scheme.hpp"
 #include "tiling/pack_builder.hpp"
+#include "tiling/pack_summary.hpp"
 #include "tiling/progress.hpp"
+#include "tiling/shard_files.hpp"
+#include "tiling/shard_plan.hpp"
+#include "tiling/shard_samples.hpp"
 #include "tiling/source_conditioning.hpp"
 #include "tiling/source_set.hpp"
 #include "tiling/tiling_plan.hpp"
@@ -31,32 +38,6 @@ constexpr const char* kPlanFileName = "tiling-plan.json";
 constexpr uint64_t kMaxPackBytes = uint64_t{1} << 33;
 // Names the sea/void/fill/footprint rules: a pyramid resumed under other rules would mix them.
 constexpr const char* kConditioningVersion = "sea-void-fill-footprint 2";
-
-// What the manifest needs from one finished pack.
-struct PackSummary {
-  uint64_t tiles = 0;
-  formats::BoundsDegrees bounds{180, 90, -180, -90};
-  terrain::HeightRange range{INT16_MAX, INT16_MIN};
-  uint32_t indexBytes = 0;  // the pack's stored index (version 5), for the manifest
-};
-
-PackSummary summarise(const formats::Pack& pack) {
-  PackSummary summary;
-  for (size_t slot = 0; slot < pack.entries.size(); ++slot) {
-    const formats::PackEntry& entry = pack.entries[slot];
-    if (!entry.present()) continue;
-    ++summary.tiles;
-    const auto rect = geo::GeographicTilingScheme::tileRectangle(
-        formats::tileOfSlot(pack.id, slot, pack.layout.tilesPerSide));
-    const double toDegrees = 180.0 / 3.14159265358979323846;
-    summary.bounds.west = std::min(summary.bounds.west, rect.westRadians * toDegrees);
-    summary.bounds.south = std::min(summary.bounds.south, rect.southRadians * toDegrees);
-    summary.bounds.east = std::max(summary.bounds.east, rect.eastRadians * toDegrees);
-    summary.bounds.north = std::max(summary.bounds.north, rect.northRadians * toDegrees);
-    summary.range.include(entry.vertexRange);
-  }
-  return summary;
-}
 
 // Everything that decides the pyramid's content: a resumed run must match it exactly.
 std::string planFingerprint(const TilerOptions& options, const std::vector<TilerSource>& sources) {
@@ -90,7 +71,9 @@ Result<void> prepareOutput(const TilerOptions& options, const std::string& finge
   std::error_code error;
   fs::create_directories(options.outputDir, error);
   if (error) return makeError(options.outputDir.string() + ": cannot create: " + error.message());
-  transport::removeAtomicTemporaries(options.outputDir);  // a killed run's half-written files
+  // A killed run's half-written files; not while other shards may be writing theirs (the merge
+  // removes what killed shards left).
+  if (options.role != TilerRole::Shard) transport::removeAtomicTemporaries(options.outputDir);
   const fs::path planPath = options.outputDir / kPlanFileName;
   if (fs::exists(planPath, error)) {
     auto existing = transport::readWholeFile(planPath, 1 << 24);
@@ -102,6 +85,10 @@ Result<void> prepareOutput(const TilerOptions& options, const std::string& finge
                        "another output directory");
     }
     return {};
+  }
+  if (options.role == TilerRole::Merge) {
+    return makeError(options.outputDir.string() + ": no " + kPlanFileName +
+                     ": run the shards (globe-tiler --shard K/N) into it first");
   }
   if (fs::exists(options.outputDir / formats::kManifestFileName, error)) {
     return makeError(options.outputDir.string() + ": holds a pyramid without " + kPlanFileName +
@@ -125,6 +112,7 @@ struct PackJob {
   const formats::PackLayout& layout;
   const TilingPlan& plan;
   const std::vector<TilerSource>& sources;
+  std::function<Result<PrecomputedSamples>(const formats::PackId&, SampleTable&)> precomputed;
 
   Result<PackSummary> run(const formats::PackId& id, bool& reused, PackBuildStats& stats) const {
     const fs::path path = formats::packPath(options.outputDir, id);
@@ -154,8 +142,16 @@ struct PackJob {
         }
       }
     }
+    PrecomputedSamples heights;
+    std::optional<SampleTable> table;
+    if (precomputed) {
+      table.emplace(layout.tilesPerSide * layout.tilesPerSide, layout.verticesPerSide);
+      auto found = precomputed(id, *table);
+      if (!found) return Error{found.error()};
+      heights = *found;
+    }
     auto pack = buildPack(id, layout, plan, sources, children,
-                          geo::ellipsoidFor(options.globeModel), stats);
+                          geo::ellipsoidFor(options.globeModel), stats, heights);
     if (!pack) return Error{pack.error()};
     fs::create_directories(path.parent_path(), error);
     if (error)
@@ -173,6 +169,23 @@ struct PackJob {
   }
 };
 
+// The sources this run reads, by index into all of them: every one for the whole run; for a
+// shard, those its region needs; for the merge, those the heights of no shard need.
+std::vector<size_t> sourcesOfRole(const TilerOptions& options, const TilingPlan& plan,
+                                  const std::vector<TilerSource>& sources,
+                                  const ShardPartition* partition, uint32_t shardLevel) {
+  if (options.role == TilerRole::Shard) {
+    return sourcesMeeting(sources, shardRegion(partition->units[options.shardIndex],
+                                               options.packTilesPerSide, options.verticesPerSide));
+  }
+  if (options.role == TilerRole::Merge) {
+    return sourcesBeyondUnits(sources, plan, shardLevel, options.packTilesPerSide);
+  }
+  std::vector<size_t> all(sources.size());
+  for (size_t i = 0; i < all.size(); ++i) all[i] = i;
+  return all;
+}
+
 }  // namespace
 
 Result<TilerReport> runTiler(const TilerOptions& options) {
@@ -187,13 +200,17 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
   if (options.maxLevel && *options.maxLevel > geo::kMaxLevel) {
     return makeError("--max-level must be at most " + std::to_string(geo::kMaxLevel));
   }
+  if (options.role == TilerRole::Shard && options.shardIndex >= options.shardCount) {
+    return makeError("shard " + std::to_string(options.shardIndex) + " of " +
+                     std::to_string(options.shardCount) + ": K must be below N");
+  }
   TilerReport report;
   auto opened = openSources(options.inputs, {options.verticesPerSide, options.maxLevel,
                                              options.vertical, options.noDataIsSea});
   if (!opened) return Error{opened.error()};
-  std::vector<TilerSource>& sources = *opened;
+  std::vector<TilerSource>& allSources = *opened;
   if (options.vertical.units || options.vertical.metersPerUnit) {
-    for (const TilerSource& s : sources) {
+    for (const TilerSource& s : allSources) {
       const formats::VerticalUnitOrigin origin = s.verticalUnits.origin;
       if (origin != formats::VerticalUnitOrigin::File &&
           origin != formats::VerticalUnitOrigin::Format) {
@@ -206,15 +223,46 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
   }
   std::vector<formats::BoundsDegrees> extents;
   std::vector<uint32_t> finestLevels;
-  for (const TilerSource& s : sources) {
+  for (const TilerSource& s : allSources) {
     extents.push_back(s.extent);
     finestLevels.push_back(s.finestLevel);
-    report.sourceBytes += static_cast<uint64_t>(s.grid.cols * s.grid.rows * 2);
   }
   const TilingPlan plan(extents, finestLevels, options.packTilesPerSide);
-  if (auto prepared = prepareOutput(options, planFingerprint(options, sources)); !prepared) {
+  const std::string fingerprint = planFingerprint(options, allSources);
+  if (auto prepared = prepareOutput(options, fingerprint); !prepared) {
     return Error{prepared.error()};
   }
+
+  // Shards and merge: the shard level, the units, and the sources this run reads.
+  uint32_t shardLevel = 0;
+  std::optional<ShardPartition> partition;
+  std::vector<ShardSummary> shardSummaries;
+  if (options.role == TilerRole::Shard) {
+    shardLevel = options.shardLevel.value_or(defaultShardLevel(plan.maxLevel()));
+    if (shardLevel > plan.maxLevel()) {
+      return makeError("--shard-level " + std::to_string(shardLevel) +
+                       " is below the deepest level (" + std::to_string(plan.maxLevel()) + ")");
+    }
+    partition =
+        partitionShards(plan, shardLevel, options.shardCount, allSources, options.packTilesPerSide);
+  } else if (options.role == TilerRole::Merge) {
+    auto summaries = readShardSummaries(options.outputDir, fingerprint);
+    if (!summaries) return Error{summaries.error()};
+    shardSummaries = std::move(*summaries);
+    shardLevel = shardSummaries.front().level;
+  }
+  const std::vector<size_t> used =
+      sourcesOfRole(options, plan, allSources, partition ? &*partition : nullptr, shardLevel);
+  std::vector<formats::SourceInfo> sourceInfos;
+  for (const TilerSource& s : allSources) sourceInfos.push_back(s.info());
+  std::vector<TilerSource> sources;
+  for (size_t i : used) {
+    sources.push_back(std::move(allSources[i]));
+    report.sourceBytes +=
+        static_cast<uint64_t>(sources.back().grid.cols * sources.back().grid.rows * 2);
+  }
+  report.sourcesConditioned = sources.size();
+
   const unsigned threads =
       options.threads != 0 ? options.threads : std::max(1U, std::thread::hardware_concurrency());
   ConditioningOptions conditioningOptions;
@@ -230,25 +278,70 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
                                 ": every sample is no data, its water code: tiled as sea");
     }
   }
+  // Each source's conditioning by its index among all, from this run or (merge) a shard.
+  std::map<size_t, formats::SourceConditioning> conditioningOf;
+  for (size_t i = 0; i < used.size(); ++i) conditioningOf[used[i]] = (*conditioning)[i];
+  std::map<formats::PackId, PackSummary> shardPacks;
+  for (const ShardSummary& shard : shardSummaries) {
+    for (const auto& [source, c] : shard.conditioning) conditioningOf.emplace(source, c);
+    for (const auto& [id, summary] : shard.packs) shardPacks.emplace(id, summary);
+  }
 
+  // Which packs of a level this run builds.
+  auto packsToBuild = [&](uint32_t level) {
+    std::vector<formats::PackId> packs;
+    if (options.role == TilerRole::Whole) return plan.packs(level);
+    if (options.role == TilerRole::Merge) {
+      return level < shardLevel ? plan.packs(level) : packs;
+    }
+    if (level < shardLevel) return packs;
+    const auto& units = partition->units[options.shardIndex];
+    for (const formats::PackId& pack : plan.packs(level)) {
+      if (std::binary_search(units.begin(), units.end(), packAncestor(pack, shardLevel))) {
+        packs.push_back(pack);
+      }
+    }
+    return packs;
+  };
   uint64_t totalTiles = 0;
-  for (uint32_t level = 0; level <= plan.maxLevel(); ++level) totalTiles += plan.tileCount(level);
+  for (uint32_t level = 0; level <= plan.maxLevel(); ++level) {
+    for (const formats::PackId& pack : packsToBuild(level)) {
+      totalTiles += plan.tilesInPack(pack).size();
+    }
+  }
   const formats::PackLayout layout{options.packTilesPerSide, options.verticesPerSide};
-  const PackJob job{options, layout, plan, sources};
+  PackJob job{options, layout, plan, sources, nullptr};
+  if (options.role == TilerRole::Merge) {
+    const std::vector<formats::PackId>& units = plan.packs(shardLevel);
+    job.precomputed = [&options, &units, shardLevel](
+                          const formats::PackId& id,
+                          SampleTable& table) -> Result<PrecomputedSamples> {
+      if (auto read = readSampleFragments(options.outputDir, id,
+                                          positionsPerTile(options.verticesPerSide), table);
+          !read) {
+        return Error{read.error()};
+      }
+      PrecomputedSamples heights;
+      heights.table = &table;
+      heights.mustHold = [&options, &units, shardLevel](const SamplePosition& p) {
+        return std::binary_search(units.begin(), units.end(),
+                                  packHolding(p.longitudeDegrees, p.latitudeDegrees, shardLevel,
+                                              options.packTilesPerSide));
+      };
+      return heights;
+    };
+  }
 
   formats::PyramidManifest manifest;
   manifest.verticesPerSide = options.verticesPerSide;
   manifest.packTilesPerSide = options.packTilesPerSide;
   manifest.globeModel = options.globeModel;
   manifest.levels.resize(plan.maxLevel() + 1);
-  for (size_t i = 0; i < sources.size(); ++i) {
-    manifest.sources.push_back(sources[i].info());
-    manifest.sources.back().conditioning = (*conditioning)[i];
-  }
 
   std::atomic<uint64_t> tilesDone{0};
+  std::vector<std::pair<formats::PackId, PackSummary>> builtSummaries;
   for (uint32_t level = plan.maxLevel() + 1; level-- > 0;) {
-    const std::vector<formats::PackId>& packs = plan.packs(level);
+    const std::vector<formats::PackId> packs = packsToBuild(level);
     std::vector<PackSummary> summaries(packs.size());
     std::atomic<size_t> next{0};
     std::atomic<bool> failed{false};
@@ -290,10 +383,22 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
                  plan.maxLevel());
     for (std::thread& worker : workers) worker.join();
     if (failed) return makeError(firstError);
+    for (size_t i = 0; i < packs.size(); ++i) builtSummaries.emplace_back(packs[i], summaries[i]);
+    if (options.role == TilerRole::Merge && level >= shardLevel) {
+      // The shards built these: their summaries stand for the packs.
+      for (const formats::PackId& id : plan.packs(level)) {
+        const auto found = shardPacks.find(id);
+        if (found == shardPacks.end()) {
+          return makeError("pack " + std::to_string(id.level) + "/" + std::to_string(id.x) + "/" +
+                           std::to_string(id.y) + ": no shard built it");
+        }
+        summaries.push_back(found->second);
+      }
+    }
 
     formats::LevelInfo& info = manifest.levels[level];
     info.level = level;
-    info.packs = packs;
+    info.packs = plan.packs(level);
     info.packIndexBytes.clear();
     for (const PackSummary& s : summaries) info.packIndexBytes.push_back(s.indexBytes);
     if (std::find(info.packIndexBytes.begin(), info.packIndexBytes.end(), 0u) !=
@@ -309,13 +414,52 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
           std::max(info.bounds.east, s.bounds.east), std::max(info.bounds.north, s.bounds.north)};
       info.heightRange.include(s.range);
     }
-    report.tiles += info.tileCount;
+    report.tiles +=
+        options.role == TilerRole::Whole || level < shardLevel || options.role == TilerRole::Shard
+            ? std::accumulate(summaries.begin(), summaries.end(), uint64_t{0},
+                              [](uint64_t t, const PackSummary& s) { return t + s.tiles; })
+            : 0;
   }
   if (options.progress) options.progress({tilesDone, totalTiles, "done", true});
+
+  if (options.role == TilerRole::Shard) {
+    auto samples = writeShardSamples(options.outputDir, plan, partition->units[options.shardIndex],
+                                     options.shardIndex, sources, options.verticesPerSide,
+                                     options.packTilesPerSide);
+    if (!samples) return Error{samples.error()};
+    report.fragments = samples->fragments;
+    ShardSummary summary{options.shardIndex, options.shardCount,        shardLevel,
+                         fingerprint,        std::move(builtSummaries), {}};
+    for (const auto& [source, c] : conditioningOf) summary.conditioning.emplace_back(source, c);
+    // Written last: it says the shard is complete.
+    if (auto written = writeShardSummary(options.outputDir, summary); !written) {
+      return Error{written.error()};
+    }
+    report.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return report;
+  }
+
+  for (size_t i = 0; i < sourceInfos.size(); ++i) {
+    const auto found = conditioningOf.find(i);
+    if (found == conditioningOf.end()) {
+      return makeError(sourceInfos[i].path + ": no shard conditioned it (a shard's summary lost?)");
+    }
+    manifest.sources.push_back(sourceInfos[i]);
+    manifest.sources.back().conditioning = found->second;
+  }
   if (auto written = transport::writeFileAtomically(options.outputDir / formats::kManifestFileName,
                                                     formats::manifestToJson(manifest));
       !written) {
     return writeFailed(written.error());
+  }
+  if (options.role == TilerRole::Merge) {
+    std::error_code error;
+    fs::remove_all(shardFolder(options.outputDir), error);
+    if (error) {
+      return makeError(shardFolder(options.outputDir).string() +
+                       ": cannot remove: " + error.message());
+    }
   }
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;

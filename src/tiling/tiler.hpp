@@ -15,6 +15,11 @@
 
 namespace globe::tiling {
 
+// The whole pyramid on one machine; one shard of it (tiling/shard_plan.hpp: the packs at and
+// below the shard's units, and the heights inside them the merge needs); or the merge after every
+// shard (the levels above the shard level and the manifest): byte-identical to the whole run.
+enum class TilerRole { Whole, Shard, Merge };
+
 struct TilerOptions {
   std::vector<std::string> inputs;
   std::filesystem::path outputDir;
@@ -26,6 +31,9 @@ struct TilerOptions {
   ProgressSink progress;                 // how far the run is; empty: not reported
   formats::VerticalOverride vertical{};  // --z-units / --z-scale: replace every input's own unit
   bool noDataIsSea = false;              // --no-data-is-sea: every input's no data is water
+  TilerRole role = TilerRole::Whole;
+  uint32_t shardIndex = 0, shardCount = 1;  // TilerRole::Shard
+  std::optional<uint32_t> shardLevel;       // TilerRole::Shard (default: defaultShardLevel)
 };
 
 struct TilerReport {
@@ -34,6 +42,8 @@ struct TilerReport {
   uint64_t packsReused = 0;  // complete packs found from an earlier, interrupted run
   uint64_t sourceBytes = 0;
   uint64_t sampledVertices = 0;
+  uint64_t sourcesConditioned = 0;  // a shard or the merge conditions only the sources it reads
+  uint64_t fragments = 0;           // a shard's height fragments for the merge
   double seconds = 0;
   std::vector<std::string> warnings;  // one line each, naming the input
 };
