@@ -15,6 +15,8 @@ cmake --build "$BUILD" -j"$(nproc)"
 # Chromium, node and npm (apt, where missing) and tools/web's pinned npm packages: the web
 # clients (CesiumJS, MapLibre) that tests/web shows the exports in.
 bash tools/web/install.sh
+# Slurm, munge, GNU parallel and python3-yaml (apt, where missing): what tests/cluster runs.
+bash tools/cluster/install.sh
 # CTest starts the longest tests first when it knows their times; a new build directory does not,
 # so it gets the committed ones (without them the long tests may start last and the suite waits).
 COSTS=$BUILD/Testing/Temporary/CTestCostData.txt

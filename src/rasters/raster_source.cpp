@@ -126,6 +126,8 @@ Result<void> ColumnMappedSource::readRow(int64_t row, int64_t firstColumn, int64
 Result<std::unique_ptr<RasterSource>> openRasterSource(const std::filesystem::path& path,
                                                        const RasterOpenOptions& options) {
   std::error_code ec;
+  // GDAL's virtual file systems (/vsicurl/ for HTTP range reads, /vsis3/, /vsizip/, ...): GDAL's.
+  if (path.string().starts_with("/vsi")) return openGdalSource(path, options);
   // A directory: e.g. an Arc/Info grid.
   if (std::filesystem::is_directory(path, ec)) return openGdalSource(path, options);
   const std::string ext = core::asciiLower(path.extension().string());
