@@ -108,7 +108,7 @@ int runTileCommand(int argc, char** argv, TileCommandKind kind) {
   if (kind != TileCommandKind::Merge) {
     shardLevelOption =
         app.add_option("--shard-level", shardLevel,
-                       "level whose packs are cut into shards (default: two above the deepest)");
+                       "level whose packs are cut into shards (default: three above the deepest)");
   }
   if (kind == TileCommandKind::Plan) {
     app.add_option("--shards", shardCount, "how many shards")->required();

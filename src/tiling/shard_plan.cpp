@@ -103,7 +103,7 @@ Result<ShardSpec> parseShardSpec(const std::string& text) {
   return spec;
 }
 
-uint32_t defaultShardLevel(uint32_t maxLevel) { return maxLevel >= 2 ? maxLevel - 2 : 0; }
+uint32_t defaultShardLevel(uint32_t maxLevel) { return maxLevel >= 3 ? maxLevel - 3 : 0; }
 
 formats::BoundsDegrees packBoundsDegrees(const formats::PackId& pack, uint32_t packTilesPerSide) {
   const double degrees = tileDegrees(pack.level) * packTilesPerSide;
@@ -172,6 +172,7 @@ ShardPartition partitionShards(const TilingPlan& plan, uint32_t shardLevel, uint
         std::min<uint32_t>(shardCount - 1, static_cast<uint32_t>(std::floor(middle * shardCount)));
     partition.units[shard].push_back(packs[i]);
     partition.sourceSamples[shard] += weight[i] - 1.0;
+    partition.heaviestUnitSamples = std::max(partition.heaviestUnitSamples, weight[i] - 1.0);
     before += weight[i];
   }
   for (auto& units : partition.units) std::sort(units.begin(), units.end());

@@ -24,8 +24,9 @@ struct ShardSpec {
 // "K/N" with 0 <= K < N.
 Result<ShardSpec> parseShardSpec(const std::string& text);
 
-// Two levels above the deepest: the merge then builds about 1/48 of the tiles of a pyramid of
-// one resolution, and each unit is 4^2 packs of the deepest level.
+// Three levels above the deepest: the merge then builds about 1/192 of the tiles of a pyramid of
+// one resolution (and reads the shard level's packs, 1/64), and each unit is 8^2 packs of the
+// deepest level (for 30 m data over the world's land, about 10,000 units of 64x64-tile packs).
 uint32_t defaultShardLevel(uint32_t maxLevel);
 
 // A pack's rectangle, clipped to the globe.
@@ -43,6 +44,7 @@ struct ShardPartition {
   uint32_t level = 0;
   std::vector<std::vector<formats::PackId>> units;  // per shard, sorted
   std::vector<double> sourceSamples;  // per shard: the source samples inside its units
+  double heaviestUnitSamples = 0;     // no shard exceeds total / N by more than this
 };
 
 ShardPartition partitionShards(const TilingPlan& plan, uint32_t shardLevel, uint32_t shardCount,

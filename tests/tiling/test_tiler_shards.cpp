@@ -293,8 +293,10 @@ TEST(ShardPlan, PartitionIsCompleteDisjointAndBalanced) {
     }
     std::sort(all.begin(), all.end());
     EXPECT_EQ(all, plan.packs(level)) << count << " shards: every unit once";
-    if (count <= 7) {
-      EXPECT_LT(heaviest, 1.5 * total / count) << count << " shards";
+    // Contiguous runs cut where a unit's middle crosses k/N of the total.
+    EXPECT_LE(heaviest, total / count + partition.heaviestUnitSamples + count) << count;
+    if (count == 3) {
+      EXPECT_LT(heaviest, 1.5 * total / count);
     }
   }
 }
