@@ -150,6 +150,16 @@ Pack Pack::empty(const PackId& id, const PackLayout& layout) {
   return pack;
 }
 
+Pack Pack::unset(const PackId& id, const PackLayout& layout) {
+  Pack pack{id, layout, {}, {}, {}};
+  pack.entries.resize(layout.slotCount());
+  pack.heights.resize(layout.slotCount() * layout.verticesPerSide * layout.verticesPerSide);
+  if (layout.hasApron()) {
+    pack.aprons.resize(layout.slotCount() * terrain::apronSampleCount(layout.verticesPerSide));
+  }
+  return pack;
+}
+
 std::span<int16_t> Pack::block(size_t slot) {
   const size_t n = size_t{layout.verticesPerSide} * layout.verticesPerSide;
   return {heights.data() + slot * n, n};
@@ -425,7 +435,7 @@ Result<Pack> decodePack(std::span<const std::byte> bytes, const std::filesystem:
   if (core::crc32(bytes.first(body)) != core::loadBigEndian32(&bytes[body])) {
     return packError(path, "CRC mismatch (corrupt pack)");
   }
-  Pack pack = Pack::empty(index->id, index->layout);
+  Pack pack = Pack::unset(index->id, index->layout);  // every present slot is decoded whole
   pack.entries = std::move(index->entries);
   for (size_t slot = 0; slot < pack.layout.slotCount(); ++slot) {
     const PackEntry& entry = pack.entries[slot];

@@ -89,7 +89,7 @@ Result<formats::Pack> buildPack(const formats::PackId& id, const formats::PackLa
                                 const geo::Ellipsoid& ellipsoid, PackBuildStats& stats,
                                 const PrecomputedSamples& precomputed) {
   const uint32_t n = layout.verticesPerSide;
-  formats::Pack pack = formats::Pack::empty(id, layout);
+  formats::Pack pack = formats::Pack::unset(id, layout);  // every present tile is set whole
   const std::vector<geo::TileId> tiles = plan.tilesInPack(id);
 
   // One strip per row of tiles: the samplers cache the source rows the strip needs.
