@@ -103,6 +103,25 @@ Result<ShardSpec> parseShardSpec(const std::string& text) {
   return spec;
 }
 
+TilingPlan planOfSources(const std::vector<TilerSource>& sources, uint32_t packTilesPerSide) {
+  std::vector<formats::BoundsDegrees> extents;
+  std::vector<uint32_t> finestLevels;
+  for (const TilerSource& s : sources) {
+    extents.push_back(s.extent);
+    finestLevels.push_back(s.finestLevel);
+  }
+  return TilingPlan(extents, finestLevels, packTilesPerSide);
+}
+
+Result<uint32_t> chooseShardLevel(std::optional<uint32_t> requested, uint32_t maxLevel) {
+  const uint32_t level = requested.value_or(defaultShardLevel(maxLevel));
+  if (level > maxLevel) {
+    return makeError("--shard-level " + std::to_string(level) + " is below the deepest level (" +
+                     std::to_string(maxLevel) + ")");
+  }
+  return level;
+}
+
 uint32_t defaultShardLevel(uint32_t maxLevel) { return maxLevel >= 3 ? maxLevel - 3 : 0; }
 
 formats::BoundsDegrees packBoundsDegrees(const formats::PackId& pack, uint32_t packTilesPerSide) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,12 @@ uint32_t defaultShardLevel(uint32_t maxLevel);
 
 // A pack's rectangle, clipped to the globe.
 formats::BoundsDegrees packBoundsDegrees(const formats::PackId& pack, uint32_t packTilesPerSide);
+
+// The plan of the sources (their extents and finest levels), as every run and shard makes it.
+TilingPlan planOfSources(const std::vector<TilerSource>& sources, uint32_t packTilesPerSide);
+
+// The shard level: the one asked for, or defaultShardLevel; an error past the deepest level.
+Result<uint32_t> chooseShardLevel(std::optional<uint32_t> requested, uint32_t maxLevel);
 
 // The pack of `level` whose tiles hold the point: tiles are closed on their north and west
 // edges, the east edge of the last column and the south pole included; longitude wraps.

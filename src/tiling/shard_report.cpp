@@ -14,20 +14,12 @@ Result<ShardPlanReport> planShards(const TilerOptions& options) {
                                              options.vertical, options.noDataIsSea});
   if (!opened) return Error{opened.error()};
   const std::vector<TilerSource>& sources = *opened;
-  std::vector<formats::BoundsDegrees> extents;
-  std::vector<uint32_t> finestLevels;
-  for (const TilerSource& s : sources) {
-    extents.push_back(s.extent);
-    finestLevels.push_back(s.finestLevel);
-  }
-  const TilingPlan plan(extents, finestLevels, options.packTilesPerSide);
+  const TilingPlan plan = planOfSources(sources, options.packTilesPerSide);
+  auto level = chooseShardLevel(options.shardLevel, plan.maxLevel());
+  if (!level) return Error{level.error()};
   ShardPlanReport report;
   report.maxLevel = plan.maxLevel();
-  report.shardLevel = options.shardLevel.value_or(defaultShardLevel(plan.maxLevel()));
-  if (report.shardLevel > plan.maxLevel()) {
-    return makeError("--shard-level " + std::to_string(report.shardLevel) +
-                     " is below the deepest level (" + std::to_string(plan.maxLevel()) + ")");
-  }
+  report.shardLevel = *level;
   const ShardPartition partition = partitionShards(plan, report.shardLevel, options.shardCount,
                                                    sources, options.packTilesPerSide);
   auto bytesOf = [&](const std::vector<size_t>& used) {

@@ -221,13 +221,7 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
                                 "): --z-units / --z-scale apply to inputs that state none");
     }
   }
-  std::vector<formats::BoundsDegrees> extents;
-  std::vector<uint32_t> finestLevels;
-  for (const TilerSource& s : allSources) {
-    extents.push_back(s.extent);
-    finestLevels.push_back(s.finestLevel);
-  }
-  const TilingPlan plan(extents, finestLevels, options.packTilesPerSide);
+  const TilingPlan plan = planOfSources(allSources, options.packTilesPerSide);
   const std::string fingerprint = planFingerprint(options, allSources);
   if (auto prepared = prepareOutput(options, fingerprint); !prepared) {
     return Error{prepared.error()};
@@ -238,11 +232,9 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
   std::optional<ShardPartition> partition;
   std::vector<ShardSummary> shardSummaries;
   if (options.role == TilerRole::Shard) {
-    shardLevel = options.shardLevel.value_or(defaultShardLevel(plan.maxLevel()));
-    if (shardLevel > plan.maxLevel()) {
-      return makeError("--shard-level " + std::to_string(shardLevel) +
-                       " is below the deepest level (" + std::to_string(plan.maxLevel()) + ")");
-    }
+    auto level = chooseShardLevel(options.shardLevel, plan.maxLevel());
+    if (!level) return Error{level.error()};
+    shardLevel = *level;
     partition =
         partitionShards(plan, shardLevel, options.shardCount, allSources, options.packTilesPerSide);
   } else if (options.role == TilerRole::Merge) {

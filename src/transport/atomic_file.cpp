@@ -38,6 +38,21 @@ class Fd {
 
 std::atomic<uint64_t> tempCounter{0};
 
+// Names the writer among machines sharing a file system: every pod of a Kubernetes Job may run
+// the tiler as the same pid, and two shards may both write tiling-plan.json at once.
+const std::string& hostTag() {
+  static const std::string tag = [] {
+    char name[256] = {};
+    if (::gethostname(name, sizeof name - 1) != 0) return std::string("host");
+    std::string text(name);
+    for (char& c : text) {
+      if (c == '/' || c == '.') c = '_';
+    }
+    return text.empty() ? std::string("host") : text;
+  }();
+  return tag;
+}
+
 }  // namespace
 
 void removeAtomicTemporaries(const std::filesystem::path& dir) {
@@ -54,8 +69,9 @@ void removeAtomicTemporaries(const std::filesystem::path& dir) {
 
 Result<void> writeFileAtomically(const std::filesystem::path& path,
                                  std::span<const std::byte> bytes) {
-  const std::filesystem::path temp =
-      path.string() + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(++tempCounter);
+  const std::filesystem::path temp = path.string() + ".tmp-" + hostTag() + "-" +
+                                     std::to_string(::getpid()) + "-" +
+                                     std::to_string(++tempCounter);
   Fd fd(::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644));
   if (fd.get() < 0) return ioError(temp, "cannot create", errno);
 

@@ -12,8 +12,8 @@
 
 namespace globe::transport {
 
-// Writes `path` + ".tmp-<pid>-<counter>", fsyncs it and renames it over `path`; on any failure the
-// temporary is removed and `path` is untouched.
+// Writes `path` + ".tmp-<host>-<pid>-<counter>", fsyncs it and renames it over `path`; on any
+// failure the temporary is removed and `path` is untouched.
 Result<void> writeFileAtomically(const std::filesystem::path& path,
                                  std::span<const std::byte> bytes);
 Result<void> writeFileAtomically(const std::filesystem::path& path, std::string_view text);

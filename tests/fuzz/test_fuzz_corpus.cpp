@@ -1,6 +1,9 @@
 // Replays every committed fuzz corpus file (tests/fuzz/corpus/<target>/) through its entry point.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <span>
+
 #include <bit>
 #include <cstring>
 #include <filesystem>
@@ -70,12 +73,15 @@ TEST(FuzzCorpus, PackSeedsDecodeAndTheVersion1SeedIsRefused) {
     const auto v6 = globe::formats::decodePack(read((stem + "-version6.pack").c_str()), stem);
     ASSERT_TRUE(v5.ok() && v6.ok()) << stem;
     EXPECT_EQ(v6->layout.formatVersion, 6U);
-    EXPECT_EQ(v5->heights, v6->heights) << stem;
-    EXPECT_EQ(v5->aprons, v6->aprons) << stem;
     ASSERT_EQ(v5->entries.size(), v6->entries.size());
     for (size_t slot = 0; slot < v5->entries.size(); ++slot) {
       ASSERT_EQ(v5->entries[slot].present(), v6->entries[slot].present());
-      if (!v5->entries[slot].present()) continue;
+      if (!v5->entries[slot].present()) continue;  // an absent slot's samples are never set
+      const auto same = [](std::span<const int16_t> a, std::span<const int16_t> b) {
+        return std::equal(a.begin(), a.end(), b.begin(), b.end());
+      };
+      EXPECT_TRUE(same(v5->block(slot), v6->block(slot))) << stem << " slot " << slot;
+      EXPECT_TRUE(same(v5->apron(slot), v6->apron(slot))) << stem << " slot " << slot;
       EXPECT_EQ(v5->entries[slot].subtreeRange.maximumMeters,
                 v6->entries[slot].subtreeRange.maximumMeters);
       EXPECT_EQ(std::bit_cast<uint32_t>(v5->entries[slot].geometricErrorMeters),

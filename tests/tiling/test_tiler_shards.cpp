@@ -77,11 +77,7 @@ const fs::path& wholePyramid() {
 size_t shardsOver(const formats::BoundsDegrees& r, uint32_t count) {
   auto sources = openSources(shardInputs(), {});
   EXPECT_TRUE(static_cast<bool>(sources));
-  std::vector<formats::BoundsDegrees> extents;
-  std::vector<uint32_t> levels;
-  for (const TilerSource& s : *sources)
-    extents.push_back(s.extent), levels.push_back(s.finestLevel);
-  const TilingPlan plan(extents, levels, 8);
+  const TilingPlan plan = planOfSources(*sources, 8);
   const ShardPartition partition =
       partitionShards(plan, defaultShardLevel(plan.maxLevel()), count, *sources, 8);
   std::set<uint32_t> shards;
@@ -276,11 +272,7 @@ TEST(TilerShards, PlanPrintsEveryShardAndTheMerge) {
 TEST(ShardPlan, PartitionIsCompleteDisjointAndBalanced) {
   auto sources = openSources(shardInputs(), {});
   ASSERT_TRUE(static_cast<bool>(sources));
-  std::vector<formats::BoundsDegrees> extents;
-  std::vector<uint32_t> levels;
-  for (const TilerSource& s : *sources)
-    extents.push_back(s.extent), levels.push_back(s.finestLevel);
-  const TilingPlan plan(extents, levels, 8);
+  const TilingPlan plan = planOfSources(*sources, 8);
   const uint32_t level = defaultShardLevel(plan.maxLevel());
   for (uint32_t count : {1U, 3U, 7U, 1000U}) {
     const ShardPartition partition = partitionShards(plan, level, count, *sources, 8);

@@ -56,6 +56,18 @@ CPU=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')
 
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.2f", a / b}'; }
 percent() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.1f", 100 * a / b}'; }
+RATE=$(awk -v t="$TILES" -v s="$WHOLE" 'BEGIN {printf "%.0f", t / s}')
+# GLO-30 arithmetic: 26,000 1° sources, level 16 deepest, shard level 13, 1,000 shards.
+GLO_TILES_PER_SOURCE=$(awk 'BEGIN {printf "%.0f", (65536 / 180) ^ 2}')
+GLO_TILES_RAW=$(awk -v p="$GLO_TILES_PER_SOURCE" 'BEGIN {printf "%.0f", 26000 * p * 4 / 3}')
+GLO_TILES=$(awk -v t="$GLO_TILES_RAW" 'BEGIN {printf "%.1f billion", t / 1e9}')
+GLO_UNITS=$(awk 'BEGIN {printf "%.0f", 26000 / (64 * 180 / 8192) ^ 2}')
+GLO_UNITS_PER_SHARD=$(awk -v u="$GLO_UNITS" 'BEGIN {printf "%.0f", u / 1000}')
+GLO_CORE_HOURS=$(awk -v t="$GLO_TILES_RAW" -v r="$RATE" 'BEGIN {printf "%.0f", t / r / 3600}')
+GLO_SHARD_MINUTES=$(awk -v t="$GLO_TILES_RAW" -v r="$RATE" 'BEGIN {printf "%.0f", t / 1000 / r / 60}')
+GLO_MERGE_MINUTES=$(awk -v t="$GLO_TILES_RAW" -v r="$RATE" -v m="$MERGE" -v w="$WHOLE" \
+  'BEGIN {printf "%.0f", t / r * m / w / 60}')
+GLO_OUTPUT_TB=$(awk -v t="$GLO_TILES_RAW" -v b="$PACK_BYTES" -v n="$TILES" 'BEGIN {printf "%.2f", t * b / n / 1e12}')
 TOTAL=$(awk -v a="$SHARDS_TOTAL" -v b="$MERGE" 'BEGIN {printf "%.3f", a + b}')
 cat >docs/performance/sharded-tiling.md <<DOC
 # Sharded tiling: shards + merge against one machine
@@ -86,6 +98,22 @@ same plan), conditions whole every source its units and their apron reach (a sou
 shard border is conditioned by each shard it crosses), and reads the heights of the coarser tiles
 that fall inside its units for the merge. The merge reads the shard-level packs and builds the
 levels above them.
+
+## Copernicus GLO-30 on paper, from these measurements
+
+GLO-30 is about 26,000 sources of 1°×1° at 1″ (30 m; 3600×3600 samples up to 50° of latitude,
+fewer columns nearer the poles). 1″ makes level 16 the deepest (vertex spacing 0.62″ with 17×17
+blocks), so one source holds (2^16/180)² = $GLO_TILES_PER_SOURCE tiles of level 16 and the pyramid, with
+the levels above (a third more), about $GLO_TILES tiles. The shard level is 13: a unit is a
+pack of 64×64 level-13 tiles, 1.41° square; the world's land (about 26,000 square degrees of
+sources) makes at least $GLO_UNITS units.
+
+| | from | GLO-30 |
+|---|---|---|
+| CPU | $GLO_TILES tiles at $RATE tiles/s a core (measured above, conditioning included) | $GLO_CORE_HOURS core-hours |
+| shards | 1,000 (about $GLO_UNITS_PER_SHARD units each) | $GLO_SHARD_MINUTES min each on one core, plus the shards' overhead ($(ratio "$SHARDS_TOTAL" "$WHOLE")× here) |
+| merge | 1/192 of the tiles, plus reading the level-13 packs | $GLO_MERGE_MINUTES min on one core (measured ratio $(percent "$MERGE" "$WHOLE") % × the whole) |
+| output | $(awk -v b="$PACK_BYTES" -v t="$TILES" 'BEGIN {printf "%.2f", b / t / 1024}') KiB a tile (measured above) | $GLO_OUTPUT_TB TB |
 
 The plan (\`globe-tiler plan --shards $SHARDS\`):
 
