@@ -11,7 +11,7 @@ int runTileCommand(int argc, char** argv, TileCommandKind kind = TileCommandKind
 
 // Measured tiling rate of one shard on one core (docs/performance/sharded-tiling.md), the
 // planning step's default.
-inline constexpr double kMeasuredTilesPerSecond = 2000;
+inline constexpr double kMeasuredTilesPerSecond = 10814;
 // globe-tiler export: a tile tree for other viewers (--format), or one block as a GTOPO30 file.
 int runExportCommand(int argc, char** argv);
 // globe-tiler export-imagery --format xyz|tms|pmtiles -o OUT LAYER: a layer for web maps.
