@@ -15,11 +15,11 @@ Result<ShardPlanReport> planShards(const TilerOptions& options) {
   if (!opened) return Error{opened.error()};
   const std::vector<TilerSource>& sources = *opened;
   const TilingPlan plan = planOfSources(sources, options.packTilesPerSide);
-  auto level = chooseShardLevel(options.shardLevel, plan.maxLevel());
-  if (!level) return Error{level.error()};
+  auto shardLevel = chooseShardLevel(options.shardLevel, plan.maxLevel());
+  if (!shardLevel) return Error{shardLevel.error()};
   ShardPlanReport report;
   report.maxLevel = plan.maxLevel();
-  report.shardLevel = *level;
+  report.shardLevel = *shardLevel;
   const ShardPartition partition = partitionShards(plan, report.shardLevel, options.shardCount,
                                                    sources, options.packTilesPerSide);
   auto bytesOf = [&](const std::vector<size_t>& used) {
