@@ -16,7 +16,8 @@ namespace globe::tiling {
 namespace {
 
 // Tiles of `level` whose positions may fall inside the units: those touching a unit widened by
-// the apron, and where a unit reaches a pole the whole polar row (its apron crosses the pole).
+// the apron, and where a unit lies within the apron's reach of a pole the whole polar row (its
+// apron crosses the pole onto the opposite meridians).
 std::set<geo::TileId> candidateTiles(const TilingPlan& plan,
                                      const std::vector<formats::PackId>& units, uint32_t level,
                                      uint32_t n, uint32_t packTiles) {
@@ -42,8 +43,10 @@ std::set<geo::TileId> candidateTiles(const TilingPlan& plan,
     if (b.east + reach >= 180.0) {
       for (uint32_t y = r.y0; y <= r.y1; ++y) add(0, y);
     }
-    for (uint32_t x = 0; x < nx && b.north >= 90.0; ++x) add(x, 0);
-    for (uint32_t x = 0; x < nx && b.south <= -90.0; ++x) add(x, ny - 1);
+    // The apron beyond a pole lands on the opposite meridians, up to the apron's reach from the
+    // pole: a coarse tile's reach spans many units, not only those at the pole.
+    for (uint32_t x = 0; x < nx && b.north + reach + 1e-9 >= 90.0; ++x) add(x, 0);
+    for (uint32_t x = 0; x < nx && b.south - reach - 1e-9 <= -90.0; ++x) add(x, ny - 1);
   }
   return tiles;
 }

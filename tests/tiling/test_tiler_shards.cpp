@@ -111,6 +111,35 @@ TEST(TilerShards, OneTwoFourAndSevenShardsGiveTheOneMachinePyramid) {
   }
 }
 
+// Small 3″ crops of the 20′ world (real relief, resampled by GDAL) where the geometry is hard: near
+// Svalbard, where the apron of the coarsest tiles crosses the pole onto this meridian from the
+// opposite one, and on both sides of the antimeridian over Fiji.
+TEST(TilerShards, ShardsNearThePoleAndAcrossTheAntimeridianGiveTheOneMachinePyramid) {
+  const fs::path root = globe::testing::freshTempDir("shards-polar");
+  std::string inputs = " " + dem("ETOPO20.DEM");
+  const std::vector<std::pair<std::string, std::string>> crops = {
+      {"svalbard", "16.8 78.8 16.95 78.7"},
+      {"fiji-east", "179.9 -16.75 180 -16.9"},
+      {"fiji-west", "-180 -16.75 -179.9 -16.9"}};
+  for (const auto& [name, window] : crops) {
+    const fs::path crop = root / (name + ".tif");
+    const auto made = runCommand("gdal_translate -q -of GTiff -ot Int16 -r bilinear -tr " +
+                                 std::string("0.000833333333333 0.000833333333333 -projwin ") +
+                                 window + " " + dem("ETOPO20.DEM") + " " + crop.string());
+    ASSERT_EQ(made.exitCode, 0) << made.output;
+    inputs += " " + crop.string();
+  }
+  const fs::path whole = root / "whole";
+  const auto run = runCommand(kTiler + kOptions + " -o " + whole.string() + inputs);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const auto reference = checksums(whole);
+  for (uint32_t count : {3U, 5U}) {
+    const fs::path out = root / ("sharded-" + std::to_string(count));
+    tileInShards(out, count, inputs);
+    EXPECT_EQ(checksums(out), reference) << count << " shards";
+  }
+}
+
 pid_t spawn(const std::vector<std::string>& arguments) {
   const pid_t pid = ::fork();
   if (pid == 0) {
