@@ -221,6 +221,11 @@ int runTileCommand(int argc, char** argv, TileCommandKind kind) {
         formatDuration(report->seconds).c_str());
     return 0;
   }
+  if (report->alreadyMerged) {
+    std::printf("%s: already merged (its manifest is written and no shard is left)\n",
+                output.c_str());
+    return 0;
+  }
   if (options.role == tiling::TilerRole::Merge) {
     std::printf(
         "%s: merged: %llu tiles above the shard level (%llu packs), %llu sources read, in "

@@ -238,6 +238,13 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
     partition =
         partitionShards(plan, shardLevel, options.shardCount, allSources, options.packTilesPerSide);
   } else if (options.role == TilerRole::Merge) {
+    std::error_code error;
+    if (!fs::exists(shardFolder(options.outputDir), error) &&
+        fs::exists(options.outputDir / formats::kManifestFileName, error)) {
+      // A merge run again (a requeued job): it finished, and removed what the shards left.
+      report.alreadyMerged = true;
+      return report;
+    }
     auto summaries = readShardSummaries(options.outputDir, fingerprint);
     if (!summaries) return Error{summaries.error()};
     shardSummaries = std::move(*summaries);

@@ -44,6 +44,7 @@ struct TilerReport {
   uint64_t sampledVertices = 0;
   uint64_t sourcesConditioned = 0;  // a shard or the merge conditions only the sources it reads
   uint64_t fragments = 0;           // a shard's height fragments for the merge
+  bool alreadyMerged = false;       // a merge found its work done (manifest, no shards left)
   double seconds = 0;
   std::vector<std::string> warnings;  // one line each, naming the input
 };

@@ -207,6 +207,12 @@ TEST(TilerShards, AKilledShardRerunAndTheMergeGiveTheOneMachinePyramid) {
   EXPECT_NE(rerun.output.find("reused"), std::string::npos) << rerun.output;
   tileInShards(out, 3, joined(inputs));  // shard 1 again: idempotent, every pack reused
   EXPECT_EQ(checksums(out), reference);
+  // A merge run again (a requeued job) finds its work done and changes nothing.
+  const auto again =
+      runCommand(kTiler + " merge" + kOptions + " -o " + out.string() + joined(inputs));
+  EXPECT_EQ(again.exitCode, 0) << again.output;
+  EXPECT_NE(again.output.find("already merged"), std::string::npos) << again.output;
+  EXPECT_EQ(checksums(out), reference);
 }
 
 TEST(TilerShards, ShardsReadInputsFromNginxByVsicurl) {
