@@ -29,14 +29,18 @@ bash "$src/tools/cluster/parallel/run.sh" "$tmp/local" "$inputs" 4 "${opts[@]}"
 diff -r "$tmp/single" "$tmp/local" || { echo "FAIL: the local sharded pyramid differs"; exit 1; }
 
 # Two logins: ":" (this machine, no ssh) and a host reached through a stand-in for ssh, which
-# does what sshd does with GNU parallel's command (drop the host and "--", run the rest in a
-# shell in the home directory), so the shards it gets go through the remote code path: the
-# quoting of the command line and paths that must not depend on the current directory.
+# does what sshd does with GNU parallel's command (drop the host and "--", set SHELL to the
+# login shell, run the rest in a shell in the home directory), so the shards it gets go through
+# the remote code path: the quoting of the command line and paths that must not depend on the
+# current directory. GNU parallel's remote worker runs the job with $SHELL and, without one,
+# reports success having run nothing (CI runs with no SHELL; sshd always sets it).
 cat >"$tmp/ssh" <<'SSH'
 #!/bin/sh
 echo "$1" >>"$HOME/ssh.log"
 shift
 [ "$1" = -- ] && shift
+SHELL=$(getent passwd "$(id -u)" | cut -d: -f7)
+export SHELL=${SHELL:-/bin/sh}
 cd "$HOME" && exec sh -c "$*"
 SSH
 chmod +x "$tmp/ssh"
