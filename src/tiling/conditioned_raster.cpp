@@ -12,16 +12,17 @@ namespace globe::tiling {
 namespace {
 
 // The checks and column wrapping readRow promises, over a row reader of whole source columns.
+// Keeps the original's path, format and grid, not the original itself.
 class ConditionedRaster : public rasters::RasterSource {
  public:
-  explicit ConditionedRaster(std::unique_ptr<rasters::RasterSource> original)
-      : original_(std::move(original)) {}
-  const std::string& path() const override { return original_->path(); }
-  std::string_view formatName() const override { return original_->formatName(); }
-  const rasters::SampleGrid& grid() const override { return original_->grid(); }
+  explicit ConditionedRaster(const rasters::RasterSource& original)
+      : path_(original.path()), format_(original.formatName()), grid_(original.grid()) {}
+  const std::string& path() const override { return path_; }
+  std::string_view formatName() const override { return format_; }
+  const rasters::SampleGrid& grid() const override { return grid_; }
   Result<void> readRow(int64_t row, int64_t firstColumn, int64_t count,
                        int16_t* out) const override {
-    const rasters::SampleGrid& g = original_->grid();
+    const rasters::SampleGrid& g = grid_;
     if (row < 0 || row >= g.rows || count < 0 ||
         (!g.wrapsLongitude && (firstColumn < 0 || firstColumn + count > g.cols))) {
       return makeError(path() + ": row " + std::to_string(row) + " columns " +
@@ -45,14 +46,16 @@ class ConditionedRaster : public rasters::RasterSource {
                                    int16_t* out) const = 0;
 
  private:
-  std::unique_ptr<rasters::RasterSource> original_;
+  std::string path_;
+  std::string format_;
+  rasters::SampleGrid grid_;
 };
 
 class MemoryRaster final : public ConditionedRaster {
  public:
-  MemoryRaster(std::unique_ptr<rasters::RasterSource> original,
+  MemoryRaster(const rasters::RasterSource& original,
                std::shared_ptr<const conditioning::DemGrid> grid)
-      : ConditionedRaster(std::move(original)), grid_(std::move(grid)) {}
+      : ConditionedRaster(original), grid_(std::move(grid)) {}
 
  private:
   Result<void> readColumns(int64_t row, int64_t column, int64_t count,
@@ -66,30 +69,18 @@ class MemoryRaster final : public ConditionedRaster {
 
 class SpilledRaster final : public ConditionedRaster {
  public:
-  SpilledRaster(std::unique_ptr<rasters::RasterSource> original, int fd, int64_t cols)
-      : ConditionedRaster(std::move(original)), fd_(fd), cols_(cols) {}
-  ~SpilledRaster() override { ::close(fd_); }
-  SpilledRaster(const SpilledRaster&) = delete;
-  SpilledRaster& operator=(const SpilledRaster&) = delete;
+  SpilledRaster(const rasters::RasterSource& original, std::shared_ptr<SpillFile> file,
+                uint64_t offset, int64_t cols)
+      : ConditionedRaster(original), file_(std::move(file)), offset_(offset), cols_(cols) {}
 
  private:
   Result<void> readColumns(int64_t row, int64_t column, int64_t count,
                            int16_t* out) const override {
-    auto* bytes = reinterpret_cast<char*>(out);
-    size_t left = static_cast<size_t>(count) * sizeof(int16_t);
-    auto offset = static_cast<off_t>((row * cols_ + column) * 2);
-    while (left > 0) {
-      const ssize_t got = ::pread(fd_, bytes, left, offset);
-      if (got < 0 && errno == EINTR) continue;
-      if (got <= 0) {
-        return makeError(path() + ": reading its conditioned copy back failed: " +
-                         (got < 0 ? std::strerror(errno) : "unexpected end of file"));
-      }
-      bytes += got, left -= static_cast<size_t>(got), offset += got;
-    }
-    return {};
+    const auto at = offset_ + static_cast<uint64_t>(row * cols_ + column) * sizeof(int16_t);
+    return file_->read(at, out, static_cast<size_t>(count) * sizeof(int16_t), path());
   }
-  int fd_;
+  std::shared_ptr<SpillFile> file_;
+  uint64_t offset_;
   int64_t cols_;
 };
 
@@ -102,10 +93,9 @@ Result<int> openUnlinked(const std::filesystem::path& directory) {
   buffer.push_back('\0');
   fd = ::mkstemp(buffer.data());
   if (fd < 0) {
-    return makeError(directory.string() +
-                     ": cannot create a temporary file for a conditioned "
-                     "source: " +
-                     std::strerror(errno));
+    return makeError(
+        directory.string() +
+        ": cannot create a temporary file for conditioned sources: " + std::strerror(errno));
   }
   ::unlink(buffer.data());
   return fd;
@@ -113,32 +103,62 @@ Result<int> openUnlinked(const std::filesystem::path& directory) {
 
 }  // namespace
 
+Result<std::shared_ptr<SpillFile>> SpillFile::create(const std::filesystem::path& directory) {
+  auto fd = openUnlinked(directory);
+  if (!fd) return Error{fd.error()};
+  return std::shared_ptr<SpillFile>(new SpillFile(*fd, directory));
+}
+
+SpillFile::~SpillFile() { ::close(fd_); }
+
+Result<uint64_t> SpillFile::append(const void* data, size_t bytes, const std::string& what) {
+  uint64_t offset = 0;
+  {
+    std::lock_guard lock(mutex_);
+    offset = end_;
+    end_ += bytes;
+  }
+  const auto* from = static_cast<const char*>(data);
+  for (size_t left = bytes, at = 0; left > 0;) {
+    const ssize_t written = ::pwrite(fd_, from + at, left, static_cast<off_t>(offset + at));
+    if (written < 0 && errno == EINTR) continue;
+    if (written <= 0) {
+      return makeError(directory_.string() + ": cannot write the conditioned copy of " + what +
+                       ": " + (written < 0 ? std::strerror(errno) : "no progress"));
+    }
+    at += static_cast<size_t>(written), left -= static_cast<size_t>(written);
+  }
+  return offset;
+}
+
+Result<void> SpillFile::read(uint64_t offset, void* out, size_t bytes,
+                             const std::string& what) const {
+  auto* to = static_cast<char*>(out);
+  for (size_t left = bytes, at = 0; left > 0;) {
+    const ssize_t got = ::pread(fd_, to + at, left, static_cast<off_t>(offset + at));
+    if (got < 0 && errno == EINTR) continue;
+    if (got <= 0) {
+      return makeError(what + ": reading its conditioned copy back failed: " +
+                       (got < 0 ? std::strerror(errno) : "unexpected end of file"));
+    }
+    at += static_cast<size_t>(got), left -= static_cast<size_t>(got);
+  }
+  return {};
+}
+
 std::unique_ptr<rasters::RasterSource> makeMemoryRaster(
-    std::unique_ptr<rasters::RasterSource> original,
-    std::shared_ptr<const conditioning::DemGrid> grid) {
-  return std::make_unique<MemoryRaster>(std::move(original), std::move(grid));
+    const rasters::RasterSource& original, std::shared_ptr<const conditioning::DemGrid> grid) {
+  return std::make_unique<MemoryRaster>(original, std::move(grid));
 }
 
 Result<std::unique_ptr<rasters::RasterSource>> makeSpilledRaster(
-    std::unique_ptr<rasters::RasterSource> original, const conditioning::DemGrid& grid,
-    const std::filesystem::path& directory) {
-  auto fd = openUnlinked(directory);
-  if (!fd) return Error{fd.error()};
-  const auto* bytes = reinterpret_cast<const char*>(grid.samples.data());
-  size_t left = grid.samples.size() * sizeof(int16_t);
-  while (left > 0) {
-    const ssize_t written = ::write(*fd, bytes, left);
-    if (written < 0 && errno == EINTR) continue;
-    if (written <= 0) {
-      const std::string reason = written < 0 ? std::strerror(errno) : "no progress";
-      ::close(*fd);
-      return makeError(directory.string() + ": cannot write the conditioned copy of " +
-                       original->path() + ": " + reason);
-    }
-    bytes += written, left -= static_cast<size_t>(written);
-  }
+    const rasters::RasterSource& original, const conditioning::DemGrid& grid,
+    std::shared_ptr<SpillFile> file) {
+  auto offset =
+      file->append(grid.samples.data(), grid.samples.size() * sizeof(int16_t), original.path());
+  if (!offset) return Error{offset.error()};
   return std::unique_ptr<rasters::RasterSource>(
-      std::make_unique<SpilledRaster>(std::move(original), *fd, grid.cols));
+      std::make_unique<SpilledRaster>(original, std::move(file), *offset, grid.cols));
 }
 
 }  // namespace globe::tiling

@@ -63,29 +63,40 @@ Result<std::vector<formats::SourceConditioning>> conditionSources(
   // From here on a conditioned source is read like the original: in memory within the budget
   // (and always when a finer source still needs it), otherwise from a spilled copy, decided as
   // soon as it is conditioned so that a group of many inputs never sits in memory at once.
+  // Every spilled source goes to one file, made when the first one spills.
   uint64_t bytesInMemory = 0;
+  std::shared_ptr<SpillFile> spillFile;
   std::mutex budgetMutex;
   auto keepOrSpill = [&](size_t i) -> Result<void> {
     const uint64_t bytes = grids[i]->samples.size() * sizeof(int16_t);
-    bool spill = false;
+    std::shared_ptr<SpillFile> spillTo;
     if (!neededAsCoarser[i] && !options.spillDirectory.empty()) {
       std::lock_guard lock(budgetMutex);
-      spill = bytesInMemory + bytes > options.memoryBudgetBytes;
-      if (!spill) bytesInMemory += bytes;
+      if (bytesInMemory + bytes <= options.memoryBudgetBytes) {
+        bytesInMemory += bytes;
+      } else {
+        if (!spillFile) {
+          auto created = SpillFile::create(options.spillDirectory);
+          if (!created) return Error{created.error()};
+          spillFile = std::move(*created);
+        }
+        spillTo = spillFile;
+      }
     }
-    if (!spill) {
-      sources[i].raster = makeMemoryRaster(std::move(sources[i].raster), grids[i]);
+    // The conditioned copy replaces the original, which closes.
+    if (!spillTo) {
+      sources[i].raster = makeMemoryRaster(*sources[i].raster, grids[i]);
       return {};
     }
-    auto spilled =
-        makeSpilledRaster(std::move(sources[i].raster), *grids[i], options.spillDirectory);
+    auto spilled = makeSpilledRaster(*sources[i].raster, *grids[i], std::move(spillTo));
     if (!spilled) return Error{spilled.error()};
     sources[i].raster = std::move(*spilled);
     grids[i].reset();
     return {};
   };
   auto conditionUnguarded = [&](size_t i) -> Result<void> {
-    const TilerSource& source = sources[i];
+    TilerSource& source = sources[i];
+    if (auto opened = openRaster(source); !opened) return opened;
     auto read = readDemGrid(*source.raster, source.argument);
     if (!read) return Error{read.error()};
     auto grid = std::make_shared<conditioning::DemGrid>(std::move(*read));

@@ -37,7 +37,7 @@ bool TilerSource::covers(double longitudeDegrees, double latitudeDegrees) const 
 formats::SourceInfo TilerSource::info() const {
   formats::SourceInfo info;
   info.path = argument;
-  info.format = std::string(raster->formatName());
+  info.format = format;
   info.columns = grid.cols;
   info.rows = grid.rows;
   info.stepDegrees = stepDegrees;
@@ -99,6 +99,22 @@ uint32_t finestLevelForStep(double stepDegrees, uint32_t verticesPerSide) {
   return geo::kMaxLevel;
 }
 
+Result<void> openRaster(TilerSource& source) {
+  if (source.raster) return {};
+  auto raster = rasters::openRasterSource(source.argument, source.openOptions);
+  if (!raster) return Error{raster.error()};
+  const rasters::SampleGrid& now = (*raster)->grid();
+  const rasters::SampleGrid& was = source.grid;
+  if (now.cols != was.cols || now.rows != was.rows ||
+      now.columnStepDegrees != was.columnStepDegrees || now.rowStepDegrees != was.rowStepDegrees ||
+      now.firstColumnLongitudeDegrees != was.firstColumnLongitudeDegrees ||
+      now.firstRowLatitudeDegrees != was.firstRowLatitudeDegrees) {
+    return makeError(source.argument + ": the raster changed while it was being tiled");
+  }
+  source.raster = std::move(*raster);
+  return {};
+}
+
 Result<std::vector<TilerSource>> openSources(const std::vector<std::string>& inputs,
                                              const SourceSetOptions& options) {
   if (inputs.empty()) return makeError("no input rasters given");
@@ -107,9 +123,13 @@ Result<std::vector<TilerSource>> openSources(const std::vector<std::string>& inp
   }
   std::vector<TilerSource> sources;
   for (const std::string& input : inputs) {
-    auto raster = rasters::openRasterSource(input, rasters::RasterOpenOptions{options.vertical});
+    const rasters::RasterOpenOptions openOptions{options.vertical};
+    auto raster = rasters::openRasterSource(input, openOptions);
     if (!raster) return Error{raster.error()};
     TilerSource source;
+    source.openOptions = openOptions;
+    source.rasterPath = (*raster)->path();
+    source.format = std::string((*raster)->formatName());
     source.noDataIsWater = options.noDataIsSea || noDataIsOceanMask(**raster);
     if (auto enough = checkValidSamples(**raster, source.noDataIsWater); !enough) {
       return Error{enough.error()};
@@ -147,6 +167,7 @@ Result<std::vector<TilerSource>> openSources(const std::vector<std::string>& inp
       if (!pole) return Error{pole.error()};
       source.southPoleHeight = *pole;
     }
+    source.raster.reset();
     sources.push_back(std::move(source));
   }
   std::stable_sort(sources.begin(), sources.end(), [](const TilerSource& a, const TilerSource& b) {

@@ -16,9 +16,15 @@
 namespace globe::tiling {
 
 struct TilerSource {
+  // Open only while it is read: openSources closes it once it knows the grid (a run of thousands
+  // of inputs must not hold thousands of descriptors); the conditioning opens it again
+  // (openRaster), reads it whole and puts its conditioned copy here.
   std::unique_ptr<rasters::RasterSource> raster;
   rasters::SampleGrid grid;
   std::string argument;    // the path as given on the command line
+  std::string rasterPath;  // the file the raster reads (GTOPO30: the .DEM of a .HDR argument)
+  std::string format;      // the raster's format name ("GTOPO30" or GDAL's driver)
+  rasters::RasterOpenOptions openOptions;
   double stepDegrees = 0;  // the finer of the two steps
   uint32_t finestLevel = 0;
   formats::BoundsDegrees extent;  // closed: the cells' extent, longitude ignored when wrapping
@@ -37,6 +43,9 @@ struct TilerSource {
   bool covers(double longitudeDegrees, double latitudeDegrees) const;
   formats::SourceInfo info() const;
 };
+
+// Opens the source's raster again if it is closed; an error if it no longer has the grid it had.
+Result<void> openRaster(TilerSource& source);
 
 // Height of a pole vertex from the source's row nearest the pole: its highest land sample (sea
 // next to land counts as 0 m there), or the shallowest water when the row has no land, so the
@@ -62,8 +71,8 @@ bool noDataIsOceanMask(const rasters::RasterSource& raster);
 // A raster whose no data is its water code passes whatever it holds (an all-ocean tile).
 Result<void> checkValidSamples(const rasters::RasterSource& raster, bool noDataIsWater);
 
-// Opens every input; sorted finest first (ties keep command-line order) so the finest source
-// covering a point wins.
+// Opens every input, reads what the plan needs and closes it again; sorted finest first (ties keep
+// command-line order) so the finest source covering a point wins.
 Result<std::vector<TilerSource>> openSources(const std::vector<std::string>& inputs,
                                              const SourceSetOptions& options);
 

@@ -44,7 +44,7 @@ std::string planFingerprint(const TilerOptions& options, const std::vector<Tiler
   nlohmann::json inputs = nlohmann::json::array();
   for (const TilerSource& s : sources) {
     std::error_code error;
-    const auto bytes = fs::file_size(s.raster->path(), error);
+    const auto bytes = fs::file_size(s.rasterPath, error);
     inputs.push_back({{"path", s.argument},
                       {"bytes", error ? 0 : bytes},
                       {"columns", s.grid.cols},

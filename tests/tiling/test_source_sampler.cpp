@@ -24,6 +24,8 @@ class SamplerOnRealData : public ::testing::Test {
     auto opened = openSources(globe::testing::bundledInputs(), {17, std::nullopt});
     ASSERT_TRUE(opened) << opened.error();
     sources_ = std::move(*opened);
+    // The sampler reads the rasters as they are (unconditioned): open them again.
+    for (TilerSource& source : sources_) ASSERT_TRUE(openRaster(source));
   }
   std::vector<TilerSource> sources_;
 };
