@@ -10,7 +10,6 @@
 #include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
-#include <numeric>
 #include <optional>
 #include <thread>
 
@@ -382,7 +381,10 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
                  plan.maxLevel());
     for (std::thread& worker : workers) worker.join();
     if (failed) return makeError(firstError);
-    for (size_t i = 0; i < packs.size(); ++i) builtSummaries.emplace_back(packs[i], summaries[i]);
+    for (size_t i = 0; i < packs.size(); ++i) {
+      builtSummaries.emplace_back(packs[i], summaries[i]);
+      report.tiles += summaries[i].tiles;  // the tiles of the packs this run built or reused
+    }
     if (options.role == TilerRole::Merge && level >= shardLevel) {
       // The shards built these: their summaries stand for the packs.
       for (const formats::PackId& id : plan.packs(level)) {
@@ -413,11 +415,6 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
           std::max(info.bounds.east, s.bounds.east), std::max(info.bounds.north, s.bounds.north)};
       info.heightRange.include(s.range);
     }
-    report.tiles +=
-        options.role == TilerRole::Whole || level < shardLevel || options.role == TilerRole::Shard
-            ? std::accumulate(summaries.begin(), summaries.end(), uint64_t{0},
-                              [](uint64_t t, const PackSummary& s) { return t + s.tiles; })
-            : 0;
   }
   if (options.progress) options.progress({tilesDone, totalTiles, "done", true});
 

@@ -4,6 +4,7 @@
 # itself; the packages' own services are not used), GNU parallel and python3-yaml. Only tests use
 # them, so this is the test command's install step, not tools/install-deps.sh's.
 set -euo pipefail
+. "$(dirname "$0")/../lib/apt-install-missing.sh"
 PATH=$PATH:/usr/sbin:/sbin
 missing=()
 for cmd in slurmctld slurmd sbatch; do
@@ -14,11 +15,7 @@ command -v munged >/dev/null 2>&1 || missing+=(munge)
 parallel --version 2>/dev/null | grep -q 'GNU parallel' || missing+=(parallel)
 python3 -c 'import yaml' 2>/dev/null || missing+=(python3-yaml)
 if [ ${#missing[@]} -gt 0 ]; then
-  SUDO=
-  if [ "$(id -u)" -ne 0 ]; then SUDO=sudo; fi
-  echo "tools/cluster/install.sh: apt-get install ${missing[*]}"
-  $SUDO env DEBIAN_FRONTEND=noninteractive apt-get update -qq
-  $SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  apt_install_missing tools/cluster/install.sh "${missing[@]}"
 else
   echo "tools/cluster/install.sh: slurm-wlm, munge, parallel and python3-yaml are installed"
 fi

@@ -5,17 +5,12 @@
 # nothing is fetched when node_modules matches the lock file. The test command's install step.
 set -euo pipefail
 cd "$(dirname "$0")"
+. ../lib/apt-install-missing.sh
 missing=()
 command -v chromium >/dev/null 2>&1 || missing+=(chromium)
 command -v node >/dev/null 2>&1 || missing+=(nodejs)
 command -v npm >/dev/null 2>&1 || missing+=(npm)
-if [ ${#missing[@]} -gt 0 ]; then
-  SUDO=
-  if [ "$(id -u)" -ne 0 ]; then SUDO=sudo; fi
-  echo "tools/web/install.sh: apt-get install ${missing[*]}"
-  $SUDO env DEBIAN_FRONTEND=noninteractive apt-get update -qq
-  $SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
+apt_install_missing tools/web/install.sh ${missing[@]+"${missing[@]}"}
 # npm ci empties node_modules and installs the lock file's versions; skipped when node_modules was
 # installed from this very lock file (its hash, written after a successful npm ci).
 stamp=node_modules/.globe-package-lock.sha256
