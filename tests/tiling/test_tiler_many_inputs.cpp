@@ -1,7 +1,7 @@
 // Thousands of inputs (GLO-30 is 26,000 tiles) under a small file-descriptor limit: the tiler
 // keeps no input open between reading its header and conditioning it, and every spilled source
 // shares one file, so a run needs a handful of descriptors however many inputs it has. Real data:
-// a 3″ SRTM tile cut into 900 pieces that share their edge samples, under the 20′ world.
+// a 3″ SRTM tile cut into 400 pieces that share their edge samples, under the 20′ world.
 #include <gtest/gtest.h>
 #include <sys/resource.h>
 
@@ -24,13 +24,13 @@ using globe::testing::runCommand;
 const std::string kTiler = GLOBE_TILER_EXE;
 // Far fewer descriptors than inputs (the old tiler held one or two per input).
 constexpr int kDescriptorLimit = 64;
-constexpr int kPiecesPerSide = 30;
+constexpr int kPiecesPerSide = 20;
 
 std::string dem(const std::string& name) {
   return std::string(GLOBE_SOURCE_DIR) + "/tests/data/dem/gtopo30/" + name;
 }
 
-// N50E008 (1201 x 1201) as 30 x 30 GTOPO30 pieces of 41 x 41 samples, neighbours sharing a row or
+// N50E008 (1201 x 1201) as 20 x 20 GTOPO30 pieces of 61 x 61 samples, neighbours sharing a row or
 // column, written once; then the world. Returns the list file and the inputs.
 struct ManyInputs {
   fs::path listFile;
@@ -77,7 +77,7 @@ std::string limited(const std::string& command) {
   return "ulimit -n " + std::to_string(kDescriptorLimit) + " && " + command;
 }
 
-TEST(TilerManyInputs, NineHundredInputsTileUnderASixtyFourDescriptorLimit) {
+TEST(TilerManyInputs, FourHundredInputsTileUnderASixtyFourDescriptorLimit) {
   const ManyInputs& many = manyInputs();
   ASSERT_EQ(many.inputs.size(), size_t{kPiecesPerSide * kPiecesPerSide + 1});
   const fs::path dir = globe::testing::freshTempDir("many-inputs-runs");
@@ -116,7 +116,7 @@ class DescriptorLimit {
 };
 
 TEST(TilerManyInputs, EverySourceSpilledSharesOneFile) {
-  // A zero memory budget spills all 900 pieces (the world stays: finer sources read it); two
+  // A zero memory budget spills all 400 pieces (the world stays: finer sources read it); two
   // threads condition them together under the limit, and each reads back as conditioned in memory.
   const ManyInputs& many = manyInputs();
   auto inMemory = openSources(many.inputs, {});

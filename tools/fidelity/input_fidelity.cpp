@@ -12,10 +12,13 @@ Result<std::vector<InputFidelity>> measureInputs(streaming::TileStore& store,
       tiling::openSources(inputs, {store.manifest().verticesPerSide, {}, {}, noDataIsSea});
   if (!sources) return Error{sources.error()};
   std::vector<conditioning::DemGrid> grids;  // as given, finest first
-  for (const tiling::TilerSource& source : *sources) {
+  for (tiling::TilerSource& source : *sources) {
+    // openSources closed it once it had the grid: read it whole, then close it again.
+    if (auto opened = tiling::openRaster(source); !opened) return Error{opened.error()};
     auto grid = tiling::readDemGrid(*source.raster, source.argument);
     if (!grid) return Error{grid.error()};
     grids.push_back(std::move(*grid));
+    source.raster.reset();
   }
   std::vector<InputFidelity> measured;
   for (size_t i = 0; i < sources->size(); ++i) {
