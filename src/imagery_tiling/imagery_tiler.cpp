@@ -22,6 +22,7 @@
 #include "imagery_tiling/imagery_pixels.hpp"
 #include "imagery_tiling/imagery_plan.hpp"
 #include "imagery_tiling/imagery_reader.hpp"
+#include "imagery_tiling/reader_cache.hpp"
 #include "tiling/progress.hpp"
 #include "tiling/write_failed.hpp"
 #include "transport/atomic_file.hpp"
@@ -173,26 +174,6 @@ class ChildTiles {
   std::map<formats::PackId, std::shared_ptr<const formats::ImagePack>> packs_;
 };
 
-// One worker's readers, one per input, opened on first use.
-class Readers {
- public:
-  explicit Readers(const std::vector<ImageryInput>& inputs) : inputs_(inputs) {
-    readers_.resize(inputs.size());
-  }
-  Result<ImageryReader*> get(size_t i) {
-    if (!readers_[i]) {
-      auto opened = ImageryReader::open(inputs_[i]);
-      if (!opened) return Error{opened.error()};
-      readers_[i] = std::move(*opened);
-    }
-    return readers_[i].get();
-  }
-
- private:
-  const std::vector<ImageryInput>& inputs_;
-  std::vector<std::unique_ptr<ImageryReader>> readers_;
-};
-
 struct TileMaker {
   const std::vector<ImageryInput>& inputs;
   const std::vector<size_t>& finestFirst;  // input indices, finest pixel first
@@ -200,7 +181,7 @@ struct TileMaker {
   int jpegQuality;
 
   // The tile's encoded bytes, or nullopt when no input covers any of its pixels.
-  Result<std::optional<std::vector<std::byte>>> make(const geo::TileId& tile, Readers& readers,
+  Result<std::optional<std::vector<std::byte>>> make(const geo::TileId& tile, ReaderCache& readers,
                                                      ChildTiles* children, bool& copied) const {
     copied = false;
     const TileFrameDegrees frame = tileFrameDegrees(tile);
@@ -326,8 +307,10 @@ Result<ImageryTilerReport> runImageryTiler(const ImageryTilerOptions& options) {
   }
   const unsigned threads =
       options.threads != 0 ? options.threads : std::max(1U, std::thread::hardware_concurrency());
-  std::vector<std::unique_ptr<Readers>> readers;
-  for (unsigned w = 0; w < threads; ++w) readers.push_back(std::make_unique<Readers>(inputs));
+  std::vector<std::unique_ptr<ReaderCache>> readers;
+  for (unsigned w = 0; w < threads; ++w) {
+    readers.push_back(std::make_unique<ReaderCache>(inputs, readersPerWorker(threads)));
+  }
 
   ImageryTilerReport report;
   report.maxLevel = plan.maxLevel();
