@@ -65,5 +65,8 @@ function(globe_test name)
   target_compile_definitions(${name} PRIVATE
     GLOBE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   globe_precompile(${name} <gtest/gtest.h>)
-  gtest_discover_tests(${name} TEST_PREFIX "${name}." DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 600)
+  # The fixtures the test processes share (tests/support/shared_fixture.hpp) live for one CTest
+  # run: its setup test empties the folder first, its cleanup test removes it last.
+  gtest_discover_tests(${name} TEST_PREFIX "${name}." DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 600
+    FIXTURES_REQUIRED globe_shared_fixtures ENVIRONMENT GLOBE_TEST_FIXTURES=${GLOBE_TEST_FIXTURES})
 endfunction()

@@ -9,6 +9,7 @@
 
 #include "geo/tiling_scheme.hpp"
 #include "terrain/block_grid.hpp"
+#include "tests/support/imagery_test_layers.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 
 namespace globe::collision::testing {
@@ -100,9 +101,7 @@ RealPyramid& RealPyramid::bundled() {
 
 RealPyramid& RealPyramid::zion() {
   static RealPyramid* pyramid = [] {
-    const std::string dir = std::string(GLOBE_SOURCE_DIR) + "/data/dem/";
-    auto store = streaming::TileStore::open(
-        globe::testing::tilePyramid("zion-pyramid", {dir + "ETOPO20.DEM", dir + "zion-srtm3.tif"}));
+    auto store = streaming::TileStore::open(globe::testing::zionPyramid());
     if (!store) {
       ADD_FAILURE() << store.error();
       std::abort();

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <map>
 
+#include "tests/support/shared_fixture.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 
 namespace globe::testing {
@@ -13,14 +14,31 @@ std::filesystem::path bundledData(const std::string& relativePath) {
   return std::filesystem::path(GLOBE_SOURCE_DIR) / relativePath;
 }
 
+namespace {
+
+// Runs `globe-tiler ARGUMENTS -q -o DIR`; a failure is a test failure.
+bool runTilerInto(const std::filesystem::path& dir, const std::string& arguments) {
+  const std::string command =
+      std::string(GLOBE_TILER_EXE) + " " + arguments + " -q -o " + dir.string() + " > /dev/null";
+  const bool ok = std::system(command.c_str()) == 0;
+  if (!ok) ADD_FAILURE() << "failed: " << command;
+  return ok;
+}
+
+// A layer made by `globe-tiler ARGUMENTS` once per CTest run (sharedFixture).
+std::filesystem::path sharedTilerOutput(const std::string& name, const std::string& arguments) {
+  return sharedFixture(name + " " + arguments, [&](const std::filesystem::path& dir) {
+    return runTilerInto(dir, arguments);
+  });
+}
+
+}  // namespace
+
 const std::filesystem::path& imageryLayer(const std::string& name, const std::string& arguments) {
   static std::map<std::string, std::filesystem::path> layers;
   if (auto it = layers.find(name); it != layers.end()) return it->second;
-  const auto dir = freshTempDir("layer-" + name) / "layer";
-  const std::string command = std::string(GLOBE_TILER_EXE) + " imagery -q -o " + dir.string() +
-                              " " + arguments + " > /dev/null";
-  if (std::system(command.c_str()) != 0) ADD_FAILURE() << "failed: " << command;
-  return layers.emplace(name, dir).first->second;
+  return layers.emplace(name, sharedTilerOutput("layer-" + name, "imagery " + arguments))
+      .first->second;
 }
 
 const std::filesystem::path& blueMarbleLayer() {
@@ -36,24 +54,21 @@ const std::filesystem::path& zionLayer() {
 
 const std::filesystem::path& coastMask() {
   static const std::filesystem::path dir = [] {
-    const auto out = freshTempDir("layer-coast") / "layer";
-    std::string command = std::string(GLOBE_TILER_EXE) + " water-mask -q -o " + out.string();
+    std::string arguments = "water-mask";
     for (const char* file :
          {"gshhg-l-land", "gshhg-f-suruga-bay", "gshhg-f-the-wash", "gshhg-f-chesapeake-bay",
           "gshhg-f-gibraltar", "gshhg-f-san-francisco-bay"}) {
-      command += " " + bundledData(std::string("data/coast/") + file + ".fgb").string();
+      arguments += " " + bundledData(std::string("data/coast/") + file + ".fgb").string();
     }
-    if (std::system((command + " > /dev/null").c_str()) != 0)
-      ADD_FAILURE() << "failed: " << command;
-    return out;
+    return sharedTilerOutput("layer-coast", arguments);
   }();
   return dir;
 }
 
 const std::filesystem::path& zionPyramid() {
   static const std::filesystem::path dir =
-      tilePyramid("zion-pyramid", {bundledData("data/dem/ETOPO20.DEM").string(),
-                                   bundledData("data/dem/zion-srtm3.tif").string()});
+      sharedPyramid("zion-pyramid", {bundledData("data/dem/ETOPO20.DEM").string(),
+                                     bundledData("data/dem/zion-srtm3.tif").string()});
   return dir;
 }
 

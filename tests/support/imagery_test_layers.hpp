@@ -1,5 +1,5 @@
-// Imagery layers and the Zion terrain for viewer tests, made once per test process by the real
-// `globe-tiler` (terrain and `imagery`) from the bundled data and the team's shared scenes.
+// Imagery layers and the Zion terrain for viewer tests, made once per CTest run (sharedFixture) by
+// the real `globe-tiler` (terrain and `imagery`) from the bundled data. Shared: read them only.
 #pragma once
 
 #include <filesystem>

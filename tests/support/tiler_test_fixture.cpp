@@ -9,6 +9,7 @@
 
 #include "core/crc32.hpp"
 #include "terrain/height_block.hpp"
+#include "tests/support/shared_fixture.hpp"
 #include "tiling/source_conditioning.hpp"
 #include "tiling/source_set.hpp"
 #include "tiling/tiler.hpp"
@@ -48,18 +49,31 @@ std::filesystem::path freshTempDir(const std::string& name) {
 }
 
 const std::filesystem::path& bundledPyramid() {
-  static const std::filesystem::path dir = tilePyramid("bundled-pyramid", bundledInputs());
+  static const std::filesystem::path dir = sharedPyramid("bundled-pyramid", bundledInputs());
   return dir;
 }
 
-std::filesystem::path tilePyramid(const std::string& name, const std::vector<std::string>& inputs) {
-  auto out = freshTempDir(name) / "pyramid";
+bool tilePyramidInto(const std::filesystem::path& out, const std::vector<std::string>& inputs) {
   tiling::TilerOptions options;
   options.inputs = inputs;
   options.outputDir = out;
   auto report = tiling::runTiler(options);
   if (!report) ADD_FAILURE() << report.error();
+  return report.ok();
+}
+
+std::filesystem::path tilePyramid(const std::string& name, const std::vector<std::string>& inputs) {
+  auto out = freshTempDir(name) / "pyramid";
+  tilePyramidInto(out, inputs);
   return out;
+}
+
+std::filesystem::path sharedPyramid(const std::string& name,
+                                    const std::vector<std::string>& inputs) {
+  std::string key = "pyramid-" + name;
+  for (const std::string& input : inputs) key += " " + input;
+  return sharedFixture(
+      key, [&](const std::filesystem::path& dir) { return tilePyramidInto(dir, inputs); });
 }
 
 std::map<std::string, std::pair<uint32_t, size_t>> checksums(const std::filesystem::path& dir) {

@@ -15,10 +15,16 @@
 namespace globe::testing {
 
 std::vector<std::string> bundledInputs();  // ETOPO20, W002N52, E138N35_FUJI from data/dem
-// Tiles the bundled inputs (once) and returns the pyramid directory.
+// Tiles the bundled inputs (once per CTest run: sharedFixture) and returns the pyramid directory.
+// Shared by the test processes: copy it before changing it.
 const std::filesystem::path& bundledPyramid();
+// Tiles the inputs into `out` with the tiler's defaults; failures are test failures.
+bool tilePyramidInto(const std::filesystem::path& out, const std::vector<std::string>& inputs);
 // Tiles the inputs into a fresh temporary directory (removed at exit); failures are test failures.
 std::filesystem::path tilePyramid(const std::string& name, const std::vector<std::string>& inputs);
+// Tiles the inputs once per CTest run (sharedFixture, keyed by name and inputs): read-only.
+std::filesystem::path sharedPyramid(const std::string& name,
+                                    const std::vector<std::string>& inputs);
 std::filesystem::path freshTempDir(const std::string& name);
 // relative path -> CRC-32 and size of every regular file below dir
 std::map<std::string, std::pair<uint32_t, size_t>> checksums(const std::filesystem::path& dir);

@@ -140,12 +140,6 @@ PyramidCatalog& PyramidCatalog::bundled() {
       ADD_FAILURE() << store.error();
       std::abort();
     }
-    // The pyramid is tiled into a temporary directory per process: remove it at exit.
-    static const std::filesystem::path tempDir = globe::testing::bundledPyramid().parent_path();
-    std::atexit([] {
-      std::error_code ignored;
-      std::filesystem::remove_all(tempDir, ignored);
-    });
     return new PyramidCatalog(std::move(*store));
   }();
   catalog->residency_ = nullptr;
