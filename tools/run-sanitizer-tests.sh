@@ -10,23 +10,15 @@ SUPP="$PWD/tools/sanitizers/lsan-mesa.supp"
 # debug info takes a third longer to compile (the ASan build is the longest step of CI).
 LINE_TABLES=(-DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG"
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG")
-LAUNCHER=()
-if command -v ccache >/dev/null 2>&1; then
-  LAUNCHER=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-fi
+. tools/lib/seed-ctest-costs.sh
 
 echo "== ASan+UBSan: every test"
 # In unity batches, as the other builds; the TSan build below compiles its files one by one, so a
 # source that compiles only thanks to a file batched before it still fails in CI.
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLOBE_WERROR=ON \
-  -DGLOBE_SANITIZE=ON "${LINE_TABLES[@]}" "${LAUNCHER[@]}" >/dev/null
+bash tools/configure.sh build-asan -DGLOBE_WERROR=ON -DGLOBE_SANITIZE=ON "${LINE_TABLES[@]}"
 cmake --build build-asan -j"$JOBS"
 # The longest tests first (tools/run-tests.sh explains), from the committed times.
-COSTS=build-asan/Testing/Temporary/CTestCostData.txt
-if [ ! -s "$COSTS" ]; then
-  mkdir -p "$(dirname "$COSTS")"
-  { grep -v '^#' tests/ctest-costs.txt | awk 'NF == 2 {print $1, 1, $2}'; echo "---"; } >"$COSTS"
-fi
+seed_ctest_costs build-asan
 # The GLFW window tests (Xvfb) leak 112 bytes inside a GL/X driver module that is dlclose'd before
 # LeakSanitizer reports, so the "<unknown module>" cannot be suppressed by name: they run with
 # ASan+UBSan but without leak detection. Every other test runs with LeakSanitizer on.
@@ -41,8 +33,8 @@ ASAN_OPTIONS=halt_on_error=1:abort_on_error=1:detect_leaks=0:strict_string_check
 
 echo "== TSan: the loader and its task runners, the HTTP client and the disk cache"
 # File by file (no unity batches): see above.
-cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLOBE_WERROR=ON \
-  -DGLOBE_SANITIZE_THREAD=ON -DGLOBE_UNITY_BUILD=OFF "${LINE_TABLES[@]}" "${LAUNCHER[@]}" >/dev/null
+bash tools/configure.sh build-tsan -DGLOBE_WERROR=ON -DGLOBE_SANITIZE_THREAD=ON \
+  -DGLOBE_UNITY_BUILD=OFF "${LINE_TABLES[@]}"
 cmake --build build-tsan -j"$JOBS" --target globe_loader_tests globe_task_runner_tests \
   globe_http_tests globe_disk_cache_tests
 TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \

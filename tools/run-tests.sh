@@ -19,11 +19,9 @@ bash tools/web/install.sh
 bash tools/cluster/install.sh
 # CTest starts the longest tests first when it knows their times; a new build directory does not,
 # so it gets the committed ones (without them the long tests may start last and the suite waits).
+. tools/lib/seed-ctest-costs.sh
+seed_ctest_costs "$BUILD"
 COSTS=$BUILD/Testing/Temporary/CTestCostData.txt
-if [ ! -s "$COSTS" ]; then
-  mkdir -p "$(dirname "$COSTS")"
-  { grep -v '^#' tests/ctest-costs.txt | awk 'NF == 2 {print $1, 1, $2}'; echo "---"; } >"$COSTS"
-fi
 CTEST=(ctest --test-dir "$BUILD" -j"$(nproc)" --output-on-failure --timeout 900)
 if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null 2>&1; then
   CTEST=(xvfb-run -a -s "-screen 0 1280x1024x24" "${CTEST[@]}")
