@@ -53,7 +53,8 @@ option(GLOBE_TESTS_FULL_DEBUG_INFO "Compile the tests with the build type's full
 function(globe_test name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
-  target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} GTest::gtest_main GTest::gmock globe_warnings)
+  target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} GTest::gtest_main GTest::gmock globe_warnings
+    globe_build_paths)  # tests/support/build_paths.hpp
   target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR})  # tests/support/...
   # Line tables only (-g1) for the tests' own sources: enough for backtraces and sanitizer
   # reports, and the test batches compile much faster than with full debug info
@@ -62,8 +63,6 @@ function(globe_test name)
      NOT GLOBE_TESTS_FULL_DEBUG_INFO)
     target_compile_options(${name} PRIVATE -g1)
   endif()
-  target_compile_definitions(${name} PRIVATE
-    GLOBE_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   globe_precompile(${name} <gtest/gtest.h>)
   # The fixtures the test processes share (tests/support/shared_fixture.hpp) live for one CTest
   # run: its setup test empties the folder first, its cleanup test removes it last.

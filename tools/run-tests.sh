@@ -2,21 +2,22 @@
 # Builds globe's tests in the same build directory and with the same flags as tools/setup.sh (so
 # nothing is rebuilt that setup built) and runs the whole suite with CTest. Without a display
 # the suite runs under xvfb-run, so the GLFW window tests run too. Any skipped test is listed at
-# the end, loudly. BUILD_DIR (default build) and GLOBE_WERROR=ON (CI) change the directory and
-# add warnings as errors. --save-costs afterwards copies the measured test times to
-# tests/ctest-costs.txt, which a build directory without its own gets before CTest runs.
+# the end, loudly. BUILD_DIR (default build) changes the directory; GLOBE_WERROR=ON (CI) fails
+# the run when the compiler warned (tools/lib/build-checked.sh: the flags stay the same).
+# --save-costs afterwards copies the measured test times to tests/ctest-costs.txt, which a build
+# directory without its own gets before CTest runs. Each step prints its time (CI-time lines).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${BUILD_DIR:-build}
-EXTRA=()
-if [ -n "${GLOBE_WERROR:-}" ]; then EXTRA+=(-DGLOBE_WERROR="$GLOBE_WERROR"); fi
-bash tools/configure.sh "$BUILD" "${EXTRA[@]}"
-cmake --build "$BUILD" -j"$(nproc)"
+. tools/lib/build-checked.sh
+. tools/lib/stage-time.sh
+bash tools/configure.sh "$BUILD"
+stage "build ($BUILD)" build_checked "$BUILD"
 # Chromium, node and npm (apt, where missing) and tools/web's pinned npm packages: the web
-# clients (CesiumJS, MapLibre) that tests/web shows the exports in.
-bash tools/web/install.sh
-# Slurm, munge, GNU parallel and python3-yaml (apt, where missing): what tests/cluster runs.
-bash tools/cluster/install.sh
+# clients (CesiumJS, MapLibre) that tests/web shows the exports in. Slurm, munge, GNU parallel and
+# python3-yaml (apt, where missing): what tests/cluster runs.
+test_installs() { bash tools/web/install.sh && bash tools/cluster/install.sh; }
+stage "test installs" test_installs
 # CTest starts the longest tests first when it knows their times; a new build directory does not,
 # so it gets the committed ones (without them the long tests may start last and the suite waits).
 . tools/lib/seed-ctest-costs.sh
@@ -27,7 +28,8 @@ if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null 2>&1; then
   CTEST=(xvfb-run -a -s "-screen 0 1280x1024x24" "${CTEST[@]}")
 fi
 status=0
-"${CTEST[@]}" 2>&1 | tee "$BUILD/ctest-output.txt" || status=$?
+suite() { "${CTEST[@]}" 2>&1 | tee "$BUILD/ctest-output.txt"; }
+stage "suite" suite || status=$?
 skipped=$(grep -E '\(Skipped\)$' "$BUILD/ctest-output.txt" || true)
 if [ -n "$skipped" ]; then
   echo

@@ -2,6 +2,7 @@
 // with its file, line and field.
 #include "camera/camera_path_file.hpp"
 #include "camera/path_checks.hpp"
+#include "tests/support/build_paths.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

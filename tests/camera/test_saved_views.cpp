@@ -10,6 +10,7 @@
 
 #include "camera/saved_views.hpp"
 #include "geo/ecef.hpp"
+#include "tests/support/build_paths.hpp"
 
 namespace globe::camera {
 namespace {

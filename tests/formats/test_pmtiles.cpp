@@ -11,6 +11,7 @@
 
 #include "formats/gzip_bytes.hpp"
 #include "formats/pmtiles.hpp"
+#include "tests/support/build_paths.hpp"
 
 namespace {
 

@@ -16,6 +16,7 @@
 #include "formats/gzip_bytes.hpp"
 #include "formats/quantized_mesh.hpp"
 #include "formats/terrain_layer_json.hpp"
+#include "tests/support/build_paths.hpp"
 
 namespace {
 

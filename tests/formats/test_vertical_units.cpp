@@ -13,6 +13,7 @@
 #include "formats/pyramid_manifest.hpp"
 #include "formats/vertical_units.hpp"
 #include "rasters/raster_source.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tests/support/epsg_wkt.hpp"
 #include "tests/support/test_io_util.hpp"
 

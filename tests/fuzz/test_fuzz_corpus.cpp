@@ -15,6 +15,7 @@
 #include "formats/pack_format.hpp"
 #include "formats/pyramid_manifest.hpp"
 #include "fuzz_entries.hpp"
+#include "tests/support/build_paths.hpp"
 
 namespace {
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "tests/imagery_tiling/imagery_test_support.hpp"
+#include "tests/support/build_paths.hpp"
 
 namespace globe::imagery_tiling {
 namespace {

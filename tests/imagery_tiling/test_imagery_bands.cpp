@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "tests/imagery_tiling/imagery_test_support.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 
 namespace globe::imagery_tiling {

@@ -22,6 +22,7 @@
 #include "imagery_tiling/imagery_tiler.hpp"
 #include "streaming/imagery_store.hpp"
 #include "tests/imagery_tiling/imagery_test_support.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 #include "transport/atomic_file.hpp"
 

@@ -13,6 +13,7 @@
 
 #include "imagery_tiling/imagery_input.hpp"
 #include "imagery_tiling/reader_cache.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tests/support/command_run.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 

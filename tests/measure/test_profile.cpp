@@ -19,6 +19,7 @@
 #include "measure/geodesic_path.hpp"
 #include "measure/path_files.hpp"
 #include "measure/profile_chart.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tests/support/command_run.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "overlays/overlay_model.hpp"
+#include "tests/support/build_paths.hpp"
 
 namespace globe::overlays {
 

@@ -12,6 +12,7 @@
 #include "overlays/drape_set.hpp"
 #include "overlays/overlay_file.hpp"
 #include "overlays/overlay_imagery.hpp"
+#include "tests/support/build_paths.hpp"
 
 namespace globe::overlays {
 namespace {

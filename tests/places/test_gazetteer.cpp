@@ -7,6 +7,7 @@
 #include <string>
 
 #include "places/gazetteer.hpp"
+#include "tests/support/build_paths.hpp"
 
 namespace globe::places {
 namespace {

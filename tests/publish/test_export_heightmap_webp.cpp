@@ -26,6 +26,7 @@
 #include "services/terrain_services.hpp"
 #include "terrain/height_block.hpp"
 #include "tests/publish/query_points.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tests/support/command_run.hpp"
 #include "tests/support/test_io_util.hpp"
 #include "tests/support/tiler_test_fixture.hpp"

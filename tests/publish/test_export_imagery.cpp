@@ -28,6 +28,7 @@
 #include "publish/pmtiles_writer.hpp"
 #include "services/imagery_services.hpp"
 #include "streaming/imagery_store.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tests/support/command_run.hpp"
 #include "tests/support/imagery_test_layers.hpp"
 #include "tests/support/test_io_util.hpp"

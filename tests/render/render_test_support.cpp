@@ -15,6 +15,7 @@
 #include "geo/tiling_scheme.hpp"
 #include "render/read_pixels.hpp"
 #include "terrain/tile_mesh.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tiling/tiler.hpp"
 
 namespace globe::render::test {
@@ -160,7 +161,9 @@ glm::dvec3 roundedToFloat(const glm::dvec3& v) {
   return rounded;
 }
 
-std::filesystem::path outputDirectory() { return GLOBE_TEST_OUTPUT_DIR; }
+std::filesystem::path outputDirectory() {
+  return std::filesystem::path(globe::build_paths::binaryDir()) / "tests/render";
+}
 
 Image readImage(int width, int height) {
   return Image{width, height, readPixelsRgba(width, height)};

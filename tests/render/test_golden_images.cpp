@@ -10,6 +10,7 @@
 #include <string>
 
 #include "formats/image_io.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tests/support/golden_compare.hpp"
 #include "tests/support/imagery_test_layers.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
@@ -101,7 +102,7 @@ class GoldenImages : public ::testing::TestWithParam<GoldenView> {};
 
 TEST_P(GoldenImages, MatchesTheCommittedGolden) {
   const GoldenView& view = GetParam();
-  const fs::path outDir = GLOBE_TEST_OUTPUT_DIR;
+  const fs::path outDir = fs::path(globe::build_paths::binaryDir()) / "tests/render/golden-output";
   fs::create_directories(outDir);
   const fs::path actualPath = outDir / (std::string(view.name) + ".actual.png");
   const fs::path& pyramid =
@@ -113,7 +114,8 @@ TEST_P(GoldenImages, MatchesTheCommittedGolden) {
   auto actual = formats::loadImageRgba(actualPath);
   ASSERT_TRUE(actual) << actual.error();
 
-  const fs::path goldenPath = fs::path(GLOBE_GOLDEN_DIR) / (std::string(view.name) + ".png");
+  const fs::path goldenPath =
+      fs::path(GLOBE_SOURCE_DIR) / "tests/render/golden" / (std::string(view.name) + ".png");
   if (std::getenv("GLOBE_UPDATE_GOLDENS") != nullptr) {
     fs::copy_file(actualPath, goldenPath, fs::copy_options::overwrite_existing);
     GTEST_SKIP() << "golden updated: " << goldenPath;

@@ -6,6 +6,7 @@
 #include "formats/image_io.hpp"
 #include "geo/ecef.hpp"
 #include "tests/render/render_test_support.hpp"
+#include "tests/support/build_paths.hpp"
 
 namespace globe::render::test {
 namespace {

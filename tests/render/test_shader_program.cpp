@@ -12,6 +12,7 @@
 #include "render/shader_directory.hpp"
 #include "render/shader_program.hpp"
 #include "render/terrain_renderer.hpp"
+#include "tests/support/build_paths.hpp"
 
 namespace globe::render {
 namespace {

@@ -1,7 +1,8 @@
 // No lighting seams at tile edges: nadir views of rough real terrain (Mount Fuji's and Zion's
 // SRTM, bundled) rendered by the real `globe snapshot` from 20, 50 and 120 km, with tiles of
-// several levels on screen, score at most 2.0 on the seam score (tools/bench_render/seam_score.hpp).
-// Before tiles carried their apron (one-sided normals on their edges) these views scored 3.1-4.8.
+// several levels on screen, score at most 2.0 on the seam score
+// (tools/bench_render/seam_score.hpp). Before tiles carried their apron (one-sided normals on their
+// edges) these views scored 3.1-4.8.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,9 +11,10 @@
 #include <string>
 
 #include "formats/image_io.hpp"
-#include "tools/bench_render/seam_score.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tests/support/imagery_test_layers.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
+#include "tools/bench_render/seam_score.hpp"
 
 namespace globe {
 namespace {
@@ -40,7 +42,7 @@ class ShadingSeams : public ::testing::TestWithParam<SeamView> {};
 
 TEST_P(ShadingSeams, NadirViewScoresAtMostTwo) {
   const SeamView& view = GetParam();
-  const fs::path outDir = GLOBE_TEST_OUTPUT_DIR;
+  const fs::path outDir = fs::path(globe::build_paths::binaryDir()) / "tests/render/golden-output";
   fs::create_directories(outDir);
   const fs::path image = outDir / (std::string("seams_") + view.name + ".png");
   const fs::path& pyramid =

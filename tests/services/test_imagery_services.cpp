@@ -16,6 +16,7 @@
 #include "formats/image_io.hpp"
 #include "geo/tiling_scheme.hpp"
 #include "services/imagery_services.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tests/support/nginx_server.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 #include "transport/network_settings.hpp"

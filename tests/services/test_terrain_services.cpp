@@ -19,6 +19,7 @@
 
 #include "formats/image_io.hpp"
 #include "tests/apps/globe/run_globe.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tests/support/nginx_server.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 

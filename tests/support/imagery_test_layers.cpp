@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <map>
 
+#include "tests/support/build_paths.hpp"
 #include "tests/support/shared_fixture.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 

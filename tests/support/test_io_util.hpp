@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/build_paths.hpp"
+
 namespace globe::testing {
 
 // A fresh directory under the system temp dir, removed with everything in it.

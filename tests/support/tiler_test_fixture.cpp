@@ -9,6 +9,7 @@
 
 #include "core/crc32.hpp"
 #include "terrain/height_block.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tests/support/shared_fixture.hpp"
 #include "tiling/source_conditioning.hpp"
 #include "tiling/source_set.hpp"

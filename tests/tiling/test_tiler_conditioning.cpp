@@ -15,6 +15,7 @@
 #include "streaming/tile_store.hpp"
 #include "terrain/block_grid.hpp"
 #include "terrain/height_block.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 #include "tiling/dem_reader.hpp"
 #include "tiling/source_conditioning.hpp"

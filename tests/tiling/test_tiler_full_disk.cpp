@@ -17,6 +17,7 @@
 
 #include "formats/pack_format.hpp"
 #include "formats/pyramid_manifest.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 #include "transport/atomic_file.hpp"
 

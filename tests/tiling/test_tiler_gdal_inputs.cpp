@@ -6,6 +6,7 @@
 
 #include "core/crc32.hpp"
 #include "formats/pyramid_manifest.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 #include "tiling/tiler.hpp"
 #include "transport/atomic_file.hpp"

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "rasters/gtopo30.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tests/support/command_run.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 #include "tiling/source_conditioning.hpp"

@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "formats/pyramid_manifest.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 #include "tiling/tiler.hpp"
 

@@ -14,6 +14,7 @@
 #include <set>
 #include <thread>
 
+#include "tests/support/build_paths.hpp"
 #include "tests/support/command_run.hpp"
 #include "tests/support/nginx_server.hpp"
 #include "tests/support/tiler_test_fixture.hpp"

@@ -19,6 +19,7 @@
 #include "formats/pack_format.hpp"
 #include "formats/pyramid_manifest.hpp"
 #include "terrain/height_block.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 #include "transport/atomic_file.hpp"
 
@@ -185,7 +186,8 @@ const fs::path& workDir() {
 // The metre original tiled as it is: the surface every encoded copy must draw.
 const std::map<geo::TileId, std::vector<int16_t>>& metreBlocks() {
   static const auto blocks = [] {
-    return readBlocks(tileOk(workDir(), "metres", {GLOBE_SOURCE_DIR "/data/dem/zion-srtm3.tif"}));
+    return readBlocks(
+        tileOk(workDir(), "metres", {std::string(GLOBE_SOURCE_DIR) + "/data/dem/zion-srtm3.tif"}));
   }();
   return blocks;
 }
@@ -308,7 +310,7 @@ TEST(TilerUnits, UnknownUnitIsAnErrorNamingTheFile) {
 }
 
 TEST(TilerUnits, BadOverridesAreErrors) {
-  const std::string tif = GLOBE_SOURCE_DIR "/data/dem/zion-srtm3.tif";
+  const std::string tif = std::string(GLOBE_SOURCE_DIR) + "/data/dem/zion-srtm3.tif";
   const ProgramRun furlong =
       runGlobeTiler(workDir() / "bad-z-units", {tif}, {"--z-units", "furlong"});
   EXPECT_EQ(furlong.exitCode, 1) << furlong.output;

@@ -11,6 +11,7 @@
 #include "collision/exact_surface.hpp"
 #include "geo/ecef.hpp"
 #include "geo/tiling_scheme.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tiling/tiler.hpp"
 
 namespace globe::bench {

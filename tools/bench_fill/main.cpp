@@ -15,6 +15,7 @@
 
 #include "conditioning/condition.hpp"
 #include "conditioning/grid_coarser_sources.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tiling/dem_reader.hpp"
 #include "tools/bench_fill/block_average.hpp"
 #include "tools/bench_fill/fill_benchmark.hpp"

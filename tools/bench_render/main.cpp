@@ -14,6 +14,7 @@
 
 #include "render_scenarios.hpp"
 #include "shader_variants.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tiling/tiler.hpp"
 
 namespace {

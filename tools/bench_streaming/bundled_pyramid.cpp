@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <string>
 
+#include "tests/support/build_paths.hpp"
 #include "tiling/tiler.hpp"
 
 namespace globe::bench {

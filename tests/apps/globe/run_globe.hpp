@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <string>
 
+#include "tests/support/build_paths.hpp"
+
 namespace globe::app::test {
 
 struct ProcessResult {

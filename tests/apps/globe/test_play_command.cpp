@@ -15,6 +15,7 @@
 #include "camera/camera_path_file.hpp"
 #include "geo/cartographic.hpp"
 #include "streaming/tile_store.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 
 namespace globe::app {

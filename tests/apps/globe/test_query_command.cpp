@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/build_paths.hpp"
 #include "tests/support/sea_test_pyramid.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 

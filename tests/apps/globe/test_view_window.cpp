@@ -25,6 +25,7 @@
 #include "camera/orbit_controls.hpp"
 #include "formats/image_io.hpp"
 #include "geo/ecef.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tests/support/imagery_test_layers.hpp"
 #include "tests/support/nginx_server.hpp"
 #include "tests/support/test_constants.hpp"

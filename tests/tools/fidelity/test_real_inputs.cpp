@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "streaming/tile_store.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 #include "tests/tools/fidelity/real_input_cases.hpp"
 #include "tools/fidelity/input_fidelity.hpp"

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 
+#include "tests/support/build_paths.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 
 namespace globe::app {
