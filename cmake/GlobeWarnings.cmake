@@ -5,10 +5,20 @@ target_compile_options(globe_warnings INTERFACE -Wall -Wextra -Wpedantic -Wshado
 if(GLOBE_WERROR)
   target_compile_options(globe_warnings INTERFACE -Werror)
 endif()
+# ASan+UBSan instrument the project's libraries and programs (src/ and apps/ call
+# globe_instrument()), at -O1 with line tables (the sanitizers' advice; all a report's stack
+# trace needs). The tests' own code is compiled exactly as in the plain build, so a sanitizer
+# build takes those objects from the compiler cache (docs/performance/ci-time.md); every byte a
+# test feeds goes through instrumented readers all the same.
+set(GLOBE_INSTRUMENT_OPTIONS "")
 if(GLOBE_SANITIZE)
-  add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+  set(GLOBE_INSTRUMENT_OPTIONS -fsanitize=address,undefined -fno-omit-frame-pointer
+    -fno-sanitize-recover=undefined -O1 -g1)
   add_link_options(-fsanitize=address,undefined)
 endif()
+macro(globe_instrument)
+  add_compile_options(${GLOBE_INSTRUMENT_OPTIONS})
+endmacro()
 option(GLOBE_SANITIZE_THREAD "Build with ThreadSanitizer (CI runs globe_loader_tests with it)" OFF)
 if(GLOBE_SANITIZE_THREAD)
   if(GLOBE_SANITIZE)
