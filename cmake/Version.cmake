@@ -1,4 +1,4 @@
-# globe_version: an interface target whose header globe_version.hpp holds the project version and
+# globe_version: the header globe_version.hpp holds the project version, and one generated source
 # the checkout's revision at configure time (for --version).
 find_package(Git QUIET)
 set(GLOBE_SOURCE_REVISION "unknown")
@@ -15,5 +15,7 @@ if(GIT_FOUND AND EXISTS ${PROJECT_SOURCE_DIR}/.git)
 endif()
 configure_file(${PROJECT_SOURCE_DIR}/cmake/globe_version.hpp.in
                ${PROJECT_BINARY_DIR}/generated/globe_version.hpp @ONLY)
-add_library(globe_version INTERFACE)
-target_include_directories(globe_version INTERFACE ${PROJECT_BINARY_DIR}/generated)
+configure_file(${PROJECT_SOURCE_DIR}/cmake/globe_revision.cpp.in
+               ${PROJECT_BINARY_DIR}/generated/globe_revision.cpp @ONLY)
+add_library(globe_version STATIC ${PROJECT_BINARY_DIR}/generated/globe_revision.cpp)
+target_include_directories(globe_version PUBLIC ${PROJECT_BINARY_DIR}/generated)

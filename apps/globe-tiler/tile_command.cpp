@@ -85,7 +85,7 @@ int runTileCommand(int argc, char** argv, TileCommandKind kind) {
       "(on many machines; globe-tiler plan --shards N INPUT... first)",
       "globe-tiler"};
   app.set_version_flag("--version",
-                       std::string("globe-tiler ") + kVersion + " (" + kSourceRevision + ")");
+                       std::string("globe-tiler ") + kVersion + " (" + sourceRevision() + ")");
   tiling::TilerOptions options;
   std::string output, globeName = "wgs84";
   uint32_t maxLevel = 0;

@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
   CLI::App app{"globe: a virtual-globe terrain viewer with real-time camera-terrain collision",
                "globe"};
   app.set_version_flag(
-      "--version", std::string("globe ") + globe::kVersion + " (" + globe::kSourceRevision + ")");
+      "--version", std::string("globe ") + globe::kVersion + " (" + globe::sourceRevision() + ")");
   app.require_subcommand(1);
   globe::app::CommonArguments common;
   auto sources = globe::services::loadNamedSources(globe::services::userSourcesFile());
