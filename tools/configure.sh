@@ -13,7 +13,7 @@ if command -v ccache >/dev/null 2>&1; then
   # Paths under the checkout hashed as relative ones and the working directory left out of the
   # hash (the objects hold no absolute path: -ffile-prefix-map in CMakeLists.txt), so a clone in
   # another folder gets this one's objects from the cache (docs/performance/ci-time.md).
-  CCACHE=("env;CCACHE_BASEDIR=$PWD;CCACHE_NOHASHDIR=1;ccache")
-  LAUNCHER=(-DCMAKE_C_COMPILER_LAUNCHER="${CCACHE[0]}" -DCMAKE_CXX_COMPILER_LAUNCHER="${CCACHE[0]}")
+  CCACHE="env;CCACHE_BASEDIR=$PWD;CCACHE_NOHASHDIR=1;ccache"
+  LAUNCHER=(-DCMAKE_C_COMPILER_LAUNCHER="$CCACHE" -DCMAKE_CXX_COMPILER_LAUNCHER="$CCACHE")
 fi
 cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo "${LAUNCHER[@]}" "$@" >/dev/null

@@ -3,7 +3,7 @@
 # it, a clean environment, then the CI-time lines and the compiler cache's hit rate for the run.
 # --cold empties the compiler cache first (what a machine that never built globe sees); without
 # it the cache is what earlier builds left (the usual case: CI on the developer's machine). Needs
-# root, as CI (apt, tmpfs, Slurm). Prints one Markdown row per stage.
+# root, as CI (apt, tmpfs, Slurm). Prints the run's CI-time lines and the cache's hits and misses.
 #
 #   tools/bench/ci_time.sh [--cold] FOLDER
 set -euo pipefail
