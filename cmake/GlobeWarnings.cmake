@@ -58,7 +58,6 @@ function(globe_module name)
   globe_precompile(${name})
 endfunction()
 
-option(GLOBE_TESTS_FULL_DEBUG_INFO "Compile the tests with the build type's full -g, not -g1" OFF)
 # globe_test(NAME SOURCES... DEPENDS targets...): a GoogleTest executable registered with CTest.
 function(globe_test name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
@@ -66,12 +65,13 @@ function(globe_test name)
   target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} GTest::gtest_main GTest::gmock globe_warnings
     globe_build_paths)  # tests/support/build_paths.hpp
   target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR})  # tests/support/...
-  # Line tables only (-g1) for the tests' own sources: enough for backtraces and sanitizer
-  # reports, and the test batches compile much faster than with full debug info
-  # (docs/performance/build-time.md). The libraries and programs they link keep the build type's -g.
-  if((CMAKE_BUILD_TYPE STREQUAL "RelWithDebInfo" OR CMAKE_BUILD_TYPE STREQUAL "Debug") AND
-     NOT GLOBE_TESTS_FULL_DEBUG_INFO)
-    target_compile_options(${name} PRIVATE -g1)
+  # The tests' own code at -O1 (a quarter faster to compile than -O2; what they test, the
+  # libraries and programs, keeps the build type's optimisation): docs/performance/build-time.md.
+  if(CMAKE_BUILD_TYPE STREQUAL "RelWithDebInfo" OR CMAKE_BUILD_TYPE STREQUAL "Release")
+    target_compile_options(${name} PRIVATE -O1)
+  endif()
+  if(TARGET globe_tests)  # tools/run-tests.sh builds this: the tests and what they run
+    add_dependencies(globe_tests ${name})
   endif()
   globe_precompile(${name} <gtest/gtest.h>)
   # The fixtures the test processes share (tests/support/shared_fixture.hpp) live for one CTest

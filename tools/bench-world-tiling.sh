@@ -11,6 +11,7 @@ cd "$ROOT"
 ROUNDS=${1:-2}
 WORK=${2:-/tmp/globe-world-bench}
 BUILD=${BUILD_DIR:-build}
+cmake --build "$BUILD" -j"$(nproc)" --target globe-synth-gtopo30 globe-tiler >/dev/null  # tools/run-tests.sh builds only the tests
 OUT_MD=${OUT_MD:-$ROOT/docs/performance/world-tiling.md}
 for exe in "$BUILD/tools/synth/globe-synth-gtopo30" "$BUILD/apps/globe-tiler/globe-tiler"; do
   [ -x "$exe" ] || { echo "build it first: $exe" >&2; exit 1; }

@@ -11,7 +11,7 @@ $SUDO apt-get install -y -qq --no-install-recommends \
   build-essential cmake pkg-config git ca-certificates \
   libosmesa6-dev libgl-dev libgl1-mesa-dri libegl-dev libglfw3-dev libglew-dev libglm-dev \
   libstb-dev libfreetype-dev libharfbuzz-dev fonts-dejavu-core libgdal-dev gdal-bin libjpeg-dev libdeflate-dev libwebp-dev libtomlplusplus-dev libgeographiclib-dev nlohmann-json3-dev libcli11-dev libfmt-dev \
-  libgtest-dev libgmock-dev libbenchmark-dev libtinyxml2-dev libcairo2-dev libcurl4-openssl-dev ffmpeg ccache help2man \
+  libgtest-dev libgmock-dev libbenchmark-dev libtinyxml2-dev libcairo2-dev libcurl4-openssl-dev ffmpeg ccache lld help2man \
   python3-glad time xvfb xdotool x11-apps imagemagick gnuplot-nox python3-matplotlib mesa-utils nginx-light openssl \
   >/dev/null
 # nginx-light is for the HTTP tests, which start their own on 127.0.0.1 and stop it; the

@@ -12,7 +12,9 @@ BUILD=${BUILD_DIR:-build}
 . tools/lib/build-checked.sh
 . tools/lib/stage-time.sh
 bash tools/configure.sh "$BUILD"
-stage "build ($BUILD)" build_checked "$BUILD"
+# The tests and the programs they run (target globe_tests); the benchmarks and tools build when
+# their scripts run them (CI builds everything: .ci/run).
+stage "build ($BUILD)" build_checked "$BUILD" --target globe_tests
 # Chromium, node and npm (apt, where missing) and tools/web's pinned npm packages: the web
 # clients (CesiumJS, MapLibre) that tests/web shows the exports in. Slurm, munge, GNU parallel and
 # python3-yaml (apt, where missing): what tests/cluster runs.

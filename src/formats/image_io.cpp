@@ -11,6 +11,7 @@
 #include <limits>
 #include <string>
 
+#include "formats/png_encoder.hpp"
 #include "formats/tile_edges.hpp"
 #include "transport/atomic_file.hpp"
 
@@ -105,12 +106,7 @@ Result<std::vector<std::byte>> encodeJpeg(const ImageRgba& image, int quality) {
 
 Result<std::vector<std::byte>> encodePng(const ImageRgba& image) {
   if (!wellFormed(image)) return makeError("cannot encode PNG: malformed RGBA image");
-  std::vector<std::byte> png;
-  if (stbi_write_png_to_func(appendBytes, &png, image.widthPixels, image.heightPixels, 4,
-                             image.pixels.data(), image.widthPixels * 4) == 0) {
-    return makeError("PNG encoding failed");
-  }
-  return png;
+  return encodePngRgba(image.pixels, image.widthPixels, image.heightPixels);
 }
 
 Result<ImageRgba> loadImageRgba(const std::filesystem::path& path) {
@@ -151,12 +147,9 @@ Result<void> writePngAtomically(const std::filesystem::path& path, std::span<con
                      " bytes do not make a " + std::to_string(widthPixels) + "x" +
                      std::to_string(heightPixels) + " RGBA image");
   }
-  std::vector<std::byte> png;
-  if (stbi_write_png_to_func(appendBytes, &png, widthPixels, heightPixels, 4, rgba.data(),
-                             widthPixels * 4) == 0) {
-    return makeError(path.string() + ": PNG encoding failed");
-  }
-  return transport::writeFileAtomically(path, std::span<const std::byte>(png));
+  auto png = encodePngRgba(rgba, widthPixels, heightPixels);
+  if (!png) return makeError(path.string() + ": " + png.error());
+  return transport::writeFileAtomically(path, std::span<const std::byte>(*png));
 }
 
 }  // namespace globe::formats

@@ -13,8 +13,7 @@
 #include <memory>
 #include <string>
 
-#include "core/big_endian.hpp"
-#include "core/crc32.hpp"
+#include "formats/png_encoder.hpp"
 #include "formats/tile_edges.hpp"
 
 namespace globe::imagery_tiling {
@@ -36,22 +35,6 @@ struct JpegError {
   auto* error = reinterpret_cast<JpegError*>(info->err);
   (*info->err->format_message)(info, error->message);
   std::longjmp(error->jump, 1);
-}
-
-void appendChunk(std::vector<std::byte>& out, const char type[4], std::span<const std::byte> data) {
-  const size_t start = out.size();
-  out.resize(start + 12 + data.size());
-  core::storeBigEndian32(&out[start], static_cast<uint32_t>(data.size()));
-  std::memcpy(&out[start + 4], type, 4);
-  if (!data.empty()) std::memcpy(&out[start + 8], data.data(), data.size());
-  const uint32_t crc = core::crc32(std::span(out).subspan(start + 4, 4 + data.size()));
-  core::storeBigEndian32(&out[start + 8 + data.size()], crc);
-}
-
-int paeth(int a, int b, int c) {
-  const int p = a + b - c;
-  const int pa = std::abs(p - a), pb = std::abs(p - b), pc = std::abs(p - c);
-  return pa <= pb && pa <= pc ? a : (pb <= pc ? b : c);
 }
 
 struct CompressorDeleter {
@@ -119,100 +102,19 @@ Result<std::vector<std::byte>> encodeJpegFast(const formats::ImageRgba& image, i
   return out;
 }
 
-namespace {
-
-// 8-bit PNG of `channels` 1 (grey), 2 (grey, alpha) or 4 (RGBA) bytes per pixel; a constant, so
-// that the filter loops vectorise as before.
-template <size_t channels>
-Result<std::vector<std::byte>> encodePngChannels(const uint8_t* pixels, int widthPixels,
-                                                 int heightPixels) {
-  const size_t stride = static_cast<size_t>(widthPixels) * channels;
-  const auto rows = static_cast<size_t>(heightPixels);
-  std::vector<uint8_t> filtered(rows * (stride + 1));
-  std::vector<uint8_t> candidate[5];
-  for (auto& c : candidate) c.resize(stride);
-  const std::vector<uint8_t> zeros(stride, 0);
-  for (size_t r = 0; r < rows; ++r) {
-    const uint8_t* row = &pixels[r * stride];
-    const uint8_t* above = r > 0 ? row - stride : zeros.data();
-    // One tight loop per filter type (they vectorise); a and c are 0 for the first pixel.
-    auto filter = [&](int type, auto predict) {
-      uint8_t* out = candidate[type].data();
-      uint32_t cost = 0;
-      for (size_t i = 0; i < stride; ++i) {
-        const int a = i >= channels ? row[i - channels] : 0, b = above[i],
-                  c = i >= channels ? above[i - channels] : 0;
-        out[i] = static_cast<uint8_t>(row[i] - predict(a, b, c));
-        cost += static_cast<uint32_t>(std::abs(static_cast<int8_t>(out[i])));
-      }
-      return cost;
-    };
-    const uint32_t costs[5] = {
-        filter(0, [](int, int, int) { return 0; }),
-        filter(1, [](int a, int, int) { return a; }),
-        filter(2, [](int, int b, int) { return b; }),
-        filter(3, [](int a, int b, int) { return (a + b) / 2; }),
-        filter(4, [](int a, int b, int c) { return paeth(a, b, c); }),
-    };
-    int best = 0;
-    for (int type = 1; type < 5; ++type) {
-      if (costs[type] < costs[best]) best = type;
-    }
-    filtered[r * (stride + 1)] = static_cast<uint8_t>(best);
-    std::memcpy(&filtered[r * (stride + 1) + 1], candidate[best].data(), stride);
-  }
-  // One compressor per thread: allocating one costs more than compressing a tile.
-  thread_local std::unique_ptr<libdeflate_compressor, CompressorDeleter> compressor(
-      libdeflate_alloc_compressor(6));
-  if (!compressor) return makeError("PNG encoding failed: cannot allocate a compressor");
-  std::vector<std::byte> zlib(libdeflate_zlib_compress_bound(compressor.get(), filtered.size()));
-  const size_t compressed = libdeflate_zlib_compress(compressor.get(), filtered.data(),
-                                                     filtered.size(), zlib.data(), zlib.size());
-  if (compressed == 0) return makeError("PNG encoding failed: deflate output too large");
-  zlib.resize(compressed);
-
-  std::vector<std::byte> png;
-  png.reserve(compressed + 64);
-  const uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-  for (uint8_t b : signature) png.push_back(std::byte{b});
-  std::byte header[13];
-  core::storeBigEndian32(&header[0], static_cast<uint32_t>(widthPixels));
-  core::storeBigEndian32(&header[4], static_cast<uint32_t>(heightPixels));
-  header[8] = std::byte{8};                                          // bits per channel
-  header[9] = std::byte{channels == 1 ? 0 : channels == 2 ? 4 : 6};  // grey, grey+alpha, RGBA
-  header[10] = std::byte{0};                                         // deflate
-  header[11] = std::byte{0};                                         // adaptive filtering
-  header[12] = std::byte{0};                                         // not interlaced
-  appendChunk(png, "IHDR", header);
-  appendChunk(png, "IDAT", zlib);
-  appendChunk(png, "IEND", {});
-  return png;
-}
-
-}  // namespace
-
 Result<std::vector<std::byte>> encodePngFast(const formats::ImageRgba& image) {
   if (!wellFormed(image)) return makeError("cannot encode PNG: malformed RGBA image");
-  return encodePngChannels<4>(image.pixels.data(), image.widthPixels, image.heightPixels);
+  return formats::encodePngRgba(image.pixels, image.widthPixels, image.heightPixels);
 }
 
 Result<std::vector<std::byte>> encodePngGreyFast(std::span<const uint8_t> grey, int widthPixels,
                                                  int heightPixels) {
-  if (widthPixels <= 0 || heightPixels <= 0 ||
-      grey.size() != static_cast<size_t>(widthPixels) * static_cast<size_t>(heightPixels)) {
-    return makeError("cannot encode PNG: malformed grey image");
-  }
-  return encodePngChannels<1>(grey.data(), widthPixels, heightPixels);
+  return formats::encodePngGrey(grey, widthPixels, heightPixels);
 }
 
 Result<std::vector<std::byte>> encodePngGreyAlphaFast(std::span<const uint8_t> greyAlpha,
                                                       int widthPixels, int heightPixels) {
-  if (widthPixels <= 0 || heightPixels <= 0 ||
-      greyAlpha.size() !=
-          size_t{2} * static_cast<size_t>(widthPixels) * static_cast<size_t>(heightPixels)) {
-    return makeError("cannot encode PNG: malformed grey+alpha image");
-  }
-  return encodePngChannels<2>(greyAlpha.data(), widthPixels, heightPixels);
+  return formats::encodePngGreyAlpha(greyAlpha, widthPixels, heightPixels);
 }
 
 }  // namespace globe::imagery_tiling

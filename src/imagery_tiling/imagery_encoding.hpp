@@ -1,5 +1,5 @@
-// Fast tile encoders for the imagery tiler: JPEG through libjpeg-turbo and PNG through libdeflate
-// (both come with GDAL's Debian packages). stb's encoders (io/image_io) spent most of a tiling run
+// Fast tile encoders for the imagery tiler: JPEG through libjpeg-turbo (with GDAL's Debian packages)
+// and PNG through formats/png_encoder (libdeflate). stb's encoders spent most of a tiling run
 // compressing; these give the same pictures several times faster.
 #pragma once
 

@@ -28,6 +28,7 @@
 #include "tests/publish/query_points.hpp"
 #include "tests/support/build_paths.hpp"
 #include "tests/support/command_run.hpp"
+#include "tests/support/shared_commands.hpp"
 #include "tests/support/test_io_util.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 #include "transport/atomic_file.hpp"
@@ -101,38 +102,33 @@ geo::TileId tileAt(uint32_t level, double lon, double lat) {
           static_cast<uint32_t>((90 - lat) / size)};
 }
 
-// One heightmap tree for the tests below: the world's coarse levels, then Fuji's square to its
-// finest, in two runs (the second adds children to tiles the first wrote).
+// One heightmap tree for the tests below, exported once per CTest run (sharedCommands): the
+// world's coarse levels, then Fuji's square to its finest, in two runs (the second adds children
+// to tiles the first wrote).
+const std::string kFujiLevels = " --levels 3-12 --bounds 138,35,139,36 ";
+
 class ExportTreesHeightmap : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() {
-    tree_ = new fs::path(globe::testing::freshTempDir("export-heightmap") / "hm");
-    const std::string pyramid = globe::testing::bundledPyramid().string();
-    first_ = new Exit(runCommand(tiler() + "--format heightmap -o " + tree_->string() +
-                                 " --levels 0-2 " + pyramid));
-    second_ = new Exit(runCommand(tiler() + "--format heightmap -o " + tree_->string() +
-                                  " --levels 3-12 --bounds 138,35,139,36 " + pyramid));
-  }
-  static void TearDownTestSuite() {
-    delete tree_;
-    delete first_;
-    delete second_;
-  }
   void SetUp() override {
-    ASSERT_EQ(first_->exitCode, 0) << first_->output;
-    ASSERT_EQ(second_->exitCode, 0) << second_->output;
+    const std::string pyramid = globe::testing::bundledPyramid().string();
+    run_ = globe::testing::sharedCommands(
+        "export-heightmap", {tiler() + "--format heightmap -o {dir}/hm --levels 0-2 " + pyramid,
+                             tiler() + "--format heightmap -o {dir}/hm" + kFujiLevels + pyramid});
+    tree_ = run_.dir / "hm";
+    scratch_ = globe::testing::freshTempDir("export-heightmap-scratch");
+    ASSERT_EQ(run_.exits.size(), 2U);
+    ASSERT_EQ(run_.exits[0].exitCode, 0) << run_.exits[0].output;
+    ASSERT_EQ(run_.exits[1].exitCode, 0) << run_.exits[1].output;
   }
-  static fs::path* tree_;
-  static Exit* first_;
-  static Exit* second_;
+  globe::testing::SharedRun run_;
+  fs::path tree_;     // shared: read only
+  fs::path scratch_;  // this test's own
 };
-fs::path* ExportTreesHeightmap::tree_ = nullptr;
-Exit* ExportTreesHeightmap::first_ = nullptr;
-Exit* ExportTreesHeightmap::second_ = nullptr;
 
 TEST_F(ExportTreesHeightmap, LayerJsonListsEveryTileTheTreeHolds) {
-  EXPECT_NE(second_->output.find("heightmap tiles written"), std::string::npos) << second_->output;
-  std::ifstream in(*tree_ / "layer.json");
+  EXPECT_NE(run_.exits[1].output.find("heightmap tiles written"), std::string::npos)
+      << run_.exits[1].output;
+  std::ifstream in(tree_ / "layer.json");
   const std::string text{std::istreambuf_iterator<char>(in), {}};
   auto layer = formats::parseTerrainLayerJson(text, "layer.json");
   ASSERT_TRUE(layer) << layer.error();
@@ -146,7 +142,7 @@ TEST_F(ExportTreesHeightmap, LayerJsonListsEveryTileTheTreeHolds) {
   EXPECT_NE(text.find("\"attribution\""), std::string::npos);
   // Every tile on disk is listed, and every listed tile is on disk.
   size_t onDisk = 0, listed = 0;
-  for (const auto& entry : fs::recursive_directory_iterator(*tree_)) {
+  for (const auto& entry : fs::recursive_directory_iterator(tree_)) {
     if (entry.path().extension() != ".terrain") continue;
     ++onDisk;
     const auto z = std::stoul(entry.path().parent_path().parent_path().filename());
@@ -163,7 +159,7 @@ TEST_F(ExportTreesHeightmap, LayerJsonListsEveryTileTheTreeHolds) {
       for (uint32_t x = r.startX; x <= r.endX; ++x) {
         for (uint32_t y = r.startY; y <= r.endY; ++y) {
           ++listed;
-          EXPECT_TRUE(fs::exists(*tree_ / std::to_string(z) / std::to_string(x) /
+          EXPECT_TRUE(fs::exists(tree_ / std::to_string(z) / std::to_string(x) /
                                  (std::to_string(y) + ".terrain")))
               << z << "/" << x << "/" << y;
         }
@@ -178,7 +174,7 @@ TEST_F(ExportTreesHeightmap, LayerJsonListsEveryTileTheTreeHolds) {
 // level-2 tile the first run wrote.
 TEST_F(ExportTreesHeightmap, ChildMasksMatchTheTilesThatExist) {
   size_t tiles = 0, withChildren = 0;
-  for (const auto& entry : fs::recursive_directory_iterator(*tree_)) {
+  for (const auto& entry : fs::recursive_directory_iterator(tree_)) {
     if (entry.path().extension() != ".terrain") continue;
     const auto z =
         static_cast<uint32_t>(std::stoul(entry.path().parent_path().parent_path().filename()));
@@ -189,7 +185,7 @@ TEST_F(ExportTreesHeightmap, ChildMasksMatchTheTilesThatExist) {
     const uint8_t bits[4] = {4, 8, 1, 2};
     uint8_t expected = 0;
     for (size_t k = 0; k < 4; ++k) {
-      if (fs::exists(tilePath(*tree_, children[k]))) expected |= bits[k];
+      if (fs::exists(tilePath(tree_, children[k]))) expected |= bits[k];
     }
     EXPECT_EQ(readTile(entry.path()).childMask, expected) << entry.path();
     ++tiles;
@@ -197,7 +193,7 @@ TEST_F(ExportTreesHeightmap, ChildMasksMatchTheTilesThatExist) {
   }
   EXPECT_GT(tiles, 40u);
   EXPECT_GT(withChildren, 10u);
-  EXPECT_NE(readTile(tilePath(*tree_, tileAt(2, 138.5, 35.5))).childMask, 0);
+  EXPECT_NE(readTile(tilePath(tree_, tileAt(2, 138.5, 35.5))).childMask, 0);
 }
 
 // The project's decoder at the tiles' posts, the independent decoder anywhere (the cell's
@@ -209,7 +205,7 @@ TEST_F(ExportTreesHeightmap, TilesHoldThePyramidsSurface) {
   std::vector<double> decoded;
   for (const Point& p : fujiPoints(60, 11)) {
     const geo::TileId tile = tileAt(12, p.lon, p.lat);
-    const formats::HeightmapTile hm = readTile(tilePath(*tree_, tile));
+    const formats::HeightmapTile hm = readTile(tilePath(tree_, tile));
     ASSERT_EQ(hm.heightMeters.size(), 65u * 65u);
     const double size = 180.0 / 4096, west = tile.x * size - 180, north = 90 - tile.y * size;
     const auto column = static_cast<uint32_t>(std::lround((p.lon - west) / size * 64));
@@ -217,17 +213,17 @@ TEST_F(ExportTreesHeightmap, TilesHoldThePyramidsSurface) {
     posts.push_back({west + column * size / 64, north - row * size / 64});
     decoded.push_back(hm.heightMeters[row * 65 + column]);
   }
-  const fs::path postFile = writePoints(tree_->parent_path() / "posts.txt", posts);
+  const fs::path postFile = writePoints(scratch_ / "posts.txt", posts);
   std::vector<double> d = sortedDifferences(decoded, exactHeights(postFile));
   ASSERT_EQ(d.size(), 60u);
   std::printf("[ heightmap posts ] vs the pyramid: median %.3f m, max %.3f m\n", d[30], d.back());
   EXPECT_LE(d.back(), 0.1 + 1e-6);  // rounded to the 0.2 m step
 
-  const fs::path points = writePoints(tree_->parent_path() / "points.txt", fujiPoints(200, 31));
+  const fs::path points = writePoints(scratch_ / "points.txt", fujiPoints(200, 31));
   const std::vector<double> exact = exactHeights(points);
   const Exit reference =
       runCommand("python3 " + (kSource / "tests/tools/heightmap_reference.py").string() + " " +
-                 tree_->string() + " < " + points.string());
+                 tree_.string() + " < " + points.string());
   ASSERT_EQ(reference.exitCode, 0) << reference.output;
   d = sortedDifferences(heightsOf(reference.output), exact);
   ASSERT_EQ(d.size(), 200u);
@@ -235,7 +231,7 @@ TEST_F(ExportTreesHeightmap, TilesHoldThePyramidsSurface) {
               d[100], d[190], d.back());
   EXPECT_LT(d.back(), 0.2);
 
-  d = sortedDifferences(queryHeights("quantized-mesh:" + tree_->string(), points), exact);
+  d = sortedDifferences(queryHeights("quantized-mesh:" + tree_.string(), points), exact);
   ASSERT_EQ(d.size(), 200u);
   std::printf("[ heightmap globe ] vs the pyramid: median %.3f m, 95th %.3f m, max %.3f m\n",
               d[100], d[190], d.back());
@@ -245,7 +241,7 @@ TEST_F(ExportTreesHeightmap, TilesHoldThePyramidsSurface) {
 // The water mask: the nearest pyramid vertex's water flag; a level-0 tile holds the Pacific and
 // the Americas (256×256), and globe's reader takes the sea there as water.
 TEST_F(ExportTreesHeightmap, WaterMasksMarkTheSea) {
-  const formats::HeightmapTile west = readTile(tilePath(*tree_, {0, 0, 0}));
+  const formats::HeightmapTile west = readTile(tilePath(tree_, {0, 0, 0}));
   ASSERT_EQ(west.waterMask.size(), 256u * 256u);
   const auto pixel = [&](double lon, double lat) {
     const auto column = static_cast<size_t>((lon + 180) / 180 * 256);
@@ -257,18 +253,18 @@ TEST_F(ExportTreesHeightmap, WaterMasksMarkTheSea) {
   EXPECT_EQ(pixel(-60, -10), 0);   // Amazonia
   EXPECT_EQ(pixel(-30, 30), 255);  // the Atlantic
   // Fuji's summit tile: all land, one byte.
-  EXPECT_EQ(readTile(tilePath(*tree_, tileAt(12, 138.7274, 35.3606))).waterMask,
+  EXPECT_EQ(readTile(tilePath(tree_, tileAt(12, 138.7274, 35.3606))).waterMask,
             std::vector<uint8_t>{0});
   // The sea read back: its 0 m surface, as the pyramid's exact surface of the level the tile
   // samples (2 deeper) has it between its vertices (the chords of a coarse level dip below 0).
-  const fs::path sea = writePoints(tree_->parent_path() / "sea.txt", {{-150, 0}, {-30, 30}});
+  const fs::path sea = writePoints(scratch_ / "sea.txt", {{-150, 0}, {-30, 30}});
   const std::vector<double> d = sortedDifferences(
-      queryHeights("quantized-mesh:" + tree_->string(), sea),
+      queryHeights("quantized-mesh:" + tree_.string(), sea),
       queryHeights("--level 4 " + globe::testing::bundledPyramid().string(), sea));
   ASSERT_EQ(d.size(), 2u);
   EXPECT_LT(d.back(), 0.2);
   // globe's reader marks the masked vertices water: the block of the level-0 tile.
-  auto source = services::openTerrainSource("quantized-mesh:" + tree_->string(),
+  auto source = services::openTerrainSource("quantized-mesh:" + tree_.string(),
                                             terrain::SeaSurface::Water, nullptr);
   ASSERT_TRUE(source) << source.error();
   auto block = (*source)->loadBlock({0, 0, 0});
@@ -286,8 +282,10 @@ TEST_F(ExportTreesHeightmap, WaterMasksMarkTheSea) {
 }
 
 TEST_F(ExportTreesHeightmap, ARunAgainWritesNothing) {
-  const Exit again = runCommand(tiler() + "--format heightmap -o " + tree_->string() +
-                                " --levels 3-12 --bounds 138,35,139,36 " +
+  // On a copy: the shared tree stays as every other test reads it.
+  const fs::path copy = scratch_ / "hm";
+  fs::copy(tree_, copy, fs::copy_options::recursive);
+  const Exit again = runCommand(tiler() + "--format heightmap -o " + copy.string() + kFujiLevels +
                                 globe::testing::bundledPyramid().string());
   ASSERT_EQ(again.exitCode, 0) << again.output;
   EXPECT_NE(again.output.find(": 0 heightmap tiles written"), std::string::npos) << again.output;

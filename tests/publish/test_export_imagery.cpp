@@ -31,6 +31,7 @@
 #include "tests/support/build_paths.hpp"
 #include "tests/support/command_run.hpp"
 #include "tests/support/imagery_test_layers.hpp"
+#include "tests/support/shared_commands.hpp"
 #include "tests/support/test_io_util.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 
@@ -70,19 +71,23 @@ struct ZionExports {
   fs::path xyz, tms, pmtiles;
 };
 
+// Made once per CTest run (sharedCommands): four tests read them.
 const ZionExports& zionExports() {
   static const ZionExports exports = [] {
-    const fs::path dir = globe::testing::freshTempDir("export-imagery");
     const std::string layer = globe::testing::zionLayer().string();
-    ZionExports e{dir / "xyz", dir / "tms", dir / "zion.pmtiles"};
-    for (const auto& [format, out] :
-         {std::pair<std::string, fs::path>{"xyz", e.xyz}, {"tms", e.tms}, {"pmtiles", e.pmtiles}}) {
-      const Exit r = runCommand(exportImagery("--format " + format + " -o " + out.string() + " " +
-                                              kZion + "--attribution 'USGS Landsat 8' " + layer));
-      EXPECT_EQ(r.exitCode, 0) << r.output;
-      std::printf("[ %s ] %s", format.c_str(), r.output.c_str());
+    std::vector<std::string> commands;
+    for (const std::string out :
+         {"xyz --format xyz", "tms --format tms", "zion.pmtiles --format pmtiles"}) {
+      commands.push_back(exportImagery("-o {dir}/" + out + " " + kZion +
+                                       "--attribution 'USGS Landsat 8' " + layer));
     }
-    return e;
+    const globe::testing::SharedRun run =
+        globe::testing::sharedCommands("export-imagery", commands);
+    for (const Exit& r : run.exits) {
+      EXPECT_EQ(r.exitCode, 0) << r.output;
+      std::printf("%s", r.output.c_str());
+    }
+    return ZionExports{run.dir / "xyz", run.dir / "tms", run.dir / "zion.pmtiles"};
   }();
   return exports;
 }
@@ -193,7 +198,7 @@ TEST(ExportImagery, TmsIsTheXyzTreeWithRowsFromTheSouth) {
       << parsed.output;
   // GDAL's WMS driver reads a TileMap document whose tile sets start at zoom 0: a Web-Mercator
   // raster of the deepest zoom's pixels.
-  const fs::path fromZero = e.tms.parent_path() / "tms-from-0";
+  const fs::path fromZero = globe::testing::freshTempDir("export-imagery-tms0") / "tms-from-0";
   const Exit exported =
       runCommand(exportImagery("--format tms --levels 0-10 -o " + fromZero.string() + " " +
                                globe::testing::zionLayer().string()));
@@ -207,7 +212,7 @@ TEST(ExportImagery, TmsIsTheXyzTreeWithRowsFromTheSouth) {
 
 TEST(ExportImagery, PmtilesHoldsExactlyTheXyzTreesTiles) {
   const ZionExports& e = zionExports();
-  const fs::path dump = e.pmtiles.parent_path() / "pmtiles-dump";
+  const fs::path dump = globe::testing::freshTempDir("export-imagery-dump") / "pmtiles-dump";
   const Exit reference =
       runCommand("python3 " + (kSource / "tests/tools/pmtiles_reference.py").string() + " " +
                  e.pmtiles.string() + " " + dump.string());

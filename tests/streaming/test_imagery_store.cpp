@@ -1,7 +1,6 @@
 // ImageryStore: one read per tile with its CRC checked, absent tiles nullopt, each bad pack
 // reported once.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstring>
 #include <filesystem>
@@ -9,6 +8,7 @@
 #include "formats/image_pack.hpp"
 #include "formats/layer_manifest.hpp"
 #include "streaming/imagery_store.hpp"
+#include "tests/support/tiler_test_fixture.hpp"
 #include "transport/atomic_file.hpp"
 
 namespace globe::streaming {
@@ -26,10 +26,7 @@ std::vector<std::byte> payloadFor(const geo::TileId& t) {
 
 // Levels 0 and 1 with 2×2-tile packs: level 0 has both tiles, level 1 only tiles with even x.
 fs::path makeLayer(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() /
-                       ("globe-imagery-store-" + std::to_string(::getpid()) + "-" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = globe::testing::freshTempDir("imagery-store-" + name);  // removed at exit
   formats::LayerManifest m;
   m.packTilesPerSide = 2;
   m.levels.push_back({0, 2, {-180, -90, 180, 90}, {{0, 0, 0}}});

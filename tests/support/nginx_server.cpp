@@ -45,6 +45,26 @@ bool accepts(int port) {
   return ok;
 }
 
+// Sends one GET for `path` to 127.0.0.1:port and reads the answer to its end; false when the
+// server does not answer (stopped).
+bool answered(int port, const std::string& path) {
+  const int s = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  address.sin_port = htons(static_cast<uint16_t>(port));
+  bool ok = ::connect(s, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0;
+  const std::string request = "GET " + path + " HTTP/1.0\r\n\r\n";
+  ok = ok && ::send(s, request.data(), request.size(), MSG_NOSIGNAL) ==
+                 static_cast<ssize_t>(request.size());
+  char buffer[512];
+  ssize_t got = 0;
+  while (ok && (got = ::recv(s, buffer, sizeof buffer, 0)) > 0) {
+  }
+  ::close(s);
+  return ok && got == 0;
+}
+
 std::string readText(const std::filesystem::path& path) {
   std::ifstream in(path);
   std::ostringstream text;
@@ -66,6 +86,7 @@ std::unique_ptr<NginxServer> NginxServer::start(const Options& options) {
   std::filesystem::remove_all(server->dir_);
   std::filesystem::create_directories(server->dir_ / "tmp");
   server->port_ = options.port != 0 ? options.port : freeLoopbackPort();
+  server->syncPort_ = freeLoopbackPort();
   server->tls_ = !options.certificate.empty() && !options.key.empty();
   const std::string d = server->dir_.string();
   {
@@ -94,6 +115,13 @@ std::unique_ptr<NginxServer> NginxServer::start(const Options& options) {
          << "    root " << std::filesystem::absolute(options.root).string() << ";\n"
          << options.serverDirectives << "\n"
          << "  }\n"
+         // accessLog's marker requests: answered and logged by the same single worker, after
+         // every request it finished before them (nginx logs a request once it is answered).
+         << "  server {\n"
+         << "    listen 127.0.0.1:" << server->syncPort_ << ";\n"
+         << "    access_log " << d << "/sync.log ranges;\n"
+         << "    location / { return 204; }\n"
+         << "  }\n"
          << "}\n";
   }
   const pid_t pid = ::fork();
@@ -106,14 +134,15 @@ std::unique_ptr<NginxServer> NginxServer::start(const Options& options) {
     ::_exit(127);
   }
   server->pid_ = pid;
-  for (int i = 0; i < 200; ++i) {
+  // Until it accepts (a few ms), or exits, or 5 s have passed.
+  for (int i = 0; i < 2500; ++i) {
     if (accepts(server->port_)) return server;
     int status = 0;
     if (::waitpid(pid, &status, WNOHANG) == pid) {
       server->pid_ = -1;
       break;
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(25));
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   ADD_FAILURE() << "nginx did not start on 127.0.0.1:" << server->port_ << ":\n"
                 << readText(server->dir_ / "error.log");
@@ -140,21 +169,21 @@ std::string NginxServer::url(const std::string& path) const {
 }
 
 std::vector<std::string> NginxServer::accessLog() const {
-  // nginx logs a request after sending its response, so a client may be done before its last
-  // line is written: read until two reads 30 ms apart agree.
-  auto read = [this] {
-    std::ifstream in(dir_ / "access.log");
-    std::vector<std::string> lines;
-    for (std::string line; std::getline(in, line);) lines.push_back(line);
-    return lines;
-  };
-  std::vector<std::string> lines = read();
-  for (int i = 0; i < 100; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(30));
-    std::vector<std::string> again = read();
-    if (again.size() == lines.size()) break;
-    lines = std::move(again);
+  // A client may be done before nginx has logged its last request. A marker request to the
+  // same worker is handled after it logged every request it answered before; once the marker's
+  // own line is in sync.log (written just after its answer) access.log holds all of them.
+  static int markers = 0;
+  const std::string marker = "/marker-" + std::to_string(++markers);
+  if (running() && answered(syncPort_, marker)) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    while (readText(dir_ / "sync.log").find(marker + " ") == std::string::npos &&
+           std::chrono::steady_clock::now() < deadline) {
+      std::this_thread::yield();
+    }
   }
+  std::ifstream in(dir_ / "access.log");
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
   return lines;
 }
 

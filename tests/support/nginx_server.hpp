@@ -34,7 +34,7 @@ class NginxServer {
   int port() const { return port_; }
   // http(s)://127.0.0.1:PORT/path
   std::string url(const std::string& path) const;
-  // The requests served so far (once the log has settled): one line each, "METHOD URI STATUS
+  // The requests served so far (every one answered before the call): one line each, "METHOD URI STATUS
   // \"RANGE\" BYTES PROTOCOL ?QUERY".
   std::vector<std::string> accessLog() const;
 
@@ -43,6 +43,7 @@ class NginxServer {
   std::filesystem::path dir_;
   pid_t pid_ = -1;
   int port_ = 0;
+  int syncPort_ = 0;  // accessLog's marker requests (plain http)
   bool tls_ = false;
 };
 

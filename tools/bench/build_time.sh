@@ -25,7 +25,7 @@ flagsOf() {
   case $1 in
     plain) echo "-DGLOBE_UNITY_BUILD=OFF" ;;
     unity) echo "-DGLOBE_UNITY_BUILD=ON" ;;
-    unity-g) echo "-DGLOBE_UNITY_BUILD=ON -DGLOBE_TESTS_FULL_DEBUG_INFO=ON" ;;
+    unity-g) echo "-DGLOBE_UNITY_BUILD=ON -DGLOBE_FULL_DEBUG_INFO=ON" ;;
     pch) echo "-DGLOBE_UNITY_BUILD=OFF -DGLOBE_PRECOMPILED_HEADERS=ON" ;;
     *) echo "unknown variant $1" >&2; exit 2 ;;
   esac

@@ -7,6 +7,7 @@
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${1:-$ROOT/build}
+cmake --build "$BUILD" -j"$(nproc)" --target globe-bench-drape >/dev/null  # tools/run-tests.sh builds only the tests
 TILER=$BUILD/apps/globe-tiler/globe-tiler
 BENCH=$BUILD/tools/bench_drape/globe-bench-drape
 OUT_MD=$ROOT/docs/performance/imagery-frame-time.md

@@ -10,6 +10,7 @@
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${1:-$ROOT/build}
+cmake --build "$BUILD" -j"$(nproc)" --target globe-bench-drape >/dev/null  # tools/run-tests.sh builds only the tests
 TILER=$BUILD/apps/globe-tiler/globe-tiler
 BENCH=$BUILD/tools/bench_drape/globe-bench-drape
 for exe in "$TILER" "$BENCH"; do [ -x "$exe" ] || { echo "build it first: $exe" >&2; exit 1; }; done

@@ -11,6 +11,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 BUILD=${1:?build directory}
+cmake --build "$BUILD" -j"$(nproc)" --target globe-delay-proxy >/dev/null  # tools/run-tests.sh builds only the tests
 RTT=${2:-50}
 RUNS=${3:-3}
 GLOBE=$BUILD/apps/globe/globe

@@ -8,6 +8,7 @@
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${1:-$ROOT/build}
+cmake --build "$BUILD" -j"$(nproc)" --target globe-bench-render >/dev/null  # tools/run-tests.sh builds only the tests
 ROUNDS=${2:-3}
 BENCH=$BUILD/tools/bench_render/globe-bench-render
 [ -x "$BENCH" ] || { echo "build it first: $BENCH" >&2; exit 1; }

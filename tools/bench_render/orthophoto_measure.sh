@@ -13,6 +13,7 @@
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${1:-$ROOT/build}
+cmake --build "$BUILD" -j"$(nproc)" --target globe-image-error globe-image-gradient >/dev/null  # tools/run-tests.sh builds only the tests
 BASELINE=${2:-}
 OUT_MD=$ROOT/docs/performance/orthophoto.md
 GRADIENT=$BUILD/tools/bench_render/globe-image-gradient

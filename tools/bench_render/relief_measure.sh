@@ -9,6 +9,7 @@
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${1:-$ROOT/build}
+cmake --build "$BUILD" -j"$(nproc)" --target globe-image-gradient >/dev/null  # tools/run-tests.sh builds only the tests
 TILER=$BUILD/apps/globe-tiler/globe-tiler
 GLOBE=$BUILD/apps/globe/globe
 GRADIENT=$BUILD/tools/bench_render/globe-image-gradient

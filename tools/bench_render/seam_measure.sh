@@ -11,6 +11,7 @@
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${1:?BUILD}
+cmake --build "$BUILD" -j"$(nproc)" --target globe-image-seams >/dev/null  # tools/run-tests.sh builds only the tests
 BASELINE=${2:-}
 OUT_MD=$ROOT/docs/performance/imagery-seams.md
 SEAMS=$BUILD/tools/bench_render/globe-image-seams

@@ -10,6 +10,7 @@
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=${1:-$ROOT/build}
+cmake --build "$BUILD" -j"$(nproc)" --target globe-source-fidelity >/dev/null  # tools/run-tests.sh builds only the tests
 BASELINE=${2:-}
 OUT_MD=${OUT_MD:-$ROOT/docs/performance/source-fidelity.md}
 TILER=$BUILD/apps/globe-tiler/globe-tiler

@@ -261,8 +261,8 @@ TEST(HttpSnapshot, AServerStoppedMidFlightStillEndsWithAnImage) {
                               (site.dir / "stopped.log").string() + " 2>&1";
   std::thread snapshot([&] { (void)std::system(command.c_str()); });
   // Stop once some blocks have arrived (every request of the run is logged when answered).
-  for (int i = 0; i < 400 && server->accessLog().size() < 30; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(25));
+  for (int i = 0; i < 2000 && server->accessLog().size() < 30; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   const size_t served = server->accessLog().size();
   server->stop();
