@@ -19,6 +19,7 @@ struct PlayArguments {
   std::string video;
   std::string fps = "30";  // as text: checked and named by parseNumberArgument
   bool noFrames = false;
+  bool noGlide = false;
   bool window = false;
 };
 
@@ -38,6 +39,7 @@ int runPlayCommand(const PlayArguments& arguments, const CommonArguments& common
   options.widthPixels = size->first;
   options.heightPixels = size->second;
   options.writeFrames = !arguments.noFrames;
+  options.glide = !arguments.noGlide;
   options.window = arguments.window;
   if (!arguments.video.empty()) options.video = arguments.video;
   if (!applySceneArguments("play", common, context, options.scene)) return 2;
@@ -66,6 +68,9 @@ Subcommand addPlayCommand(CLI::App& app, CommonArguments& common) {
       ->capture_default_str();
   play->add_option("--size", arguments->size, "WxH pixels")->capture_default_str();
   play->add_flag("--no-frames", arguments->noFrames, "write the logs only, no PNG frames");
+  play->add_flag(
+      "--no-glide", arguments->noGlide,
+      "the paper's collision response alone: no lift over the ground ahead (docs/collision.md)");
   play->add_flag("--window", arguments->window, "show the playback in a GLFW window (same loop)");
   play->add_option("--video", arguments->video, "encode the frames into this MP4 with ffmpeg");
   addGlobeOption(*play, common);

@@ -151,7 +151,8 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
   auto labels = OverlayDrawing::create(scene);
   if (!labels) return Error{labels.error()};
   const int width = surface->widthPixels, height = surface->heightPixels;
-  PlaybackStep step(scene, gpu, path, width, height, std::chrono::seconds(options.timeoutSeconds));
+  PlaybackStep step(scene, gpu, path, width, height, std::chrono::seconds(options.timeoutSeconds),
+                    options.glide);
   // The first collision test runs against a complete view at the scripted start.
   FrameTimings startup;
   if (auto view = step.start(startup); !view) return Error{view.error()};

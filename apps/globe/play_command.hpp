@@ -18,7 +18,8 @@ struct PlayOptions {
   double framesPerSecond = 30;
   int widthPixels = 1280, heightPixels = 720;
   bool writeFrames = true;
-  bool window = false;                         // a GLFW window instead of OSMesa
+  bool glide = true;    // the controller glides over the ground ahead (camera/terrain_glide.hpp)
+  bool window = false;  // a GLFW window instead of OSMesa
   std::optional<std::filesystem::path> video;  // encode the frames with ffmpeg
   scene::SceneOptions scene;
   int timeoutSeconds = 300;  // for each frame's view to complete

@@ -57,22 +57,26 @@ std::string formatPlayLog(const std::vector<FrameRecord>& frames) {
   std::string text =
       "frame,time_s,lon_deg,lat_deg,height_m,terrain_height_m,clearance_m,collided,response,"
       "tiles_drawn,terrain_source,heading_deg,pitch_deg,roll_deg,scripted_height_m,near_clearance_"
-      "m\n";
+      "m,lift_m,vertical_jolt_m\n";
+  const std::vector<double> jolts = verticalJoltMeters(frames);
   char line[512];
-  for (const FrameRecord& r : frames) {
-    std::snprintf(line, sizeof line,
-                  "%d,%.4f,%.7f,%.7f,%.3f,%.3f,%.3f,%d,%s,%zu,%s,%.3f,%.3f,%.3f,%.3f,%.3f\n",
-                  r.frame, printable(r.timeSeconds, 1e4),
-                  printable(r.pose.position.longitudeDegrees(), 1e7),
-                  printable(r.pose.position.latitudeDegrees(), 1e7),
-                  printable(r.pose.position.heightMeters, 1e3),
-                  printable(r.terrainHeightMeters, 1e3), printable(r.clearanceMeters, 1e3),
-                  r.collided ? 1 : 0, std::string(collision::toString(r.response)).c_str(),
-                  r.tilesDrawn, std::string(toString(r.terrainSource)).c_str(),
-                  printable(signedAngleDegrees(r.pose.headingRadians), 1e3),
-                  printable(geo::radiansToDegrees(r.pose.pitchRadians), 1e3),
-                  printable(signedAngleDegrees(r.pose.rollRadians), 1e3),
-                  printable(r.scriptedHeightMeters, 1e3), printable(r.nearClearanceMeters, 1e3));
+  for (size_t i = 0; i < frames.size(); ++i) {
+    const FrameRecord& r = frames[i];
+    std::snprintf(
+        line, sizeof line,
+        "%d,%.4f,%.7f,%.7f,%.3f,%.3f,%.3f,%d,%s,%zu,%s,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f\n",
+        r.frame, printable(r.timeSeconds, 1e4), printable(r.pose.position.longitudeDegrees(), 1e7),
+        printable(r.pose.position.latitudeDegrees(), 1e7),
+        printable(r.pose.position.heightMeters, 1e3), printable(r.terrainHeightMeters, 1e3),
+        printable(r.clearanceMeters, 1e3), r.collided ? 1 : 0,
+        std::string(collision::toString(r.response)).c_str(), r.tilesDrawn,
+        std::string(toString(r.terrainSource)).c_str(),
+        printable(signedAngleDegrees(r.pose.headingRadians), 1e3),
+        printable(geo::radiansToDegrees(r.pose.pitchRadians), 1e3),
+        printable(signedAngleDegrees(r.pose.rollRadians), 1e3),
+        printable(r.scriptedHeightMeters, 1e3), printable(r.nearClearanceMeters, 1e3),
+        printable(r.pose.position.heightMeters - r.scriptedHeightMeters, 1e3),
+        printable(jolts[i], 1e3));
     text += line;
   }
   return text;
@@ -88,6 +92,51 @@ std::string formatTimingLog(const std::vector<FrameRecord>& frames) {
     text += line;
   }
   return text;
+}
+
+std::vector<double> verticalJoltMeters(const std::vector<FrameRecord>& frames) {
+  std::vector<double> jolts(frames.size(), 0.0);
+  for (size_t i = 1; i + 1 < frames.size(); ++i) {
+    jolts[i] = frames[i + 1].pose.position.heightMeters - 2 * frames[i].pose.position.heightMeters +
+               frames[i - 1].pose.position.heightMeters;
+  }
+  return jolts;
+}
+
+MotionQuality motionQuality(const std::vector<FrameRecord>& frames) {
+  constexpr double kOffScriptMeters = 0.01;
+  const size_t n = frames.size();
+  std::vector<bool> acting(n, false);
+  for (size_t i = 0; i < n; ++i) {
+    const FrameRecord& r = frames[i];
+    if (!r.collided &&
+        std::abs(r.pose.position.heightMeters - r.scriptedHeightMeters) <= kOffScriptMeters) {
+      continue;
+    }
+    for (size_t k = i > 0 ? i - 1 : 0; k <= std::min(i + 1, n - 1); ++k) acting[k] = true;
+  }
+  const std::vector<double> jolts = verticalJoltMeters(frames);
+  std::vector<double> response, ground, free;
+  MotionQuality q;
+  for (size_t i = 0; i < n; ++i) {
+    q.minimumNearClearanceMeters =
+        i == 0 ? frames[i].nearClearanceMeters
+               : std::min(q.minimumNearClearanceMeters, frames[i].nearClearanceMeters);
+    if (i == 0 || i + 1 == n) continue;
+    if (!acting[i]) {
+      free.push_back(std::abs(jolts[i]));
+      continue;
+    }
+    response.push_back(std::abs(jolts[i]));
+    ground.push_back(std::abs(frames[i + 1].terrainHeightMeters -
+                              2 * frames[i].terrainHeightMeters +
+                              frames[i - 1].terrainHeightMeters));
+  }
+  q.responseFrames = static_cast<int>(response.size());
+  q.p95JoltResponseMeters = quantile(response, 0.95);
+  q.p95GroundJoltMeters = quantile(ground, 0.95);
+  q.p95JoltFreeMeters = quantile(free, 0.95);
+  return q;
 }
 
 PlaySummary summarize(const std::vector<FrameRecord>& frames) {
@@ -143,6 +192,14 @@ std::string formatSummary(const PlaySummary& s, const std::vector<FrameRecord>& 
                        low.pose.position.longitudeDegrees(), low.pose.position.latitudeDegrees(),
                        low.terrainHeightMeters);
   }
+  const MotionQuality motion = motionQuality(frames);
+  n +=
+      std::snprintf(text + n, sizeof text - static_cast<size_t>(n),
+                    "motion: p95 vertical jolt %.3f m/frame^2 over %d frames the response acts "
+                    "on (the ground's own there %.3f), %.3f in free flight; lowest near-plane "
+                    "corner %.3f m\n",
+                    motion.p95JoltResponseMeters, motion.responseFrames, motion.p95GroundJoltMeters,
+                    motion.p95JoltFreeMeters, motion.minimumNearClearanceMeters);
   n += std::snprintf(text + n, sizeof text - static_cast<size_t>(n),
                      "time per frame: median %.1f ms, p90 %.1f ms, max %.1f ms (median select "
                      "%.1f, load %.1f, draw %.1f ms)\n",

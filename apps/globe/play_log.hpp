@@ -43,8 +43,9 @@ struct FrameRecord {
 };
 
 // frame,time_s,lon_deg,lat_deg,height_m,terrain_height_m,clearance_m,collided,response,
-// tiles_drawn,terrain_source,heading_deg,pitch_deg,roll_deg,scripted_height_m,near_clearance_m
-// (terrain_source: drawn | nadir | finest)
+// tiles_drawn,terrain_source,heading_deg,pitch_deg,roll_deg,scripted_height_m,near_clearance_m,
+// lift_m,vertical_jolt_m (terrain_source: drawn | nadir | finest; lift_m = height_m -
+// scripted_height_m; vertical_jolt_m: verticalJoltMeters)
 std::string formatPlayLog(const std::vector<FrameRecord>& frames);
 // frame,select_ms,load_ms,collision_ms,draw_ms,write_ms,total_ms
 std::string formatTimingLog(const std::vector<FrameRecord>& frames);
@@ -61,6 +62,21 @@ struct PlaySummary {
   uint64_t imageryTextureBudgetBytes = 0;  // set by the player; 0: no imagery layers
 };
 PlaySummary summarize(const std::vector<FrameRecord>& frames);
+
+// How smoothly the camera moved: the vertical jolt of frame i is the second difference of the
+// camera's height, h[i+1] - 2 h[i] + h[i-1] (m per frame², 0 at the ends). Frames where the
+// response acts are those whose height differs from the script's (by > 1 cm) or that collided,
+// with their neighbours; the ground's own jolt is the same difference of the terrain height under
+// the camera over those frames.
+struct MotionQuality {
+  int responseFrames = 0;
+  double p95JoltResponseMeters = 0;  // |jolt| over the frames where the response acts
+  double p95GroundJoltMeters = 0;    // |the terrain's second difference| over the same frames
+  double p95JoltFreeMeters = 0;      // |jolt| over the other frames (free flight)
+  double minimumNearClearanceMeters = 0;
+};
+std::vector<double> verticalJoltMeters(const std::vector<FrameRecord>& frames);
+MotionQuality motionQuality(const std::vector<FrameRecord>& frames);
 std::string formatSummary(const PlaySummary& summary, const std::vector<FrameRecord>& frames);
 
 // The q-quantile (0..1, nearest rank) of the values; 0 for none.

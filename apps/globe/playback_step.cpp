@@ -17,6 +17,13 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr int kMaximumSettleRounds = 8;
 
+// A scripted path proposes absolute poses: the controller can glide over the ground ahead.
+camera::ControllerSettings playbackSettings(bool glide) {
+  camera::ControllerSettings settings;
+  settings.glide.enabled = glide;
+  return settings;
+}
+
 }  // namespace
 
 Result<ScriptedPlayback> openScriptedPlayback(const std::filesystem::path& pyramid,
@@ -39,7 +46,7 @@ double playbackFrameCount(double durationSeconds, double framesPerSecond) {
 
 PlaybackStep::PlaybackStep(scene::TerrainScene& scene, scene::TileGpu& gpu,
                            const camera::CameraPath& path, int widthPixels, int heightPixels,
-                           std::chrono::seconds viewTimeout)
+                           std::chrono::seconds viewTimeout, bool glide)
     : scene_(scene),
       gpu_(gpu),
       path_(path),
@@ -47,7 +54,8 @@ PlaybackStep::PlaybackStep(scene::TerrainScene& scene, scene::TileGpu& gpu,
       heightPixels_(heightPixels),
       viewTimeout_(viewTimeout),
       finestSurface_(scene.store(), scene.ellipsoid()),
-      controller_(camera::samplePath(path, path.startSeconds(), scene.ellipsoid())) {
+      controller_(camera::samplePath(path, path.startSeconds(), scene.ellipsoid()),
+                  playbackSettings(glide)) {
   const double fovY = scene.options().fovYRadians;
   controller_.setNearPlane(
       {camera::projectionForHeight(0, controller_.settings().clearance.eyeMeters, fovY, 1,
@@ -77,6 +85,19 @@ Result<void> PlaybackStep::completeView(const camera::CameraPose& pose, FrameTim
   }
 }
 
+std::vector<camera::GlidePoint> PlaybackStep::scriptAhead(double timeSeconds) const {
+  const camera::GlideSettings& glide = controller_.settings().glide;
+  std::vector<camera::GlidePoint> ahead;
+  const int samples = std::max(glide.samples, 1);
+  for (int k = 1; k <= samples; ++k) {
+    const double t = glide.lookAheadSeconds * k / samples;
+    // Past its end the path stays at its last pose.
+    const double at = std::min(timeSeconds + t, path_.endSeconds());
+    ahead.push_back({camera::samplePath(path_, at, scene_.ellipsoid()).position, t});
+  }
+  return ahead;
+}
+
 void PlaybackStep::collide(double dtSeconds, FrameRecord& record) {
   const auto start = Clock::now();
   const camera::CollisionState& state =
@@ -94,8 +115,9 @@ Result<FrameRecord> PlaybackStep::frame(int frameIndex, double timeSeconds, doub
   record.timeSeconds = timeSeconds;
   const camera::CameraPose scripted = camera::samplePath(path_, timeSeconds, ellipsoid);
   record.scriptedHeightMeters = scripted.position.heightMeters;
-  // The move, against the array drawn last frame (complete, so the same on every run).
-  controller_.propose(scripted, kind);
+  // The move, against the array drawn last frame (complete, so the same on every run), gliding
+  // over the ground where the script goes next.
+  controller_.propose(scripted, kind, scriptAhead(timeSeconds));
   collide(dtSeconds, record);
   // The view for the corrected pose, and the controller once more against that array (dt 0:
   // the floor and the near-plane push only) until it keeps the pose.

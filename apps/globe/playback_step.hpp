@@ -2,6 +2,8 @@
 // controller against complete views. Shared by `globe play` and the soak tool (globe-soak).
 #pragma once
 
+#include <vector>
+
 #include <chrono>
 #include <filesystem>
 #include <memory>
@@ -35,9 +37,11 @@ double playbackFrameCount(double durationSeconds, double framesPerSecond);
 class PlaybackStep {
  public:
   // The controller starts at the path's start pose with the near plane of a widthPixels x
-  // heightPixels view. The scene, GPU and path must outlive this.
+  // heightPixels view, gliding over the ground the path goes over next unless glide is false
+  // (the paper's response alone). The scene, GPU and path must outlive this.
   PlaybackStep(scene::TerrainScene& scene, scene::TileGpu& gpu, const camera::CameraPath& path,
-               int widthPixels, int heightPixels, std::chrono::seconds viewTimeout);
+               int widthPixels, int heightPixels, std::chrono::seconds viewTimeout,
+               bool glide = true);
 
   // Makes the view at the scripted start complete: call once before the first frame, so the first
   // collision test runs against a complete array.
@@ -57,6 +61,8 @@ class PlaybackStep {
  private:
   Result<void> completeView(const camera::CameraPose& pose, FrameTimings& timings);
   void collide(double dtSeconds, FrameRecord& record);
+  // Where the script takes the camera over the glide's look-ahead (camera/terrain_glide.hpp).
+  std::vector<camera::GlidePoint> scriptAhead(double timeSeconds) const;
 
   scene::TerrainScene& scene_;
   scene::TileGpu& gpu_;

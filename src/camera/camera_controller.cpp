@@ -52,7 +52,7 @@ void count(CollisionState& state, const collision::MotionResult& result) {
 
 CameraController::CameraController(const CameraPose& initialPose,
                                    const ControllerSettings& settings)
-    : settings_(settings), pose_(initialPose) {
+    : settings_(settings), glide_(settings.glide), pose_(initialPose) {
   if (!isValidPose(initialPose)) {
     pose_ = CameraPose::fromDegrees(0.0, 0.0, 1.0e7, 0.0, -90.0, 0.0);
     rejected_ = true;
@@ -60,12 +60,13 @@ CameraController::CameraController(const CameraPose& initialPose,
   pose_.position.longitudeRadians = geo::wrapLongitudeRadians(pose_.position.longitudeRadians);
 }
 
-bool CameraController::propose(const CameraPose& pose, MotionKind kind) {
+bool CameraController::propose(const CameraPose& pose, MotionKind kind,
+                               std::span<const GlidePoint> ahead) {
   if (!isValidPose(pose)) {
     rejected_ = true;
     return false;
   }
-  queued_ = Move{pose, kind};
+  queued_ = Move{pose, kind, {ahead.begin(), ahead.end()}};
   return true;
 }
 
@@ -140,9 +141,9 @@ const CollisionState& CameraController::update(double dtSeconds,
     moveClearance = std::clamp(now + collision::kContactSkinMeters, floor, clearance.eyeMeters);
   }
   if (queued_) {
-    const Move move = *queued_;
+    const Move move = std::move(*queued_);
     queued_.reset();
-    moveBy(move, array, ellipsoid, moveClearance, state);
+    moveBy(move, dtSeconds, array, ellipsoid, moveClearance, state);
   } else {
     moveByVelocities(dtSeconds, array, ellipsoid, moveClearance, state);
   }
@@ -190,16 +191,30 @@ const CollisionState& CameraController::update(double dtSeconds,
   return state_ = state;
 }
 
-void CameraController::moveBy(const Move& move, const terrain::RenderingTileArray& array,
+void CameraController::moveBy(const Move& move, double dtSeconds,
+                              const terrain::RenderingTileArray& array,
                               const geo::Ellipsoid& ellipsoid, double clearanceMeters,
                               CollisionState& state) {
-  const geo::Cartographic& from = pose_.position;
-  const geo::Cartographic& to = move.pose.position;
+  const geo::Cartographic from = pose_.position;
+  geo::Cartographic to = move.pose.position;
   MotionKind kind = move.kind;
   if (kind == MotionKind::Auto) {
     kind = classifyMotion(ellipsoid, from, to, settings_.jumpDistanceMeters);
   } else if (kind == MotionKind::None) {
     kind = MotionKind::Jump;
+  }
+  // The glide lifts a moving camera's proposal over the ground ahead before the response tests
+  // it; a jump starts afresh.
+  if (settings_.glide.enabled && (kind == MotionKind::Linear || kind == MotionKind::Angular)) {
+    const glm::dvec3 motion =
+        geo::cartographicToEcef(ellipsoid, to) - geo::cartographicToEcef(ellipsoid, from);
+    const GlideResult glide = glide_.update(array, ellipsoid, to, motion, move.ahead, dtSeconds,
+                                            settings_.clearance.eyeMeters);
+    to.heightMeters += glide.liftMeters;
+    state.glideLiftMeters = glide.liftMeters;
+    state.surfaceProbes += glide.samples;
+  } else {
+    glide_.reset();
   }
   const bool samePosition = isSamePosition(ellipsoid, from, to);
   if (kind == MotionKind::Jump && samePosition) {

@@ -3,11 +3,14 @@
 #pragma once
 
 #include <optional>
+#include <span>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "camera/camera_motion.hpp"
 #include "camera/camera_pose.hpp"
+#include "camera/terrain_glide.hpp"
 #include "collision/clearance_settings.hpp"
 #include "collision/collision_response.hpp"
 #include "geo/ellipsoid.hpp"
@@ -25,6 +28,11 @@ struct ControllerSettings {
   // nearPlaneCheck; collision/lateral_clearance.hpp).
   bool lateralCheck = true;
   double jumpDistanceMeters = 1.0e6;  // Auto proposals moving farther than this are teleports
+  // Proposed moves (Linear, Angular) lifted over a smooth envelope of the ground ahead
+  // (terrain_glide.hpp). For absolute proposals, as a scripted path makes: a proposal made from
+  // the controller's own pose would carry the lift into the next one. Off by default; globe play
+  // and the soak turn it on.
+  GlideSettings glide{.enabled = false};
 };
 
 // What the last update did, for the HUD and logs.
@@ -44,6 +52,7 @@ struct CollisionState {
   double nearPlaneClearanceMeters = 0.0;  // the lowest near-plane corner above the drawn surface
   MotionKind motion = MotionKind::None;   // what moved the camera this update
   int surfaceProbes = 0;                  // points tested (sweeps included)
+  double glideLiftMeters = 0.0;           // the glide's lift over the proposed height
 };
 
 class CameraController {
@@ -57,7 +66,9 @@ class CameraController {
   // to a pose: refused if it collides; a pose at the same position only turns the camera). The
   // last move queued before an update wins. false, with nothing queued and the rejection reported
   // by the next update, for a non-finite pose or |latitude| > 90 deg; the last valid pose is kept.
-  bool propose(const CameraPose& pose, MotionKind kind = MotionKind::Auto);
+  // `ahead`: where a script will take the camera next, for the glide (empty: its velocity).
+  bool propose(const CameraPose& pose, MotionKind kind = MotionKind::Auto,
+               std::span<const GlidePoint> ahead = {});
   bool setTargetPose(const CameraPose& pose);
 
   // Motion state, ECEF: linear velocity (m/s) and acceleration (m/s^2); angular velocity about
@@ -96,8 +107,9 @@ class CameraController {
   struct Move {
     CameraPose pose;
     MotionKind kind;
+    std::vector<GlidePoint> ahead;
   };
-  void moveBy(const Move& move, const terrain::RenderingTileArray& array,
+  void moveBy(const Move& move, double dtSeconds, const terrain::RenderingTileArray& array,
               const geo::Ellipsoid& ellipsoid, double clearanceMeters, CollisionState& state);
   void moveByVelocities(double dtSeconds, const terrain::RenderingTileArray& array,
                         const geo::Ellipsoid& ellipsoid, double clearanceMeters,
@@ -106,6 +118,7 @@ class CameraController {
                        CollisionState& state) const;
 
   ControllerSettings settings_;
+  TerrainGlide glide_;
   CameraPose pose_;
   CollisionState state_;
   std::optional<Move> queued_;

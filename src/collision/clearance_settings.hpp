@@ -8,8 +8,10 @@ namespace globe::collision {
 // - eyeMeters = 2 m: the responses place the eye here. The renderer's near plane is a quarter of
 //   the clearance (camera::projectionForHeight), 0.5 m at 2 m, so the near plane is 1.5 m above
 //   flat ground; QOTCD's < 1 mm below the drawn surface is far inside it.
-// - minimumEyeMeters = 1 m: the hard floor applied at once when the surface rises under the eye
-//   (finer tiles); between it and eyeMeters the camera is raised smoothly.
+// - minimumEyeMeters = 2 m: the hard floor applied at once when the surface rises under the eye
+//   (finer tiles): the eye clearance itself, so the camera is never nearer the ground than it
+//   (a lower floor, with the smooth raise between it and eyeMeters, is still possible). Gliding
+//   cameras (camera/terrain_glide.hpp) keep a margin above it, so a finer tile rarely needs it.
 // - nearPlaneMeters = 0.5 m: the near plane's corners (~0.8 m from the eye at 45 deg / 16:9 and
 //   a 0.5 m near) stay this far above the drawn surface, so looking down a steep slope cannot
 //   cut it (the paper's Fig. 6(c)).
@@ -25,7 +27,7 @@ inline constexpr int kMaximumClearancePushes = 4;
 
 struct ClearanceSettings {
   double eyeMeters = 2.0;
-  double minimumEyeMeters = 1.0;
+  double minimumEyeMeters = 2.0;
   double nearPlaneMeters = 0.5;
   double lateralMarginMeters = 0.1;
   double raiseTimeConstantSeconds = 0.25;

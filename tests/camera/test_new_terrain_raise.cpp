@@ -54,6 +54,7 @@ void raiseAt(const Spot& spot, bool nearPlaneCheck) {
   const auto& fine = testing::fujiArray(testing::finestLevel());
   ControllerSettings settings;
   settings.nearPlaneCheck = nearPlaneCheck;
+  settings.clearance.minimumEyeMeters = 1.0;  // a floor under the eye clearance: the smooth raise
   const collision::ClearanceSettings& c = settings.clearance;
   CameraPose pose{spot.position, 0.0, 0.0, 0.0};
   pose.position.heightMeters += c.eyeMeters;
@@ -125,6 +126,7 @@ TEST(NewTerrainRaise, TurningOrMovingDuringTheRaiseNeitherSkipsNorUndoesIt) {
   pose.position.heightMeters += 2.0;
   ControllerSettings settings;
   settings.nearPlaneCheck = false;
+  settings.clearance.minimumEyeMeters = 1.0;  // a floor under the eye clearance: the smooth raise
   const double minimum = settings.clearance.minimumEyeMeters;
   const double eye = settings.clearance.eyeMeters;
   // Turning only: the heading is applied at once, the raise goes on.
@@ -181,6 +183,7 @@ TEST(NewTerrainRaise, APureStepFollowsTheDocumentedLaw) {
   const double surface =
       testing::drawnHeight(fine, spot.position.longitudeRadians, spot.position.latitudeRadians);
   collision::ClearanceSettings c;
+  c.minimumEyeMeters = 1.0;  // a floor under the eye clearance: the smooth raise
   geo::Cartographic at = spot.position;
   at.heightMeters = surface + 1.2;  // above the floor, below the desired clearance
   const auto r =

@@ -102,6 +102,10 @@ Result<SoakReport> runSoak(const SoakOptions& options,
       }
     }
     if (record->collided) ++state.collisionFrames;
+    if (record->collided ||
+        std::abs(record->pose.position.heightMeters - record->scriptedHeightMeters) > 0.01) {
+      ++state.responseFrames;
+    }
     state.minimumClearanceMeters = std::min(state.minimumClearanceMeters, record->clearanceMeters);
 
     const int64_t done = k + 1;

@@ -38,6 +38,8 @@ struct SoakCheckpoint {
   double maximumDriftRadians = 0;
   int64_t framesDrifted = 0;  // later-loop frames whose pose is not bit-identical to the first's
   int64_t collisionFrames = 0;
+  // Frames the controller changed: collided, or lifted off the script by the glide (> 1 cm).
+  int64_t responseFrames = 0;
   double minimumClearanceMeters = 0;
   size_t residentBytes = 0;      // VmRSS now
   size_t peakResidentBytes = 0;  // VmHWM
