@@ -30,7 +30,9 @@ mkdir -p out
 ./build/apps/globe/globe snapshot pyramid --camera 0.3,52.9,60000 --layer layers/coast -o out/wash.png
 echo "138.7275,35.3606" | ./build/apps/globe/globe query pyramid
 echo "Images in out/. Interactive: ./build/apps/globe/globe view pyramid ${LAYERS[*]} (needs a display)"
-PLAY=(./build/apps/globe/globe play pyramid data/paths/zion-demo.json "${LAYERS[@]}" --out out/play --size 640x360)
+# 15 frames a second (481 frames) show the flight and the glide as well as 30 do, in half the
+# time (a set-up within 6 minutes: docs/performance/ci-time.md); --fps 30 for a smoother video.
+PLAY=(./build/apps/globe/globe play pyramid data/paths/zion-demo.json "${LAYERS[@]}" --out out/play --size 640x360 --fps 15)
 if command -v ffmpeg >/dev/null 2>&1; then PLAY+=(--video out/play/zion.mp4); fi
 # In a window when a display works; headless (OSMesa) otherwise. Same frames either way.
 if [ -n "${DISPLAY:-}" ] && "${PLAY[@]}" --window; then :; else "${PLAY[@]}"; fi

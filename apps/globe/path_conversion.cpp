@@ -17,14 +17,15 @@ Result<camera::CameraPath> toCameraPath(const camera::CameraPathFile& file,
         camera::CameraPose::fromDegrees(key.longitudeDegrees, key.latitudeDegrees, key.heightMeters,
                                         key.headingDegrees, key.pitchDegrees, key.rollDegrees);
     if (key.heightAboveTerrain) {
+      // Kept above the terrain (camera::samplePath adds it where the path is); read here once
+      // so that a terrain that cannot be read is an error naming the keyframe.
       auto ground = terrainHeight(pose.position.longitudeRadians, pose.position.latitudeRadians);
       if (!ground) {
         return makeError("keyframes[" + std::to_string(k) +
                          "]: the terrain height: " + ground.error());
       }
-      pose.position.heightMeters += *ground;
     }
-    path.keyframes.push_back({key.timeSeconds, pose});
+    path.keyframes.push_back({key.timeSeconds, pose, key.heightAboveTerrain});
   }
   return path;
 }

@@ -13,8 +13,9 @@ namespace globe::app {
 // The terrain height (metres) under a position in radians, for keyframes above the terrain.
 using TerrainHeightFunction = std::function<Result<double>(double, double)>;
 
-// Converts every keyframe; aboveTerrain heights get terrainHeight(lon, lat) added. Errors: an
-// unknown interpolation, a failing terrain lookup (named with the keyframe).
+// Converts every keyframe; aboveTerrain heights stay above the terrain (camera::CameraKeyframe:
+// samplePath adds the terrain along the path). Errors: an unknown interpolation, a failing
+// terrain lookup at an aboveTerrain keyframe (named with the keyframe).
 Result<camera::CameraPath> toCameraPath(const camera::CameraPathFile& file,
                                         const TerrainHeightFunction& terrainHeight);
 

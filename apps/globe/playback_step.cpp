@@ -17,6 +17,15 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr int kMaximumSettleRounds = 8;
 
+// The finest terrain the pyramid has, for keyframes above the terrain (0 m where it cannot be
+// read: the path was checked at its keyframes when it was opened).
+camera::TerrainHeightAt terrainOf(scene::TerrainScene& scene) {
+  return [&scene](double longitudeRadians, double latitudeRadians) {
+    const auto height = scene.terrainHeightMeters(longitudeRadians, latitudeRadians);
+    return height ? *height : 0.0;
+  };
+}
+
 // A scripted path proposes absolute poses: the controller can glide over the ground ahead.
 camera::ControllerSettings playbackSettings(bool glide) {
   camera::ControllerSettings settings;
@@ -54,8 +63,9 @@ PlaybackStep::PlaybackStep(scene::TerrainScene& scene, scene::TileGpu& gpu,
       heightPixels_(heightPixels),
       viewTimeout_(viewTimeout),
       finestSurface_(scene.store(), scene.ellipsoid()),
-      controller_(camera::samplePath(path, path.startSeconds(), scene.ellipsoid()),
-                  playbackSettings(glide)) {
+      controller_(
+          camera::samplePath(path, path.startSeconds(), scene.ellipsoid(), terrainOf(scene)),
+          playbackSettings(glide)) {
   const double fovY = scene.options().fovYRadians;
   controller_.setNearPlane(
       {camera::projectionForHeight(0, controller_.settings().clearance.eyeMeters, fovY, 1,
@@ -93,7 +103,8 @@ std::vector<camera::GlidePoint> PlaybackStep::scriptAhead(double timeSeconds) co
     const double t = glide.lookAheadSeconds * k / samples;
     // Past its end the path stays at its last pose.
     const double at = std::min(timeSeconds + t, path_.endSeconds());
-    ahead.push_back({camera::samplePath(path_, at, scene_.ellipsoid()).position, t});
+    ahead.push_back(
+        {camera::samplePath(path_, at, scene_.ellipsoid(), terrainOf(scene_)).position, t});
   }
   return ahead;
 }
@@ -113,7 +124,8 @@ Result<FrameRecord> PlaybackStep::frame(int frameIndex, double timeSeconds, doub
   FrameRecord record;
   record.frame = frameIndex;
   record.timeSeconds = timeSeconds;
-  const camera::CameraPose scripted = camera::samplePath(path_, timeSeconds, ellipsoid);
+  const camera::CameraPose scripted =
+      camera::samplePath(path_, timeSeconds, ellipsoid, terrainOf(scene_));
   record.scriptedHeightMeters = scripted.position.heightMeters;
   // The move, against the array drawn last frame (complete, so the same on every run), gliding
   // over the ground where the script goes next.

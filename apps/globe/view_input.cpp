@@ -306,7 +306,11 @@ void onMouseButton(GLFWwindow* window, int button, int action, int mods) {
     // Shift or Ctrl + drag tilts and turns (Ctrl as CesiumJS and Google Earth have it).
     input.shiftDrag = down && (mods & (GLFW_MOD_SHIFT | GLFW_MOD_CONTROL)) != 0;
     if (down && !input.shiftDrag) input.navigator->grab(glm::dvec2(input.lastX, input.lastY));
-    if (!down) input.navigator->release();
+    if (down && input.shiftDrag) input.navigator->beginTilt();
+    if (!down) {
+      input.navigator->release();
+      input.navigator->endTilt();
+    }
     if (down) {
       input.pressX = input.lastX;
       input.pressY = input.lastY;
@@ -331,6 +335,11 @@ void onMouseButton(GLFWwindow* window, int button, int action, int mods) {
     }
   } else if (button == GLFW_MOUSE_BUTTON_RIGHT || button == GLFW_MOUSE_BUTTON_MIDDLE) {
     input.rightDown = down;  // the middle button tilts and turns too (CesiumJS, Google Earth)
+    if (down) {
+      input.navigator->beginTilt();  // one pivot for the whole drag
+    } else {
+      input.navigator->endTilt();
+    }
   }
 }
 

@@ -124,7 +124,11 @@ std::string_view toString(PathInterpolation interpolation) {
   return interpolation == PathInterpolation::Linear ? "linear" : "smooth";
 }
 
-CameraPose samplePath(const CameraPath& path, double timeSeconds, const geo::Ellipsoid& ellipsoid) {
+namespace {
+
+// The pose with the keyframes' heights as stored (above the terrain for some).
+CameraPose sampleStoredHeights(const CameraPath& path, double timeSeconds,
+                               const geo::Ellipsoid& ellipsoid) {
   const std::vector<CameraKeyframe>& keys = path.keyframes;
   if (keys.empty()) return {};
   if (!(timeSeconds > keys.front().timeSeconds)) return keys.front().pose;
@@ -170,6 +174,36 @@ CameraPose samplePath(const CameraPath& path, double timeSeconds, const geo::Ell
     orientation = quaternionHermite(a.orientation, b.orientation, spinA * h, spinB * h, u);
   }
   return poseFromOrientation(ellipsoid, positionFromUp(up, heightMeters), orientation);
+}
+
+// How much of the terrain height the sampled height stands on: each keyframe's 0 or 1, linear
+// in time between them.
+double terrainWeight(const CameraPath& path, double timeSeconds) {
+  const std::vector<CameraKeyframe>& keys = path.keyframes;
+  const auto weight = [](const CameraKeyframe& key) { return key.heightAboveTerrain ? 1.0 : 0.0; };
+  if (!(timeSeconds > keys.front().timeSeconds)) return weight(keys.front());
+  if (timeSeconds >= keys.back().timeSeconds) return weight(keys.back());
+  const auto after =
+      std::upper_bound(keys.begin(), keys.end(), timeSeconds,
+                       [](double t, const CameraKeyframe& key) { return t < key.timeSeconds; });
+  const CameraKeyframe& a = *(after - 1);
+  const CameraKeyframe& b = *after;
+  const double u = (timeSeconds - a.timeSeconds) / (b.timeSeconds - a.timeSeconds);
+  return weight(a) + u * (weight(b) - weight(a));
+}
+
+}  // namespace
+
+CameraPose samplePath(const CameraPath& path, double timeSeconds, const geo::Ellipsoid& ellipsoid,
+                      const TerrainHeightAt& terrain) {
+  CameraPose pose = sampleStoredHeights(path, timeSeconds, ellipsoid);
+  if (path.keyframes.empty() || !terrain) return pose;
+  const double weight = terrainWeight(path, timeSeconds);
+  if (weight > 0.0) {
+    pose.position.heightMeters +=
+        weight * terrain(pose.position.longitudeRadians, pose.position.latitudeRadians);
+  }
+  return pose;
 }
 
 }  // namespace globe::camera

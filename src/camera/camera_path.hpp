@@ -2,6 +2,7 @@
 // directions and quaternions, so ±180° and the poles need no special cases).
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -27,7 +28,15 @@ std::string_view toString(PathInterpolation interpolation);
 struct CameraKeyframe {
   double timeSeconds = 0;
   CameraPose pose;
+  // pose.position.heightMeters is above the terrain, not the ellipsoid: samplePath adds the
+  // terrain under the sampled position, so between two such keyframes the height above the
+  // ground is what is interpolated and the path follows the terrain (a mountain between them
+  // is flown over, not into).
+  bool heightAboveTerrain = false;
 };
+
+// The terrain height (m above the ellipsoid) under a longitude and latitude in radians.
+using TerrainHeightAt = std::function<double(double, double)>;
 
 // At least one keyframe, times strictly increasing, poses finite with |latitude| <= 90°
 // (io's path readers check all of it; samplePath returns a default pose for an empty path).
@@ -43,6 +52,11 @@ struct CameraPath {
 // start (and for a non-finite time), the last after the end. Between keys the heading is in
 // (-180°, 180°] and the longitude in [-180°, 180°]; looking straight down the roll is folded into
 // the heading (the same view).
-CameraPose samplePath(const CameraPath& path, double timeSeconds, const geo::Ellipsoid& ellipsoid);
+// Keyframes above the terrain: the interpolated height plus w(t) x terrain(position), w the
+// keyframes' 0 (absolute) or 1 (above the terrain) interpolated linearly in time, so a path
+// mixing both changes over from one to the other along the segment between them; without
+// `terrain` (or without such keyframes) the heights are taken as they are.
+CameraPose samplePath(const CameraPath& path, double timeSeconds, const geo::Ellipsoid& ellipsoid,
+                      const TerrainHeightAt& terrain = {});
 
 }  // namespace globe::camera

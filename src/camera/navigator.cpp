@@ -103,11 +103,22 @@ void Navigator::panByKey(double dxPixels, double dyPixels) {
   controls_.rotateByDrag(dxPixels, dyPixels, heightPixels_);
 }
 
+void Navigator::beginTilt() {
+  tiltDragging_ = true;
+  tiltPivotChosen_ = false;
+}
+
+void Navigator::endTilt() { tiltDragging_ = tiltPivotChosen_ = false; }
+
 void Navigator::tilt(double dxPixels, double dyPixels) {
   if (mode_ != NavigationMode::Orbit) return;
   userMoved();
-  if (const auto pivot = groundAt(controls_.pose(), centre())) {
-    controls_.tiltAbout(dxPixels, dyPixels, *pivot);
+  if (!tiltPivotChosen_) {
+    tiltPivot_ = groundAt(controls_.pose(), centre());
+    tiltPivotChosen_ = tiltDragging_;
+  }
+  if (tiltPivot_) {
+    controls_.tiltAbout(dxPixels, dyPixels, *tiltPivot_);
   } else {
     controls_.tiltByDrag(dxPixels, dyPixels);  // no ground in view
   }

@@ -50,6 +50,12 @@ class Navigator {
   void release() { grabbed_.reset(); }
   void panByKey(double dxPixels, double dyPixels);  // arrow keys: a drag of that many pixels
   // Right- or Shift-drag: tilt (dy) and turn (dx) about the ground at the centre of the view.
+  // Between beginTilt (the press) and endTilt (the release) the pivot is the one the drag's first
+  // step found, so the camera turns about one point however the view's centre moves over the
+  // ground (near a slope it can leave it for a point kilometres away); without them each step
+  // finds its own.
+  void beginTilt();
+  void endTilt();
   void tilt(double dxPixels, double dyPixels);
 
   // Both modes. A double-click flies to the ground under the pixel (false: sky there); go to
@@ -113,6 +119,9 @@ class Navigator {
   SmoothedClearance flyClearance_;  // what fly speed follows: no lurch at cliff edges
   double clearanceMeters_ = 0;      // the controller's last
   std::optional<glm::dvec3> grabbed_;
+  bool tiltDragging_ = false;            // between beginTilt and endTilt
+  bool tiltPivotChosen_ = false;         // the drag's first step has chosen tiltPivot_
+  std::optional<glm::dvec3> tiltPivot_;  // nullopt: no ground at the centre (tilt by drag)
   std::optional<FlyToAnimation> flyTo_;
   double flyToSeconds_ = 0;  // since the fly-to started
   bool resetPending_ = false, takeLook_ = true;

@@ -47,6 +47,38 @@ CameraPath windingPath(PathInterpolation interpolation) {
                    {7.0, CameraPose::fromDegrees(138.85, 35.20, 5000, 250, -80, 0)}});
 }
 
+// Keyframes above the terrain: the height above the ground is interpolated, so the path follows
+// a ridge between them instead of cutting through it; a mixed segment changes over linearly.
+TEST(CameraPath, HeightsAboveTheTerrainFollowItBetweenKeyframes) {
+  // A 900 m ridge across the middle of the segment (a Gaussian in longitude).
+  const TerrainHeightAt ridge = [](double lon, double) {
+    const double x = (geo::radiansToDegrees(lon) - 8.45) / 0.01;
+    return 100.0 + 800.0 * std::exp(-x * x);
+  };
+  for (const PathInterpolation interpolation :
+       {PathInterpolation::Linear, PathInterpolation::Smooth}) {
+    CameraPath path =
+        makePath(interpolation, {{0.0, CameraPose::fromDegrees(8.40, 50.2, 150, 90, -5, 0)},
+                                 {10.0, CameraPose::fromDegrees(8.50, 50.2, 150, 90, -5, 0)}});
+    for (CameraKeyframe& key : path.keyframes) key.heightAboveTerrain = true;
+    for (double t = 0; t <= 10.0; t += 0.25) {
+      const CameraPose pose = samplePath(path, t, kWgs84, ridge);
+      const double ground = ridge(pose.position.longitudeRadians, pose.position.latitudeRadians);
+      EXPECT_NEAR(pose.position.heightMeters - ground, 150.0, 1e-6) << t;
+    }
+    // Without the terrain the stored heights are taken as they are (above the ellipsoid).
+    EXPECT_NEAR(samplePath(path, 5.0, kWgs84).position.heightMeters, 150.0, 1e-6);
+    // Absolute at the start, above the terrain at the end: the terrain's share grows linearly.
+    path.keyframes[0].heightAboveTerrain = false;
+    path.keyframes[0].pose.position.heightMeters = 1000.0;
+    const CameraPose mid = samplePath(path, 5.0, kWgs84, ridge);
+    const CameraPose stored = samplePath(path, 5.0, kWgs84);
+    EXPECT_NEAR(mid.position.heightMeters - stored.position.heightMeters,
+                0.5 * ridge(mid.position.longitudeRadians, mid.position.latitudeRadians), 1e-6);
+    EXPECT_NEAR(samplePath(path, 0.0, kWgs84, ridge).position.heightMeters, 1000.0, 1e-9);
+  }
+}
+
 TEST(CameraPath, KeyframesAreHitExactly) {
   for (const auto interpolation : {PathInterpolation::Linear, PathInterpolation::Smooth}) {
     const CameraPath path = windingPath(interpolation);

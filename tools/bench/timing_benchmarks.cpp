@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "camera/camera_controller.hpp"
 #include "collision/exact_surface.hpp"
 #include "collision/lateral_clearance.hpp"
 #include "collision/qotcd.hpp"
@@ -369,6 +370,34 @@ void BM_LateralClearance(benchmark::State& state) {
   });
 }
 
+// One frame of the camera controller as globe play runs it: the eye proposed at the next point
+// of the 60 Hz flight path (a Linear move, 50 m/s), QOTCD, the swept response, the near plane
+// and the lateral ball, with or without the glide (camera/terrain_glide.hpp: 25 readings of the
+// ground over the next 3 s along the velocity, and the spring). Their ratio is the glide's cost.
+void controllerFrames(benchmark::State& state, bool glide) {
+  const BenchArray* array = nullptr;
+  const std::vector<CameraQuery>* queries = nullptr;
+  if (!prepare(state, array, queries, false)) return;
+  const geo::Ellipsoid ellipsoid = shared().pyramid->ellipsoid();
+  camera::ControllerSettings settings;
+  settings.glide.enabled = glide;
+  auto poseOf = [](const CameraQuery& q) {
+    return camera::CameraPose{
+        {q.longitudeRadians, q.latitudeRadians, q.heightMeters}, 0.0, -0.2, 0.0};
+  };
+  camera::CameraController controller(poseOf(queries->front()), settings);
+  size_t next = 1;
+  runQueries(state, *queries, [&](const CameraQuery&) {
+    const CameraQuery& to = (*queries)[next];
+    next = next + 1 < queries->size() ? next + 1 : 0;
+    controller.propose(poseOf(to),
+                       next == 0 ? camera::MotionKind::Jump : camera::MotionKind::Linear);
+    return controller.update(1.0 / 60, array->array, ellipsoid).collided;
+  });
+}
+void BM_ControllerFrame(benchmark::State& state) { controllerFrames(state, false); }
+void BM_ControllerFrameGlide(benchmark::State& state) { controllerFrames(state, true); }
+
 double minimum(const std::vector<double>& values) {
   return values.empty() ? 0.0 : *std::min_element(values.begin(), values.end());
 }
@@ -403,6 +432,8 @@ void registerTimingBenchmarks(const std::filesystem::path& pyramidDirectory) {
   registerSizes("BM_QotcdIndexedGeodetic", &BM_QotcdIndexedGeodetic, kTileCounts);
   registerSizes("BM_ExactSurfaceGeodetic", &BM_ExactSurfaceGeodetic, kTileCounts);
   registerSizes("BM_LateralClearance", &BM_LateralClearance, kTileCounts);
+  registerSizes("BM_ControllerFrame", &BM_ControllerFrame, kTileCounts);
+  registerSizes("BM_ControllerFrameGlide", &BM_ControllerFrameGlide, kTileCounts);
   registerSizes("BM_QotcdIndexedOnSphere", &BM_QotcdIndexedOnSphere, kTileCounts);
 }
 

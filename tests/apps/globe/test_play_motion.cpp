@@ -169,5 +169,36 @@ TEST(PlayMotion, ADiveAtOneKilometrePerSecondStopsAboveTheFloorWithoutABounce) {
   EXPECT_EQ(m.flips, 0);
 }
 
+// Two keyframes 150 m above the ground on either side of the Feldberg (879 m): the path follows
+// the terrain between them (the height above the ground interpolated), so it never needs the
+// controller; interpolating the absolute heights would run into the mountain.
+TEST(PlayMotion, AKeyframedPathAboveTheTerrainFollowsItOverAPeak) {
+  std::vector<camera::PathKeyframe> keys = {{0, 8.41, 50.2325, 150, 90, -5, 0},
+                                            {16, 8.50, 50.2325, 150, 90, -5, 0}};
+  for (camera::PathKeyframe& key : keys) key.heightAboveTerrain = true;
+  const std::vector<LogRow> rows = play("above-terrain", keys);
+  ASSERT_GT(rows.size(), 400u);
+  double lowest = 1e9, highest = 0, lifted = 0, overPeak = 0;
+  for (const LogRow& row : rows) {
+    const double aboveGround = number(row, "scripted_height_m") - number(row, "terrain_height_m");
+    lowest = std::min(lowest, aboveGround);
+    highest = std::max(highest, aboveGround);
+    lifted = std::max(lifted, number(row, "lift_m"));
+    EXPECT_EQ(row.at("collided"), "0") << row.at("frame");
+    if (std::abs(number(row, "lon_deg") - 8.4575) < 0.002) {
+      overPeak = std::max(overPeak, number(row, "scripted_height_m"));
+    }
+  }
+  std::printf(
+      "above the terrain: %.1f..%.1f m over the drawn ground, lifted at most %.3f m, %.0f m "
+      "over the summit\n",
+      lowest, highest, lifted, overPeak);
+  // The script's terrain is the finest the pyramid has, the drawn one may be coarser far off.
+  EXPECT_GT(lowest, 100.0);
+  EXPECT_LT(highest, 200.0);
+  EXPECT_GT(overPeak, 879.0 + 100.0);
+  EXPECT_LE(lifted, 0.01);  // the controller never had to act
+}
+
 }  // namespace
 }  // namespace globe::app
