@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -12,7 +13,9 @@
 namespace globe::camera {
 namespace {
 
-// The drawn surface's height under a point (0 m where no tile holds it, as QOTCD says).
+// The drawn surface's height under a point (0 m where no tile holds it, as QOTCD says). Not
+// QOTCD's H ahead: on the coarse tiles far ahead a quad's highest vertex can stand hundreds of
+// metres above the drawn surface and would lift the camera for nothing.
 std::optional<double> groundUnder(const terrain::RenderingTileArray& array,
                                   const geo::Ellipsoid& ellipsoid, const geo::Cartographic& point) {
   const auto surface =
@@ -37,18 +40,30 @@ void springTowards(double target, double omega, double dt, double& x, double& v)
   v = (c2 - omega * (c1 + c2 * dt)) * decay;
 }
 
-// The camera keeping its velocity: where it is at settings.samples times up to the look-ahead.
+// The camera keeping its velocity: where it is at settings.samples times up to the look-ahead,
+// stepped in longitude and latitude by the velocity's east and north parts (no iterative
+// geodetic conversion per point: guidance needs metres, not millimetres, over a few km).
 std::vector<GlidePoint> extrapolate(const geo::Ellipsoid& ellipsoid,
                                     const geo::Cartographic& proposed, const glm::dvec3& velocity,
                                     const GlideSettings& settings) {
+  const double lat = proposed.latitudeRadians, lon = proposed.longitudeRadians;
+  const glm::dvec3 east(-std::sin(lon), std::cos(lon), 0.0);
+  const glm::dvec3 north(-std::sin(lat) * std::cos(lon), -std::sin(lat) * std::sin(lon),
+                         std::cos(lat));
+  const glm::dvec3 up = glm::cross(east, north);
+  const double radius = ellipsoid.semiMajorAxisMeters + proposed.heightMeters;
+  const double eastRate = glm::dot(velocity, east) / (radius * std::max(std::cos(lat), 1e-6));
+  const double northRate = glm::dot(velocity, north) / radius;
+  const double climb = glm::dot(velocity, up);
   std::vector<GlidePoint> points;
-  const glm::dvec3 at = geo::cartographicToEcef(ellipsoid, proposed);
   const int samples = std::max(settings.samples, 1);
   for (int k = 1; k <= samples; ++k) {
     const double t = settings.lookAheadSeconds * k / samples;
-    if (const auto p = geo::ecefToCartographic(ellipsoid, at + velocity * t)) {
-      points.push_back({*p, t});
-    }
+    const double latitude =
+        std::clamp(lat + northRate * t, -std::numbers::pi / 2, std::numbers::pi / 2);
+    points.push_back({{std::remainder(lon + eastRate * t, 2 * std::numbers::pi), latitude,
+                       proposed.heightMeters + climb * t},
+                      t});
   }
   return points;
 }
