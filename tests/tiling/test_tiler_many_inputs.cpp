@@ -1,7 +1,8 @@
 // Thousands of inputs (GLO-30 is 26,000 tiles) under a small file-descriptor limit: the tiler
 // keeps no input open between reading its header and conditioning it, and every spilled source
 // shares one file, so a run needs a handful of descriptors however many inputs it has. Real data:
-// a 3″ SRTM tile cut into 400 pieces that share their edge samples, under the 20′ world.
+// a 3″ SRTM tile cut into 144 pieces (over twice the 64-descriptor limit) that share their edge
+// samples, under the 20′ world.
 #include <gtest/gtest.h>
 #include <sys/resource.h>
 
@@ -25,7 +26,7 @@ using globe::testing::runCommand;
 const std::string kTiler = GLOBE_TILER_EXE;
 // Far fewer descriptors than inputs (the old tiler held one or two per input).
 constexpr int kDescriptorLimit = 64;
-constexpr int kPiecesPerSide = 20;
+constexpr int kPiecesPerSide = 12;
 
 std::string dem(const std::string& name) {
   return std::string(GLOBE_SOURCE_DIR) + "/tests/data/dem/gtopo30/" + name;
@@ -78,7 +79,7 @@ std::string limited(const std::string& command) {
   return "ulimit -n " + std::to_string(kDescriptorLimit) + " && " + command;
 }
 
-TEST(TilerManyInputs, FourHundredInputsTileUnderASixtyFourDescriptorLimit) {
+TEST(TilerManyInputs, AHundredAndFortyFiveInputsTileUnderASixtyFourDescriptorLimit) {
   const ManyInputs& many = manyInputs();
   ASSERT_EQ(many.inputs.size(), size_t{kPiecesPerSide * kPiecesPerSide + 1});
   const fs::path dir = globe::testing::freshTempDir("many-inputs-runs");
@@ -117,7 +118,7 @@ class DescriptorLimit {
 };
 
 TEST(TilerManyInputs, EverySourceSpilledSharesOneFile) {
-  // A zero memory budget spills all 400 pieces (the world stays: finer sources read it); two
+  // A zero memory budget spills all 144 pieces (the world stays: finer sources read it); two
   // threads condition them together under the limit, and each reads back as conditioned in memory.
   const ManyInputs& many = manyInputs();
   auto inMemory = openSources(many.inputs, {});
