@@ -98,13 +98,13 @@ Result<void> PlaybackStep::completeView(const camera::CameraPose& pose, FrameTim
 std::vector<camera::GlidePoint> PlaybackStep::scriptAhead(double timeSeconds) const {
   const camera::GlideSettings& glide = controller_.settings().glide;
   std::vector<camera::GlidePoint> ahead;
+  const camera::TerrainHeightAt terrain = terrainOf(scene_);
   const int samples = std::max(glide.samples, 1);
   for (int k = 1; k <= samples; ++k) {
     const double t = glide.lookAheadSeconds * k / samples;
     // Past its end the path stays at its last pose.
     const double at = std::min(timeSeconds + t, path_.endSeconds());
-    ahead.push_back(
-        {camera::samplePath(path_, at, scene_.ellipsoid(), terrainOf(scene_)).position, t});
+    ahead.push_back({camera::samplePath(path_, at, scene_.ellipsoid(), terrain).position, t});
   }
   return ahead;
 }

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "camera/camera_path_file.hpp"
@@ -141,21 +142,25 @@ const std::vector<camera::PathKeyframe> kRidges = {{0, 8.36, 50.29, 420, 135, -5
 const std::vector<camera::PathKeyframe> kDive = {{0, 8.4575, 50.2325, 3000, 0, -60, 0},
                                                  {3, 8.4575, 50.2325, 0, 0, -60, 0}};
 
+// The flight with the glide and with the paper's response alone, each measured and printed.
+std::pair<Motion, Motion> playBoth(const std::string& name,
+                                   const std::vector<camera::PathKeyframe>& keys) {
+  const Motion glide = measure(play(name, keys));
+  const Motion paper = measure(play(name, keys, "--no-glide"));
+  print((name + ", glide").c_str(), glide);
+  print((name + ", the paper's response alone").c_str(), paper);
+  return {glide, paper};
+}
+
 TEST(PlayMotion, AFlankAt250MetresPerSecondIsAGlide) {
-  const Motion glide = measure(play("flank", kFlank));
-  const Motion paper = measure(play("flank", kFlank, "--no-glide"));
-  print("flank, glide", glide);
-  print("flank, the paper's response alone", paper);
+  const auto [glide, paper] = playBoth("flank", kFlank);
   expectGlide(glide);
   // The response alone is the rough ride the measure exists to catch.
   EXPECT_GT(paper.p95Jolt, std::max(0.25 * paper.p95Ground, 3 * paper.p95Free));
 }
 
 TEST(PlayMotion, RidgesAndNotchesAt250MetresPerSecondAreAGlide) {
-  const Motion glide = measure(play("ridges", kRidges));
-  const Motion paper = measure(play("ridges", kRidges, "--no-glide"));
-  print("ridges, glide", glide);
-  print("ridges, the paper's response alone", paper);
+  const auto [glide, paper] = playBoth("ridges", kRidges);
   expectGlide(glide);
   EXPECT_GT(paper.p95Jolt, glide.p95Jolt);
 }
