@@ -21,6 +21,8 @@ struct PlayArguments {
   bool noFrames = false;
   bool noGlide = false;
   bool window = false;
+  bool realTime = false;
+  uint32_t morphFrames = 8;
 };
 
 int runPlayCommand(const PlayArguments& arguments, const CommonArguments& common,
@@ -41,6 +43,8 @@ int runPlayCommand(const PlayArguments& arguments, const CommonArguments& common
   options.writeFrames = !arguments.noFrames;
   options.glide = !arguments.noGlide;
   options.window = arguments.window;
+  options.realTime = arguments.realTime;
+  options.morphFrames = arguments.morphFrames;
   if (!arguments.video.empty()) options.video = arguments.video;
   if (!applySceneArguments("play", common, context, options.scene)) return 2;
   auto report = runPlay(options);
@@ -72,6 +76,14 @@ Subcommand addPlayCommand(CLI::App& app, CommonArguments& common) {
       "--no-glide", arguments->noGlide,
       "the paper's collision response alone: no lift over the ground ahead (docs/collision.md)");
   play->add_flag("--window", arguments->window, "show the playback in a GLFW window (same loop)");
+  play->add_flag("--real-time", arguments->realTime,
+                 "pace frames at --fps on the clock, each drawing the tiles arrived by then (as "
+                 "globe view does): shows loading over a slow server; logs then vary run to run");
+  play->add_option("--morph-frames", arguments->morphFrames,
+                   "with --real-time: frames over which a finer tile arriving near the camera "
+                   "rises out of the coarser ground (0: at once, a pop)")
+      ->check(CLI::Range(0u, 1000u))
+      ->capture_default_str();
   play->add_option("--video", arguments->video, "encode the frames into this MP4 with ffmpeg");
   addGlobeOption(*play, common);
   addNetworkOptions(*play, common);

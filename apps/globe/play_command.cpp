@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <system_error>
+#include <thread>
 
 #include "apps/globe/elapsed.hpp"
 #include "apps/globe/overlay_drawing.hpp"
@@ -114,7 +115,9 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
           "ffmpeg); nothing was rendered");
     }
   }
-  auto playback = openScriptedPlayback(options.pyramid, options.pathFile, options.scene);
+  scene::SceneOptions sceneOptions = options.scene;
+  if (options.realTime) sceneOptions.morphFrames = options.morphFrames;
+  auto playback = openScriptedPlayback(options.pyramid, options.pathFile, sceneOptions);
   if (!playback) return Error{playback.error()};
   scene::TerrainScene& scene = *playback->scene;
   const camera::CameraPath& path = playback->path;
@@ -152,14 +155,19 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
   if (!labels) return Error{labels.error()};
   const int width = surface->widthPixels, height = surface->heightPixels;
   PlaybackStep step(scene, gpu, path, width, height, std::chrono::seconds(options.timeoutSeconds),
-                    options.glide);
+                    options.glide, options.realTime);
   // The first collision test runs against a complete view at the scripted start.
   FrameTimings startup;
   if (auto view = step.start(startup); !view) return Error{view.error()};
+  const auto loopStart = Clock::now();
 
   PlayReport report;
   std::vector<FrameRecord> records;
   for (int i = 0; i < frames; ++i) {
+    if (options.realTime) {
+      std::this_thread::sleep_until(loopStart + std::chrono::duration_cast<Clock::duration>(
+                                                    std::chrono::duration<double>(i / fps)));
+    }
     const auto frameStart = Clock::now();
     // Time from the frame number, never accumulated: frame i is exactly start + i / fps.
     auto stepped =

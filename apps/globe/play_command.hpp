@@ -20,6 +20,11 @@ struct PlayOptions {
   bool writeFrames = true;
   bool glide = true;    // the controller glides over the ground ahead (camera/terrain_glide.hpp)
   bool window = false;  // a GLFW window instead of OSMesa
+  // Frames paced at fps on the clock, each drawing what has arrived by then (PlaybackStep's real
+  // time), finer tiles near the camera morphing in (SceneOptions::morphFrames): the flight as a
+  // window would show it over this pyramid and network. The log then depends on the timing.
+  bool realTime = false;
+  uint32_t morphFrames = 8;  // with realTime: SceneOptions::morphFrames (0: tiles pop in at once)
   std::optional<std::filesystem::path> video;  // encode the frames with ffmpeg
   scene::SceneOptions scene;
   int timeoutSeconds = 300;  // for each frame's view to complete

@@ -57,14 +57,14 @@ std::string formatPlayLog(const std::vector<FrameRecord>& frames) {
   std::string text =
       "frame,time_s,lon_deg,lat_deg,height_m,terrain_height_m,clearance_m,collided,response,"
       "tiles_drawn,terrain_source,heading_deg,pitch_deg,roll_deg,scripted_height_m,near_clearance_"
-      "m,lift_m,vertical_jolt_m\n";
+      "m,lift_m,vertical_jolt_m,new_ground_lift_m\n";
   const std::vector<double> jolts = verticalJoltMeters(frames);
   char line[512];
   for (size_t i = 0; i < frames.size(); ++i) {
     const FrameRecord& r = frames[i];
     std::snprintf(
         line, sizeof line,
-        "%d,%.4f,%.7f,%.7f,%.3f,%.3f,%.3f,%d,%s,%zu,%s,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f\n",
+        "%d,%.4f,%.7f,%.7f,%.3f,%.3f,%.3f,%d,%s,%zu,%s,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f\n",
         r.frame, printable(r.timeSeconds, 1e4), printable(r.pose.position.longitudeDegrees(), 1e7),
         printable(r.pose.position.latitudeDegrees(), 1e7),
         printable(r.pose.position.heightMeters, 1e3), printable(r.terrainHeightMeters, 1e3),
@@ -76,7 +76,7 @@ std::string formatPlayLog(const std::vector<FrameRecord>& frames) {
         printable(signedAngleDegrees(r.pose.rollRadians), 1e3),
         printable(r.scriptedHeightMeters, 1e3), printable(r.nearClearanceMeters, 1e3),
         printable(r.pose.position.heightMeters - r.scriptedHeightMeters, 1e3),
-        printable(jolts[i], 1e3));
+        printable(jolts[i], 1e3), printable(r.newGroundLiftMeters, 1e3));
     text += line;
   }
   return text;
@@ -122,6 +122,8 @@ MotionQuality motionQuality(const std::vector<FrameRecord>& frames) {
     q.minimumNearClearanceMeters =
         i == 0 ? frames[i].nearClearanceMeters
                : std::min(q.minimumNearClearanceMeters, frames[i].nearClearanceMeters);
+    q.largestNewGroundLiftMeters =
+        std::max(q.largestNewGroundLiftMeters, frames[i].newGroundLiftMeters);
     if (i == 0 || i + 1 == n) continue;
     if (!acting[i]) {
       free.push_back(std::abs(jolts[i]));
@@ -197,9 +199,10 @@ std::string formatSummary(const PlaySummary& s, const std::vector<FrameRecord>& 
       std::snprintf(text + n, sizeof text - static_cast<size_t>(n),
                     "motion: p95 vertical jolt %.3f m/frame^2 over %d frames the response acts "
                     "on (the ground's own there %.3f), %.3f in free flight; lowest near-plane "
-                    "corner %.3f m\n",
+                    "corner %.3f m; largest lift by new ground in one frame %.3f m\n",
                     motion.p95JoltResponseMeters, motion.responseFrames, motion.p95GroundJoltMeters,
-                    motion.p95JoltFreeMeters, motion.minimumNearClearanceMeters);
+                    motion.p95JoltFreeMeters, motion.minimumNearClearanceMeters,
+                    motion.largestNewGroundLiftMeters);
   n += std::snprintf(text + n, sizeof text - static_cast<size_t>(n),
                      "time per frame: median %.1f ms, p90 %.1f ms, max %.1f ms (median select "
                      "%.1f, load %.1f, draw %.1f ms)\n",

@@ -37,6 +37,11 @@ struct FrameRecord {
   double nearClearanceMeters = 0;  // the lowest near-plane corner above the drawn surface
   bool collided = false;           // any response this frame
   collision::Response response = collision::Response::None;
+  // How far the controller lifted the camera this frame because the drawn ground changed under it
+  // (the view made for the new pose drew finer or newly arrived tiles higher than the ground the
+  // move was checked against there): the lift a viewer shows as a pop unless it is spread. Not
+  // counted where that array held no ground under the camera (it moved out of the last view).
+  double newGroundLiftMeters = 0;
   size_t tilesDrawn = 0;
   uint64_t imageryTextureBytes = 0;  // imagery textures on the GPU after the frame's draw
   FrameTimings timings;
@@ -44,8 +49,9 @@ struct FrameRecord {
 
 // frame,time_s,lon_deg,lat_deg,height_m,terrain_height_m,clearance_m,collided,response,
 // tiles_drawn,terrain_source,heading_deg,pitch_deg,roll_deg,scripted_height_m,near_clearance_m,
-// lift_m,vertical_jolt_m (terrain_source: drawn | nadir | finest; lift_m = height_m -
-// scripted_height_m; vertical_jolt_m: verticalJoltMeters)
+// lift_m,vertical_jolt_m,new_ground_lift_m (terrain_source: drawn | nadir | finest; lift_m =
+// height_m - scripted_height_m; vertical_jolt_m: verticalJoltMeters; new_ground_lift_m:
+// FrameRecord::newGroundLiftMeters)
 std::string formatPlayLog(const std::vector<FrameRecord>& frames);
 // frame,select_ms,load_ms,collision_ms,draw_ms,write_ms,total_ms
 std::string formatTimingLog(const std::vector<FrameRecord>& frames);
@@ -74,6 +80,8 @@ struct MotionQuality {
   double p95GroundJoltMeters = 0;    // |the terrain's second difference| over the same frames
   double p95JoltFreeMeters = 0;      // |jolt| over the other frames (free flight)
   double minimumNearClearanceMeters = 0;
+  // The largest newGroundLiftMeters of a frame: a pop, where finer ground arrived under the camera.
+  double largestNewGroundLiftMeters = 0;
 };
 std::vector<double> verticalJoltMeters(const std::vector<FrameRecord>& frames);
 MotionQuality motionQuality(const std::vector<FrameRecord>& frames);

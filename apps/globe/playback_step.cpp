@@ -55,13 +55,14 @@ double playbackFrameCount(double durationSeconds, double framesPerSecond) {
 
 PlaybackStep::PlaybackStep(scene::TerrainScene& scene, scene::TileGpu& gpu,
                            const camera::CameraPath& path, int widthPixels, int heightPixels,
-                           std::chrono::seconds viewTimeout, bool glide)
+                           std::chrono::seconds viewTimeout, bool glide, bool realTime)
     : scene_(scene),
       gpu_(gpu),
       path_(path),
       widthPixels_(widthPixels),
       heightPixels_(heightPixels),
       viewTimeout_(viewTimeout),
+      realTime_(realTime),
       finestSurface_(scene.store(), scene.ellipsoid()),
       controller_(
           camera::samplePath(path, path.startSeconds(), scene.ellipsoid(), terrainOf(scene)),
@@ -109,11 +110,17 @@ std::vector<camera::GlidePoint> PlaybackStep::scriptAhead(double timeSeconds) co
   return ahead;
 }
 
-void PlaybackStep::collide(double dtSeconds, FrameRecord& record) {
+void PlaybackStep::collide(double dtSeconds, FrameRecord& record, bool newView) {
   const auto start = Clock::now();
+  const double heightBefore = controller_.pose().position.heightMeters;
   const camera::CollisionState& state =
       controller_.update(dtSeconds, scene_.renderingTileArray(), scene_.ellipsoid());
   record.timings.collisionMs += millisecondsSince(start);
+  // With dt 0 nothing moves but the floor and the near-plane push: a lift by the new view's ground.
+  if (newView && groundBefore_) {
+    record.newGroundLiftMeters +=
+        std::max(0.0, controller_.pose().position.heightMeters - heightBefore);
+  }
   record.collided = record.collided || state.collided;
   if (record.response == collision::Response::None) record.response = state.response;
 }
@@ -131,6 +138,21 @@ Result<FrameRecord> PlaybackStep::frame(int frameIndex, double timeSeconds, doub
   // over the ground where the script goes next.
   controller_.propose(scripted, kind, scriptAhead(timeSeconds));
   collide(dtSeconds, record);
+  // Whether the array the move was checked against held ground where the camera went: only then
+  // is a lift by the next view's ground a change of the ground under it (a pop). Ground the last
+  // array did not hold there (the camera slid out of its view) is new, not changed.
+  const camera::CameraPose moved = controller_.pose();
+  groundBefore_ = collision::exactSurfaceHeight(scene_.renderingTileArray(), ellipsoid,
+                                                moved.position.longitudeRadians,
+                                                moved.position.latitudeRadians)
+                      .has_value();
+  if (realTime_) {
+    const auto start = Clock::now();
+    (void)scene_.update(controller_.pose(), widthPixels_, heightPixels_, gpu_);
+    record.timings.selectMs += millisecondsSince(start);
+    collide(0.0, record, true);
+    return finishRecord(std::move(record));
+  }
   // The view for the corrected pose, and the controller once more against that array (dt 0:
   // the floor and the near-plane push only) until it keeps the pose.
   bool settled = false;
@@ -139,7 +161,7 @@ Result<FrameRecord> PlaybackStep::frame(int frameIndex, double timeSeconds, doub
       return Error{view.error()};
     }
     const camera::CameraPose before = controller_.pose();
-    collide(0.0, record);
+    collide(0.0, record, true);
     settled = camera::samePose(before, controller_.pose());
   }
   if (!settled) {
@@ -147,6 +169,11 @@ Result<FrameRecord> PlaybackStep::frame(int frameIndex, double timeSeconds, doub
       return Error{view.error()};
     }
   }
+  return finishRecord(std::move(record));
+}
+
+Result<FrameRecord> PlaybackStep::finishRecord(FrameRecord record) {
+  const geo::Ellipsoid& ellipsoid = scene_.ellipsoid();
   record.pose = controller_.pose();
   const auto surfaceHeight = collision::exactSurfaceHeight(scene_.renderingTileArray(), ellipsoid,
                                                            record.pose.position.longitudeRadians,

@@ -38,10 +38,11 @@ class PlaybackStep {
  public:
   // The controller starts at the path's start pose with the near plane of a widthPixels x
   // heightPixels view, gliding over the ground the path goes over next unless glide is false
-  // (the paper's response alone). The scene, GPU and path must outlive this.
+  // (the paper's response alone). realTime: frames draw what has arrived instead of waiting for
+  // complete views (see frame()). The scene, GPU and path must outlive this.
   PlaybackStep(scene::TerrainScene& scene, scene::TileGpu& gpu, const camera::CameraPath& path,
                int widthPixels, int heightPixels, std::chrono::seconds viewTimeout,
-               bool glide = true);
+               bool glide = true, bool realTime = false);
 
   // Makes the view at the scripted start complete: call once before the first frame, so the first
   // collision test runs against a complete array.
@@ -52,7 +53,9 @@ class PlaybackStep {
   // checked against the previous frame's complete array; the view for the corrected pose is
   // completed and the controller run again with dt = 0 until it keeps the pose (the floor and the
   // near-plane push over finer terrain). The record has everything but tilesDrawn and the draw
-  // and write timings; the scene's array is then exactly the one to draw.
+  // and write timings; the scene's array is then exactly the one to draw. In real time, the view
+  // is updated once with what has arrived (as a window draws it) and the controller run once
+  // against it: tiles that arrive late show here, as lifts.
   Result<FrameRecord> frame(int frameIndex, double timeSeconds, double dtSeconds,
                             camera::MotionKind kind = camera::MotionKind::Auto);
 
@@ -60,7 +63,10 @@ class PlaybackStep {
 
  private:
   Result<void> completeView(const camera::CameraPose& pose, FrameTimings& timings);
-  void collide(double dtSeconds, FrameRecord& record);
+  // newView: the array changed since the move was checked (its lift is newGroundLiftMeters).
+  void collide(double dtSeconds, FrameRecord& record, bool newView = false);
+  // The pose, the surface under it and the clearances, into the record.
+  Result<FrameRecord> finishRecord(FrameRecord record);
   // Where the script takes the camera over the glide's look-ahead (camera/terrain_glide.hpp).
   std::vector<camera::GlidePoint> scriptAhead(double timeSeconds) const;
 
@@ -69,6 +75,8 @@ class PlaybackStep {
   const camera::CameraPath& path_;
   int widthPixels_, heightPixels_;
   std::chrono::seconds viewTimeout_;
+  bool realTime_;
+  bool groundBefore_ = false;  // this frame's move ended over ground the checked array held
   FinestSurface finestSurface_;
   camera::CameraController controller_;
 };

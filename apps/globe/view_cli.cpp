@@ -67,6 +67,8 @@ int runViewCommand(const ViewArguments& arguments, const CommonArguments& common
   bool remote = transport::isHttpUrl(arguments.pyramid);
   for (const auto& layer : options.scene.layers) remote |= transport::isHttpUrl(layer.directory);
   if (remote) options.scene.retryFailedLoadsSeconds = 10;
+  // Tiles arrive while the window draws: a finer tile near the camera rises over 8 frames.
+  options.scene.morphFrames = 8;
   if (auto report = runView(options); !report) {
     std::fprintf(stderr, "globe view: %s\n", report.error().c_str());
     return 1;

@@ -21,6 +21,14 @@ namespace {
 
 // Levels requested ahead of the refinement from a remote pyramid (SelectionOptions).
 constexpr uint32_t kRemoteLookaheadLevels = 3;
+// Tiles this near the camera's nadir morph when they arrive: a few camera heights above the
+// ground, at least 2 km (collision reads the nadir and the near plane's neighbourhood).
+constexpr double kMorphMinimumRadiusMeters = 2000.0;
+constexpr double kMorphRadiusPerHeight = 3.0;
+// The tile under the camera, the one collision reads, loads before anything on screen, and the
+// levels below it too (a descent needs them next): this many past the finest one here.
+constexpr double kNadirPriority = std::numeric_limits<double>::max();
+constexpr uint32_t kNadirLookaheadLevels = 3;
 
 // Refinement past the pyramid's data for imagery (SceneOptions::refineForImagery).
 struct Upsampling {
@@ -134,7 +142,8 @@ TerrainScene::TerrainScene(std::unique_ptr<streaming::TerrainSource> store,
       store_(std::move(store)),
       cache_(options.cacheBudgetBytes),
       runner_(options.loaderThreads),
-      loader_(std::make_unique<streaming::TileLoader>(*store_, runner_, cache_)) {
+      loader_(std::make_unique<streaming::TileLoader>(*store_, runner_, cache_)),
+      morphs_(options.morphFrames, ellipsoid_) {
   if (store_->remote()) loader_->setMaxInFlight(transport::kRemoteLoadsInFlight);
 }
 
@@ -206,13 +215,56 @@ Result<void> TerrainScene::setOverlays(
 }
 
 Result<void> TerrainScene::uploadIfNeeded(const geo::TileId& tile,
-                                          const terrain::HeightBlock& block, TileGpu& gpu) {
+                                          const terrain::HeightBlock& block, TileGpu& gpu,
+                                          bool replace) {
   gpuLastUsedFrame_[tile] = frame_;
-  if (gpu.hasTile(tile)) return {};
+  if (!replace && gpu.hasTile(tile)) return {};
   const uint32_t n = store_->manifest().verticesPerSide;
   const auto mesh = terrain::buildTileMesh(
       tile, block, ellipsoid_, terrain::recommendedSkirtDepthMeters(tile.level, n, ellipsoid_));
   return gpu.prepareTile(tile, mesh);
+}
+
+std::vector<terrain::ArrayTile> TerrainScene::drawSelected(const std::vector<geo::TileId>& selected,
+                                                           const camera::CameraPose& pose,
+                                                           TileGpu& gpu, FrameInfo& info) {
+  tiles_.clear();
+  blocks_.clear();
+  std::vector<terrain::ArrayTile> arrayTiles;
+  const double lon = pose.position.longitudeRadians, lat = pose.position.latitudeRadians;
+  // What collision may read soon: the ground within a few camera heights (at least 2 km).
+  const double morphRadiusMeters =
+      std::max(kMorphMinimumRadiusMeters,
+               kMorphRadiusPerHeight * (pose.position.heightMeters - info.terrainHeightMeters));
+  for (const geo::TileId& tile : selected) {
+    const bool onGpu = gpu.hasTile(tile);
+    auto loaded = loader_->get(tile);
+    if (!loaded) continue;
+    auto [block, replace] = morphs_.blockFor(
+        tile, std::move(loaded), TileMorphs::isNear(tile, lon, lat, morphRadiusMeters));
+    if (auto uploaded = uploadIfNeeded(tile, *block, gpu, replace); !uploaded) {
+      // Each tile's failure once (it is tried again every frame): not a message per frame.
+      if (failedUploads_.size() < kFailedUploadsReported && failedUploads_.insert(tile).second) {
+        core::warn(options_.warnings, geo::tileName(tile) + ": " + uploaded.error());
+      }
+      continue;
+    }
+    tiles_.push_back(tile);
+    arrayTiles.push_back(terrain::makeArrayTile(tile, *block));
+    blocks_.push_back(std::move(block));
+    info.uploaded += onGpu && !replace ? 0 : 1;
+  }
+  return arrayTiles;
+}
+
+void TerrainScene::finishMorphs(TileGpu& gpu, FrameInfo& info) {
+  // A morph dropped half way leaves a morph's mesh on the GPU: not to be drawn when the tile
+  // comes back.
+  for (const geo::TileId& tile : morphs_.endFrame()) {
+    gpu.releaseTile(tile);
+    gpuLastUsedFrame_.erase(tile);
+  }
+  info.morphing = morphs_.active();
 }
 
 FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, int heightPixels,
@@ -314,30 +366,16 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
       }
       continue;
     }
-    requests.push_back({r.tile, r.priority});
+    const bool underCamera = geo::GeographicTilingScheme::positionToTile(
+                                 pose.position.longitudeRadians, pose.position.latitudeRadians,
+                                 r.tile.level) == r.tile;
+    requests.push_back({r.tile, underCamera ? kNadirPriority : r.priority});
   }
+  requestUnderCamera(pose, requests);
   loader_->request(requests);
   openPacksInBackground(notOpen);
 
-  tiles_.clear();
-  blocks_.clear();
-  std::vector<terrain::ArrayTile> arrayTiles;
-  for (const geo::TileId& tile : selection.tiles) {
-    const bool onGpu = gpu.hasTile(tile);
-    auto block = loader_->get(tile);
-    if (!block) continue;
-    if (auto uploaded = uploadIfNeeded(tile, *block, gpu); !uploaded) {
-      // Each tile's failure once (it is tried again every frame): not a message per frame.
-      if (failedUploads_.size() < kFailedUploadsReported && failedUploads_.insert(tile).second) {
-        core::warn(options_.warnings, geo::tileName(tile) + ": " + uploaded.error());
-      }
-      continue;
-    }
-    tiles_.push_back(tile);
-    arrayTiles.push_back(terrain::makeArrayTile(tile, *block));
-    blocks_.push_back(std::move(block));
-    info.uploaded += onGpu ? 0 : 1;
-  }
+  std::vector<terrain::ArrayTile> arrayTiles = drawSelected(selection.tiles, pose, gpu, info);
   // The ground under the camera must be known to collision even when it is not drawn (a camera
   // looking at the horizon does not see its own nadir): where no drawn tile covers the nadir, the
   // finest loaded tile there joins the collision array, and the finest tile is requested.
@@ -351,7 +389,9 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
     for (uint32_t level = std::min(nadirLevels, options_.maximumLoadLevel) + 1; level-- > 0;) {
       const auto tile = geo::GeographicTilingScheme::positionToTile(lon, lat, level);
       if (!tile) break;
-      if (auto block = loader_->isResident(*tile) ? loader_->get(*tile) : nullptr) {
+      if (auto loaded = loader_->isResident(*tile) ? loader_->get(*tile) : nullptr) {
+        // Its ground rises out of the coarser one too: the camera stands on it.
+        auto block = morphs_.blockFor(*tile, std::move(loaded), true, false).block;
         arrayTiles.push_back(terrain::makeArrayTile(*tile, *block));
         arrayTiles.back().drawn = false;  // for collision only
         blocks_.push_back(std::move(block));
@@ -360,11 +400,12 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
       }
       auto summary = store_->summary(*tile);
       if (summary && *summary && loader_->state(*tile) != streaming::TileState::Failed) {
-        requests.push_back({*tile, 1.0});  // after what the view needs
+        requests.push_back({*tile, kNadirPriority});
       }
     }
     if (!requests.empty()) loader_->request(requests);
   }
+  finishMorphs(gpu, info);
   updateImagery(frame.positionEcefMeters, gpu, info);
   // Free GPU memory of tiles not drawn for a while, oldest first, once over the budget.
   if (gpuLastUsedFrame_.size() > options_.gpuTileBudget) {
@@ -384,9 +425,43 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   info.tilesSelected = tiles_.size();
   info.requests = requests.size();
   info.arrived += packOpens_.takeFinished();
-  info.complete = requests.empty() && info.upsampled == 0 && loader_->counters().inFlight == 0 &&
+  info.complete = requests.empty() && info.upsampled == 0 && info.morphing == 0 &&
+                  loader_->counters().inFlight == 0 &&
                   notOpen.empty() && packOpens_.pending() == 0 && info.imagery.complete;
   return info;
+}
+
+void TerrainScene::requestUnderCamera(const camera::CameraPose& pose,
+                                      std::vector<streaming::LoadRequest>& requests) {
+  const double lon = pose.position.longitudeRadians, lat = pose.position.latitudeRadians;
+  const uint32_t deepest = std::min(store_->manifest().maxLevel(), options_.maximumLoadLevel);
+  uint32_t resident = 0;  // the finest level loaded under the camera
+  for (uint32_t level = deepest + 1; level-- > 0;) {
+    const auto tile = geo::GeographicTilingScheme::positionToTile(lon, lat, level);
+    if (tile && loader_->isResident(*tile)) {
+      resident = level;
+      break;
+    }
+  }
+  terrain::TileSummary ignored;
+  for (uint32_t level = resident + 1;
+       level <= std::min(deepest, resident + kNadirLookaheadLevels); ++level) {
+    const auto tile = geo::GeographicTilingScheme::positionToTile(lon, lat, level);
+    if (!tile) break;
+    // Only tiles the pyramid holds: a local pack's index is read now (as the selection does); a
+    // remote one not open yet is being opened in the background (openPacksInBackground).
+    auto present = store_->peek(*tile, &ignored);
+    if (present == streaming::TerrainSource::Peek::NotOpen && !store_->remote()) {
+      auto summary = store_->summary(*tile);
+      present = summary && *summary ? streaming::TerrainSource::Peek::Present
+                                    : streaming::TerrainSource::Peek::Absent;
+    }
+    if (present != streaming::TerrainSource::Peek::Present ||
+        loader_->state(*tile) == streaming::TileState::Failed) {
+      break;
+    }
+    requests.push_back({*tile, kNadirPriority});
+  }
 }
 
 void TerrainScene::openPacksInBackground(const std::vector<geo::TileId>& tiles) {

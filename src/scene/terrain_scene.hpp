@@ -21,6 +21,7 @@
 #include "scene/imagery_layers.hpp"
 #include "scene/overlay_points.hpp"
 #include "scene/tile_gpu.hpp"
+#include "scene/tile_morphs.hpp"
 #include "streaming/background_pack_opens.hpp"
 #include "streaming/block_cache.hpp"
 #include "streaming/terrain_source.hpp"
@@ -66,6 +67,11 @@ struct SceneOptions {
   // Failed loads (a server down, a 503) are tried again this long after the last try; 0: never
   // (snapshots and playback, whose result must not depend on when a server came back).
   double retryFailedLoadsSeconds = 0;
+  // Frames over which a finer tile arriving near the camera rises out of the coarser surface
+  // drawn there before (scene/tile_morphs.hpp), so the camera on it is lifted, not popped; 0 or
+  // 1: drawn at once. For views that draw while tiles arrive (globe view, play --real-time); a
+  // complete view (snapshots, playback) waits for its tiles and needs none.
+  uint32_t morphFrames = 0;
   // What pyramids and layers given as http(s) URLs are read through: the program's, made from its
   // flags (transport/network_settings.hpp). Null: local directories only (a URL is an error).
   std::shared_ptr<transport::Network> network;
@@ -83,6 +89,7 @@ struct FrameInfo {
   size_t arrived = 0;              // blocks that arrived this frame
   size_t uploaded = 0;             // meshes built and uploaded this frame
   bool complete = false;           // nothing loadable is missing: the image is final
+  size_t morphing = 0;             // tiles drawn on their way from a coarser surface
   double terrainHeightMeters = 0;  // under the camera, from the finest resident block
   ImageryFrame imagery;            // the layers' part of this frame (complete counts it)
 };
@@ -140,10 +147,20 @@ class TerrainScene {
   TerrainScene(std::unique_ptr<streaming::TerrainSource> store, const SceneOptions& options);
   void updateImagery(const glm::dvec3& cameraEcefMeters, TileGpu& gpu, FrameInfo& info);
   void retryFailedLoadsWhenDue();
+  // Ends the frame's morphs (scene/tile_morphs.hpp), releasing meshes of morphs dropped.
+  void finishMorphs(TileGpu& gpu, FrameInfo& info);
+  // The tiles under the camera below the finest one loaded there, a few levels deep, first of all.
+  void requestUnderCamera(const camera::CameraPose& pose,
+                          std::vector<streaming::LoadRequest>& requests);
   // Reads these tiles' pack indexes on the loader's threads (a remote pyramid).
   void openPacksInBackground(const std::vector<geo::TileId>& tiles);
   Result<void> uploadIfNeeded(const geo::TileId& tile, const terrain::HeightBlock& block,
-                              TileGpu& gpu);
+                              TileGpu& gpu, bool replace = false);
+  // The selected tiles that have blocks, uploaded where needed (morphing near the camera), into
+  // tiles_, blocks_ and the collision array's records.
+  std::vector<terrain::ArrayTile> drawSelected(const std::vector<geo::TileId>& selected,
+                                               const camera::CameraPose& pose, TileGpu& gpu,
+                                               FrameInfo& info);
   // The pyramid's finest source step at the tile's corners (scene/native_resolution.hpp), found
   // once per tile.
   std::array<double, 4> terrainStepDegreesAt(const geo::TileId& tile);
@@ -173,6 +190,7 @@ class TerrainScene {
   std::vector<std::shared_ptr<const terrain::HeightBlock>>
       blocks_;  // keep the array's blocks alive
   terrain::RenderingTileArray array_;
+  TileMorphs morphs_;
   terrain::RenderView view_;
   uint64_t frame_ = 0;
   std::unordered_map<geo::TileId, uint64_t> gpuLastUsedFrame_;

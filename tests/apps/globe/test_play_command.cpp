@@ -394,3 +394,43 @@ TEST(GlobePlayFormats, OverlaysAreDrawnInPlayback) {
 
 }  // namespace
 }  // namespace globe::app
+
+namespace globe::app {
+namespace {
+
+// --real-time: the frames are paced on the clock and draw what has arrived (no waiting for
+// complete views), finer tiles near the camera morphing in; a descent onto Fuji's flank from a
+// view whose tiles are all coarse. The log has new_ground_lift_m, the summary its largest value;
+// the camera is never under the drawn surface.
+TEST(GlobePlayRealTime, ADescentDrawsWhatArrivedAndNeverGoesUnderTheGround) {
+  const fs::path dir = freshTempDir("play-real-time");
+  camera::CameraPathFile path;
+  path.interpolation = "linear";
+  path.keyframes = {
+      {0.0, 138.745, 35.345, 40000, 0, -60, 0},
+      {1.0, 138.745, 35.345, 0, 0, -60, 0},  // into the flank (~2,900 m) at 40 km/s
+      {1.5, 138.750, 35.350, 0, 0, -60, 0},
+  };
+  ASSERT_TRUE(camera::writeCameraPathJson(dir / "descent.json", path));
+  const PlayRun run = runGlobe(bundledPyramid().string() + " " + (dir / "descent.json").string() +
+                               " --fps 20 --size 320x180 --no-frames --real-time --no-glide --out " +
+                               (dir / "out").string());
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("largest lift by new ground in one frame"), std::string::npos)
+      << run.output;
+  const auto rows = readLog(dir / "out" / "log.csv");
+  ASSERT_EQ(rows.size(), 31u);
+  double largestLift = 0;
+  for (const auto& row : rows) {
+    ASSERT_TRUE(row.contains("new_ground_lift_m"));
+    largestLift = std::max(largestLift, number(row, "new_ground_lift_m"));
+    EXPECT_GE(number(row, "clearance_m"), 2.0 - 1e-3) << "frame " << row.at("frame");
+  }
+  EXPECT_GT(number(rows.back(), "terrain_height_m"), 2000.0) << "it landed on the mountain";
+  char line[64];
+  std::snprintf(line, sizeof line, "largest lift by new ground in one frame %.3f m", largestLift);
+  EXPECT_NE(run.output.find(line), std::string::npos) << run.output;
+}
+
+}  // namespace
+}  // namespace globe::app
