@@ -11,7 +11,9 @@ cd "$(dirname "$0")/.."
 BUILD=${BUILD_DIR:-build}
 . tools/lib/build-checked.sh
 . tools/lib/stage-time.sh
-bash tools/configure.sh "$BUILD"
+# The packages the tests need beyond the set-up's (apt; quick where they are installed).
+stage "test packages (apt)" bash tools/install-deps.sh --tests
+bash tools/configure.sh "$BUILD" -DGLOBE_BUILD_TESTS=ON
 # The tests and the programs they run (target globe_tests); the benchmarks and tools build when
 # their scripts run them (CI builds everything: .ci/run).
 stage "build ($BUILD)" build_checked "$BUILD" --target globe_tests
