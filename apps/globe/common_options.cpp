@@ -172,6 +172,9 @@ bool applySceneArguments(const char* command, const CommonArguments& arguments,
       std::fprintf(stderr, "globe %s: --overlay %s\n", command, document.error().c_str());
       return false;
     }
+    for (const std::string& warning : document->warnings) {
+      std::fprintf(stderr, "globe %s: warning: %s\n", command, warning.c_str());
+    }
     if (arguments.overlayHidden) overlays::showEverything(*document);
     scene.overlays.push_back(
         std::make_shared<const overlays::OverlayDocument>(std::move(*document)));

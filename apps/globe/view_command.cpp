@@ -90,6 +90,9 @@ std::string openOverlays(scene::TerrainScene& scene, RendererGpu& gpu,
   for (const std::string& file : files) {
     auto document = overlays::readOverlayFile(file);
     if (!document) return "open: " + document.error();
+    for (const std::string& warning : document->warnings) {
+      std::fprintf(stderr, "globe view: warning: %s\n", warning.c_str());
+    }
     opened += (opened.empty() ? "" : ", ") + std::filesystem::path(file).filename().string();
     documents.push_back(std::make_shared<const overlays::OverlayDocument>(std::move(*document)));
   }

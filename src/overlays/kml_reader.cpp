@@ -270,7 +270,13 @@ class KmlReader {
 
 Result<OverlayDocument> readKmlText(std::string_view text, const std::filesystem::path& file,
                                     OverlayImages& images) {
-  return KmlReader(file, images).read(text);
+  auto document = KmlReader(file, images).read(text);
+  if (document) {
+    for (const std::string& warning : images.warnings()) {
+      document->warnings.push_back(file.string() + ": " + warning);
+    }
+  }
+  return document;
 }
 
 }  // namespace globe::overlays

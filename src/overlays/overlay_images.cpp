@@ -36,13 +36,34 @@ std::string percentDecoded(std::string_view text) {
   return out;
 }
 
+// Why a local path may not be read as an overlay's image, or "" when it may: it must lie in
+// `folder` or below it, also once symlinks are followed, and be a regular file.
+std::string refusal(const std::filesystem::path& folder, const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  if (path.is_absolute()) return "an absolute path: an overlay reads only files beside it";
+  const fs::path joined = (folder / path).lexically_normal();
+  const fs::path inside = joined.lexically_relative(folder.lexically_normal());
+  if (inside.empty() || *inside.begin() == "..") return "outside the overlay's folder";
+  std::error_code ec;
+  const fs::path real = fs::weakly_canonical(joined, ec);
+  const fs::path realFolder = fs::weakly_canonical(folder, ec);
+  const fs::path realInside = real.lexically_relative(realFolder);
+  if (ec || realInside.empty() || *realInside.begin() == "..") {
+    return "leads outside the overlay's folder (a symlink)";
+  }
+  const fs::file_status status = fs::status(real, ec);
+  if (!ec && fs::exists(status) && !fs::is_regular_file(status)) return "not a regular file";
+  return "";
+}
+
 }  // namespace
 
 OverlayImages::OverlayImages(std::filesystem::path kmlDirectory)
     : directory_(std::move(kmlDirectory)) {}
 
 OverlayImages::OverlayImages(KmzArchive archive)
-    : directory_(archive.file.parent_path()), archive_(std::move(archive)) {}
+    : directory_(std::filesystem::absolute(archive.file).parent_path()),
+      archive_(std::move(archive)) {}
 
 ResolvedImage OverlayImages::resolve(const std::string& rawHref) {
   const std::string href(trimmed(rawHref));
@@ -57,8 +78,7 @@ ResolvedImage OverlayImages::resolve(const std::string& rawHref) {
     const std::filesystem::path path(local);
     std::optional<ResolvedImage> inArchive;
     if (archive_ && path.is_relative()) inArchive = fromArchive(local);
-    resolved =
-        inArchive ? std::move(*inArchive) : fromDisk(path.is_absolute() ? path : directory_ / path);
+    resolved = inArchive ? std::move(*inArchive) : fromDisk(href, path);
   }
   cache_.emplace(href, resolved);
   return resolved;
@@ -77,8 +97,12 @@ std::optional<ResolvedImage> OverlayImages::fromArchive(const std::string& relat
   return resolved;
 }
 
-ResolvedImage OverlayImages::fromDisk(const std::filesystem::path& path) {
-  const std::filesystem::path normal = path.lexically_normal();
+ResolvedImage OverlayImages::fromDisk(const std::string& href, const std::filesystem::path& path) {
+  if (const std::string why = refusal(directory_, path); !why.empty()) {
+    warnings_.push_back("image href \"" + href.substr(0, 200) + "\": " + why + "; not read");
+    return {href, nullptr};
+  }
+  const std::filesystem::path normal = (directory_ / path).lexically_normal();
   std::error_code ec;
   const auto size = std::filesystem::file_size(normal, ec);
   ResolvedImage resolved{normal.string(), nullptr};

@@ -1,5 +1,8 @@
 // Icon and ground overlay images named by a KML href, found and decoded once per document:
 // beside the KML on disk, or inside its KMZ (then beside the KMZ, where Google Earth also looks).
+// An overlay file reaches nothing but itself: a local href resolves only inside its archive or
+// its own folder and below (no absolute path, no `..` out of it, no symlink leading out, only
+// regular files: no device or FIFO); anything else is refused and named in warnings().
 #pragma once
 
 #include <cstdint>
@@ -8,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "formats/image_io.hpp"
 #include "overlays/kmz_archive.hpp"
@@ -29,18 +33,21 @@ class OverlayImages {
   // Relative hrefs resolve inside the archive first, then beside the .kmz.
   explicit OverlayImages(KmzArchive archive);
 
-  // Never fails: whatever cannot be found or decoded gives a null image.
+  // Never fails: whatever cannot be found, is refused or cannot be decoded gives a null image.
   ResolvedImage resolve(const std::string& href);
+  // The hrefs refused so far, each once with the reason ("href \"../x.png\": outside ...").
+  const std::vector<std::string>& warnings() const { return warnings_; }
 
  private:
   std::optional<ResolvedImage> fromArchive(const std::string& relative);
-  ResolvedImage fromDisk(const std::filesystem::path& path);
+  ResolvedImage fromDisk(const std::string& href, const std::filesystem::path& path);
   std::shared_ptr<const formats::ImageRgba> keep(Result<formats::ImageRgba> decoded);
 
   std::filesystem::path directory_;
   std::optional<KmzArchive> archive_;
   std::map<std::string, ResolvedImage> cache_;
   uint64_t decodedBytes_ = 0;
+  std::vector<std::string> warnings_;
 };
 
 }  // namespace globe::overlays

@@ -90,6 +90,9 @@ struct OverlayDocument {
   std::string name;            // <Document><name>, else the file's name
   std::vector<Placemark> placemarks;
   std::vector<GroundOverlay> groundOverlays;
+  // What the reader left out and why, each once, naming the file (an image href outside the
+  // file's folder or archive): for the program to say, never silently dropped.
+  std::vector<std::string> warnings;
 };
 
 }  // namespace globe::overlays

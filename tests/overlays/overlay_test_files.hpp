@@ -1,6 +1,7 @@
 // A per-test scratch folder for the hand-made overlay files, and lookups into a read document.
 #pragma once
 
+#include <cpl_conv.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -8,6 +9,8 @@
 #include <fstream>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "overlays/overlay_model.hpp"
 #include "tests/support/build_paths.hpp"
@@ -46,6 +49,19 @@ class ScratchFolder {
  private:
   std::filesystem::path path_;
 };
+
+// Writes a zip (GDAL's zip writer) holding these (name, bytes) entries, in order.
+inline void writeZip(const std::filesystem::path& file,
+                     const std::vector<std::pair<std::string, std::string>>& entries) {
+  void* zip = CPLCreateZip(file.c_str(), nullptr);
+  ASSERT_NE(zip, nullptr);
+  for (const auto& [name, bytes] : entries) {
+    ASSERT_EQ(CPLCreateFileInZip(zip, name.c_str(), nullptr), CE_None);
+    ASSERT_EQ(CPLWriteFileInZip(zip, bytes.data(), static_cast<int>(bytes.size())), CE_None);
+    ASSERT_EQ(CPLCloseFileInZip(zip), CE_None);
+  }
+  ASSERT_EQ(CPLCloseZip(zip), CE_None);
+}
 
 // The placemark with this name (and folder, when given), or nullptr.
 inline const Placemark* findPlacemark(const OverlayDocument& document, std::string_view name,

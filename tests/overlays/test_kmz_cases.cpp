@@ -14,19 +14,6 @@
 namespace globe::overlays {
 namespace {
 
-// Writes a zip holding these (name, bytes) entries, in order.
-void writeZip(const std::filesystem::path& file,
-              const std::vector<std::pair<std::string, std::string>>& entries) {
-  void* zip = CPLCreateZip(file.c_str(), nullptr);
-  ASSERT_NE(zip, nullptr);
-  for (const auto& [name, bytes] : entries) {
-    ASSERT_EQ(CPLCreateFileInZip(zip, name.c_str(), nullptr), CE_None);
-    ASSERT_EQ(CPLWriteFileInZip(zip, bytes.data(), static_cast<int>(bytes.size())), CE_None);
-    ASSERT_EQ(CPLCloseFileInZip(zip), CE_None);
-  }
-  ASSERT_EQ(CPLCloseZip(zip), CE_None);
-}
-
 std::string pngBytes(int width, int height) {
   const formats::ImageRgba image{width, height,
                                  std::vector<uint8_t>(static_cast<size_t>(width * height * 4), 90)};
