@@ -23,6 +23,7 @@ struct PlayArguments {
   bool window = false;
   bool realTime = false;
   uint32_t morphFrames = 8;
+  bool allowMissing = false;
 };
 
 int runPlayCommand(const PlayArguments& arguments, const CommonArguments& common,
@@ -53,6 +54,13 @@ int runPlayCommand(const PlayArguments& arguments, const CommonArguments& common
     return 1;
   }
   std::fputs(report->summaryText.c_str(), stdout);
+  if (report->failures > 0 && !arguments.allowMissing) {
+    std::fprintf(stderr,
+                 "globe play: %llu frame(s) lack tiles that failed to load (see above): they draw "
+                 "coarser ground or imagery there; --allow-missing accepts that\n",
+                 static_cast<unsigned long long>(report->failures));
+    return 1;
+  }
   return 0;
 }
 
@@ -85,6 +93,8 @@ Subcommand addPlayCommand(CLI::App& app, CommonArguments& common) {
       ->check(CLI::Range(0u, 1000u))
       ->capture_default_str();
   play->add_option("--video", arguments->video, "encode the frames into this MP4 with ffmpeg");
+  play->add_flag("--allow-missing", arguments->allowMissing,
+                 "exit 0 even when tiles failed to load (drawn coarser; each named on stderr)");
   addGlobeOption(*play, common);
   addNetworkOptions(*play, common);
   addSeaFloorOption(*play, common);

@@ -221,6 +221,7 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
     partial.keep();
   }
   report.summary = summarize(records);
+  for (const FrameRecord& record : records) report.failures += record.missingTiles > 0 ? 1 : 0;
   if (!options.scene.layers.empty()) {
     report.summary.imageryTextureBudgetBytes = options.scene.imageryBudget.textureBytes;
   }

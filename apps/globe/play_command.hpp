@@ -34,6 +34,7 @@ struct PlayReport {
   PlaySummary summary;
   std::string summaryText;    // as printed and written to DIR/summary.txt
   bool stoppedEarly = false;  // the window was closed before the path's end
+  uint64_t failures = 0;      // frames whose view lacks tiles that failed to load (named on stderr)
 };
 
 // Frame i shows the path at start + i / fps, up to its end. Each frame: the scripted pose is

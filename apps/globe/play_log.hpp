@@ -42,6 +42,7 @@ struct FrameRecord {
   // move was checked against there): the lift a viewer shows as a pop unless it is spread. Not
   // counted where that array held no ground under the camera (it moved out of the last view).
   double newGroundLiftMeters = 0;
+  size_t missingTiles = 0;  // tiles the frame's view wanted whose load failed (drawn coarser)
   size_t tilesDrawn = 0;
   uint64_t imageryTextureBytes = 0;  // imagery textures on the GPU after the frame's draw
   FrameTimings timings;

@@ -85,6 +85,7 @@ Result<void> PlaybackStep::completeView(const camera::CameraPose& pose, FrameTim
     const auto start = Clock::now();
     const scene::FrameInfo info = scene_.update(pose, widthPixels_, heightPixels_, gpu_);
     timings.selectMs += millisecondsSince(start);
+    missingTiles_ = info.missingTiles;
     if (info.complete) return {};
     if (Clock::now() > until) {
       return makeError("the view was not complete after " + std::to_string(viewTimeout_.count()) +
@@ -148,7 +149,7 @@ Result<FrameRecord> PlaybackStep::frame(int frameIndex, double timeSeconds, doub
                       .has_value();
   if (realTime_) {
     const auto start = Clock::now();
-    (void)scene_.update(controller_.pose(), widthPixels_, heightPixels_, gpu_);
+    missingTiles_ = scene_.update(controller_.pose(), widthPixels_, heightPixels_, gpu_).missingTiles;
     record.timings.selectMs += millisecondsSince(start);
     collide(0.0, record, true);
     return finishRecord(std::move(record));
@@ -175,6 +176,7 @@ Result<FrameRecord> PlaybackStep::frame(int frameIndex, double timeSeconds, doub
 Result<FrameRecord> PlaybackStep::finishRecord(FrameRecord record) {
   const geo::Ellipsoid& ellipsoid = scene_.ellipsoid();
   record.pose = controller_.pose();
+  record.missingTiles = missingTiles_;
   const auto surfaceHeight = collision::exactSurfaceHeight(scene_.renderingTileArray(), ellipsoid,
                                                            record.pose.position.longitudeRadians,
                                                            record.pose.position.latitudeRadians);

@@ -76,7 +76,8 @@ class PlaybackStep {
   int widthPixels_, heightPixels_;
   std::chrono::seconds viewTimeout_;
   bool realTime_;
-  bool groundBefore_ = false;  // this frame's move ended over ground the checked array held
+  bool groundBefore_ = false;
+  size_t missingTiles_ = 0;  // the last view's FrameInfo::missingTiles  // this frame's move ended over ground the checked array held
   FinestSurface finestSurface_;
   camera::CameraController controller_;
 };

@@ -22,6 +22,7 @@ struct SnapshotArguments {
   std::string sse = "2";  // numbers as text: checked and named by parseNumberArgument
   uint32_t maxLoadLevel = geo::kMaxLevel;
   bool noAttribution = false;
+  bool allowMissing = false;
   std::string goTo;
   std::string view;
   CLI::Option* cameraOption = nullptr;  // count() > 0: --camera was given (even empty)
@@ -86,6 +87,13 @@ int runSnapshotCommand(const SnapshotArguments& arguments, const CommonArguments
               arguments.output.c_str(), report->tilesDrawn,
               static_cast<unsigned long long>(report->triangles),
               static_cast<unsigned long long>(report->tileLoads), report->seconds);
+  if (report->failures > 0 && !arguments.allowMissing) {
+    std::fprintf(stderr,
+                 "globe snapshot: %llu tile(s) the view wanted failed to load (see above): %s "
+                 "draws coarser ground or imagery there; --allow-missing accepts such an image\n",
+                 static_cast<unsigned long long>(report->failures), arguments.output.c_str());
+    return 1;
+  }
   return 0;
 }
 
@@ -117,6 +125,9 @@ Subcommand addSnapshotCommand(CLI::App& app, CommonArguments& common) {
   snapshot->add_flag("--no-attribution", arguments->noAttribution,
                      "leave out the data's attribution (stamped at the bottom right for services "
                      "that give one)");
+  snapshot->add_flag("--allow-missing", arguments->allowMissing,
+                     "exit 0 even when tiles failed to load (drawn coarser there; each is named "
+                     "on stderr): by default such an image is written but the exit status is 1");
   addGlobeOption(*snapshot, common);
   addNetworkOptions(*snapshot, common);
   addSeaFloorOption(*snapshot, common);

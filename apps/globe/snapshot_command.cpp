@@ -68,6 +68,7 @@ Result<SnapshotReport> runSnapshot(const SnapshotOptions& options) {
   report.tilesDrawn = stats.tilesDrawn;
   report.triangles = stats.triangles;
   report.tileLoads = (*scene)->loader().counters().completed;
+  report.failures = frame->missingTiles;
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }

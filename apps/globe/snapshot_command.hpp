@@ -27,6 +27,9 @@ struct SnapshotReport {
   uint32_t tilesDrawn = 0;
   uint64_t triangles = 0;
   uint64_t tileLoads = 0;
+  // Tiles the view wanted whose load or pack failed (each named once on the warnings): the
+  // image, written all the same, draws coarser ground or imagery there.
+  uint64_t failures = 0;
   double seconds = 0;
 };
 

@@ -301,6 +301,7 @@ Result<ImageryFrame> ImageryLayers::update(std::span<const geo::TileId> tiles,
       }
       // A tile whose load failed (reported once) stays drawn through its ancestor.
       const streaming::TileState state = layer.loader->state(target);
+      if (drawn.level < target.level && state == streaming::TileState::Failed) ++frame.missing;
       if (drawn.level < target.level && state != streaming::TileState::Failed &&
           state != streaming::TileState::Absent) {
         frame.complete = false;

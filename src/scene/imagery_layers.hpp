@@ -58,6 +58,7 @@ struct ImageryFrame {
   size_t fallbacks = 0;  // drapes drawn with an ancestor's texture while their own loads
   size_t drapes = 0;     // (terrain tile, layer) pairs drawn with a texture
   bool complete = true;  // every drape uses its own imagery tile and nothing is loading
+  size_t missing = 0;    // drapes drawn with an ancestor's texture because their own tile failed
 };
 
 class ImageryLayers {

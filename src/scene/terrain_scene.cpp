@@ -79,6 +79,8 @@ class SceneCatalog final : public terrain::TileCatalog {
     return summary;
   }
   bool isResident(const geo::TileId& tile) const override { return loader_.isResident(tile); }
+  // Tiles the selection asked about whose pack failed (FrameInfo::missingTiles).
+  size_t missing() const { return missing_; }
 
  private:
   // Bounded: a long flight finds ever new tiles (the chain from a leaf is found again top-down).
@@ -91,6 +93,7 @@ class SceneCatalog final : public terrain::TileCatalog {
         case streaming::TerrainSource::Peek::Present:
           return summary;
         case streaming::TerrainSource::Peek::Absent:
+          if (store_.failedAt(tile)) ++missing_;  // its pack failed: its parent is drawn
           return std::nullopt;
         case streaming::TerrainSource::Peek::NotOpen:
           notOpen_->push_back(tile);
@@ -99,7 +102,11 @@ class SceneCatalog final : public terrain::TileCatalog {
       }
     }
     auto summary = store_.summary(tile);
-    if (!summary || !*summary) return std::nullopt;  // an unreadable pack draws its parent instead
+    if (!summary || !*summary) {
+      // An unreadable pack draws its parent instead: a tile the view needed and lacks.
+      if (!summary || store_.failedAt(tile)) ++missing_;
+      return std::nullopt;
+    }
     return **summary;
   }
 
@@ -107,6 +114,7 @@ class SceneCatalog final : public terrain::TileCatalog {
   const streaming::TileLoader& loader_;
   std::vector<geo::TileId>* notOpen_;
   Upsampling* upsampling_;
+  mutable size_t missing_ = 0;
 };
 
 // Bilinear height inside a block at a position of its tile (water: 0 m, or its sea floor).
@@ -275,6 +283,7 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   cache_.beginFrame();
   const streaming::PollResult polled = loader_->poll();
   info.arrived = polled.arrived.size();
+  reportFailures(polled.errors);
 
   // Clearance above the terrain sets the near plane: from the finest resident block under us.
   info.terrainHeightMeters = 0;
@@ -349,10 +358,12 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
                            options_.hysteresis ? tiles_ : std::vector<geo::TileId>{});
 
   cache_.touch(selection.tiles);
+  info.missingTiles += catalog.missing();
   std::vector<streaming::LoadRequest> requests;
   for (const terrain::TileRequest& r : selection.requests) {
-    if (r.tile.level > options_.maximumLoadLevel ||
-        loader_->state(r.tile) == streaming::TileState::Failed) {
+    if (r.tile.level > options_.maximumLoadLevel) continue;
+    if (loader_->state(r.tile) == streaming::TileState::Failed) {
+      info.missingTiles += r.lookahead ? 0 : 1;  // its parent is drawn instead
       continue;
     }
     if (upsampled_.contains(r.tile)) {
@@ -417,10 +428,6 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
       gpuLastUsedFrame_.erase(byAge[k].second);
     }
   }
-  // Each missing or damaged pack once (the store remembers it), not once per tile or frame.
-  for (const std::string& error : store_->takeNewSourceErrors()) {
-    core::warn(options_.warnings, error + "; drawing coarser tiles there");
-  }
   info.selection = selection.counters;
   info.tilesSelected = tiles_.size();
   info.requests = requests.size();
@@ -464,6 +471,28 @@ void TerrainScene::requestUnderCamera(const camera::CameraPose& pose,
   }
 }
 
+void TerrainScene::reportFailures(const std::vector<streaming::LoadError>& failedLoads) {
+  // Each missing or damaged pack once (the store remembers it), not once per tile or frame.
+  for (std::string& error : store_->takeNewSourceErrors()) {
+    core::warn(options_.warnings, error + "; drawing coarser tiles there");
+    if (reportedSourceErrors_.size() >= kReportedSourceErrorsKept) reportedSourceErrors_.clear();
+    reportedSourceErrors_.push_back(std::move(error));
+  }
+  // Each failed tile once (the loader reports it once), unless the store has said it of its pack:
+  // a tile that fails to decode (a service's tile, say) is never a silent hole.
+  for (const streaming::LoadError& error : failedLoads) {
+    // Said already: the store named this tile's pack (one message a pack, not one a tile).
+    const std::string file = error.file.string();
+    const bool said = std::any_of(
+        reportedSourceErrors_.begin(), reportedSourceErrors_.end(), [&](const std::string& text) {
+          return (!file.empty() && text.starts_with(file)) ||
+                 error.message.find(text) != std::string::npos;
+        });
+    if (said) continue;
+    core::warn(options_.warnings, error.message + "; drawing its parent there");
+  }
+}
+
 void TerrainScene::openPacksInBackground(const std::vector<geo::TileId>& tiles) {
   for (const geo::TileId& tile : tiles) {
     packOpens_.post(runner_, store_->summaryGroupOf(tile), [this, tile] {
@@ -491,6 +520,7 @@ void TerrainScene::updateImagery(const glm::dvec3& cameraEcefMeters, TileGpu& gp
       options_.maximumImageryLoadLevel, cameraEcefMeters, ellipsoid_, gpu, drapes_);
   if (frame) {
     info.imagery = *frame;
+    info.missingTiles += frame->missing;
     // The terrain's own step where each tile is, for the relief weight (TileDrape).
     for (size_t i = 0; i < tiles_.size(); ++i) {
       if (drapes_[i].count == 0 && !drapes_[i].hasWaterMask) continue;

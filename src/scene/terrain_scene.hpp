@@ -90,6 +90,9 @@ struct FrameInfo {
   size_t uploaded = 0;             // meshes built and uploaded this frame
   bool complete = false;           // nothing loadable is missing: the image is final
   size_t morphing = 0;             // tiles drawn on their way from a coarser surface
+  // Tiles (terrain and imagery) this view wanted whose load or pack failed: drawn coarser there.
+  // What a complete view lacks (snapshot and play exit 1 on it unless --allow-missing).
+  size_t missingTiles = 0;
   double terrainHeightMeters = 0;  // under the camera, from the finest resident block
   ImageryFrame imagery;            // the layers' part of this frame (complete counts it)
 };
@@ -147,6 +150,8 @@ class TerrainScene {
   TerrainScene(std::unique_ptr<streaming::TerrainSource> store, const SceneOptions& options);
   void updateImagery(const glm::dvec3& cameraEcefMeters, TileGpu& gpu, FrameInfo& info);
   void retryFailedLoadsWhenDue();
+  // Says (to the warnings) the store's new errors and these failed loads, each once.
+  void reportFailures(const std::vector<streaming::LoadError>& failedLoads);
   // Ends the frame's morphs (scene/tile_morphs.hpp), releasing meshes of morphs dropped.
   void finishMorphs(TileGpu& gpu, FrameInfo& info);
   // The tiles under the camera below the finest one loaded there, a few levels deep, first of all.
@@ -191,6 +196,9 @@ class TerrainScene {
       blocks_;  // keep the array's blocks alive
   terrain::RenderingTileArray array_;
   TileMorphs morphs_;
+  // The store's errors said lately, so a failed load that repeats one is not said again.
+  std::vector<std::string> reportedSourceErrors_;
+  static constexpr size_t kReportedSourceErrorsKept = 256;
   terrain::RenderView view_;
   uint64_t frame_ = 0;
   std::unordered_map<geo::TileId, uint64_t> gpuLastUsedFrame_;

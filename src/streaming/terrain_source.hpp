@@ -29,6 +29,9 @@ class TerrainSource : public TileSource<terrain::HeightBlock> {
   virtual terrain::SeaSurface sea() const = 0;
   // Who the data is from, to show beside the picture; empty when it does not say.
   virtual std::string attribution() const { return {}; }
+  // Whether what holds the tile (a pack) failed to open: peek() and summary() then answer as if
+  // the tile were absent, so that its parent is drawn; a view that needed it is missing it.
+  virtual bool failedAt(const geo::TileId& /*tile*/) { return false; }
 
   // For a render thread that must not wait on a server: the tile's summary without any I/O.
   // NotOpen: an index must be read first (summary() on a worker does).

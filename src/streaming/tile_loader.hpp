@@ -179,7 +179,10 @@ FinishedLoad<Payload> PayloadLoader<Payload>::finished(const geo::TileId& tile,
                                                        Clock::time_point postedAt) {
   Finished done{tile, Finished::Outcome::Failed, nullptr, {}, postedAt, {}};
   if (!loaded) {
-    done.error = geo::tileName(tile) + ": " + loaded.error();
+    // Named once: the source's message may name the tile already.
+    const std::string name = geo::tileName(tile);
+    done.error = loaded.error().find(name) != std::string::npos ? loaded.error()
+                                                                 : name + ": " + loaded.error();
   } else if (!*loaded) {
     done.outcome = Finished::Outcome::Absent;
   } else {

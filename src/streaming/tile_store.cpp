@@ -119,6 +119,11 @@ std::vector<std::string> TileStore::takeNewPackErrors() { return packs_.takeNewE
 
 void TileStore::forgetFailedPacks() { packs_.forgetFailures(); }
 
+bool TileStore::failedAt(const geo::TileId& tile) {
+  const auto known = packs_.peek(formats::packOf(tile, manifest_.packTilesPerSide));
+  return known && !*known;
+}
+
 Result<std::optional<formats::PackEntry>> TileStore::entry(const geo::TileId& tile) {
   auto opened = pack(formats::packOf(tile, manifest_.packTilesPerSide));
   if (!opened) return Error{opened.error()};

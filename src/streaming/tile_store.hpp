@@ -77,6 +77,7 @@ class TileStore final : public TerrainSource {
   std::vector<Result<std::optional<terrain::HeightBlock>>> loadTogether(
       std::span<const geo::TileId> tiles) override;
   std::vector<std::string> takeNewSourceErrors() override { return takeNewPackErrors(); }
+  bool failedAt(const geo::TileId& tile) override;
   void forgetSourceFailures() override { forgetFailedPacks(); }
 
   static constexpr uint64_t kReadTogetherBytes = 256 * 1024;

@@ -139,7 +139,9 @@ class Traversal {
     for (size_t i = 0; i < 4; ++i) {
       const std::optional<VisibleTile> child = cull(children[i], *summaries[i], false);
       if (!child) continue;
-      if (!catalog_.isResident(children[i])) result_.requests.push_back({children[i], priority});
+      if (!catalog_.isResident(children[i])) {
+        result_.requests.push_back({children[i], priority, true});
+      }
       lookahead(*child, levels - 1, priority / 4);
     }
   }

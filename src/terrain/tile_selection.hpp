@@ -54,6 +54,7 @@ struct TileRequest {
   // Higher = sooner. The screen-space error, at this tile's distance, of the tile drawn in its
   // place (its parent): how many pixels loading it would fix. Roots get the largest double.
   double priority = 0.0;
+  bool lookahead = false;  // wanted ahead of the refinement, not by this frame's view
 };
 
 // Every visited tile (its bounding volume was tested) ends in exactly one of the last six

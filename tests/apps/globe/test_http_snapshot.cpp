@@ -168,7 +168,8 @@ size_t blackPixels(const std::vector<uint8_t>& rgba) {
 
 // A level that fails on the server (500 after the retries, or a response so slow it times out)
 // draws exactly what the local pyramid draws when that level is never loaded (its parents);
-// one message names the level's URL and the problem; exit status 0 with the image written.
+// one message names the level's URL and the problem; the image is written, and the exit status
+// is 1 (tiles are missing from it) unless --allow-missing says that is fine.
 TEST(HttpSnapshot, AFailingLevelDrawsItsParentsWithOneMessage) {
   Site site;
   const uint32_t finest = finestLevel(site.root / "zion");
@@ -194,7 +195,9 @@ TEST(HttpSnapshot, AFailingLevelDrawsItsParentsWithOneMessage) {
     const ProcessResult run =
         runGlobe(snapshotArgs(server->url("/zion"), server->url("/zion-rgb"), output) +
                  " --http-timeout 2 --cache-dir " + (site.dir / "cache-fault").string());
-    EXPECT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_EQ(run.exitCode, 1) << run.output;
+    EXPECT_NE(run.output.find("--allow-missing accepts such an image"), std::string::npos)
+        << run.output;
     EXPECT_NE(run.output.find(server->url(failing)), std::string::npos) << run.output;
     EXPECT_NE(run.output.find(fault.message), std::string::npos) << run.output;
     EXPECT_EQ(differingPixels(pixelsOf(reference), pixelsOf(output)), 0u);
@@ -231,15 +234,15 @@ TEST(HttpSnapshot, ADamagedPackDrawsWhatTheSameDamageDrawsLocally) {
     fs::create_symlink(copy, site.root / ("zion-" + damage));
     const fs::path local = site.dir / "local.png";
     const fs::path remote = site.dir / "remote.png";
-    const ProcessResult a =
-        runGlobe(snapshotArgs(copy.string(), (site.root / "zion-rgb").string(), local));
+    const ProcessResult a = runGlobe(
+        snapshotArgs(copy.string(), (site.root / "zion-rgb").string(), local) + " --allow-missing");
     ASSERT_EQ(a.exitCode, 0) << a.output;
     auto server = NginxServer::start({site.root, ""});
     ASSERT_TRUE(server);
     const ProcessResult b =
         runGlobe(snapshotArgs(server->url("/zion-" + damage), server->url("/zion-rgb"), remote) +
                  " --cache-dir " + (site.dir / ("cache-" + damage)).string());
-    EXPECT_EQ(b.exitCode, 0) << b.output;
+    EXPECT_EQ(b.exitCode, 1) << "a pack is missing from the image\n" << b.output;
     EXPECT_NE(b.output.find(server->url("/zion-" + damage + "/" + pack)), std::string::npos)
         << b.output;
     EXPECT_EQ(differingPixels(pixelsOf(local), pixelsOf(remote)), 0u);
@@ -248,7 +251,7 @@ TEST(HttpSnapshot, ADamagedPackDrawsWhatTheSameDamageDrawsLocally) {
 }
 
 // The server stops while the snapshot loads: it still ends with an image (what had arrived, and
-// the parents of what had not), a message naming the URL, exit status 0.
+// the parents of what had not) and a message naming the URL.
 TEST(HttpSnapshot, AServerStoppedMidFlightStillEndsWithAnImage) {
   Site site;
   auto server = NginxServer::start({site.root, "location /zion/ { limit_rate 10k; }"});
