@@ -287,6 +287,7 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
 
   // Clearance above the terrain sets the near plane: from the finest resident block under us.
   info.terrainHeightMeters = 0;
+  uint32_t loadedUnderCamera = 0;  // the finest level loaded there (requestUnderCamera)
   for (uint32_t level = store_->manifest().maxLevel() + 1; level-- > 0;) {
     const auto tile = geo::GeographicTilingScheme::positionToTile(
         pose.position.longitudeRadians, pose.position.latitudeRadians, level);
@@ -294,6 +295,7 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
     if (auto block = loader_->get(*tile)) {
       info.terrainHeightMeters = blockHeightMeters(*block, *tile, pose.position.longitudeRadians,
                                                    pose.position.latitudeRadians);
+      loadedUnderCamera = level;
       break;
     }
   }
@@ -382,7 +384,7 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
                                  r.tile.level) == r.tile;
     requests.push_back({r.tile, underCamera ? kNadirPriority : r.priority});
   }
-  requestUnderCamera(pose, requests);
+  requestUnderCamera(pose, loadedUnderCamera, requests);
   loader_->request(requests);
   openPacksInBackground(notOpen);
 
@@ -438,18 +440,10 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   return info;
 }
 
-void TerrainScene::requestUnderCamera(const camera::CameraPose& pose,
+void TerrainScene::requestUnderCamera(const camera::CameraPose& pose, uint32_t resident,
                                       std::vector<streaming::LoadRequest>& requests) {
   const double lon = pose.position.longitudeRadians, lat = pose.position.latitudeRadians;
   const uint32_t deepest = std::min(store_->manifest().maxLevel(), options_.maximumLoadLevel);
-  uint32_t resident = 0;  // the finest level loaded under the camera
-  for (uint32_t level = deepest + 1; level-- > 0;) {
-    const auto tile = geo::GeographicTilingScheme::positionToTile(lon, lat, level);
-    if (tile && loader_->isResident(*tile)) {
-      resident = level;
-      break;
-    }
-  }
   terrain::TileSummary ignored;
   for (uint32_t level = resident + 1;
        level <= std::min(deepest, resident + kNadirLookaheadLevels); ++level) {

@@ -155,7 +155,8 @@ class TerrainScene {
   // Ends the frame's morphs (scene/tile_morphs.hpp), releasing meshes of morphs dropped.
   void finishMorphs(TileGpu& gpu, FrameInfo& info);
   // The tiles under the camera below the finest one loaded there, a few levels deep, first of all.
-  void requestUnderCamera(const camera::CameraPose& pose,
+  // `resident`: the finest level loaded under the camera.
+  void requestUnderCamera(const camera::CameraPose& pose, uint32_t resident,
                           std::vector<streaming::LoadRequest>& requests);
   // Reads these tiles' pack indexes on the loader's threads (a remote pyramid).
   void openPacksInBackground(const std::vector<geo::TileId>& tiles);

@@ -65,7 +65,7 @@ TileMorphs::Choice TileMorphs::advance(const geo::TileId& tile, Morph& morph,
     return {loaded, drawn && morphMeshes_.erase(tile) > 0};
   }
   const double fraction = static_cast<double>(morph.step) / frames_;
-  if (drawn) morphMeshes_[tile] = true;
+  if (drawn) morphMeshes_.insert(tile);
   return {std::make_shared<const terrain::HeightBlock>(
               terrain::morphBlock(*morph.from, *loaded, fraction)),
           drawn};
@@ -85,7 +85,7 @@ TileMorphs::Choice TileMorphs::blockFor(const geo::TileId& tile,
   // Drawn as loaded: a morph's mesh left on the GPU is replaced.
   if (!choice) choice = Choice{loaded, drawn && morphMeshes_.erase(tile) > 0};
   current_[tile] = choice->block;
-  if (drawn) drawnNow_[tile] = true;
+  if (drawn) drawnNow_.insert(tile);
   return *choice;
 }
 
@@ -95,11 +95,11 @@ std::vector<geo::TileId> TileMorphs::endFrame() {
   }
   std::vector<geo::TileId> stale;
   for (auto it = morphMeshes_.begin(); it != morphMeshes_.end();) {
-    if (drawnNow_.contains(it->first) || morphs_.contains(it->first)) {
+    if (drawnNow_.contains(*it) || morphs_.contains(*it)) {
       ++it;
       continue;
     }
-    stale.push_back(it->first);
+    stale.push_back(*it);
     it = morphMeshes_.erase(it);
   }
   previous_.swap(current_);

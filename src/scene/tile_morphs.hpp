@@ -10,6 +10,7 @@
 #include <memory>
 #include <span>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "geo/ellipsoid.hpp"
@@ -61,10 +62,10 @@ class TileMorphs {
   uint64_t frame_ = 0;
   std::unordered_map<geo::TileId, Morph> morphs_;
   // Tiles whose GPU mesh was last uploaded from a morph block.
-  std::unordered_map<geo::TileId, bool> morphMeshes_;
+  std::unordered_set<geo::TileId> morphMeshes_;
   // The blocks of last frame's array and this frame's, by tile; the tiles drawn this frame.
   std::unordered_map<geo::TileId, std::shared_ptr<const terrain::HeightBlock>> previous_, current_;
-  std::unordered_map<geo::TileId, bool> drawnNow_;
+  std::unordered_set<geo::TileId> drawnNow_;
 };
 
 }  // namespace globe::scene
