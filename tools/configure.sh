@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Configures a build directory the way tools/setup.sh and tools/run-tests.sh share it:
 # RelWithDebInfo, ccache when installed (its objects shared between checkouts in different
-# folders). Extra arguments go to cmake (the sanitizer builds add theirs).
+# folders), Ninja when installed. Extra arguments go to cmake (the sanitizer builds add theirs).
 #
 #   tools/configure.sh BUILD_DIR [CMAKE_ARGS...]
 set -euo pipefail
@@ -16,4 +16,11 @@ if command -v ccache >/dev/null 2>&1; then
   CCACHE="env;CCACHE_BASEDIR=$PWD;CCACHE_NOHASHDIR=1;ccache"
   LAUNCHER=(-DCMAKE_C_COMPILER_LAUNCHER="$CCACHE" -DCMAKE_CXX_COMPILER_LAUNCHER="$CCACHE")
 fi
-cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo "${LAUNCHER[@]}" "$@" >/dev/null
+# Ninja schedules compiles across targets (Make waits for each library before its users' objects):
+# a cold build of globe and globe-tiler on 2 cores in 162 s instead of 186 s. A directory that
+# was made with another generator keeps it (CMake refuses to switch one).
+GENERATOR=()
+if command -v ninja >/dev/null 2>&1 && ! grep -qs '^CMAKE_GENERATOR:INTERNAL=' "$BUILD/CMakeCache.txt"; then
+  GENERATOR=(-G Ninja)
+fi
+cmake -S . -B "$BUILD" "${GENERATOR[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo "${LAUNCHER[@]}" "$@" >/dev/null

@@ -1,27 +1,40 @@
 #!/usr/bin/env bash
 # Installs the Debian packages globe needs to build and run (needs root or sudo); with --tests,
 # those its test suite needs as well (tools/run-tests.sh asks for them): GoogleTest, Google
-# Benchmark, nginx, Xvfb and xdotool, ImageMagick, gnuplot and matplotlib, help2man. The set-up
-# command installs only the first set, so a new machine downloads ~110 packages fewer before it
-# shows anything.
+# Benchmark, nginx, Xvfb and xdotool, ImageMagick, gnuplot and matplotlib, help2man, gdal-bin.
+# The set-up command installs only the first set, so a new machine downloads ~110 packages fewer
+# before it shows anything; and it installs the video encoder (ffmpeg: 115 packages, 64 MB, used
+# only for the demo's video) while the build runs, not before it:
+#
+#   tools/install-deps.sh [--tests]   everything the build, the programs (and the tests) need
+#   tools/install-deps.sh --no-video  the same without ffmpeg
+#   tools/install-deps.sh --video     ffmpeg alone, without refreshing the package lists
 set -euo pipefail
 SUDO=""
 if [ "$(id -u)" != 0 ]; then SUDO=sudo; fi
 export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq
 PACKAGES=(
   build-essential cmake pkg-config git ca-certificates
   libosmesa6-dev libgl-dev libgl1-mesa-dri libegl-dev libglfw3-dev libglew-dev libglm-dev
-  libstb-dev libfreetype-dev libharfbuzz-dev fonts-dejavu-core libgdal-dev gdal-bin libjpeg-dev
+  libstb-dev libfreetype-dev libharfbuzz-dev fonts-dejavu-core libgdal-dev libjpeg-dev
   libdeflate-dev libwebp-dev libtomlplusplus-dev libgeographiclib-dev nlohmann-json3-dev
-  libcli11-dev libfmt-dev libtinyxml2-dev libcairo2-dev libcurl4-openssl-dev ffmpeg ccache lld
-  python3-glad
+  libcli11-dev libfmt-dev libtinyxml2-dev libcairo2-dev libcurl4-openssl-dev ccache lld
+  ninja-build python3-glad
 )
+VIDEO_PACKAGES=(ffmpeg)
 TEST_PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev help2man time xvfb xdotool x11-apps imagemagick
-  gnuplot-nox python3-matplotlib mesa-utils nginx-light openssl
+  gnuplot-nox python3-matplotlib mesa-utils nginx-light openssl gdal-bin
 )
-if [ "${1:-}" = "--tests" ]; then PACKAGES+=("${TEST_PACKAGES[@]}"); fi
+case "${1:-}" in
+  "") PACKAGES+=("${VIDEO_PACKAGES[@]}") ;;
+  --tests) PACKAGES+=("${VIDEO_PACKAGES[@]}" "${TEST_PACKAGES[@]}") ;;
+  --no-video) ;;
+  --video) PACKAGES=("${VIDEO_PACKAGES[@]}") ;;
+  *) echo "install-deps.sh: unknown option '$1' (--tests, --no-video or --video)" >&2; exit 2 ;;
+esac
+# --video follows a --no-video run of a moment ago: its package lists are fresh.
+if [ "${1:-}" != --video ]; then $SUDO apt-get update -qq; fi
 HAD_NGINX=0
 if dpkg -s nginx-light >/dev/null 2>&1 || dpkg -s nginx >/dev/null 2>&1; then HAD_NGINX=1; fi
 $SUDO apt-get install -y -qq --no-install-recommends "${PACKAGES[@]}" >/dev/null

@@ -9,7 +9,13 @@
 # installed; in a window as well when a display exists).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash tools/install-deps.sh
+bash tools/install-deps.sh --no-video
+# The demo's video encoder (ffmpeg and its 115 packages) downloads and installs while globe builds:
+# apt works mostly on the network and the disk, the compiler on the cores. Waited for before the
+# flight; without it the flight still writes its frames.
+mkdir -p out
+bash tools/install-deps.sh --video >out/video-install.log 2>&1 &
+VIDEO_INSTALL=$!
 # Only the two programs the main job runs, without the tests (their packages come with
 # tools/run-tests.sh, which builds the rest in the same directory with the same flags).
 bash tools/configure.sh build -DGLOBE_BUILD_TESTS=OFF
@@ -23,12 +29,14 @@ cmake --build build -j"$(nproc)" --target globe globe-tiler
   data/coast/gshhg-f-*.fgb
 ./build/apps/globe/globe info pyramid
 LAYERS=(--layer layers/blue-marble --layer layers/zion)
-mkdir -p out
 ./build/apps/globe/globe snapshot pyramid --camera 138,30,20000000 "${LAYERS[@]}" -o out/globe.png
 ./build/apps/globe/globe snapshot pyramid --camera -112.93,37.16,4500,330,-20,0 "${LAYERS[@]}" -o out/zion.png
 ./build/apps/globe/globe snapshot pyramid --camera 138.60,35.20,6000,30,-15,0 --layer layers/coast -o out/fuji_oblique.png
 ./build/apps/globe/globe snapshot pyramid --camera 0.3,52.9,60000 --layer layers/coast -o out/wash.png
 echo "138.7275,35.3606" | ./build/apps/globe/globe query pyramid
+if wait "$VIDEO_INSTALL"; then rm -f out/video-install.log; else
+  echo "ffmpeg did not install (out/video-install.log says why): the flight writes frames, no video"
+fi
 echo "Images in out/. Interactive: ./build/apps/globe/globe view pyramid ${LAYERS[*]} (needs a display)"
 # 15 frames a second (481 frames) show the flight and the glide as well as 30 do, in half the
 # time (a set-up within 6 minutes: docs/performance/ci-time.md); --fps 30 for a smoother video.

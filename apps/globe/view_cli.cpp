@@ -101,7 +101,8 @@ Subcommand addViewCommand(CLI::App& app, CommonArguments& common) {
   view->add_option("--screenshot", arguments->screenshot,
                    "write the last frame to this PNG on exit");
   view->add_flag("--log", arguments->log,
-                 "print when the view is complete, and the camera on exit");
+                 "print when the view is complete, when it goes idle (all asked is on screen) "
+                 "and the camera on exit");
   view->add_option("--record-dir", arguments->recordDirectory,
                    "where P (globe-path-*.json) and K/F12 (globe-shot-*.png) write (default: .)");
   addGlobeOption(*view, common);

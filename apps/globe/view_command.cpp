@@ -327,10 +327,16 @@ Result<ViewReport> runView(const ViewOptions& options) {
   bool drawnHelp = false;
   double frameMilliseconds = 0;
   bool loading = true, wasComplete = false, tilesChanged = false;
+  bool saidIdle = false;  // --log: the last state said was "view idle" (else "view busy")
+  std::pair<int, int> saidSize{0, 0};
   while (!(*window)->shouldClose()) {
     setViewport();
     const int width = (*window)->framebufferWidthPixels();
     const int height = (*window)->framebufferHeightPixels();
+    if (options.log && saidSize != std::pair{width, height}) {  // resizes come late (F11)
+      saidSize = {width, height};
+      std::printf("view size %dx%d\n", width, height);
+    }
     const bool visible = width > 0 && height > 0;  // not minimised
     if (visible && (input.changed || loading || continuous)) {
       const auto now = Clock::now();
@@ -622,6 +628,11 @@ Result<ViewReport> runView(const ViewOptions& options) {
         (*window)->swapBuffers();
         frameMilliseconds = millisecondsSince(drawStart);
         ++report.framesDrawn;
+        if (options.log && saidIdle) {  // so a log's last line says whether the view moves
+          std::printf("view busy: frame %d\n", report.framesDrawn);
+          std::fflush(stdout);
+          saidIdle = false;
+        }
         drawnTiles = (*scene)->tiles();
         if (std::string next =
                 titleFor(controller.pose(), drawnTiles.size(), loading, controller.state());
@@ -648,6 +659,13 @@ Result<ViewReport> runView(const ViewOptions& options) {
     } else if (visible && loading) {
       glfwWaitEventsTimeout(std::chrono::duration<double>(kLoadWait).count());
     } else {
+      // Said each time the window waits for input: everything it was sent is handled and on
+      // screen (scripts driving the window wait for this line instead of sleeping).
+      if (options.log) {
+        std::printf("view idle: frame %d\n", report.framesDrawn);
+        std::fflush(stdout);
+        saidIdle = true;
+      }
       glfwWaitEvents();  // idle (or minimised): nothing moves until an event arrives
     }
   }

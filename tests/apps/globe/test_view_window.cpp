@@ -131,12 +131,26 @@ ShellRun runShell(const std::string& command) {
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
 }
 
+// Shell functions for scripts that drive `globe view --log > log.txt`: the window says "view idle"
+// each time it has handled all it was sent and waits, "view busy" when it draws again, so a
+// script waits for what it asked instead of sleeping. `send ARGS` runs `xdotool ARGS` and waits
+// until the window has handled it and is still (60 s at most: a slow sanitizer build).
+const char* kWaitHelpers =
+    "idles() { grep -c '^view idle' log.txt 2>/dev/null; }\n"
+    "still() { tail -n1 log.txt 2>/dev/null | grep -q '^view idle'; }\n"
+    "settle() { for i in $(seq 1200); do [ \"$(idles)\" -gt \"$1\" ] 2>/dev/null && still && "
+    "return 0; sleep 0.05; done; echo \"never idle after line $1\"; }\n"
+    "send() { n=$(idles); xdotool \"$@\"; settle \"$n\"; }\n"
+    // Until the log has $2 (default 1) lines matching $1, then until the window is still.
+    "waitfor() { for i in $(seq 1200); do [ $(grep -c \"$1\" log.txt) -ge ${2:-1} ] && break; "
+    "sleep 0.05; done; settle 0; }\n";
+
 // Runs a shell script inside a fresh Xvfb; a per-process starting display number keeps tests run
 // in parallel from racing for the same one.
 ShellRun runUnderXvfb(const std::string& name, const std::string& script) {
   const auto dir = globe::testing::freshTempDir(name);
   const auto path = dir / "script.sh";
-  std::ofstream(path) << "set -u\ncd " << dir.string() << "\n" << script;
+  std::ofstream(path) << "set -u\ncd " << dir.string() << "\n" << kWaitHelpers << script;
   const std::string display = std::to_string(100 + ::getpid() % 800);
   return runShell("xvfb-run -a -n " + display + " -s '-screen 0 1280x720x24' sh " + path.string());
 }
@@ -170,18 +184,13 @@ std::string globeView(const std::string& arguments) {
          globe::testing::bundledPyramid().string() + " " + arguments;
 }
 
-// Waits for the window, then for the view to complete (a line in the log).
+// Waits for the window, then for the view to complete and go idle (lines in the log).
 const char* kFindWindow =
     "WID=$(timeout 60 xdotool search --sync --onlyvisible --name '^globe')\n"
     "echo wid=$WID\n"
     "PID=$(xdotool getwindowpid $WID)\n"
-    "for i in $(seq 600); do grep -q 'view complete' log.txt && break; sleep 0.1; done\n";
-
-// Waits until the window title (pose, tiles, collision) stays the same for 1 s: the camera
-// and the view have settled, however slow the machine (sanitizer builds are).
-const char* kWaitUntilStill =
-    "LAST=; for i in $(seq 60); do sleep 1; T=$(xdotool getwindowname $WID); "
-    "[ \"$T\" = \"$LAST\" ] && break; LAST=$T; done\n";
+    "for i in $(seq 600); do grep -q 'view complete' log.txt && break; sleep 0.1; done\n"
+    "settle 0\n";
 
 #define SKIP_WITHOUT(program) \
   if (!onPath(program)) GTEST_SKIP() << program " is not installed"
@@ -222,10 +231,9 @@ TEST(GlobeViewWindow, KeysAndScrollZoomInAndEscapeQuits) {
       globeView("--size 640x360 --log --camera 138.73,35.36,50000 > log.txt &\n") + "VIEW=$!\n" +
           kFindWindow +
           "echo title0=$(xdotool getwindowname $WID)\n"
-          "xdotool key --window $WID plus plus KP_Add\n"
-          "xdotool mousemove --window $WID 320 180 click --window $WID 4\n"
-          "for i in $(seq 100); do [ \"$(grep -c 'view complete' log.txt)\" -ge 2 ] && break; "
-          "sleep 0.1; done\n"
+          "send key --window $WID plus\nsend key --window $WID plus\n"
+          "send key --window $WID KP_Add\n"
+          "send mousemove --window $WID 320 180\nsend click --window $WID 4\n"
           "echo title1=$(xdotool getwindowname $WID)\n"
           "xdotool keydown --window $WID Escape\n"
           "wait $VIEW; echo exit=$?\n"
@@ -241,6 +249,15 @@ TEST(GlobeViewWindow, KeysAndScrollZoomInAndEscapeQuits) {
   EXPECT_LT(height, 30000) << run.output;
 }
 
+// The path after "wrote <what> " in the log (the file `globe view` says it wrote).
+std::string writtenFile(const std::string& output, const std::string& what) {
+  const std::string marker = "wrote " + what + " ";
+  const size_t at = output.find(marker);
+  if (at == std::string::npos) return {};
+  const size_t end = output.find_first_of(" \n", at + marker.size());
+  return output.substr(at + marker.size(), end - at - marker.size());
+}
+
 // The habits people bring: PgUp zooms in as + does (Google Earth), and F11 fills the screen
 // (Xvfb's 1280x720): a K screenshot after it is the screen's size, and after F11 again the
 // window's.
@@ -253,16 +270,12 @@ TEST(GlobeViewWindow, PageUpZoomsAndF11FillsTheScreen) {
       globeView("--size 320x180 --log --record-dir " + dir.string() +
                 " --camera 138.73,35.36,50000 > log.txt &\n") +
           "VIEW=$!\n" + kFindWindow +
-          "xdotool key --window $WID Prior Prior Prior Prior\n"
-          "xdotool key --window $WID F11\n"
-          "sleep 1\n"
-          "xdotool key --window $WID k\n"
-          "for i in $(seq 100); do grep -q 'wrote screenshot' log.txt && break; sleep 0.1; done\n"
-          "xdotool key --window $WID F11\n"
-          "sleep 1\n"
-          "xdotool key --window $WID k\n"
-          "for i in $(seq 100); do [ \"$(grep -c 'wrote screenshot' log.txt)\" -ge 2 ] && break; "
-          "sleep 0.1; done\n"
+          "for k in 1 2 3 4; do send key --window $WID Prior; done\n"
+          // The window manager resizes after the key: until the window says its new size.
+          "send key --window $WID F11\nwaitfor '^view size 1280x720'\n"
+          "send key --window $WID k\n"
+          "send key --window $WID F11\nwaitfor '^view size 320x180' 2\n"
+          "send key --window $WID k\n"
           "xdotool keydown --window $WID Escape\n"
           "wait $VIEW; echo exit=$?\n"
           "cat log.txt\n");
@@ -272,11 +285,13 @@ TEST(GlobeViewWindow, PageUpZoomsAndF11FillsTheScreen) {
   const double height = loggedHeightMeters(run.output);
   EXPECT_GT(height, 0) << run.output;
   EXPECT_LT(height, 30000) << run.output;  // four presses of 0.8 from 50 km
+  // In the order the log says they were written (two in the same second are NAME.png and
+  // NAME-2.png, which sort the other way).
   std::vector<std::filesystem::path> shots;
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    if (entry.path().extension() == ".png") shots.push_back(entry.path());
+  for (size_t at = run.output.find("wrote screenshot "); at != std::string::npos;
+       at = run.output.find("wrote screenshot ", at + 1)) {
+    shots.push_back(writtenFile(run.output.substr(at), "screenshot"));
   }
-  std::sort(shots.begin(), shots.end());
   ASSERT_EQ(shots.size(), 2u) << run.output;
   auto full = globe::formats::loadImageRgba(shots[0]);
   auto windowed = globe::formats::loadImageRgba(shots[1]);
@@ -294,9 +309,8 @@ TEST(GlobeViewWindow, IdleWindowUsesAlmostNoCpu) {
       "view-idle",
       globeView("--size 1280x720 --log --camera 138.60,35.20,3000,30,-12,0 > log.txt &\n") +
           "VIEW=$!\n" + kFindWindow +
-          "sleep 0.5\n"
           "read -r _ _ _ _ _ _ _ _ _ _ _ _ _ u0 s0 _ < /proc/$PID/stat\n"
-          "sleep 3\n"
+          "sleep 3\n"  // the span the CPU time is measured over
           "read -r _ _ _ _ _ _ _ _ _ _ _ _ _ u1 s1 _ < /proc/$PID/stat\n"
           "echo idle_ticks=$((u1 + s1 - u0 - s0))\n"
           "echo ticks_per_second=$(getconf CLK_TCK)\n"
@@ -377,14 +391,6 @@ double surfaceHeightMeters(double lon, double lat) {
   return surface;
 }
 
-// The path after "wrote <what> " in the log (the file `globe view` says it wrote).
-std::string writtenFile(const std::string& output, const std::string& what) {
-  const std::string marker = "wrote " + what + " ";
-  const size_t at = output.find(marker);
-  if (at == std::string::npos) return {};
-  const size_t end = output.find_first_of(" \n", at + marker.size());
-  return output.substr(at + marker.size(), end - at - marker.size());
-}
 
 // Fly mode from 300 m above Mount Fuji's southern slope, heading north and a little down: holding
 // W flies north (only north), the controller keeps the camera above the drawn surface, and with
@@ -396,14 +402,13 @@ TEST(GlobeViewWindow, FlyModeWFliesForwardAndStaysAboveTheTerrain) {
       "view-fly",
       globeView("--size 640x360 --log --camera 138.7275,35.25,1000,0,-5,0 > log.txt &\n") +
           "VIEW=$!\n" + kFindWindow +
-          "xdotool key --window $WID f\n"
+          "send key --window $WID f\n"
           "xdotool keydown --window $WID w\n"
-          "sleep 1.5\n"
-          "xdotool keyup --window $WID w\n"
+          "sleep 1.5\n"  // W held for 1.5 s: the input itself, not a wait
           // Keys up, the camera still: fly mode and its HUD idle like orbit mode.
-          "sleep 0.5\n"
+          "send keyup --window $WID w\n"
           "read -r _ _ _ _ _ _ _ _ _ _ _ _ _ u0 s0 _ < /proc/$PID/stat\n"
-          "sleep 2\n"
+          "sleep 2\n"  // the span the CPU time is measured over
           "read -r _ _ _ _ _ _ _ _ _ _ _ _ _ u1 s1 _ < /proc/$PID/stat\n"
           "echo idle_ticks=$((u1 + s1 - u0 - s0))\n"
           "echo ticks_per_second=$(getconf CLK_TCK)\n"
@@ -444,8 +449,8 @@ TEST(GlobeViewWindow, LayerAndLightingKeysChangeTheFrame) {
         globeView("--size 320x180 --log --layer " + globe::testing::blueMarbleLayer().string() +
                   " --camera 138.60,35.20,6000,30,-15,0 --screenshot " + png.string() +
                   " > log.txt &\n") +
-            "VIEW=$!\n" + kFindWindow + (keys.empty() ? "" : "xdotool key --window $WID " + keys) +
-            "\nsleep 1\nxdotool keydown --window $WID Escape\nwait $VIEW; echo exit=$?\n");
+            "VIEW=$!\n" + kFindWindow + "for k in " + keys + "; do send key --window $WID $k; done\n" +
+            "xdotool keydown --window $WID Escape\nwait $VIEW; echo exit=$?\n");
     EXPECT_EQ(valuesOf(run.output)["exit"], "0") << run.output;
     auto image = globe::formats::loadImageRgba(png);
     EXPECT_TRUE(image) << image.error() << run.output;
@@ -488,11 +493,9 @@ TEST(GlobeViewWindow, VSavesTheViewByNameAndItComesBack) {
       "export " + config + "\n" +
           globeView("--size 320x180 --log --camera 138.60,35.20,15000,30,-40,0 > log.txt &\n") +
           "VIEW=$!\n" + kFindWindow +
-          "for i in $(seq 100); do grep -q 'view complete' log.txt && break; sleep 0.1; done\n"
-          "xdotool key --window $WID v\n"
-          "xdotool type --window $WID --delay 30 'Fuji south'\n"
-          "xdotool key --window $WID Return\n"
-          "for i in $(seq 100); do grep -q 'saved view' log.txt && break; sleep 0.1; done\n"
+          "send key --window $WID v\n"
+          "send type --window $WID --delay 30 'Fuji south'\n"
+          "send key --window $WID Return\n"
           "xdotool keydown --window $WID Escape\n"
           "wait $VIEW; echo exit=$?\n"
           "cat log.txt\n");
@@ -563,9 +566,7 @@ TEST(GlobeViewWindow, AFailingServerIsSaidInTheHud) {
             " --record-dir " + record.string() +
             " --camera 138.73,35.36,30000,0,-60,0 > log.txt 2>&1 &\n"
             "VIEW=$!\n" +
-            kFindWindow +
-            "sleep 3\nxdotool key --window $WID k\n"
-            "for i in $(seq 200); do grep -q 'wrote screenshot' log.txt && break; sleep 0.1; done\n"
+            kFindWindow + "send key --window $WID k\n"
             "xdotool keydown --window $WID Escape\n"
             "wait $VIEW; echo exit=$?\n"
             "cat log.txt\n");
@@ -607,9 +608,8 @@ TEST(GlobeViewWindow, HudIsDrawnAndKTakesAScreenshot) {
       globeView("--size 640x360 --log --record-dir " + dir.string() + " --screenshot " +
                 plain.string() + " --camera 138.73,35.36,50000 > log.txt &\n") +
           "VIEW=$!\n" + kFindWindow +
-          "xdotool key --window $WID h\n"
-          "xdotool key --window $WID k\n"
-          "for i in $(seq 200); do grep -q 'wrote screenshot' log.txt && break; sleep 0.1; done\n"
+          "send key --window $WID h\n"
+          "send key --window $WID k\n"
           "xdotool keydown --window $WID Escape\n"
           "wait $VIEW; echo exit=$?\n"
           "cat log.txt\n");
@@ -667,8 +667,7 @@ TEST(GlobeViewWindow, TheHudShowsTheLayersAttribution) {
         globeView("--size 640x360 --log --record-dir " + record.string() + " --layer '" + layer +
                   "' --camera 138.73,35.36,3000000 > log.txt &\n") +
             "VIEW=$!\n" + kFindWindow +
-            "sleep 1\nxdotool key --window $WID k\n"
-            "for i in $(seq 200); do grep -q 'wrote screenshot' log.txt && break; sleep 0.1; done\n"
+            "send key --window $WID k\n"
             "xdotool keydown --window $WID Escape\n"
             "wait $VIEW; echo exit=$?\n"
             "cat log.txt\n");
@@ -706,13 +705,12 @@ TEST(GlobeViewWindow, PRecordsTheFlownPathAsJson) {
       globeView("--size 640x360 --log --record-dir " + dir.string() +
                 " --camera 138.60,35.20,2500,0,0,0 > log.txt &\n") +
           "VIEW=$!\n" + kFindWindow +
-          "xdotool key --window $WID Tab\n"
-          "xdotool key --window $WID p\n"
+          "send key --window $WID Tab\n"
+          "send key --window $WID p\n"
           "xdotool keydown --window $WID w\n"
-          "sleep 1.2\n"
-          "xdotool keyup --window $WID w\n"
-          "xdotool key --window $WID p\n"
-          "for i in $(seq 200); do grep -q 'wrote path' log.txt && break; sleep 0.1; done\n"
+          "sleep 1.2\n"  // W held for 1.2 s: the input itself, not a wait
+          "send keyup --window $WID w\n"
+          "send key --window $WID p\n"
           "xdotool keydown --window $WID Escape\n"
           "wait $VIEW; echo exit=$?\n"
           "cat log.txt\n");
@@ -753,13 +751,8 @@ TEST(GlobeViewWindow, ScrollZoomsTowardTheCursor) {
       "view-zoom-cursor",
       globeView("--size 640x360 --log --camera 138.5,35.2,60000,0,-90,0 > log.txt &\n") +
           "VIEW=$!\n" + kFindWindow +
-          "for i in $(seq 100); do grep -q 'view complete' log.txt && break; sleep 0.1; done\n"
-          "xdotool mousemove --window $WID 560 60 click --window $WID --repeat 4 --delay 60 4\n"
-          // Until the title's height shows all four notches taken (a loaded machine is slow).
-          "for i in $(seq 100); do H=$(xdotool getwindowname $WID | "
-          "sed -n 's/.* height \\([0-9]*\\) m .*/\\1/p'); "
-          "[ -n \"$H\" ] && [ \"$H\" -lt 35000 ] && break; sleep 0.1; done\n"
-          "sleep 0.3\n"
+          "send mousemove --window $WID 560 60\n"
+          "for k in 1 2 3 4; do send click --window $WID 4; done\n"
           "xdotool keydown --window $WID Escape\n"
           "wait $VIEW; echo exit=$?\n"
           "cat log.txt\n");
@@ -787,14 +780,11 @@ TEST(GlobeViewWindow, MiddleAndCtrlDragTurnTheViewAsRightDragDoes) {
         "view-turn-" + name,
         globeView("--size 640x360 --log --camera 138.60,35.20,15000,30,-40,0 > log.txt &\n") +
             "VIEW=$!\n" + kFindWindow +
-            "for i in $(seq 100); do grep -q 'view complete' log.txt && break; sleep 0.1; done\n"
-            "xdotool mousemove --window $WID 320 180 " +
-            press +
+            "send mousemove --window $WID 320 180\nsend " + press +
             "\n"
-            "for x in 340 360 380 400 420; do xdotool mousemove --window $WID $x 170; sleep 0.05; "
-            "done\n"
-            "xdotool " +
-            release + "\n" + std::string(kWaitUntilStill) +
+            "for x in 340 360 380 400 420; do send mousemove --window $WID $x 170; done\n"
+            "send " +
+            release + "\n" +
             "xdotool keydown --window $WID Escape\n"
             "wait $VIEW; echo exit=$?\n"
             "cat log.txt\n");
@@ -821,12 +811,9 @@ TEST(GlobeViewWindow, RightDragTurnsAboutTheCentreGroundPoint) {
       "view-tilt-pivot",
       globeView("--size 640x360 --log --camera 138.60,35.20,15000,30,-40,0 > log.txt &\n") +
           "VIEW=$!\n" + kFindWindow +
-          "for i in $(seq 100); do grep -q 'view complete' log.txt && break; sleep 0.1; done\n"
-          "xdotool mousemove --window $WID 320 180 mousedown --window $WID 3\n"
-          "for x in 340 360 380 400 420; do xdotool mousemove --window $WID $x 170; sleep 0.05; "
-          "done\n"
-          "xdotool mouseup --window $WID 3\n" +
-          std::string(kWaitUntilStill) +
+          "send mousemove --window $WID 320 180\nsend mousedown --window $WID 3\n"
+          "for x in 340 360 380 400 420; do send mousemove --window $WID $x 170; done\n"
+          "send mouseup --window $WID 3\n"
           "xdotool keydown --window $WID Escape\n"
           "wait $VIEW; echo exit=$?\n"
           "cat log.txt\n");
@@ -878,13 +865,9 @@ TEST(GlobeViewWindow, GoToReachesThePlace) {
       "view-go-to",
       globeView("--size 640x360 --log --camera 138.73,35.36,50000 > log.txt &\n") + "VIEW=$!\n" +
           kFindWindow +
-          "for i in $(seq 100); do grep -q 'view complete' log.txt && break; sleep 0.1; done\n"
-          "xdotool key --window $WID g\n"
-          "xdotool type --window $WID --delay 30 'Angels Landing'\n"
-          "xdotool key --window $WID Return\n"
-          "for i in $(seq 100); do grep -q '^go to' log.txt && break; sleep 0.1; done\n"
-          "sleep 1\n" +
-          std::string(kWaitUntilStill) +
+          "send key --window $WID g\n"
+          "send type --window $WID --delay 30 'Angels Landing'\n"
+          "send key --window $WID Return\n"
           "xdotool keydown --window $WID Escape\n"
           "wait $VIEW; echo exit=$?\n"
           "cat log.txt\n");
@@ -910,9 +893,7 @@ TEST(GlobeViewWindow, CompassClickTurnsNorthUp) {
       "view-compass",
       globeView("--size 640x360 --log --camera 138.60,35.20,15000,120,-40,0 > log.txt &\n") +
           "VIEW=$!\n" + kFindWindow +
-          "for i in $(seq 100); do grep -q 'view complete' log.txt && break; sleep 0.1; done\n"
-          "xdotool mousemove --window $WID 610 16 click --window $WID 1\n" +
-          std::string(kWaitUntilStill) +
+          "send mousemove --window $WID 610 16\nsend click --window $WID 1\n"
           "xdotool keydown --window $WID Escape\n"
           "wait $VIEW; echo exit=$?\n"
           "cat log.txt\n");
@@ -938,12 +919,12 @@ TEST(GlobeViewWindow, DoubleClickFliesToThePoint) {
       "view-double-click",
       globeView("--size 640x360 --log --camera 138.5,35.2,60000,0,-90,0 > log.txt &\n") +
           "VIEW=$!\n" + kFindWindow +
-          "T0=$(xdotool getwindowname $WID)\n"
-          "xdotool mousemove --window $WID 480 90 click --window $WID --repeat 2 --delay 80 1\n"
-          // Until the title has changed and then stays the same for 0.5 s (the flight ended).
-          "LAST=$T0\n"
-          "for i in $(seq 60); do sleep 0.5; T=$(xdotool getwindowname $WID); "
-          "[ \"$T\" != \"$T0\" ] && [ \"$T\" = \"$LAST\" ] && break; LAST=$T; done\n"
+          "send mousemove --window $WID 480 90\n"
+          // The flight starts at the second click: until a "view busy" and then idle again.
+          "B=$(grep -c '^view busy' log.txt)\n"
+          "xdotool click --window $WID --repeat 2 --delay 80 1\n"
+          "for i in $(seq 1200); do [ \"$(grep -c '^view busy' log.txt)\" -gt \"$B\" ] && still "
+          "&& break; sleep 0.05; done\n"
           "xdotool keydown --window $WID Escape\n"
           "wait $VIEW; echo exit=$?\n"
           "cat log.txt\n");
@@ -983,20 +964,14 @@ TEST(GlobeViewWindow, ClickPicksPlacemarksAndOOpensAnOverlayFile) {
       "view-overlays-run",
       globeView("--size 640x360 --log --camera 138.73,35.36,20000,0,-90,0 --overlay " +
                 kml.string() + " --screenshot " + shot.string() + " > log.txt &\n") +
-          "VIEW=$!\n" + kFindWindow + kWaitUntilStill +
-          "xdotool mousemove --window $WID 320 180 click --window $WID 1\n"
-          "for i in $(seq 100); do grep -q 'placemark: Summit' log.txt && break; sleep 0.1; done\n"
-          "sleep 0.5\n"
-          "xdotool key --window $WID o\n"
-          "xdotool type --window $WID '" +
+          "VIEW=$!\n" + kFindWindow +
+          "send mousemove --window $WID 320 180\nsend click --window $WID 1\n"
+          "send key --window $WID o\n"
+          "send type --window $WID '" +
           geojson.string() +
           "'\n"
-          "xdotool key --window $WID Return\n"
-          "for i in $(seq 100); do grep -q 'opened square' log.txt && break; sleep 0.1; done\n" +
-          kWaitUntilStill +
-          "xdotool mousemove --window $WID 241 228 click --window $WID 1\n"
-          "for i in $(seq 100); do grep -q 'placemark: Test' log.txt && break; sleep 0.1; done\n"
-          "sleep 0.5\n"
+          "send key --window $WID Return\n"
+          "send mousemove --window $WID 241 228\nsend click --window $WID 1\n"
           "xdotool keydown --window $WID Escape\n"
           "wait $VIEW; echo exit=$?\n"
           "cat log.txt\n");
@@ -1035,39 +1010,35 @@ TEST(GlobeViewWindow, MMeasuresClickedPointsAndXShowsTheirProfile) {
   SKIP_WITHOUT("xvfb-run");
   SKIP_WITHOUT("xdotool");
   const auto dir = globe::testing::freshTempDir("view-ruler");
-  // Waits until the log has at least $2 lines matching $1.
-  const std::string waitFor =
-      "waitfor() { for i in $(seq 150); do [ $(grep -c \"$1\" log.txt) -ge $2 ] && return; "
-      "sleep 0.1; done; }\n";
   const std::string shoot =
-      "xdotool key --window $WID k\n"
+      "send key --window $WID k\n"
       "waitfor 'wrote screenshot' $SHOTS; SHOTS=$((SHOTS + 1))\n";
   const ShellRun run = runUnderXvfb(
       "view-ruler-run", globeView("--size 640x360 --log --record-dir " + dir.string() +
                                   " --camera 138.73,35.36,20000,0,-90,0 > log.txt &\n") +
-                            "VIEW=$!\n" + waitFor + kFindWindow + kWaitUntilStill +
-                            "xdotool key --window $WID m\n"
-                            "xdotool mousemove --window $WID 220 180 click --window $WID 1\n"
+                            "VIEW=$!\n" + kFindWindow +
+                            "send key --window $WID m\n"
+                            "send mousemove --window $WID 220 180\nsend click --window $WID 1\n"
                             "waitfor '^ruler: 1 points' 1\n"
-                            "xdotool mousemove --window $WID 420 180 click --window $WID 1\n"
+                            "send mousemove --window $WID 420 180\nsend click --window $WID 1\n"
                             "waitfor '^ruler: 2 points' 1\n"
-                            "xdotool mousemove --window $WID 420 80 click --window $WID 1\n"
+                            "send mousemove --window $WID 420 80\nsend click --window $WID 1\n"
                             "waitfor '^ruler: 3 points' 1\n"
-                            "xdotool mousemove --window $WID 220 80 click --window $WID 1\n"
+                            "send mousemove --window $WID 220 80\nsend click --window $WID 1\n"
                             "waitfor '^ruler: 4 points' 1\n"
-                            "xdotool mousemove --window $WID 222 181 click --window $WID 1\n"
+                            "send mousemove --window $WID 222 181\nsend click --window $WID 1\n"
                             "waitfor 'area' 1\n"
-                            "xdotool key --window $WID BackSpace\n"
+                            "send key --window $WID BackSpace\n"
                             "waitfor '^ruler: 4 points' 3\n"
-                            "xdotool key --window $WID BackSpace\n"
+                            "send key --window $WID BackSpace\n"
                             "waitfor '^ruler: 3 points' 2\n" +
-                            kWaitUntilStill + "SHOTS=1\n" + shoot +
-                            "xdotool key --window $WID x\n"
+                            "SHOTS=1\n" + shoot +
+                            "send key --window $WID x\n"
                             "waitfor '^profile: ' 1\n" +
-                            kWaitUntilStill + shoot +
-                            "xdotool key --window $WID m\n"
+                            shoot +
+                            "send key --window $WID m\n"
                             "waitfor '^ruler: 0 points' 1\n" +
-                            kWaitUntilStill + shoot +
+                            shoot +
                             "xdotool keydown --window $WID Escape\n"
                             "wait $VIEW; echo exit=$?\n"
                             "cat log.txt\n");
