@@ -68,8 +68,8 @@ void addNetworkOptions(CLI::App& command, CommonArguments& arguments) {
                    "read http(s) pyramids and layers from the disk cache alone");
   command
       .add_option("--http-timeout", arguments.httpTimeoutSeconds,
-                  "seconds a request may take, and may go without data (a stalled server); "
-                  "each is tried 3 times")
+                  "seconds a request may take in all (a server that stalls for 8 s, or for "
+                  "this long when shorter, fails sooner); tried 3 times, a timeout twice")
       ->capture_default_str()
       ->check(CLI::Range(1.0, 3600.0));
 }

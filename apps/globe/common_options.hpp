@@ -34,7 +34,7 @@ struct CommonArguments {
   std::string cacheDirectory;
   bool offline = false;
   uint64_t cacheMegabytes = 2048;
-  double httpTimeoutSeconds = 120;
+  double httpTimeoutSeconds = 30;
   // The presets and the user's sources.toml (read by main before the arguments): names given
   // where a pyramid or a layer is are replaced by their URLs.
   std::shared_ptr<const services::NamedSources> sources;

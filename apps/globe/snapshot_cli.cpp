@@ -23,6 +23,7 @@ struct SnapshotArguments {
   uint32_t maxLoadLevel = geo::kMaxLevel;
   bool noAttribution = false;
   bool allowMissing = false;
+  int timeoutSeconds = 120;
   std::string goTo;
   std::string view;
   CLI::Option* cameraOption = nullptr;  // count() > 0: --camera was given (even empty)
@@ -74,6 +75,7 @@ int runSnapshotCommand(const SnapshotArguments& arguments, const CommonArguments
   options.heightPixels = size->second;
   options.output = arguments.output;
   options.attribution = !arguments.noAttribution;
+  options.timeoutSeconds = arguments.timeoutSeconds;
   if (!arguments.imagery.empty()) options.imagery = arguments.imagery;
   options.scene.maximumScreenSpaceErrorPixels = *sse;
   options.scene.maximumLoadLevel = arguments.maxLoadLevel;
@@ -128,6 +130,11 @@ Subcommand addSnapshotCommand(CLI::App& app, CommonArguments& common) {
   snapshot->add_flag("--allow-missing", arguments->allowMissing,
                      "exit 0 even when tiles failed to load (drawn coarser there; each is named "
                      "on stderr): by default such an image is written but the exit status is 1");
+  snapshot->add_option("--timeout", arguments->timeoutSeconds,
+                       "the longest to wait for the view's tiles, in seconds: past it nothing is "
+                       "written and the exit status is 1")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 86400));
   addGlobeOption(*snapshot, common);
   addNetworkOptions(*snapshot, common);
   addSeaFloorOption(*snapshot, common);

@@ -18,7 +18,7 @@ struct SnapshotOptions {
   std::filesystem::path output;
   std::optional<std::filesystem::path> imagery;  // equirectangular world image to drape
   scene::SceneOptions scene;
-  int timeoutSeconds = 300;
+  int timeoutSeconds = 120;  // the longest updateUntilComplete waits for the view's tiles
   bool attribution = true;  // stamp the services' attributions at the bottom right
 };
 

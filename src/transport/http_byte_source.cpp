@@ -16,13 +16,17 @@
 namespace globe::transport {
 namespace {
 
+// Retries one source may spend in a run (a process): a server that fails every request costs
+// each request one try once these are gone, so a run against it ends in bounded time.
+constexpr int kRetriesPerRun = 64;
+
 bool retryable(const HttpResponse& r) {
   if (r.bodyTooLong) return false;
   return r.status == 0 || r.status == 429 || r.status >= 500;
 }
 
 std::string describe(const std::string& url, const HttpResponse& r) {
-  if (r.bodyTooLong) return url + ": the server sent more bytes than asked for";
+  if (r.bodyTooLong) return url + ": the server sent (or announced) more bytes than asked for";
   if (r.status == 0) {
     return url + ": " + (r.timedOut ? "timed out (" + r.transportError + ")" : r.transportError);
   }
@@ -301,11 +305,20 @@ class HttpByteSource final : public ByteSource,
     return {};
   }
 
+  // Retries are bounded three ways: `attempts` per request, one retry for a timeout (a server
+  // that stalled once mostly stalls again: a stalled server fails a request in about two stall
+  // times), and kRetriesPerRun for the source, after which every request is tried once.
   HttpResponse fetch(const HttpRequest& q) {
     long delayMs = options_.firstRetryDelayMs;
     for (int attempt = 1;; ++attempt) {
       HttpResponse r = client_->perform(q);
-      if (!retryable(r) || attempt >= options_.attempts) return r;
+      const int attempts = r.timedOut ? std::min(options_.attempts, 2) : options_.attempts;
+      if (!retryable(r) || attempt >= attempts) return r;
+      if (retriesLeft_.fetch_sub(1) <= 0) {
+        r.transportError += " (not retried: this run's " + std::to_string(kRetriesPerRun) +
+                            " retries on this server are spent)";
+        return r;
+      }
       std::this_thread::sleep_for(std::chrono::milliseconds(delayMs));
       delayMs *= 2;
     }
@@ -346,6 +359,7 @@ class HttpByteSource final : public ByteSource,
   // Set when the directory's manifest was revalidated unchanged (304) this session: cached pack
   // heads are then used without asking again. A republish rewrites the manifest (new ETag).
   std::atomic<bool> headsTrusted_{false};
+  std::atomic<int> retriesLeft_{kRetriesPerRun};
 };
 
 Result<void> HttpFile::read(std::span<std::byte> out, uint64_t offset) const {

@@ -83,11 +83,21 @@ size_t onBody(char* data, size_t size, size_t count, void* user) {
   return bytes;
 }
 
+// A number of decimal digits after optional blanks; -1 when there is none or it overflows.
+long long parseCount(std::string_view text) {
+  const std::string value = trim(text);
+  long long n = -1;
+  auto [next, ec] = std::from_chars(value.data(), value.data() + value.size(), n);
+  return ec == std::errc() && next == value.data() + value.size() ? n : -1;
+}
+
 size_t onHeader(char* data, size_t size, size_t count, void* user) {
   auto* transfer = static_cast<Transfer*>(user);
   const std::string_view line(data, size * count);
   HttpResponse& r = transfer->response;
   if (startsWithNoCase(line, "HTTP/")) {  // a new response (after a redirect or a 100)
+    const size_t space = line.find(' ');
+    r.status = space == std::string_view::npos ? 0 : static_cast<long>(parseCount(line.substr(space, 4)));
     r.etag.clear();
     r.lastModified.clear();
     r.contentRange.clear();
@@ -100,6 +110,15 @@ size_t onHeader(char* data, size_t size, size_t count, void* user) {
     r.contentRange = trim(line.substr(14));
   } else if (startsWithNoCase(line, "cache-control:")) {
     r.maxAgeSeconds = parseMaxAge(trim(line.substr(14)));
+  } else if (startsWithNoCase(line, "content-length:") && r.status >= 200 && r.status < 300) {
+    // A body announced longer than the caller takes is refused before a byte of it comes (a
+    // server that says 10^12 bytes and then stalls costs nothing).
+    const long long announced = parseCount(line.substr(15));
+    if (announced > 0 && static_cast<unsigned long long>(announced) >
+                             transfer->request.maxBodyBytes) {
+      r.bodyTooLong = true;
+      return 0;  // aborts the transfer
+    }
   }
   return size * count;
 }

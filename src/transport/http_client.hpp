@@ -13,9 +13,10 @@ namespace globe::transport {
 
 struct HttpSettings {
   long connectTimeoutMs = 10'000;
-  // A transfer that receives nothing for this long is abandoned (a stalled server).
-  long stallTimeoutMs = 15'000;
-  long totalTimeoutMs = 120'000;
+  // A transfer that receives (almost) nothing for this long is abandoned: a stalled server. With
+  // one retry for a timeout, a request to a stalled server fails in about 16 s.
+  long stallTimeoutMs = 8'000;
+  long totalTimeoutMs = 30'000;  // a trickle that never stalls still ends
   long maxConnectionsPerHost = 16;
   bool verifyTls = true;
   std::string caFile;  // PEM certificates to trust instead of the system's (empty: the system's)

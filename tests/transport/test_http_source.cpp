@@ -485,6 +485,27 @@ TEST(HttpClient, RefusesBodiesLargerThanAsked) {
   EXPECT_FALSE(*missing);
 }
 
+// Retries are bounded per request (3 tries for a 503) and per run: once a source has spent its
+// 64 retries, every request is tried once, so a run against a server that fails everything
+// ends in bounded time.
+TEST(HttpClient, RetriesAreBoundedPerRequestAndPerRun) {
+  Served served("location /pyramid/gone/ { return 503; }");
+  ASSERT_TRUE(served.server);
+  RemoteOptions options = quickRetries();
+  options.firstRetryDelayMs = 1;
+  auto source = httpByteSource(served.url(), std::make_shared<HttpClient>(quickSettings()),
+                               nullptr, options);
+  for (int i = 0; i < 40; ++i) {
+    auto whole = source->readWhole("gone/" + std::to_string(i) + ".json", 1 << 10);
+    ASSERT_FALSE(whole);
+    EXPECT_NE(whole.error().find("HTTP 503"), std::string::npos) << whole.error();
+  }
+  const std::vector<std::string> log = served.server->accessLog();
+  EXPECT_EQ(countMatching(log, "GET /pyramid/gone/0.json"), 3u);  // the first: 3 tries
+  EXPECT_EQ(countMatching(log, "GET /pyramid/gone/39.json"), 1u);  // past the budget: 1
+  EXPECT_EQ(countMatching(log, "GET /pyramid/gone/"), 32u * 3 + 8);  // 64 retries in all
+}
+
 // A redirect within the scheme is followed; to another scheme (file, ftp, or https -> http) it is
 // refused with a message naming the URL.
 TEST(HttpClient, RedirectsStayWithinTheirScheme) {

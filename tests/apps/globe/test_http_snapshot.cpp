@@ -292,3 +292,43 @@ TEST(HttpSnapshot, AServerStoppedMidFlightStillEndsWithAnImage) {
 }
 
 }  // namespace
+
+// A hostile server (tests/support/stalling_server.py on 127.0.0.1, gone by itself after 60 s)
+// behind every URL: each way of stalling ends the snapshot within its deadline, exit 1, the URL
+// named with the reason. A body announced as 10^12 bytes is refused at its headers; a server
+// that never answers or trickles fails each request in two tries of --http-timeout.
+TEST(HttpSnapshot, AStallingServerFailsWithinTheDeadline) {
+  const fs::path dir = globe::testing::freshTempDir("http-stall");
+  const std::string server = std::string(GLOBE_SOURCE_DIR) + "/tests/support/stalling_server.py";
+  struct Case {
+    std::string mode;
+    std::string message;
+    double withinSeconds;
+  };
+  for (const Case& c : {Case{"huge", "larger than", 3.0},
+                        Case{"silent", "timed out", 6.0}, Case{"trickle", "timed out", 6.0}}) {
+    SCOPED_TRACE(c.mode);
+    const fs::path portFile = dir / (c.mode + ".port");
+    const std::string start = "python3 " + server + " " + c.mode + " --lifetime 60 --port-file " +
+                              portFile.string() + " >/dev/null 2>&1 &";
+    ASSERT_EQ(std::system(start.c_str()), 0);
+    for (int i = 0; i < 200 && !fs::exists(portFile); ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(25));  // until it listens
+    }
+    std::string port;
+    std::ifstream(portFile) >> port;
+    ASSERT_FALSE(port.empty()) << "the server did not start";
+    const std::string url = "http://127.0.0.1:" + port + "/zion";
+    const auto began = std::chrono::steady_clock::now();
+    const ProcessResult run = runGlobe("snapshot " + url + " " + kCamera + " -o " +
+                                       (dir / "out.png").string() +
+                                       " --http-timeout 1 --cache-dir " + (dir / "cache").string());
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+    EXPECT_EQ(run.exitCode, 1) << run.output;
+    EXPECT_NE(run.output.find(url), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find(c.message), std::string::npos) << run.output;
+    EXPECT_LT(seconds, c.withinSeconds) << run.output;
+    EXPECT_FALSE(fs::exists(dir / "out.png"));
+  }
+}
