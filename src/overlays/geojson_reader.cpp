@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "overlays/overlay_budget.hpp"
 #include "overlays/positions.hpp"
 
 namespace globe::overlays {
@@ -174,6 +175,7 @@ class GeoJsonReader {
     if (auto read = readGeometry(*geometry, what, 0, placemark.geometries); !read) return read;
     if (placemark.geometries.empty()) return {};
     placemark.style = simplestyle(props);
+    if (auto counted = budget_.add(placemark); !counted) return counted;
     document_.placemarks.push_back(std::move(placemark));
     return {};
   }
@@ -297,6 +299,7 @@ class GeoJsonReader {
 
   std::string where_;
   OverlayDocument document_;
+  OverlayBudget budget_{where_};
 };
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "overlays/overlay_budget.hpp"
 #include "overlays/positions.hpp"
 #include "overlays/xml_elements.hpp"
 
@@ -68,6 +69,7 @@ class GpxReader {
     describe(e, placemark);
     placemark.geometries.push_back(
         Geometry{GeometryKind::Point, AltitudeMode::ClampToGround, false, false, {{*p}}});
+    if (auto counted = budget_.add(placemark); !counted) return counted;
     document_.placemarks.push_back(std::move(placemark));
     return {};
   }
@@ -104,12 +106,15 @@ class GpxReader {
     } else if (auto line = appendLine(e, "rtept", placemark.geometries); !line) {
       return line;
     }
-    if (!placemark.geometries.empty()) document_.placemarks.push_back(std::move(placemark));
+    if (placemark.geometries.empty()) return {};
+    if (auto counted = budget_.add(placemark); !counted) return counted;
+    document_.placemarks.push_back(std::move(placemark));
     return {};
   }
 
   std::string where_;
   OverlayDocument document_;
+  OverlayBudget budget_{where_};
 };
 
 }  // namespace

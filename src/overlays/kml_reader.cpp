@@ -9,6 +9,7 @@
 #include "overlays/kml_color.hpp"
 #include "overlays/kml_coordinates.hpp"
 #include "overlays/kml_style.hpp"
+#include "overlays/overlay_budget.hpp"
 #include "overlays/positions.hpp"
 #include "overlays/xml_elements.hpp"
 
@@ -131,6 +132,7 @@ class KmlReader {
     placemark.style = styles_.resolve(childText(e, "styleUrl").value_or(""), inlineStyle, images_);
     placemark.visible = visible && visibility(e);
     placemark.folderPath = folderPath;
+    if (auto counted = budget_.add(placemark); !counted) return counted;
     document_.placemarks.push_back(std::move(placemark));
     return {};
   }
@@ -264,6 +266,7 @@ class KmlReader {
   OverlayImages& images_;
   KmlStyles styles_;
   OverlayDocument document_;
+  OverlayBudget budget_{where_};
 };
 
 }  // namespace

@@ -65,7 +65,7 @@ std::string_view xmlRootName(std::string_view text) {
 Result<OverlayDocument> readKmz(const std::filesystem::path& file) {
   auto archive = openKmz(file);
   if (!archive) return Error{archive.error()};
-  auto kml = readKmzEntry(*archive, archive->kmlEntry, kMaxOverlayFileBytes);
+  auto kml = readKmzEntry(*archive, archive->kmlEntry, kMaxOverlayXmlBytes);
   if (!kml) return makeError(file.string() + ": " + kml.error());
   if (!kml->has_value()) return makeError(file.string() + ": cannot read " + archive->kmlEntry);
   const std::vector<std::byte>& bytes = **kml;
@@ -97,6 +97,10 @@ Result<OverlayDocument> readOverlayFile(const std::filesystem::path& file) {
   if (first == std::string_view::npos) return makeError(where + ": an empty file");
   if (text[first] == '{' || text[first] == '[') return readGeoJsonText(text, file);
   if (text[first] == '<') {
+    if (text.size() > kMaxOverlayXmlBytes) {
+      return makeError(where + ": larger than " + std::to_string(kMaxOverlayXmlBytes >> 20) +
+                       " MiB, the most KML or GPX one overlay file may hold; split it");
+    }
     if (xmlRootName(text) == "gpx") return readGpxText(text, file);
     std::error_code ec;
     OverlayImages images(std::filesystem::absolute(file, ec).parent_path());

@@ -9,8 +9,12 @@
 
 namespace globe::overlays {
 
-// Larger files are refused before reading (a KMZ's KML counts its uncompressed size).
-inline constexpr uint64_t kMaxOverlayFileBytes = uint64_t{512} << 20;
+// Larger files are refused before reading (a KMZ's KML counts its uncompressed size). The
+// readers parse a whole document first, at ~8-12 bytes of memory per byte of GeoJSON and ~13 per
+// byte of XML (measured: docs/robustness.md), so these keep one file's parse within ~1 GB; the
+// readers then count placemarks and vertices (overlay_budget.hpp).
+inline constexpr uint64_t kMaxOverlayFileBytes = uint64_t{80} << 20;
+inline constexpr uint64_t kMaxOverlayXmlBytes = uint64_t{64} << 20;  // KML (in a KMZ too), GPX
 
 // Reads a KML, KMZ, GeoJSON (.geojson/.json) or GPX file, chosen by its content (and extension
 // for KMZ zip). Errors name the file and what is wrong.

@@ -1,0 +1,20 @@
+#include "overlays/overlay_budget.hpp"
+
+namespace globe::overlays {
+
+Result<void> OverlayBudget::add(const Placemark& placemark) {
+  for (const Geometry& geometry : placemark.geometries) {
+    for (const auto& ring : geometry.rings) vertices_ += ring.size();
+  }
+  if (++placemarks_ > kMaxOverlayPlacemarks) {
+    return makeError(where_ + ": more than " + std::to_string(kMaxOverlayPlacemarks) +
+                     " placemarks (features), the most one overlay file may hold; split it");
+  }
+  if (vertices_ > kMaxOverlayVertices) {
+    return makeError(where_ + ": more than " + std::to_string(kMaxOverlayVertices) +
+                     " vertices, the most one overlay file may hold; simplify or split it");
+  }
+  return {};
+}
+
+}  // namespace globe::overlays
