@@ -23,7 +23,7 @@ struct SnapshotArguments {
   uint32_t maxLoadLevel = geo::kMaxLevel;
   bool noAttribution = false;
   bool allowMissing = false;
-  int timeoutSeconds = 120;
+  int timeoutSeconds = SnapshotOptions{}.timeoutSeconds;
   std::string goTo;
   std::string view;
   CLI::Option* cameraOption = nullptr;  // count() > 0: --camera was given (even empty)

@@ -152,7 +152,11 @@ class GeoJsonReader {
       if (auto geometry = readGeometry(root, "the geometry", 0, placemark.geometries); !geometry) {
         return Error{geometry.error()};
       }
-      if (!placemark.geometries.empty()) document_.placemarks.push_back(std::move(placemark));
+      // A bare geometry: its vertices count as well.
+      auto kept = placemark.geometries.empty()
+                      ? Result<void>{}
+                      : budget_.append(std::move(placemark), document_);
+      if (!kept) return Error{kept.error()};
     }
     return std::move(document_);
   }
@@ -175,9 +179,7 @@ class GeoJsonReader {
     if (auto read = readGeometry(*geometry, what, 0, placemark.geometries); !read) return read;
     if (placemark.geometries.empty()) return {};
     placemark.style = simplestyle(props);
-    if (auto counted = budget_.add(placemark); !counted) return counted;
-    document_.placemarks.push_back(std::move(placemark));
-    return {};
+    return budget_.append(std::move(placemark), document_);
   }
 
   Result<Position> position(const json& value, const std::string& what) const {

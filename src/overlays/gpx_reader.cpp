@@ -69,9 +69,7 @@ class GpxReader {
     describe(e, placemark);
     placemark.geometries.push_back(
         Geometry{GeometryKind::Point, AltitudeMode::ClampToGround, false, false, {{*p}}});
-    if (auto counted = budget_.add(placemark); !counted) return counted;
-    document_.placemarks.push_back(std::move(placemark));
-    return {};
+    return budget_.append(std::move(placemark), document_);
   }
 
   // A line of the element's children named pointName; fewer than two points add nothing.
@@ -107,9 +105,7 @@ class GpxReader {
       return line;
     }
     if (placemark.geometries.empty()) return {};
-    if (auto counted = budget_.add(placemark); !counted) return counted;
-    document_.placemarks.push_back(std::move(placemark));
-    return {};
+    return budget_.append(std::move(placemark), document_);
   }
 
   std::string where_;

@@ -132,9 +132,7 @@ class KmlReader {
     placemark.style = styles_.resolve(childText(e, "styleUrl").value_or(""), inlineStyle, images_);
     placemark.visible = visible && visibility(e);
     placemark.folderPath = folderPath;
-    if (auto counted = budget_.add(placemark); !counted) return counted;
-    document_.placemarks.push_back(std::move(placemark));
-    return {};
+    return budget_.append(std::move(placemark), document_);
   }
 
   Result<std::vector<Position>> coordinates(const XMLElement& geometry,

@@ -1,8 +1,10 @@
 #include "overlays/overlay_budget.hpp"
 
+#include <utility>
+
 namespace globe::overlays {
 
-Result<void> OverlayBudget::add(const Placemark& placemark) {
+Result<void> OverlayBudget::append(Placemark placemark, OverlayDocument& document) {
   for (const Geometry& geometry : placemark.geometries) {
     for (const auto& ring : geometry.rings) vertices_ += ring.size();
   }
@@ -14,6 +16,7 @@ Result<void> OverlayBudget::add(const Placemark& placemark) {
     return makeError(where_ + ": more than " + std::to_string(kMaxOverlayVertices) +
                      " vertices, the most one overlay file may hold; simplify or split it");
   }
+  document.placemarks.push_back(std::move(placemark));
   return {};
 }
 

@@ -17,8 +17,9 @@ inline constexpr size_t kMaxOverlayVertices = 10'000'000;
 class OverlayBudget {
  public:
   explicit OverlayBudget(std::string where) : where_(std::move(where)) {}
-  // Counts the placemark's vertices; an error once the file is past either limit.
-  Result<void> add(const Placemark& placemark);
+  // Counts the placemark's vertices and appends it to `document`; an error instead once the file
+  // is past either limit.
+  Result<void> append(Placemark placemark, OverlayDocument& document);
 
  private:
   std::string where_;  // the file, for messages

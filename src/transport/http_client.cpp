@@ -96,8 +96,10 @@ size_t onHeader(char* data, size_t size, size_t count, void* user) {
   const std::string_view line(data, size * count);
   HttpResponse& r = transfer->response;
   if (startsWithNoCase(line, "HTTP/")) {  // a new response (after a redirect or a 100)
-    const size_t space = line.find(' ');
-    r.status = space == std::string_view::npos ? 0 : static_cast<long>(parseCount(line.substr(space, 4)));
+    const size_t space = line.find(' ');  // "HTTP/1.1 200 OK": the status, for Content-Length
+    r.status = space == std::string_view::npos
+                   ? 0
+                   : static_cast<long>(parseCount(line.substr(space, 4)));
     r.etag.clear();
     r.lastModified.clear();
     r.contentRange.clear();

@@ -22,9 +22,13 @@ Placemark pointAt(double lon, double lat) {
 
 TEST(OverlayBudget, StopsPastThePlacemarkLimitNamingTheFile) {
   OverlayBudget budget("bomb.kml");
+  OverlayDocument document;
   const Placemark p = pointAt(1, 2);
-  for (size_t i = 0; i < kMaxOverlayPlacemarks; ++i) ASSERT_TRUE(budget.add(p));
-  const auto past = budget.add(p);
+  for (size_t i = 0; i < kMaxOverlayPlacemarks; ++i) {
+    ASSERT_TRUE(budget.append(p, document));
+    document.placemarks.clear();  // the budget counts what the file held, kept or not
+  }
+  const auto past = budget.append(p, document);
   ASSERT_FALSE(past);
   EXPECT_NE(past.error().find("bomb.kml: more than 500000 placemarks"), std::string::npos)
       << past.error();
@@ -32,11 +36,15 @@ TEST(OverlayBudget, StopsPastThePlacemarkLimitNamingTheFile) {
 
 TEST(OverlayBudget, StopsPastTheVertexLimit) {
   OverlayBudget budget("long.geojson");
+  OverlayDocument document;
   Placemark line;
   line.geometries.push_back(Geometry{GeometryKind::LineString, AltitudeMode::ClampToGround, false,
                                      false, {std::vector<Position>(kMaxOverlayVertices / 4)}});
-  for (int i = 0; i < 4; ++i) ASSERT_TRUE(budget.add(line));
-  const auto past = budget.add(pointAt(0, 0));
+  for (int i = 0; i < 4; ++i) {
+    ASSERT_TRUE(budget.append(line, document));
+    document.placemarks.clear();
+  }
+  const auto past = budget.append(pointAt(0, 0), document);
   ASSERT_FALSE(past);
   EXPECT_NE(past.error().find("long.geojson: more than 10000000 vertices"), std::string::npos)
       << past.error();
