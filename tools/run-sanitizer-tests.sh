@@ -13,6 +13,8 @@ SUPP="$PWD/tools/sanitizers/lsan-mesa.supp"
 TSAN_FLAGS=(-DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG")
 . tools/lib/seed-ctest-costs.sh
+. tools/lib/test-tmpdir.sh
+use_test_tmpdir  # scratch files on tmpfs where there is one (tools/lib/test-tmpdir.sh)
 . tools/lib/build-checked.sh
 . tools/lib/stage-time.sh
 

@@ -11,8 +11,13 @@ cd "$(dirname "$0")/.."
 BUILD=${BUILD_DIR:-build}
 . tools/lib/build-checked.sh
 . tools/lib/stage-time.sh
+. tools/lib/test-tmpdir.sh
 # The packages the tests need beyond the set-up's (apt; quick where they are installed).
 stage "test packages (apt)" bash tools/install-deps.sh --tests
+# Scratch files on tmpfs where there is one (before configuring: the shared fixtures' folder is
+# set there); tools/lib/test-tmpdir.sh says why.
+use_test_tmpdir
+echo "test scratch files in ${TMPDIR:-/tmp}"
 bash tools/configure.sh "$BUILD" -DGLOBE_BUILD_TESTS=ON
 # The tests and the programs they run (target globe_tests); the benchmarks and tools build when
 # their scripts run them (CI builds everything: .ci/run).
