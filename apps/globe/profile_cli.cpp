@@ -57,7 +57,7 @@ int runProfileCommand(const ProfileArguments& arguments, const CommandContext& c
   }
   int chartWidth = 0, chartHeight = 0;
   if (!parseChartSize(arguments.pngSize, chartWidth, chartHeight)) return 1;
-  auto path = measure::readPathFile(arguments.path);
+  auto path = measure::readPathFile(arguments.path, context.warnings);
   if (!path) {
     std::fprintf(stderr, "globe profile: %s\n", path.error().c_str());
     return 1;

@@ -39,6 +39,15 @@ class Reader {
   size_t at_ = 0;
 };
 
+// An extension's length as read little-endian, in the order the layer declares; the other order
+// where only that one fits in what is left.
+uint32_t extensionLength(uint32_t readLittleEndian, ExtensionLengths declared, size_t remaining) {
+  const uint32_t swapped = __builtin_bswap32(readLittleEndian);
+  const uint32_t first = declared == ExtensionLengths::BigEndian ? swapped : readLittleEndian;
+  const uint32_t second = first == swapped ? readLittleEndian : swapped;
+  return first > remaining && second <= remaining ? second : first;
+}
+
 int32_t zigZag(uint16_t value) { return (value >> 1) ^ -static_cast<int32_t>(value & 1); }
 
 Result<std::vector<uint16_t>> readDeltas(Reader& r, uint32_t count, const char* what,
@@ -83,8 +92,8 @@ Result<std::vector<uint8_t>> readWaterMask(std::span<const std::byte> bytes,
 
 }  // namespace
 
-Result<QuantizedMesh> decodeQuantizedMesh(std::span<const std::byte> bytes,
-                                          const std::string& name) {
+Result<QuantizedMesh> decodeQuantizedMesh(std::span<const std::byte> bytes, const std::string& name,
+                                          ExtensionLengths lengths) {
   Reader r(bytes, name);
   QuantizedMesh mesh;
   if (!r.has(kHeaderBytes + 4)) return r.truncated("the header");
@@ -186,7 +195,7 @@ Result<QuantizedMesh> decodeQuantizedMesh(std::span<const std::byte> bytes,
   while (r.remaining() > 0) {
     if (!r.has(5)) return r.truncated("an extension header");
     const auto id = r.get<uint8_t>();
-    const uint32_t length = r.get<uint32_t>();
+    const uint32_t length = extensionLength(r.get<uint32_t>(), lengths, r.remaining());
     if (!r.has(length)) return r.truncated("extension " + std::to_string(id));
     const std::span<const std::byte> body = bytes.subspan(r.offset(), length);
     if (id == 1) {

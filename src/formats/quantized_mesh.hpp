@@ -41,8 +41,14 @@ struct QuantizedMesh {
 // Decodes a tile (already inflated). Errors name `name` and the problem; a tile whose header
 // centre lies beyond the Earth (a producer writing Web-Mercator metres) or whose edge lists hold
 // vertices off their edge is refused.
-Result<QuantizedMesh> decodeQuantizedMesh(std::span<const std::byte> bytes,
-                                          const std::string& name);
+// How a tile writes its extensions' lengths: little-endian, as the format says, or big-endian,
+// as tiles of the legacy "vertexnormals" extension do (CesiumJS reads them so where layer.json
+// lists "vertexnormals" and not "octvertexnormals"). A length that cannot be read the declared
+// way but fits the other way is read the other way (a producer that got the order wrong).
+enum class ExtensionLengths { LittleEndian, BigEndian };
+Result<QuantizedMesh> decodeQuantizedMesh(
+    std::span<const std::byte> bytes, const std::string& name,
+    ExtensionLengths lengths = ExtensionLengths::LittleEndian);
 // Whether the header's centre lies over the tile (west..east, south..north in degrees, with a
 // tile's size of margin): a tile served under another tile's name, or another tiling's, is not.
 bool centreLiesOverTile(const QuantizedMesh& mesh, double westDegrees, double southDegrees,

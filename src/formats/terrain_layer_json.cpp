@@ -31,13 +31,14 @@ Result<TerrainLayerJson> parseTerrainLayerJson(std::string_view text, const std:
   TerrainLayerJson layer;
   try {
     const std::string format = stringOr(j, "format", "heightmap-1.0");
-    if (format == "quantized-mesh-1.0") {
+    // Any 1.x quantized mesh, as CesiumJS reads it: the minor versions add extensions only.
+    if (format.starts_with("quantized-mesh-1.")) {
       layer.format = TerrainLayerJson::Format::QuantizedMesh;
     } else if (format == "heightmap-1.0") {
       layer.format = TerrainLayerJson::Format::Heightmap;
     } else {
       return makeError(name + ": format \"" + format +
-                       "\" (quantized-mesh-1.0 or heightmap-1.0 expected)");
+                       "\" (quantized-mesh-1.x or heightmap-1.0 expected)");
     }
     const std::string projection = stringOr(j, "projection", "EPSG:4326");
     if (projection != "EPSG:4326") {

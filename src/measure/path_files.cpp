@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string_view>
@@ -38,13 +39,25 @@ void allDescendants(const tinyxml2::XMLElement* e, std::string_view name,
   }
 }
 
-Result<std::vector<PathPoint>> gpxLine(const tinyxml2::XMLElement* root, const std::string& where) {
-  // A track's points in order, else a route's.
-  std::vector<const tinyxml2::XMLElement*> points;
-  if (const auto* track = firstDescendant(root, "trk")) allDescendants(track, "trkpt", points);
-  if (points.empty()) {
-    if (const auto* route = firstDescendant(root, "rte")) allDescendants(route, "rtept", points);
+// The points of the first of the root's `lineName` elements (trk, rte) that has two or more.
+std::vector<const tinyxml2::XMLElement*> firstLineOf(const tinyxml2::XMLElement* root,
+                                                     std::string_view lineName,
+                                                     std::string_view pointName) {
+  std::vector<const tinyxml2::XMLElement*> lines;
+  allDescendants(root, lineName, lines);
+  for (const tinyxml2::XMLElement* line : lines) {
+    std::vector<const tinyxml2::XMLElement*> points;
+    allDescendants(line, pointName, points);
+    if (points.size() >= 2) return points;
   }
+  return {};
+}
+
+Result<std::vector<PathPoint>> gpxLine(const tinyxml2::XMLElement* root, const std::string& where) {
+  // The first track of two points or more, else the first such route (as gpxpy's users pick:
+  // a device writes empty or one-point tracks before the one that matters).
+  std::vector<const tinyxml2::XMLElement*> points = firstLineOf(root, "trk", "trkpt");
+  if (points.empty()) points = firstLineOf(root, "rte", "rtept");
   std::vector<PathPoint> line;
   for (const tinyxml2::XMLElement* p : points) {
     PathPoint point;
@@ -144,9 +157,30 @@ Result<std::vector<PathPoint>> geoJsonLine(const nlohmann::json& json, const std
   return std::vector<PathPoint>();
 }
 
+// Elevations no path on or above the Earth has (below the deepest trench, above 100 km) or that
+// are not finite are read as not given: files carry 1e308 or NaN where a device had none.
+void dropImpossibleElevations(std::vector<PathPoint>& line, const std::string& where,
+                              const core::WarningSink& warnings) {
+  constexpr double kLowestMeters = -12'000, kHighestMeters = 100'000;
+  size_t dropped = 0;
+  std::string first;
+  for (size_t k = 0; k < line.size(); ++k) {
+    double& e = line[k].elevationMeters;
+    if (std::isnan(e) || (e >= kLowestMeters && e <= kHighestMeters)) continue;
+    if (dropped++ == 0) first = std::to_string(e) + " at point " + std::to_string(k + 1);
+    e = std::numeric_limits<double>::quiet_NaN();
+  }
+  if (dropped > 0) {
+    core::warn(warnings,
+               where + ": " + std::to_string(dropped) + " of " + std::to_string(line.size()) +
+                   " elevations outside -12000..100000 m (" + first + ") read as not given");
+  }
+}
+
 }  // namespace
 
-Result<std::vector<PathPoint>> readPathFile(const std::filesystem::path& file) {
+Result<std::vector<PathPoint>> readPathFile(const std::filesystem::path& file,
+                                            const core::WarningSink& warnings) {
   const std::string where = file.string();
   auto bytes = transport::readWholeFile(file, kMaxPathFileBytes);
   if (!bytes) return Error{bytes.error()};
@@ -186,6 +220,7 @@ Result<std::vector<PathPoint>> readPathFile(const std::filesystem::path& file) {
       return makeError(where + ": a point outside -180..180, -90..90 degrees");
     }
   }
+  dropImpossibleElevations(*line, where, warnings);
   return line;
 }
 

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "overlays/overlay_budget.hpp"
@@ -142,11 +143,9 @@ class GeoJsonReader {
       if (features == root.end() || !features->is_array()) {
         return makeError(where_ + ": a FeatureCollection without a \"features\" array");
       }
-      for (size_t i = 0; i < features->size(); ++i) {
-        if (auto feature = readFeature((*features)[i], i); !feature) return Error{feature.error()};
-      }
+      if (auto read = readFeatures(*features); !read) return Error{read.error()};
     } else if (type == "Feature") {
-      if (auto feature = readFeature(root, 0); !feature) return Error{feature.error()};
+      if (auto feature = readLoneFeature(root); !feature) return Error{feature.error()};
     } else {
       Placemark placemark;
       if (auto geometry = readGeometry(root, "the geometry", 0, placemark.geometries); !geometry) {
@@ -162,10 +161,20 @@ class GeoJsonReader {
   }
 
  private:
-  Result<void> readFeature(const json& feature, size_t index) {
+  // What is wrong with one feature, which the others do not share.
+  struct FeatureProblem {
+    std::string message;
+  };
+  using FeatureRead = Result<std::optional<FeatureProblem>>;
+  static FeatureRead featureProblem(std::string message) {
+    return std::optional<FeatureProblem>(FeatureProblem{std::move(message)});
+  }
+  static FeatureRead readWell() { return std::optional<FeatureProblem>(); }
+
+  FeatureRead readFeature(const json& feature, size_t index) {
     std::string what = "feature " + std::to_string(index + 1);
     if (!feature.is_object() || feature.value("type", json()) != "Feature") {
-      return makeError(where_ + ": " + what + " is not a Feature object");
+      return featureProblem(where_ + ": " + what + " is not a Feature object");
     }
     static const json kNone;
     const auto properties = feature.find("properties");
@@ -175,11 +184,45 @@ class GeoJsonReader {
     placemark.description = stringProperty(props, {"description"});
     if (!placemark.name.empty()) what += " \"" + placemark.name.substr(0, 80) + "\"";
     const auto geometry = feature.find("geometry");
-    if (geometry == feature.end() || geometry->is_null()) return {};
-    if (auto read = readGeometry(*geometry, what, 0, placemark.geometries); !read) return read;
-    if (placemark.geometries.empty()) return {};
+    if (geometry == feature.end() || geometry->is_null()) return readWell();
+    if (auto read = readGeometry(*geometry, what, 0, placemark.geometries); !read) {
+      return featureProblem(read.error());
+    }
+    if (placemark.geometries.empty()) return readWell();
     placemark.style = simplestyle(props);
-    return budget_.append(std::move(placemark), document_);
+    if (auto kept = budget_.append(std::move(placemark), document_); !kept)
+      return Error{kept.error()};
+    return readWell();
+  }
+
+  // A lone Feature: its problem is the file's.
+  Result<void> readLoneFeature(const json& feature) {
+    auto read = readFeature(feature, 0);
+    if (!read) return Error{read.error()};
+    if (*read) return makeError((*read)->message);
+    return {};
+  }
+
+  // A collection's features. One that cannot be read is left out with a warning, as GDAL and
+  // OpenLayers read the rest; the budget's errors end the reading; nothing readable at all is the
+  // first problem's error.
+  Result<void> readFeatures(const json& features) {
+    std::vector<std::string> problems;
+    for (size_t i = 0; i < features.size(); ++i) {
+      auto feature = readFeature(features[i], i);
+      if (!feature) return Error{feature.error()};
+      if (*feature) problems.push_back(std::move((*feature)->message));
+    }
+    if (problems.empty()) return {};
+    if (document_.placemarks.empty()) return makeError(problems.front());
+    constexpr size_t kListed = 5;
+    for (size_t k = 0; k < std::min(problems.size(), kListed); ++k)
+      document_.warnings.push_back(problems[k] + "; feature left out");
+    if (problems.size() > kListed) {
+      document_.warnings.push_back(where_ + ": " + std::to_string(problems.size() - kListed) +
+                                   " more features left out for the same kinds of problem");
+    }
+    return {};
   }
 
   Result<Position> position(const json& value, const std::string& what) const {

@@ -35,11 +35,18 @@ class GpxReader {
       if (name == "trk") read = readLines(*e, true);
       if (!read) return Error{read.error()};
     }
+    if (impossibleElevations_ > 0) {
+      document_.warnings.push_back(where_ + ": " + std::to_string(impossibleElevations_) +
+                                   " elevations outside -12000..100000 m or not numbers, "
+                                   "read as not given");
+    }
     return std::move(document_);
   }
 
  private:
-  Result<Position> point(const XMLElement& e) const {
+  static constexpr double kLowestElevationMeters = -12'000, kHighestElevationMeters = 100'000;
+
+  Result<Position> point(const XMLElement& e) {
     Position p;
     const auto lat = parseNumber(e.Attribute("lat") != nullptr ? e.Attribute("lat") : "");
     const auto lon = parseNumber(e.Attribute("lon") != nullptr ? e.Attribute("lon") : "");
@@ -49,7 +56,15 @@ class GpxReader {
     }
     p.latitudeDegrees = *lat;
     p.longitudeDegrees = *lon;
-    if (auto ele = parseNumber(childText(e, "ele").value_or(""))) p.heightMeters = *ele;
+    // An elevation no track has (1e308, NaN: written where a device had none) is not given;
+    // GPX is drawn on the ground, so it only keeps the file from being read.
+    if (auto ele = parseNumber(childText(e, "ele").value_or(""))) {
+      if (*ele >= kLowestElevationMeters && *ele <= kHighestElevationMeters) {
+        p.heightMeters = *ele;
+      } else {
+        ++impossibleElevations_;
+      }
+    }
     if (auto problem = positionProblem(p)) {
       return makeError(where_ + ": line " + std::to_string(e.GetLineNum()) + ": a <" +
                        std::string(localName(e)) + ">'s " + *problem);
@@ -74,7 +89,7 @@ class GpxReader {
 
   // A line of the element's children named pointName; fewer than two points add nothing.
   Result<void> appendLine(const XMLElement& parent, std::string_view pointName,
-                          std::vector<Geometry>& out) const {
+                          std::vector<Geometry>& out) {
     std::vector<Position> line;
     for (const auto* c = parent.FirstChildElement(); c; c = c->NextSiblingElement()) {
       if (localName(*c) != pointName) continue;
@@ -109,6 +124,7 @@ class GpxReader {
   }
 
   std::string where_;
+  size_t impossibleElevations_ = 0;
   OverlayDocument document_;
   OverlayBudget budget_{where_};
 };

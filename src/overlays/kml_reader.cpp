@@ -2,6 +2,9 @@
 
 #include <tinyxml2.h>
 
+#include <algorithm>
+#include <iterator>
+
 #include <cmath>
 #include <limits>
 #include <string>
@@ -168,7 +171,11 @@ class KmlReader {
     geometry.altitudeMode = altitudeModeOf(e, inherited);
     geometry.extrude = flag(e, "extrude");
     geometry.tessellate = flag(e, "tessellate");
-    if (name == "MultiGeometry" || name == "MultiTrack") {
+    // MultiPolygon, MultiLineString and MultiPoint are not KML, but tools write them (GDAL's
+    // issue 4031, its non_conformant_multi.kml) and GDAL reads them as MultiGeometry: so does this.
+    static constexpr std::string_view kContainers[] = {
+        "MultiGeometry", "MultiTrack", "MultiPolygon", "MultiLineString", "MultiPoint"};
+    if (std::find(std::begin(kContainers), std::end(kContainers), name) != std::end(kContainers)) {
       if (depth + 1 > kMaxKmlNesting) return tooDeep(e, std::string(name) + " elements");
       for (const auto* c = e.FirstChildElement(); c; c = c->NextSiblingElement()) {
         auto inner = readGeometry(*c, placemark, geometry.altitudeMode, depth + 1, out);

@@ -5,7 +5,9 @@
 #include <span>
 #include <string_view>
 
+#include "overlays/gdal_image.hpp"
 #include "overlays/xml_elements.hpp"
+#include "transport/atomic_file.hpp"
 
 namespace globe::overlays {
 namespace {
@@ -90,9 +92,10 @@ std::optional<ResolvedImage> OverlayImages::fromArchive(const std::string& relat
   auto bytes = readKmzEntry(*archive_, entry, kMaxImageFileBytes);
   if (bytes && !bytes->has_value()) return std::nullopt;  // not in the archive
   ResolvedImage resolved{kmzEntryPath(*archive_, entry), nullptr};
-  if (bytes) {
-    resolved.image =
-        keep(formats::decodeImageRgba(std::span<const std::byte>(**bytes), resolved.href));
+  if (!bytes) {
+    warn(relative, bytes.error());
+  } else {
+    resolved.image = keep(relative, decoded(**bytes, resolved.href));
   }
   return resolved;
 }
@@ -103,17 +106,44 @@ ResolvedImage OverlayImages::fromDisk(const std::string& href, const std::filesy
     return {href, nullptr};
   }
   const std::filesystem::path normal = (directory_ / path).lexically_normal();
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(normal, ec);
   ResolvedImage resolved{normal.string(), nullptr};
-  if (!ec && size <= kMaxImageFileBytes) resolved.image = keep(formats::loadImageRgba(normal));
+  auto bytes = transport::readWholeFile(normal, kMaxImageFileBytes);
+  if (!bytes) {
+    warn(href, bytes.error());
+  } else {
+    resolved.image = keep(href, decoded(*bytes, resolved.href));
+  }
   return resolved;
 }
 
-std::shared_ptr<const formats::ImageRgba> OverlayImages::keep(Result<formats::ImageRgba> decoded) {
-  if (!decoded || decodedBytes_ + decoded->pixels.size() > kMaxDecodedBytes) return nullptr;
-  decodedBytes_ += decoded->pixels.size();
-  return std::make_shared<const formats::ImageRgba>(std::move(decoded).value());
+Result<formats::ImageRgba> OverlayImages::decoded(std::span<const std::byte> bytes,
+                                                  const std::string& name) const {
+  auto image = formats::decodeImageRgba(bytes, name);
+  if (image) return image;
+  // Beyond stb_image (GeoTIFF above all), and beyond its 4096-pixel side: GDAL's image drivers,
+  // within what this document's images may still take.
+  auto viaGdal = decodeImageWithGdal(bytes, name, kMaxDecodedBytes - decodedBytes_);
+  if (viaGdal) return viaGdal;
+  return Error{image.error() + "; " + viaGdal.error()};
+}
+
+std::shared_ptr<const formats::ImageRgba> OverlayImages::keep(const std::string& href,
+                                                              Result<formats::ImageRgba> image) {
+  if (!image) {
+    warn(href, image.error());
+    return nullptr;
+  }
+  if (decodedBytes_ + image->pixels.size() > kMaxDecodedBytes) {
+    warn(href, "its pixels would take this overlay's images beyond " +
+                   std::to_string(kMaxDecodedBytes >> 20) + " MiB");
+    return nullptr;
+  }
+  decodedBytes_ += image->pixels.size();
+  return std::make_shared<const formats::ImageRgba>(std::move(image).value());
+}
+
+void OverlayImages::warn(const std::string& href, const std::string& why) {
+  warnings_.push_back("image href \"" + href.substr(0, 200) + "\": " + why + "; not drawn");
 }
 
 }  // namespace globe::overlays

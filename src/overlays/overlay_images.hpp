@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -33,15 +34,23 @@ class OverlayImages {
   // Relative hrefs resolve inside the archive first, then beside the .kmz.
   explicit OverlayImages(KmzArchive archive);
 
-  // Never fails: whatever cannot be found, is refused or cannot be decoded gives a null image.
+  // Never fails: whatever cannot be found, is refused or cannot be decoded gives a null image,
+  // and a warning (URLs are the caller's).
   ResolvedImage resolve(const std::string& href);
-  // The hrefs refused so far, each once with the reason ("href \"../x.png\": outside ...").
+  // The hrefs refused, missing or undecodable so far, each once with the reason
+  // ("image href \"../x.png\": outside ...; not read").
   const std::vector<std::string>& warnings() const { return warnings_; }
 
  private:
   std::optional<ResolvedImage> fromArchive(const std::string& relative);
   ResolvedImage fromDisk(const std::string& href, const std::filesystem::path& path);
-  std::shared_ptr<const formats::ImageRgba> keep(Result<formats::ImageRgba> decoded);
+  // stb_image's decode, else GDAL's; the error says both.
+  Result<formats::ImageRgba> decoded(std::span<const std::byte> bytes,
+                                     const std::string& name) const;
+  // The decoded image within the document's budget, else null with a warning naming the href.
+  std::shared_ptr<const formats::ImageRgba> keep(const std::string& href,
+                                                 Result<formats::ImageRgba> image);
+  void warn(const std::string& href, const std::string& why);
 
   std::filesystem::path directory_;
   std::optional<KmzArchive> archive_;

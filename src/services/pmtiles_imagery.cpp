@@ -15,6 +15,18 @@ namespace {
 
 // The spec keeps the header and root directory in the first 16 KiB: one read.
 constexpr size_t kHeadBytes = 16384;
+
+// What a tile type is, in words, for the error that refuses it.
+std::string tileTypeName(formats::PmtilesTileType type) {
+  switch (type) {
+    case formats::PmtilesTileType::Mvt:
+      return "Mapbox vector tiles, not imagery";
+    case formats::PmtilesTileType::Avif:
+      return "AVIF images, which this build does not decode";
+    default:
+      return "of unknown type " + std::to_string(static_cast<int>(type));
+  }
+}
 constexpr uint64_t kMaxDirectoryBytes = uint64_t{32} << 20;
 constexpr uint64_t kMaxTileBytes = uint64_t{16} << 20;
 constexpr size_t kLeafDirectories = 64;
@@ -134,10 +146,8 @@ Result<std::unique_ptr<ServiceImagery>> openPmtilesImagery(
   if (header->tileType != formats::PmtilesTileType::Png &&
       header->tileType != formats::PmtilesTileType::Jpeg &&
       header->tileType != formats::PmtilesTileType::Webp) {
-    return makeError(location + ": its tiles are not PNG, JPEG or WebP images (tile type " +
-                     std::to_string(static_cast<int>(header->tileType)) +
-                     "; vector tiles are not "
-                     "imagery)");
+    return makeError(location + ": its tiles are " + tileTypeName(header->tileType) +
+                     "; imagery is read from PNG, JPEG or WebP tiles");
   }
   if (!supported(header->internalCompression) || !supported(header->tileCompression)) {
     return makeError(location + ": compressed with other than gzip (brotli and zstd are not read)");

@@ -77,7 +77,12 @@ class QuantizedMeshSource final : public ServiceTerrainSource {
       if (!heightmap) return Error{heightmap.error()};
       return std::optional<ServiceSamples>(sampleHeightmap(*heightmap));
     }
-    auto mesh = formats::decodeQuantizedMesh(*inflated, url);
+    // The legacy "vertexnormals" extension writes its lengths big-endian (CesiumJS's rule).
+    const bool legacy =
+        layer_.hasExtension("vertexnormals") && !layer_.hasExtension("octvertexnormals");
+    auto mesh = formats::decodeQuantizedMesh(
+        *inflated, url,
+        legacy ? formats::ExtensionLengths::BigEndian : formats::ExtensionLengths::LittleEndian);
     if (!mesh) return Error{mesh.error()};
     const auto rect = geo::GeographicTilingScheme::tileRectangle(tile);
     if (!formats::centreLiesOverTile(*mesh, geo::radiansToDegrees(rect.westRadians),

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
 #include <numbers>
 
 namespace globe::services {
@@ -20,6 +21,50 @@ double attribute(const tinyxml2::XMLElement* e, const char* name, double fallbac
 double metersToLon(double x) { return x / kMercatorHalfWorld * 180; }
 double metersToLat(double y) {
   return (2 * std::atan(std::exp(y / 6378137.0)) - std::numbers::pi / 2) * 180 / std::numbers::pi;
+}
+
+// A TileMap's box and origin as written: x, y in the SRS's units, or degrees.
+struct TileMapBox {
+  double minx, miny, maxx, maxy, ox, oy;
+};
+
+// gdal2tiles 1.x wrote the box and origin in degrees, latitude first (south, west, north, east),
+// whatever the SRS: a geodetic tree's box then has "longitudes" of ±180 as y, and a Web Mercator
+// tree's box is a few "metres" wide at 0°, 0°. CesiumJS reads such trees with flipXY; so does this,
+// told by the numbers: a Mercator box smaller than one pixel of the coarsest tile set is in degrees
+// (in gdal2tiles' order unless that puts a latitude beyond ±90), and a geodetic box whose y
+// reaches beyond ±90 while its x does not is flipped. Returns the box in the SRS's units, with the
+// whole world's grid origin for a Mercator box that was in degrees (gdal2tiles' tiles are the
+// global grid's), and the bounds in degrees.
+TileMapBox normalizedBox(TileMapBox b, TileCrs crs, double coarsestTileSpan,
+                         formats::BoundsDegrees& boundsDegrees) {
+  const auto within = [](double limit, std::initializer_list<double> values) {
+    for (double v : values)
+      if (!(std::fabs(v) <= limit)) return false;
+    return true;
+  };
+  const auto flip = [](TileMapBox x) {
+    return TileMapBox{x.miny, x.minx, x.maxy, x.maxx, x.oy, x.ox};
+  };
+  if (crs == TileCrs::Geographic) {
+    if (!within(90, {b.miny, b.maxy, b.oy}) && within(90, {b.minx, b.maxx, b.ox}) &&
+        within(180, {b.miny, b.maxy, b.oy})) {
+      b = flip(b);
+    }
+    boundsDegrees = {b.minx, b.miny, b.maxx, b.maxy};
+    return b;
+  }
+  const bool degrees =
+      within(180, {b.minx, b.miny, b.maxx, b.maxy}) && b.maxx - b.minx < coarsestTileSpan / 1e3;
+  if (!degrees) {
+    boundsDegrees = {metersToLon(b.minx), metersToLat(b.miny), metersToLon(b.maxx),
+                     metersToLat(b.maxy)};
+    return b;
+  }
+  if (within(90, {b.minx, b.maxx})) b = flip(b);  // gdal2tiles' order: latitude first
+  boundsDegrees = {b.minx, b.miny, b.maxx, b.maxy};
+  return {-kMercatorHalfWorld, -kMercatorHalfWorld, kMercatorHalfWorld,
+          kMercatorHalfWorld,  -kMercatorHalfWorld, -kMercatorHalfWorld};
 }
 
 }  // namespace
@@ -51,23 +96,23 @@ Result<TmsTileMap> parseTmsTileMap(std::string_view xml, const std::string& name
   if (box == nullptr || origin == nullptr || format == nullptr || sets == nullptr) {
     return makeError(name + ": a TileMap without BoundingBox, Origin, TileFormat or TileSets");
   }
-  const double minx = attribute(box, "minx", NAN), miny = attribute(box, "miny", NAN);
-  const double maxx = attribute(box, "maxx", NAN), maxy = attribute(box, "maxy", NAN);
-  const double ox = attribute(origin, "x", NAN), oy = attribute(origin, "y", NAN);
+  const TileMapBox written{attribute(box, "minx", NAN), attribute(box, "miny", NAN),
+                           attribute(box, "maxx", NAN), attribute(box, "maxy", NAN),
+                           attribute(origin, "x", NAN), attribute(origin, "y", NAN)};
   const double tileWidth = attribute(format, "width", 256),
                tileHeight = attribute(format, "height", 256);
-  if (!(minx < maxx && miny < maxy) || !std::isfinite(ox) || !std::isfinite(oy) ||
+  if (!(written.minx < written.maxx && written.miny < written.maxy) || !std::isfinite(written.ox) ||
+      !std::isfinite(written.oy) ||
       !(tileWidth >= 16 && tileWidth <= 4096 && tileHeight >= 16 && tileHeight <= 4096)) {
     return makeError(name +
                      ": a TileMap with an empty box, no origin or a tile size outside 16..4096");
   }
   const char* extension = format->Attribute("extension");
   out.extension = extension != nullptr ? extension : "png";
-  if (out.tiling.crs == TileCrs::Geographic) {
-    out.bounds = {minx, miny, maxx, maxy};
-  } else {
-    out.bounds = {metersToLon(minx), metersToLat(miny), metersToLon(maxx), metersToLat(maxy)};
-  }
+  const auto* firstSet = sets->FirstChildElement("TileSet");
+  const TileMapBox b = normalizedBox(
+      written, out.tiling.crs, attribute(firstSet, "units-per-pixel", NAN) * tileWidth, out.bounds);
+  const double maxx = b.maxx, maxy = b.maxy, ox = b.ox, oy = b.oy;
   for (const auto* set = sets->FirstChildElement("TileSet"); set != nullptr;
        set = set->NextSiblingElement("TileSet")) {
     const char* href = set->Attribute("href");

@@ -140,9 +140,12 @@ Result<WmtsCapabilities> parseWmtsCapabilities(std::string_view xml, const std::
       const double scale = std::atof(text(child(m, "ScaleDenominator")).c_str());
       double a = 0, b = 0;
       const bool corner = twoNumbers(text(child(m, "TopLeftCorner")), a, b);
-      // EPSG:4326 corners come latitude first, unless a server wrote them the other way (a
-      // first value beyond ±90 is a longitude).
-      const bool swap = latitudeFirst && !(std::fabs(a) > 90);
+      // EPSG:4326 corners come latitude first, CRS84's longitude first, unless a server wrote
+      // them the other way: a first value beyond ±90 is a longitude, and so is a second one
+      // (CRS84 sets written "90 -180", as OpenLayers and GDAL read them).
+      const bool lonLatCrs = tiling.crs == TileCrs::Geographic && !latitudeFirst;
+      const bool swap = (latitudeFirst && !(std::fabs(a) > 90)) ||
+                        (lonLatCrs && std::fabs(b) > 90 && std::fabs(a) <= 90);
       matrix.originX = swap ? b : a;
       matrix.originY = swap ? a : b;
       matrix.unitsPerPixel = scale * kPixelMeters / metersPerUnit;

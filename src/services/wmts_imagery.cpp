@@ -1,6 +1,8 @@
 #include "services/wmts_imagery.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <iterator>
 
 #include "services/template_imagery.hpp"
 #include "services/url_reader.hpp"
@@ -22,6 +24,17 @@ std::string replaceKey(std::string s, const std::string& key, const std::string&
   for (size_t at = lower(s).find(needle); at != std::string::npos; at = lower(s).find(needle))
     s.replace(at, needle.size(), value);
   return s;
+}
+
+// PNG, JPEG or WebP, parameters and case aside: servers write "image/png; mode=8bit" (MapServer,
+// for 8-bit palettes) or "image/jpg", and what arrives is decoded by its bytes in any case.
+bool isDecodableImageFormat(const std::string& format) {
+  std::string type = format.substr(0, format.find(';'));
+  type.erase(std::remove(type.begin(), type.end(), ' '), type.end());
+  std::transform(type.begin(), type.end(), type.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  static constexpr const char* kTypes[] = {"image/png", "image/jpeg", "image/jpg", "image/webp"};
+  return std::find(std::begin(kTypes), std::end(kTypes), type) != std::end(kTypes);
 }
 
 std::string joinNames(const std::vector<std::string>& names, size_t most) {
@@ -78,7 +91,7 @@ Result<std::unique_ptr<ServiceImagery>> openWmtsImagery(
   std::string format = options.count("format") ? options["format"] : "";
   if (format.empty()) {
     for (const std::string& f : layer->formats)
-      if (f == "image/png" || f == "image/jpeg" || f == "image/webp") {
+      if (isDecodableImageFormat(f)) {
         format = f;
         break;
       }

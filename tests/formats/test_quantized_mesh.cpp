@@ -101,6 +101,44 @@ TEST(QuantizedMesh, TheHaguesNormalsPointUpAtTheHague) {
   EXPECT_LT(angles[angles.size() / 2], 5.0);
 }
 
+// The Hague's tile with its normals' extension length rewritten big-endian, as tiles of the legacy
+// "vertexnormals" extension write it: the same normals either way it is declared.
+TEST(QuantizedMesh, LegacyVertexNormalsWithBigEndianLengthsDecode) {
+  const fs::path tile = tilesOf(kInterop / "quantized-mesh/denhaag-ahn-octnormals").front();
+  auto bytes = readBytes(tile);
+  auto inflated = gunzipIfNeeded(bytes, tile.string(), 64 << 20);
+  ASSERT_TRUE(inflated) << inflated.error();
+  auto reference = decodeQuantizedMesh(*inflated, "t.terrain");
+  ASSERT_TRUE(reference) << reference.error();
+  const size_t normalsBytes = 2 * reference->vertexCount();
+  ASSERT_EQ(reference->normals.size(), reference->vertexCount());
+  // Find the extension header: id 1 followed by the little-endian length of 2 bytes per vertex.
+  std::vector<std::byte> legacy = *inflated;
+  size_t at = legacy.size();
+  for (size_t k = 88; k + 5 + normalsBytes <= legacy.size(); ++k) {
+    uint32_t length = 0;
+    std::memcpy(&length, legacy.data() + k + 1, 4);
+    if (legacy[k] == std::byte{1} && length == normalsBytes &&
+        k + 5 + normalsBytes <= legacy.size()) {
+      at = k;
+    }
+  }
+  ASSERT_LT(at, legacy.size()) << "no normals extension found";
+  std::reverse(legacy.begin() + static_cast<std::ptrdiff_t>(at + 1),
+               legacy.begin() + static_cast<std::ptrdiff_t>(at + 5));
+  for (ExtensionLengths declared : {ExtensionLengths::BigEndian, ExtensionLengths::LittleEndian}) {
+    auto mesh = decodeQuantizedMesh(legacy, "legacy.terrain", declared);
+    ASSERT_TRUE(mesh) << mesh.error();
+    ASSERT_EQ(mesh->normals.size(), reference->normals.size());
+    EXPECT_EQ(mesh->normals, reference->normals);
+  }
+  // A little-endian tile read where big-endian lengths are declared: the declared order does not
+  // fit, the file's does.
+  auto swappedDeclared = decodeQuantizedMesh(*inflated, "t.terrain", ExtensionLengths::BigEndian);
+  ASSERT_TRUE(swappedDeclared) << swappedDeclared.error();
+  EXPECT_EQ(swappedDeclared->normals, reference->normals);
+}
+
 TEST(QuantizedMesh, ACentreOverAnotherTileIsTold) {
   const fs::path path = kInterop / "quantized-mesh/texel-ahn4/12/4203/3255.terrain";
   auto mesh = decodeQuantizedMesh(readBytes(path), "t.terrain");
@@ -231,6 +269,15 @@ TEST(TerrainLayerJson, WhatThisViewerCannotUseIsRefusedByName) {
   auto notJson = parseTerrainLayerJson("<html>", "h.json");
   ASSERT_FALSE(notJson);
   EXPECT_EQ(notJson.error().rfind("h.json: not JSON", 0), 0u);
+  // Any 1.x quantized mesh, as CesiumJS reads it.
+  for (const char* minor : {"quantized-mesh-1.0", "quantized-mesh-1.1"}) {
+    auto layer = parseTerrainLayerJson(
+        std::string(R"({"tiles":["t"],"format":")") + minor + R"("})", "q.json");
+    ASSERT_TRUE(layer) << minor << ": " << layer.error();
+    EXPECT_EQ(layer->format, TerrainLayerJson::Format::QuantizedMesh);
+  }
+  auto two = parseTerrainLayerJson(R"({"tiles":["t"],"format":"quantized-mesh-2.0"})", "2.json");
+  EXPECT_FALSE(two);
   auto format = parseTerrainLayerJson(R"({"tiles":["t"],"format":"pbf"})", "f.json");
   ASSERT_FALSE(format);
   EXPECT_NE(format.error().find("format \"pbf\""), std::string::npos);

@@ -79,7 +79,8 @@ TEST(PathFiles, KmlLinesAndBadFilesNamed) {
   EXPECT_TRUE(std::isnan((*kml)[2].elevationMeters));
   const std::pair<const char*, const char*> bad[] = {
       {"<gpx><wpt lat=\"1\" lon=\"2\"/></gpx>", "no line"},
-      {"<gpx><trk><trkseg><trkpt lat=\"1\"/></trkseg></trk></gpx>", "without lat and lon"},
+      {"<gpx><trk><trkseg><trkpt lat=\"1\"/><trkpt lat=\"2\" lon=\"3\"/></trkseg></trk></gpx>",
+       "without lat and lon"},
       {"<kml><LineString><coordinates>1;2 3,4</coordinates></LineString></kml>", "coordinate"},
       {"<svg/>", "neither GPX nor KML"},
       {"<gpx><trk>", "not XML"},
@@ -94,6 +95,47 @@ TEST(PathFiles, KmlLinesAndBadFilesNamed) {
     EXPECT_NE(read.error().find(says), std::string::npos) << read.error();
   }
   EXPECT_FALSE(readPathFile(dir / "missing.gpx"));
+}
+
+// Devices write empty or one-point tracks before the one that matters, and 1e308 or NaN where
+// they had no elevation: the first line of two points, the elevations read as not given.
+TEST(PathFiles, GpxEmptyAndOnePointTracksAndImpossibleElevations) {
+  const fs::path dir = globe::testing::freshTempDir("measure-gpx-cases");
+  const struct {
+    const char* body;
+    double firstLatitude;
+    size_t points;
+  } cases[] = {
+      {"<trk><name>empty</name></trk><trk><trkseg><trkpt lat=\"1\" lon=\"2\"/>"
+       "<trkpt lat=\"1.1\" lon=\"2\"/></trkseg></trk>",
+       1.0, 2},
+      {"<trk><trkseg><trkpt lat=\"9\" lon=\"9\"/></trkseg></trk>"
+       "<rte><rtept lat=\"3\" lon=\"4\"/><rtept lat=\"3.1\" lon=\"4\"/>"
+       "<rtept lat=\"3.2\" lon=\"4\"/></rte>",
+       3.0, 3},
+  };
+  for (const auto& c : cases) {
+    std::ofstream(dir / "t.gpx") << "<gpx version=\"1.1\">" << c.body << "</gpx>";
+    auto line = readPathFile(dir / "t.gpx");
+    ASSERT_TRUE(line) << c.body << ": " << line.error();
+    ASSERT_EQ(line->size(), c.points) << c.body;
+    EXPECT_EQ(line->front().latitudeDegrees, c.firstLatitude) << c.body;
+  }
+  std::ofstream(dir / "ele.gpx")
+      << "<gpx><trk><trkseg><trkpt lat=\"1\" lon=\"2\"><ele>1e308</ele></trkpt>"
+         "<trkpt lat=\"1.1\" lon=\"2\"><ele>NaN</ele></trkpt>"
+         "<trkpt lat=\"1.2\" lon=\"2\"><ele>-1e9</ele></trkpt>"
+         "<trkpt lat=\"1.3\" lon=\"2\"><ele>812.5</ele></trkpt></trkseg></trk></gpx>";
+  std::vector<std::string> warnings;
+  auto line = readPathFile(dir / "ele.gpx", [&](const std::string& w) { warnings.push_back(w); });
+  ASSERT_TRUE(line) << line.error();
+  ASSERT_EQ(line->size(), 4u);
+  for (size_t k = 0; k < 3; ++k) EXPECT_TRUE(std::isnan((*line)[k].elevationMeters)) << k;
+  EXPECT_EQ((*line)[3].elevationMeters, 812.5);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("ele.gpx: 2 of 4 elevations outside -12000..100000 m"),
+            std::string::npos)
+      << warnings[0];
 }
 
 TEST(Geodesics, KnownLengthsAndAreas) {

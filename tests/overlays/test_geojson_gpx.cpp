@@ -190,6 +190,36 @@ TEST(GeoJsonCases, ErrorsNameTheFileAndTheFeature) {
       << document.error();
 }
 
+// One bad feature among good ones is left out with a warning naming it, as GDAL reads the other
+// 26 of such a file; many are listed five at a time.
+TEST(GeoJsonCases, ABadFeatureIsLeftOutAndTheOthersRead) {
+  ScratchFolder scratch;
+  auto point = [](int k, const std::string& coordinates) {
+    return R"({"type": "Feature", "properties": {"name": "P)" + std::to_string(k) +
+           R"("}, "geometry": {"type": "Point", "coordinates": )" + coordinates + "}}";
+  };
+  std::string json = R"({"type": "FeatureCollection", "features": [)";
+  for (int k = 1; k <= 27; ++k) {
+    json += (k > 1 ? "," : "") + point(k, k == 14 ? "[139.7, 135.7]" : "[139.7, 35.7]");
+  }
+  const auto file = scratch.write("one-bad.geojson", json + "]}");
+  auto document = readOverlayFile(file);
+  ASSERT_TRUE(document) << document.error();
+  EXPECT_EQ(document->placemarks.size(), 26u);
+  ASSERT_EQ(document->warnings.size(), 1u);
+  EXPECT_EQ(document->warnings[0], file.string() +
+                                       R"(: feature 14 "P14": position [139.7,135.7]: latitude )"
+                                       R"(135.7 is outside -90..90; feature left out)");
+  json = R"({"type": "FeatureCollection", "features": [)" + point(1, "[1, 2]");
+  for (int k = 2; k <= 9; ++k) json += "," + point(k, R"(["x", 2])");
+  document = readOverlayFile(scratch.write("many-bad.geojson", json + "]}"));
+  ASSERT_TRUE(document) << document.error();
+  EXPECT_EQ(document->placemarks.size(), 1u);
+  ASSERT_EQ(document->warnings.size(), 6u);
+  EXPECT_NE(document->warnings[5].find(": 3 more features left out"), std::string::npos)
+      << document->warnings[5];
+}
+
 TEST(GpxCases, Gpx11RoutesSegmentsAndErrors) {
   ScratchFolder scratch;
   const auto file = scratch.write("walk.gpx", R"(<?xml version="1.0"?>
@@ -230,6 +260,19 @@ TEST(GpxCases, Gpx11RoutesSegmentsAndErrors) {
   ASSERT_FALSE(document);
   EXPECT_EQ(document.error(),
             bad.string() + ": line 3: a <trkpt>'s latitude 95 is outside -90..90");
+  // 1e308 and NaN where a device had no elevation: read as not given, with one warning.
+  const auto ele = scratch.write("ele.gpx",
+                                 "<gpx><trk><trkseg><trkpt lat=\"1\" lon=\"2\"><ele>1e308</ele>"
+                                 "</trkpt><trkpt lat=\"1.1\" lon=\"2\"><ele>NaN</ele></trkpt>"
+                                 "</trkseg></trk></gpx>");
+  document = readOverlayFile(ele);
+  ASSERT_TRUE(document) << document.error();
+  ASSERT_EQ(document->placemarks.size(), 1u);
+  EXPECT_EQ(document->placemarks[0].geometries.at(0).rings.at(0).at(0).heightMeters, 0.0);
+  ASSERT_EQ(document->warnings.size(), 1u);
+  EXPECT_EQ(document->warnings[0], ele.string() +
+                                       ": 2 elevations outside -12000..100000 m or "
+                                       "not numbers, read as not given");
   const auto noLat = scratch.write("nolat.gpx", "<gpx><wpt lon=\"1\"/></gpx>");
   document = readOverlayFile(noLat);
   ASSERT_FALSE(document);

@@ -177,6 +177,29 @@ TEST(KmlCases, GeometriesTracksAndAltitudeModes) {
   EXPECT_EQ(tracks->geometries[1].altitudeMode, AltitudeMode::RelativeToGround);
 }
 
+// MultiPolygon, MultiLineString and MultiPoint, which are not KML but which tools write and GDAL
+// reads (GDAL's non_conformant_multi.kml, issue 4031): read as MultiGeometry.
+TEST(KmlCases, NonConformantMultiElementsAreReadAsGdalReadsThem) {
+  ScratchFolder scratch;
+  const auto file = scratch.write("multi.kml", kml(R"(
+    <Placemark><name>area</name><MultiPolygon><Polygon><outerBoundaryIs><LinearRing>
+      <coordinates>0,0 0,1 1,1 1,0 0,0</coordinates></LinearRing></outerBoundaryIs></Polygon>
+    </MultiPolygon></Placemark>
+    <Placemark><name>line</name><MultiLineString><LineString><coordinates>0,0 1,1</coordinates>
+    </LineString></MultiLineString></Placemark>
+    <Placemark><name>point</name><MultiPoint><Point><coordinates>0,0</coordinates></Point>
+    </MultiPoint></Placemark>)"));
+  auto document = readOverlayFile(file);
+  ASSERT_TRUE(document) << document.error();
+  ASSERT_EQ(document->placemarks.size(), 3u);
+  const GeometryKind kinds[] = {GeometryKind::Polygon, GeometryKind::LineString,
+                                GeometryKind::Point};
+  for (size_t k = 0; k < 3; ++k) {
+    ASSERT_EQ(document->placemarks[k].geometries.size(), 1u) << document->placemarks[k].name;
+    EXPECT_EQ(document->placemarks[k].geometries[0].kind, kinds[k]) << document->placemarks[k].name;
+  }
+}
+
 TEST(KmlCases, CoordinatesToleratedWhitespaceAndTheAntimeridian) {
   ScratchFolder scratch;
   const auto file = scratch.write(

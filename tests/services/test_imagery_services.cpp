@@ -270,6 +270,21 @@ TEST_F(ImageryServices, WmtsRestfulTemplateReadsTheSameTilesAsXyz) {
     ++compared;
   }
   EXPECT_GE(compared, 5u);
+  // The same document as MapServer writes an 8-bit PNG's format ("image/png; mode=8bit", both in
+  // <Format> and in the template's format): the same tiles.
+  std::string eightBit = xml;
+  for (size_t at = 0; (at = eightBit.find("image/png", at)) != std::string::npos; at += 20)
+    eightBit.replace(at, 9, "image/png; mode=8bit");
+  std::ofstream(dir / "caps-8bit.xml") << eightBit;
+  auto paletted = globe::services::openImageryTiles(
+      "wmts:" + (dir / "caps-8bit.xml").string() + "?layer=terrain-rgb", network);
+  ASSERT_TRUE(paletted) << paletted.error();
+  const auto summit = globe::geo::GeographicTilingScheme::positionToTile(
+      120.9572 * kPiImagery / 180, 23.47 * kPiImagery / 180, 9);
+  auto viaPaletted = (*paletted)->loadImage(*summit);
+  auto viaPlain = (*wmts)->loadImage(*summit);
+  ASSERT_TRUE(viaPaletted && viaPlain && *viaPaletted && *viaPlain);
+  EXPECT_EQ((*viaPaletted)->pixels, (*viaPlain)->pixels);
   auto unnamed = globe::services::openImageryTiles("wmts:" + (dir / "caps.xml").string(), network);
   ASSERT_FALSE(unnamed);
   EXPECT_NE(unnamed.error().find("name a layer with ?layer=NAME; it has terrain-rgb"),
