@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "geo/elevation_limits.hpp"
 #include "transport/atomic_file.hpp"
 
 namespace globe::measure {
@@ -157,16 +158,14 @@ Result<std::vector<PathPoint>> geoJsonLine(const nlohmann::json& json, const std
   return std::vector<PathPoint>();
 }
 
-// Elevations no path on or above the Earth has (below the deepest trench, above 100 km) or that
-// are not finite are read as not given: files carry 1e308 or NaN where a device had none.
+// Elevations no path has (geo/elevation_limits.hpp) are read as not given, with one warning.
 void dropImpossibleElevations(std::vector<PathPoint>& line, const std::string& where,
                               const core::WarningSink& warnings) {
-  constexpr double kLowestMeters = -12'000, kHighestMeters = 100'000;
   size_t dropped = 0;
   std::string first;
   for (size_t k = 0; k < line.size(); ++k) {
     double& e = line[k].elevationMeters;
-    if (std::isnan(e) || (e >= kLowestMeters && e <= kHighestMeters)) continue;
+    if (std::isnan(e) || geo::isPossibleElevationMeters(e)) continue;
     if (dropped++ == 0) first = std::to_string(e) + " at point " + std::to_string(k + 1);
     e = std::numeric_limits<double>::quiet_NaN();
   }

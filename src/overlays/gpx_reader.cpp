@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "geo/elevation_limits.hpp"
 #include "overlays/overlay_budget.hpp"
 #include "overlays/positions.hpp"
 #include "overlays/xml_elements.hpp"
@@ -44,8 +45,6 @@ class GpxReader {
   }
 
  private:
-  static constexpr double kLowestElevationMeters = -12'000, kHighestElevationMeters = 100'000;
-
   Result<Position> point(const XMLElement& e) {
     Position p;
     const auto lat = parseNumber(e.Attribute("lat") != nullptr ? e.Attribute("lat") : "");
@@ -59,7 +58,7 @@ class GpxReader {
     // An elevation no track has (1e308, NaN: written where a device had none) is not given;
     // GPX is drawn on the ground, so it only keeps the file from being read.
     if (auto ele = parseNumber(childText(e, "ele").value_or(""))) {
-      if (*ele >= kLowestElevationMeters && *ele <= kHighestElevationMeters) {
+      if (geo::isPossibleElevationMeters(*ele)) {
         p.heightMeters = *ele;
       } else {
         ++impossibleElevations_;
