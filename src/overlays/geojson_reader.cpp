@@ -161,20 +161,12 @@ class GeoJsonReader {
   }
 
  private:
-  // What is wrong with one feature, which the others do not share.
-  struct FeatureProblem {
-    std::string message;
-  };
-  using FeatureRead = Result<std::optional<FeatureProblem>>;
-  static FeatureRead featureProblem(std::string message) {
-    return std::optional<FeatureProblem>(FeatureProblem{std::move(message)});
-  }
-  static FeatureRead readWell() { return std::optional<FeatureProblem>(); }
-
-  FeatureRead readFeature(const json& feature, size_t index) {
+  // Reads one feature. What is wrong with it alone (not the budget's errors) is noted in
+  // problems_ and leaves it out.
+  Result<void> readFeature(const json& feature, size_t index) {
     std::string what = "feature " + std::to_string(index + 1);
     if (!feature.is_object() || feature.value("type", json()) != "Feature") {
-      return featureProblem(where_ + ": " + what + " is not a Feature object");
+      return leaveOut(where_ + ": " + what + " is not a Feature object");
     }
     static const json kNone;
     const auto properties = feature.find("properties");
@@ -184,22 +176,24 @@ class GeoJsonReader {
     placemark.description = stringProperty(props, {"description"});
     if (!placemark.name.empty()) what += " \"" + placemark.name.substr(0, 80) + "\"";
     const auto geometry = feature.find("geometry");
-    if (geometry == feature.end() || geometry->is_null()) return readWell();
+    if (geometry == feature.end() || geometry->is_null()) return {};
     if (auto read = readGeometry(*geometry, what, 0, placemark.geometries); !read) {
-      return featureProblem(read.error());
+      return leaveOut(read.error());
     }
-    if (placemark.geometries.empty()) return readWell();
+    if (placemark.geometries.empty()) return {};
     placemark.style = simplestyle(props);
-    if (auto kept = budget_.append(std::move(placemark), document_); !kept)
-      return Error{kept.error()};
-    return readWell();
+    return budget_.append(std::move(placemark), document_);
+  }
+
+  Result<void> leaveOut(std::string problem) {
+    problems_.push_back(std::move(problem));
+    return {};
   }
 
   // A lone Feature: its problem is the file's.
   Result<void> readLoneFeature(const json& feature) {
-    auto read = readFeature(feature, 0);
-    if (!read) return Error{read.error()};
-    if (*read) return makeError((*read)->message);
+    if (auto read = readFeature(feature, 0); !read) return read;
+    if (!problems_.empty()) return makeError(problems_.front());
     return {};
   }
 
@@ -207,19 +201,16 @@ class GeoJsonReader {
   // OpenLayers read the rest; the budget's errors end the reading; nothing readable at all is the
   // first problem's error.
   Result<void> readFeatures(const json& features) {
-    std::vector<std::string> problems;
     for (size_t i = 0; i < features.size(); ++i) {
-      auto feature = readFeature(features[i], i);
-      if (!feature) return Error{feature.error()};
-      if (*feature) problems.push_back(std::move((*feature)->message));
+      if (auto feature = readFeature(features[i], i); !feature) return feature;
     }
-    if (problems.empty()) return {};
-    if (document_.placemarks.empty()) return makeError(problems.front());
+    if (problems_.empty()) return {};
+    if (document_.placemarks.empty()) return makeError(problems_.front());
     constexpr size_t kListed = 5;
-    for (size_t k = 0; k < std::min(problems.size(), kListed); ++k)
-      document_.warnings.push_back(problems[k] + "; feature left out");
-    if (problems.size() > kListed) {
-      document_.warnings.push_back(where_ + ": " + std::to_string(problems.size() - kListed) +
+    for (size_t k = 0; k < std::min(problems_.size(), kListed); ++k)
+      document_.warnings.push_back(problems_[k] + "; feature left out");
+    if (problems_.size() > kListed) {
+      document_.warnings.push_back(where_ + ": " + std::to_string(problems_.size() - kListed) +
                                    " more features left out for the same kinds of problem");
     }
     return {};
@@ -345,6 +336,7 @@ class GeoJsonReader {
   std::string where_;
   OverlayDocument document_;
   OverlayBudget budget_{where_};
+  std::vector<std::string> problems_;  // the features left out, each with why
 };
 
 }  // namespace
