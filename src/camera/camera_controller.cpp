@@ -16,6 +16,15 @@
 namespace globe::camera {
 namespace {
 
+// The responses accept a camera up to the contact skin below the clearance they are given (so a
+// camera placed at it does not collide again at once). Asked for the eye clearances plus the
+// skin, they never leave the eye nearer the surface than the settings say.
+collision::ClearanceSettings responseClearance(collision::ClearanceSettings clearance) {
+  clearance.eyeMeters += collision::kContactSkinMeters;
+  clearance.minimumEyeMeters += collision::kContactSkinMeters;
+  return clearance;
+}
+
 bool isFinite(const glm::dvec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
@@ -120,7 +129,7 @@ const CollisionState& CameraController::update(double dtSeconds,
   CollisionState state;
   state.inputRejected = rejected_;
   rejected_ = false;
-  const collision::ClearanceSettings& clearance = settings_.clearance;
+  const collision::ClearanceSettings clearance = responseClearance(settings_.clearance);
   const collision::SurfaceModel model = settings_.response.surface;
   if (!(std::isfinite(dtSeconds) && dtSeconds >= 0.0)) {
     state.inputRejected = true;
@@ -209,7 +218,7 @@ void CameraController::moveBy(const Move& move, double dtSeconds,
     const glm::dvec3 motion =
         geo::cartographicToEcef(ellipsoid, to) - geo::cartographicToEcef(ellipsoid, from);
     const GlideResult glide = glide_.update(array, ellipsoid, to, motion, move.ahead, dtSeconds,
-                                            settings_.clearance.eyeMeters);
+                                            responseClearance(settings_.clearance).eyeMeters);
     to.heightMeters += glide.liftMeters;
     state.glideLiftMeters = glide.liftMeters;
     state.surfaceProbes += glide.samples;
@@ -238,7 +247,8 @@ void CameraController::moveBy(const Move& move, double dtSeconds,
       break;
     default:
       // A jump is tested at the full eye clearance: it does not continue a raise.
-      result = collision::respondStatic(array, ellipsoid, from, to, settings_.clearance.eyeMeters,
+      result = collision::respondStatic(array, ellipsoid, from, to,
+                                        responseClearance(settings_.clearance).eyeMeters,
                                         settings_.response);
       break;
   }

@@ -20,7 +20,7 @@
 namespace globe::camera {
 
 struct ControllerSettings {
-  collision::ClearanceSettings clearance;  // 2 m eye, 1 m floor, 0.5 m near-plane corners
+  collision::ClearanceSettings clearance;  // 2 m eye and floor, 0.5 m near-plane corners
   collision::ResponseSettings response;    // exact surface, swept tests, 4 slide contacts
   NearPlane nearPlane;                     // the renderer's near plane; its corners are checked
   bool nearPlaneCheck = true;

@@ -66,8 +66,10 @@ void raiseAt(const Spot& spot, bool nearPlaneCheck) {
 
   const double surface =
       testing::drawnHeight(fine, pose.position.longitudeRadians, pose.position.latitudeRadians);
-  const double floor = surface + c.minimumEyeMeters;
-  const double desired = surface + c.eyeMeters;
+  // The controller places the eye the contact skin above each clearance, so it never rests
+  // nearer the surface than the setting (camera_controller.cpp, responseClearance).
+  const double floor = surface + (c.minimumEyeMeters + collision::kContactSkinMeters);
+  const double desired = surface + (c.eyeMeters + collision::kContactSkinMeters);
   double previous = pose.position.heightMeters;
   int reachedAt = -1;
   double largestStep = 0.0;
@@ -143,8 +145,8 @@ TEST(NewTerrainRaise, TurningOrMovingDuringTheRaiseNeitherSkipsNorUndoesIt) {
     EXPECT_GE(turning.pose().position.heightMeters, previous);
     previous = turning.pose().position.heightMeters;
   }
-  EXPECT_NEAR(turning.state().clearanceMeters, eye, 1e-9);
-  // Moving level at 1 m/s: never below the floor, the desired clearance (less the skin) reached.
+  EXPECT_NEAR(turning.state().clearanceMeters, eye + collision::kContactSkinMeters, 1e-9);
+  // Moving level at 1 m/s: never below the floor, the desired clearance reached.
   CameraController moving(pose, settings);
   moving.update(kDt, testing::fujiArray(10), kWgs84);
   ASSERT_TRUE(moving.setVelocity(testing::direction(pose.position, 0.3, 0.0)));
@@ -153,14 +155,14 @@ TEST(NewTerrainRaise, TurningOrMovingDuringTheRaiseNeitherSkipsNorUndoesIt) {
   for (int frame = 1; frame <= 90; ++frame) {
     const CollisionState& state = moving.update(kDt, fine, kWgs84);
     lowest = std::min(lowest, state.clearanceMeters);
-    if (reached < 0 && state.clearanceMeters >= eye - collision::kContactSkinMeters) {
+    if (reached < 0 && state.clearanceMeters >= eye - 1e-9) {
       reached = frame;
     }
     if (reached > 0) {
-      EXPECT_GE(state.clearanceMeters, eye - collision::kContactSkinMeters);
+      EXPECT_GE(state.clearanceMeters, eye - 1e-9);
     }
   }
-  EXPECT_GE(lowest, minimum - collision::kContactSkinMeters);
+  EXPECT_GE(lowest, minimum - 1e-9);
   EXPECT_GT(reached, 3);
   EXPECT_LE(reached, 60);
 }
