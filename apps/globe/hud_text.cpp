@@ -81,6 +81,7 @@ std::vector<std::string> hudStatusLines(const HudState& s, bool withFrameTime) {
   if (!s.network.empty()) lines.push_back("network: " + s.network);
   if (!s.warning.empty()) lines.push_back("! " + s.warning);
   std::string tiles = format("tiles %zu drawn, %zu loading", s.tilesDrawn, s.tilesLoading);
+  if (s.tilesMissing > 0) tiles += format(", %zu FAILED (drawn coarser)", s.tilesMissing);
   if (withFrameTime && s.frameMilliseconds > 0) {
     tiles += format("  frame %.1f ms (%.0f fps)", s.frameMilliseconds, 1000 / s.frameMilliseconds);
   }

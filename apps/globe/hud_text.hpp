@@ -22,6 +22,7 @@ struct HudState {
   camera::CollisionState collision;  // the controller's last update
   size_t tilesDrawn = 0;
   size_t tilesLoading = 0;             // wanted by the view and not resident yet
+  size_t tilesMissing = 0;             // wanted by the view, failed to load: drawn coarser
   double frameMilliseconds = 0;        // the last frame drawn; 0: not known yet
   double flySpeedMetersPerSecond = 0;  // shown in fly mode
   double speedFactor = 1;              // the scroll-wheel factor, shown in fly mode

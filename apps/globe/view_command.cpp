@@ -536,6 +536,7 @@ Result<ViewReport> runView(const ViewOptions& options) {
       hudState.collision = collisionState;
       hudState.tilesDrawn = (*scene)->tiles().size();
       hudState.tilesLoading = info.requests;
+      hudState.tilesMissing = info.missingTiles;
       hudState.flySpeedMetersPerSecond = navigator.flySpeedMetersPerSecond();
       hudState.speedFactor = navigator.speed().factor();
       hudState.recording = recorder.recording();

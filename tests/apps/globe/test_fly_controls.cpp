@@ -395,6 +395,13 @@ TEST(HudText, StatusShowsPositionTerrainCollisionTilesAndMode) {
   state.frameMilliseconds = 35;
   EXPECT_EQ(globe::app::hudStatusLines(state, false), key);
   EXPECT_NE(globe::app::hudStatusLines(state), lines);
+  // Tiles the view wanted that failed (a damaged pack, an undecodable tile) are said, not hidden.
+  EXPECT_EQ(text.find("FAILED"), std::string::npos) << text;
+  state.tilesMissing = 3;
+  std::string failed;
+  for (const auto& line : globe::app::hudStatusLines(state)) failed += line + "\n";
+  EXPECT_NE(failed.find("tiles 123 drawn, 4 loading, 3 FAILED (drawn coarser)"), std::string::npos)
+      << failed;
   // Orbit mode, no collision, nothing loading, no terrain under the camera.
   globe::app::HudState orbit;
   orbit.pose = CameraPose::fromDegrees(0, 20, 2e7);
