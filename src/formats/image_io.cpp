@@ -11,6 +11,7 @@
 #include <limits>
 #include <string>
 
+#include "formats/avif_image.hpp"
 #include "formats/png_encoder.hpp"
 #include "formats/tile_edges.hpp"
 #include "transport/atomic_file.hpp"
@@ -71,6 +72,7 @@ Result<ImageRgba> decodeImageRgba(std::span<const std::byte> bytes, const std::s
     return makeError(name + ": image too large");
   }
   if (isWebp(bytes)) return decodeWebp(bytes, name);
+  if (isAvif(bytes)) return decodeAvif(bytes, name);
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int size = static_cast<int>(bytes.size());
   int width = 0, height = 0, channels = 0;

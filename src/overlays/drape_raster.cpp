@@ -4,8 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <vector>
 
 #include "geo/tiling_scheme.hpp"
+#include "overlays/drape_index.hpp"
 
 namespace globe::overlays {
 namespace {
@@ -104,6 +108,23 @@ DegreesBox shifted(const DegreesBox& box, double shift) {
 
 constexpr double kShifts[] = {0.0, -360.0, 360.0};
 
+// The shapes that may show within `reach` at any of kShifts, in drawing order (ascending).
+std::vector<uint32_t> shapesNear(const DrapeSet& set, const DegreesBox& reach) {
+  std::vector<uint32_t> near;
+  if (!set.shapeIndex) {
+    near.resize(set.shapes.size());
+    std::iota(near.begin(), near.end(), 0u);
+    return near;
+  }
+  for (const double shift : kShifts) {
+    const std::vector<uint32_t> part = set.shapeIndex->near(shifted(reach, -shift));
+    near.insert(near.end(), part.begin(), part.end());
+  }
+  std::sort(near.begin(), near.end());
+  near.erase(std::unique(near.begin(), near.end()), near.end());
+  return near;
+}
+
 }  // namespace
 
 DegreesBox tileReach(const geo::TileId& tile, int tileSizePixels, double maxLineWidthPixels) {
@@ -121,10 +142,12 @@ bool touchesTile(const DrapeSet& set, const geo::TileId& tile, int tileSizePixel
   bool anyShift = false;
   for (const double shift : kShifts) anyShift |= shifted(set.bounds, shift).intersects(reach);
   if (!anyShift) return false;
-  for (const double shift : kShifts) {
-    for (const DrapedShape& shape : set.shapes) {
-      if (shifted(shape.box, shift).intersects(reach)) return true;
+  for (const uint32_t i : shapesNear(set, reach)) {
+    for (const double shift : kShifts) {
+      if (shifted(set.shapes[i].box, shift).intersects(reach)) return true;
     }
+  }
+  for (const double shift : kShifts) {
     for (const DrapedImage& image : set.images) {
       if (shifted(image.box, shift).intersects(reach)) return true;
     }
@@ -150,8 +173,9 @@ formats::ImageRgba drawTile(const DrapeSet& set, const geo::TileId& tile, int ti
       if (shifted(image.box, shift).intersects(reach)) drawImage(cairo, frame, image, shift);
     }
   }
-  for (const DrapedShape& shape : set.shapes) {
+  for (const uint32_t i : shapesNear(set, reach)) {
     for (const double shift : kShifts) {
+      const DrapedShape& shape = set.shapes[i];
       if (shifted(shape.box, shift).intersects(reach)) drawShape(cairo, frame, shape, shift);
     }
   }

@@ -1,5 +1,7 @@
 #include "overlays/drape_set.hpp"
 
+#include "overlays/drape_index.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -135,6 +137,7 @@ DrapeSet makeDrapeSet(std::span<const std::shared_ptr<const OverlayDocument>> do
                    [](const auto& a, const auto& b) { return a.first < b.first; });
   for (auto& [order, image] : images) set.images.push_back(std::move(image));
   if (set.empty()) set.bounds = {};
+  if (!set.shapes.empty()) set.shapeIndex = std::make_shared<const DrapeIndex>(set.shapes);
   return set;
 }
 

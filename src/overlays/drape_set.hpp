@@ -40,11 +40,14 @@ struct DrapedImage {
   DegreesBox box;  // of the rotated image
 };
 
+class DrapeIndex;  // drape_index.hpp
+
 struct DrapeSet {
-  std::vector<DrapedShape> shapes;  // in drawing order: polygons first, then lines
-  std::vector<DrapedImage> images;  // by drawOrder, drawn under the shapes
-  DegreesBox bounds;                // of everything (may run past ±180°)
-  double widestLinePixels = 1;      // how far any line spills past a tile's edge, doubled
+  std::vector<DrapedShape> shapes;               // in drawing order: polygons first, then lines
+  std::shared_ptr<const DrapeIndex> shapeIndex;  // over `shapes` (none: every shape is looked at)
+  std::vector<DrapedImage> images;               // by drawOrder, drawn under the shapes
+  DegreesBox bounds;                             // of everything (may run past ±180°)
+  double widestLinePixels = 1;  // how far any line spills past a tile's edge, doubled
   bool empty() const { return shapes.empty() && images.empty(); }
 };
 

@@ -6,7 +6,7 @@
 //   tms:URL          an OSGeo TMS tilemapresource.xml, or its folder
 //   wmts:URL?layer=NAME[&tilematrixset=ID&style=S&time=T]   a WMTS GetCapabilities document (KVP or
 //                    RESTful)
-//   pmtiles:URL      a PMTiles v3 archive of PNG, JPEG or WebP tiles, read by range
+//   pmtiles:URL      a PMTiles v3 archive of PNG, JPEG, WebP or AVIF tiles, read by range
 #pragma once
 
 #include <memory>

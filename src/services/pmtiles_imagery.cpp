@@ -1,6 +1,5 @@
 #include "services/pmtiles_imagery.hpp"
 
-
 #include <nlohmann/json.hpp>
 
 #include "formats/gzip_bytes.hpp"
@@ -21,8 +20,6 @@ std::string tileTypeName(formats::PmtilesTileType type) {
   switch (type) {
     case formats::PmtilesTileType::Mvt:
       return "Mapbox vector tiles, not imagery";
-    case formats::PmtilesTileType::Avif:
-      return "AVIF images, which this build does not decode";
     default:
       return "of unknown type " + std::to_string(static_cast<int>(type));
   }
@@ -145,9 +142,10 @@ Result<std::unique_ptr<ServiceImagery>> openPmtilesImagery(
   if (!header) return Error{header.error()};
   if (header->tileType != formats::PmtilesTileType::Png &&
       header->tileType != formats::PmtilesTileType::Jpeg &&
-      header->tileType != formats::PmtilesTileType::Webp) {
+      header->tileType != formats::PmtilesTileType::Webp &&
+      header->tileType != formats::PmtilesTileType::Avif) {
     return makeError(location + ": its tiles are " + tileTypeName(header->tileType) +
-                     "; imagery is read from PNG, JPEG or WebP tiles");
+                     "; imagery is read from PNG, JPEG, WebP or AVIF tiles");
   }
   if (!supported(header->internalCompression) || !supported(header->tileCompression)) {
     return makeError(location + ": compressed with other than gzip (brotli and zstd are not read)");

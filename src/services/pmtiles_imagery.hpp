@@ -1,4 +1,4 @@
-// A PMTiles v3 archive of PNG, JPEG or WebP tiles (Web Mercator) as an imagery layer, read by
+// A PMTiles v3 archive of PNG, JPEG, WebP or AVIF tiles (Web Mercator) as an imagery layer, read by
 // range requests through the program's Network (and its disk cache), or from a local file.
 #pragma once
 

@@ -19,7 +19,8 @@
 namespace globe::services {
 
 // What an imagery service's tiles may be.
-inline constexpr const char* kImageAccept = "image/png,image/jpeg,image/webp;q=0.9,*/*;q=0.5";
+inline constexpr const char* kImageAccept =
+    "image/png,image/jpeg,image/webp;q=0.9,image/avif;q=0.8,*/*;q=0.5";
 
 class UrlReader {
  public:

@@ -33,7 +33,8 @@ bool isDecodableImageFormat(const std::string& format) {
   type.erase(std::remove(type.begin(), type.end(), ' '), type.end());
   std::transform(type.begin(), type.end(), type.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  static constexpr const char* kTypes[] = {"image/png", "image/jpeg", "image/jpg", "image/webp"};
+  static constexpr const char* kTypes[] = {"image/png", "image/jpeg", "image/jpg", "image/webp",
+                                           "image/avif"};
   return std::find(std::begin(kTypes), std::end(kTypes), type) != std::end(kTypes);
 }
 
@@ -96,7 +97,7 @@ Result<std::unique_ptr<ServiceImagery>> openWmtsImagery(
         break;
       }
   }
-  if (format.empty()) return problem("none of its formats is PNG, JPEG or WebP");
+  if (format.empty()) return problem("none of its formats is PNG, JPEG, WebP or AVIF");
   const TileMatrixSet tiling = caps->tileMatrixSets.at(setId);
   std::string restful;
   if (auto t = layer->tileTemplates.find(format); t != layer->tileTemplates.end()) {
