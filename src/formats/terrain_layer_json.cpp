@@ -1,7 +1,11 @@
 #include "formats/terrain_layer_json.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 namespace globe::formats {
 namespace {
@@ -12,6 +16,35 @@ constexpr uint32_t kMaxServiceLevel = 30;
 std::string stringOr(const nlohmann::json& j, const char* key, std::string fallback) {
   auto it = j.find(key);
   return it != j.end() && it->is_string() ? it->get<std::string>() : fallback;
+}
+
+// A whole number in 0..2^32-1 (a float only when whole, as JavaScript writes numbers). nlohmann's
+// get<uint32_t> converts 5e66 to an integer with undefined behaviour (found by fuzzing).
+std::optional<uint32_t> asUnsigned32(const nlohmann::json& value) {
+  constexpr double kMax = std::numeric_limits<uint32_t>::max();
+  if (value.is_number_unsigned()) {
+    const auto v = value.get<uint64_t>();
+    return v <= std::numeric_limits<uint32_t>::max() ? std::optional(static_cast<uint32_t>(v))
+                                                     : std::nullopt;
+  }
+  if (value.is_number_float()) {
+    const double d = value.get<double>();
+    if (d >= 0.0 && d <= kMax && d == std::floor(d)) return static_cast<uint32_t>(d);
+  }
+  return std::nullopt;  // negative, fractional, out of range, not a number
+}
+
+// object[key] as asUnsigned32; `fallback` when absent (nullopt: the key is required).
+Result<uint32_t> unsignedAt(const nlohmann::json& object, const char* key,
+                            std::optional<uint32_t> fallback, const std::string& name) {
+  const auto it = object.is_object() ? object.find(key) : object.end();
+  if (!object.is_object() || it == object.end()) {
+    if (fallback) return *fallback;
+    return makeError(name + ": \"" + key + "\" missing");
+  }
+  if (const auto v = asUnsigned32(*it)) return *v;
+  return makeError(name + ": \"" + key + "\" is not a whole number in 0..4294967295 (" +
+                   it->dump().substr(0, 40) + ")");
 }
 
 }  // namespace
@@ -58,11 +91,15 @@ Result<TerrainLayerJson> parseTerrainLayerJson(std::string_view text, const std:
       for (const auto& s : *e)
         if (s.is_string()) layer.extensions.push_back(s.get<std::string>());
     }
-    if (auto m = j.find("metadataAvailability"); m != j.end() && m->is_number_unsigned()) {
-      layer.metadataAvailability = m->get<uint32_t>();
+    auto metadata = unsignedAt(j, "metadataAvailability", 0u, name);
+    auto minZoom = unsignedAt(j, "minzoom", 0u, name);
+    auto maxZoom = unsignedAt(j, "maxzoom", 0u, name);
+    for (const auto* field : {&metadata, &minZoom, &maxZoom}) {
+      if (!*field) return Error{field->error()};
     }
-    layer.minZoom = j.value("minzoom", 0u);
-    layer.maxZoom = j.value("maxzoom", 0u);
+    layer.metadataAvailability = *metadata;
+    layer.minZoom = *minZoom;
+    layer.maxZoom = *maxZoom;
     if (auto a = j.find("available"); a != j.end() && a->is_array()) {
       if (a->size() > kMaxServiceLevel + 1) {
         return makeError(name + ": \"available\" lists " + std::to_string(a->size()) +
@@ -73,8 +110,15 @@ Result<TerrainLayerJson> parseTerrainLayerJson(std::string_view text, const std:
         const uint32_t z = static_cast<uint32_t>(layer.available.size());
         const uint64_t columns = uint64_t{2} << z, rows = uint64_t{1} << z;
         for (const auto& r : level) {
-          TileRange range{r.at("startX").get<uint32_t>(), r.at("startY").get<uint32_t>(),
-                          r.at("endX").get<uint32_t>(), r.at("endY").get<uint32_t>()};
+          uint32_t bounds[4];
+          for (const int k : {0, 1, 2, 3}) {
+            static constexpr const char* kKeys[] = {"startX", "startY", "endX", "endY"};
+            auto v = unsignedAt(r, kKeys[k], std::nullopt,
+                                name + ": level " + std::to_string(layer.available.size()));
+            if (!v) return Error{v.error()};
+            bounds[k] = *v;
+          }
+          TileRange range{bounds[0], bounds[1], bounds[2], bounds[3]};
           if (range.startX > range.endX || range.startY > range.endY || range.endX >= columns ||
               range.endY >= rows) {
             return makeError(name + ": level " + std::to_string(z) +

@@ -9,11 +9,13 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <string>
 #include <vector>
 
 #include "core/crc32.hpp"
 #include "formats/pack_format.hpp"
 #include "formats/pyramid_manifest.hpp"
+#include "formats/terrain_layer_json.hpp"
 #include "fuzz_entries.hpp"
 #include "tests/support/build_paths.hpp"
 
@@ -137,6 +139,31 @@ TEST(FuzzRegression, ManifestIntegerOutOfRangeIsAnError) {
         R"({"format": "globe-pyramid", "formatVersion": 1, "blockSize": )" + std::string(bad) + "}";
     EXPECT_FALSE(globe::formats::manifestFromJson(other, "m/manifest.json").ok()) << bad;
   }
+}
+
+// Regression: libFuzzer's "endY": 5e66 in a layer.json's "available" reached nlohmann's
+// get<uint32_t>() (UBSan: 5e+66 is outside the range of unsigned int); now a named error, as are
+// negative, fractional and huge zoom levels. Whole numbers written as floats still read.
+TEST(FuzzRegression, TerrainLayerJsonIntegerOutOfRangeIsAnError) {
+  const auto layer = [](const std::string& members) {
+    return globe::formats::parseTerrainLayerJson(R"({"tiles": ["t"], )" + members + "}", "l.json");
+  };
+  const auto huge =
+      layer(R"("available": [[{"startX": 0, "startY": 0, "endX": 1, "endY": 5e66}]])");
+  ASSERT_FALSE(huge);
+  EXPECT_NE(huge.error().find("l.json: level 0: \"endY\" is not a whole number in 0..4294967295"),
+            std::string::npos)
+      << huge.error();
+  for (const char* bad : {R"("maxzoom": -1)", R"("minzoom": 2.5)", R"("maxzoom": 4294967296)",
+                          R"("metadataAvailability": 1e300)", R"("maxzoom": "12")",
+                          R"("available": [[{"startX": 0, "startY": 0, "endX": 1}]])"}) {
+    EXPECT_FALSE(layer(bad)) << bad;
+  }
+  const auto whole = layer(R"("maxzoom": 12.0, "available": [[{"startX": 0.0, "startY": 0,
+    "endX": 1, "endY": 0}]], "metadataAvailability": 10)");
+  ASSERT_TRUE(whole) << whole.error();
+  EXPECT_EQ(whole->available.at(0).at(0).endX, 1u);
+  EXPECT_EQ(whole->metadataAvailability, 10u);
 }
 
 }  // namespace
