@@ -12,6 +12,8 @@ namespace {
 
 // Levels beyond this are refused: the quadtree stops at geo::kMaxLevel.
 constexpr uint32_t kMaxServiceLevel = 30;
+// A TileRange's members as JSON names them, in its order.
+constexpr const char* kRangeKeys[] = {"startX", "startY", "endX", "endY"};
 
 std::string stringOr(const nlohmann::json& j, const char* key, std::string fallback) {
   auto it = j.find(key);
@@ -48,6 +50,16 @@ Result<uint32_t> unsignedAt(const nlohmann::json& object, const char* key,
 }
 
 }  // namespace
+
+std::optional<TileRange> tileRangeFromJson(const nlohmann::json& range) {
+  uint32_t bounds[4];
+  for (const int k : {0, 1, 2, 3}) {
+    auto v = unsignedAt(range, kRangeKeys[k], std::nullopt, "");
+    if (!v) return std::nullopt;
+    bounds[k] = *v;
+  }
+  return TileRange{bounds[0], bounds[1], bounds[2], bounds[3]};
+}
 
 bool TerrainLayerJson::hasExtension(std::string_view name) const {
   return std::find(extensions.begin(), extensions.end(), name) != extensions.end();
@@ -112,8 +124,7 @@ Result<TerrainLayerJson> parseTerrainLayerJson(std::string_view text, const std:
         for (const auto& r : level) {
           uint32_t bounds[4];
           for (const int k : {0, 1, 2, 3}) {
-            static constexpr const char* kKeys[] = {"startX", "startY", "endX", "endY"};
-            auto v = unsignedAt(r, kKeys[k], std::nullopt,
+            auto v = unsignedAt(r, kRangeKeys[k], std::nullopt,
                                 name + ": level " + std::to_string(layer.available.size()));
             if (!v) return Error{v.error()};
             bounds[k] = *v;

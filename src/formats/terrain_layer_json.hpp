@@ -8,6 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "core/result.hpp"
 
 namespace globe::formats {
@@ -38,5 +40,9 @@ struct TerrainLayerJson {
 // Parses a layer.json; errors name `name`. Refused: a projection other than EPSG:4326 (this
 // viewer's quadtree is the geodetic TMS), a scheme other than tms, no tile template.
 Result<TerrainLayerJson> parseTerrainLayerJson(std::string_view text, const std::string& name);
+
+// {"startX", "startY", "endX", "endY"} (layer.json's "available", a tile's metadata extension) as
+// a TileRange; nullopt where a field is missing or not a whole number in 0..2^32-1.
+std::optional<TileRange> tileRangeFromJson(const nlohmann::json& range);
 
 }  // namespace globe::formats

@@ -64,10 +64,10 @@ class QuantizedMeshSource final : public ServiceTerrainSource {
     // A template with {version} names each version's tiles apart (CesiumJS's cache busting):
     // a tile cached under its URL is that version's, used without asking again. layer.json,
     // which says the version, is revalidated at every open.
-    const bool versioned = !layer_.version.empty() &&
-                           layer_.tiles[0].find("{version}") != std::string::npos;
-    auto bytes = versioned ? reader_->readImmutable(url, kMaxTileBytes)
-                           : reader_->read(url, kMaxTileBytes);
+    const bool versioned =
+        !layer_.version.empty() && layer_.tiles[0].find("{version}") != std::string::npos;
+    auto bytes =
+        versioned ? reader_->readImmutable(url, kMaxTileBytes) : reader_->read(url, kMaxTileBytes);
     if (!bytes) return Error{bytes.error()};
     if (!*bytes) return std::optional<ServiceSamples>();  // listed but absent: the parent's
     auto inflated = formats::gunzipIfNeeded(**bytes, url, kMaxInflatedTileBytes);
@@ -110,9 +110,12 @@ class QuantizedMeshSource final : public ServiceTerrainSource {
         if (level > geo::kMaxLevel) break;
         if (fromMetadata_.size() <= level) fromMetadata_.resize(level + 1);
         for (const auto& r : ranges) {
-          fromMetadata_[level].push_back(
-              {r.at("startX").get<uint32_t>(), r.at("startY").get<uint32_t>(),
-               r.at("endX").get<uint32_t>(), r.at("endY").get<uint32_t>()});
+          const auto range = formats::tileRangeFromJson(r);
+          if (!range) {
+            noteServiceError(location(tile) + ": a malformed range in its metadata (ignored)");
+            return;
+          }
+          fromMetadata_[level].push_back(*range);
         }
         ++level;
       }
