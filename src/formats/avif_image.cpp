@@ -9,15 +9,12 @@
 #include <cstring>
 #include <memory>
 
+#include "core/big_endian.hpp"
+
 namespace globe::formats {
 namespace {
 
 constexpr const char* kAvifBrands[] = {"avif", "avis"};
-
-uint32_t bigEndian32(const std::byte* p) {
-  return (std::to_integer<uint32_t>(p[0]) << 24) | (std::to_integer<uint32_t>(p[1]) << 16) |
-         (std::to_integer<uint32_t>(p[2]) << 8) | std::to_integer<uint32_t>(p[3]);
-}
 
 bool isAvifBrand(const std::byte* p) {
   for (const char* brand : kAvifBrands) {
@@ -34,7 +31,7 @@ struct DecoderDeleter {
 
 bool isAvif(std::span<const std::byte> bytes) {
   if (bytes.size() < 16 || std::memcmp(bytes.data() + 4, "ftyp", 4) != 0) return false;
-  const size_t boxBytes = std::min<size_t>(bigEndian32(bytes.data()), bytes.size());
+  const size_t boxBytes = std::min<size_t>(core::loadBigEndian32(bytes.data()), bytes.size());
   if (isAvifBrand(bytes.data() + 8)) return true;
   for (size_t at = 16; at + 4 <= boxBytes; at += 4) {  // the compatible brands
     if (isAvifBrand(bytes.data() + at)) return true;

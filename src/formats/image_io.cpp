@@ -12,6 +12,7 @@
 #include <string>
 
 #include "formats/avif_image.hpp"
+#include "formats/png_check.hpp"
 #include "formats/png_encoder.hpp"
 #include "formats/tile_edges.hpp"
 #include "transport/atomic_file.hpp"
@@ -73,6 +74,7 @@ Result<ImageRgba> decodeImageRgba(std::span<const std::byte> bytes, const std::s
   }
   if (isWebp(bytes)) return decodeWebp(bytes, name);
   if (isAvif(bytes)) return decodeAvif(bytes, name);
+  if (auto png = checkPngStructure(bytes, name); !png) return Error{png.error()};
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int size = static_cast<int>(bytes.size());
   int width = 0, height = 0, channels = 0;
@@ -117,6 +119,7 @@ Result<ImageRgba> loadImageRgba(const std::filesystem::path& path) {
   if (bytes->size() > static_cast<size_t>(std::numeric_limits<int>::max())) {
     return makeError(path.string() + ": image file too large");
   }
+  if (auto png = checkPngStructure(*bytes, path.string()); !png) return Error{png.error()};
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes->data());
   const int size = static_cast<int>(bytes->size());
   int width = 0, height = 0, channels = 0;

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "overlays/quiet_gdal.hpp"
+
 namespace globe::overlays {
 namespace {
 
@@ -67,6 +69,7 @@ void toRgba(const std::vector<std::vector<uint8_t>>& bands, GDALColorTableH pale
 Result<formats::ImageRgba> decodeImageWithGdal(std::span<const std::byte> bytes,
                                                const std::string& name, uint64_t maxDecodedBytes) {
   GDALAllRegister();
+  const QuietGdal quiet;
   const MemoryFile file(bytes);
   std::unique_ptr<void, DatasetCloser> dataset(GDALOpenEx(
       file.name().c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY, kImageDrivers, nullptr, nullptr));

@@ -8,16 +8,10 @@
 #include <algorithm>
 #include <cctype>
 
+#include "overlays/quiet_gdal.hpp"
+
 namespace globe::overlays {
 namespace {
-
-// GDAL reports through CPLError, which prints by default: a library stays quiet.
-struct QuietGdal {
-  QuietGdal() { CPLPushErrorHandler(CPLQuietErrorHandler); }
-  ~QuietGdal() { CPLPopErrorHandler(); }
-  QuietGdal(const QuietGdal&) = delete;
-  QuietGdal& operator=(const QuietGdal&) = delete;
-};
 
 bool endsWithKml(const std::string& name) {
   if (name.size() < 4) return false;

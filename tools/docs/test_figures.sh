@@ -12,7 +12,7 @@ OUT_MD=${OUT_MD:-$ROOT/docs/performance/test-figures.md}
 # test program (under BUILD/tests) and GoogleTest filter
 RUNS=(
   "tiling/globe_tiler_tests TilerConditioning.*"
-  "collision/globe_response_tests FujiDrive.*:WallDrive.*:RidgeSlide.*"
+  "collision/globe_response_tests FujiDrive.*:WallDrive.*:WallGlide.*:RidgeSlide.*"
   "collision/globe_collision_tests RealPyramid.*:StressQotcd.*"
   "geo/globe_geo_tests StressGeodesy.*"
   "render/globe_render_tests PlanetScalePrecision.*"
