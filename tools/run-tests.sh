@@ -32,11 +32,6 @@ stage "test installs" test_installs
 . tools/lib/seed-ctest-costs.sh
 seed_ctest_costs "$BUILD"
 COSTS=$BUILD/Testing/Temporary/CTestCostData.txt
-# CTest runs a test per core. Mesa's llvmpipe (OSMesa, the GLFW window, Chromium's WebGL) draws on a
-# thread per core in each process, and threads that meet every frame wait out each other's time
-# slices when the cores are shared: one drawing thread per test (the CesiumJS test beside the QOTCD
-# stress test: 38 s instead of 58 s; docs/performance/ci-time.md).
-export LP_NUM_THREADS=${LP_NUM_THREADS:-1}
 CTEST=(ctest --test-dir "$BUILD" -j"$(nproc)" --output-on-failure --timeout 900)
 if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null 2>&1; then
   CTEST=(xvfb-run -a -s "-screen 0 1280x1024x24" "${CTEST[@]}")

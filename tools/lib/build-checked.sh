@@ -9,9 +9,7 @@ build_checked() {
   local log=$build/build-output.txt
   mkdir -p "$build"
   local status=0
-  # Two jobs more than cores, as Ninja's default: a core waiting on a link, a test discovery or the
-  # disk has a compile to go on with (the test build: 185 s instead of 215 s at one per core).
-  cmake --build "$build" -j"$(($(nproc) + 2))" "$@" 2>&1 | tee "$log" || status=$?
+  cmake --build "$build" -j"$(nproc)" "$@" 2>&1 | tee "$log" || status=$?
   if [ "$status" != 0 ]; then return "$status"; fi
   if [ "${GLOBE_WERROR:-OFF}" = ON ] && grep -qE '(^|: )warning: ' "$log"; then
     echo "!!! the build warned (GLOBE_WERROR=ON): $(grep -cE '(^|: )warning: ' "$log") warning(s), in $log:"
