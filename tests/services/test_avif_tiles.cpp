@@ -7,16 +7,14 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <numbers>
 #include <string>
-#include <tuple>
 #include <vector>
 
 #include "formats/image_io.hpp"
 #include "formats/pmtiles.hpp"
-#include "geo/tiling_scheme.hpp"
 #include "publish/pmtiles_writer.hpp"
 #include "services/imagery_services.hpp"
+#include "tests/services/whitney_tiles.hpp"
 #include "tests/support/avif_encoder.hpp"
 #include "tests/support/build_paths.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
@@ -68,7 +66,7 @@ fs::path avifArchive(const fs::path& dir) {
     auto image = formats::decodeImageRgba(readBytes(tile.file), tile.file.string());
     EXPECT_TRUE(image) << image.error();
     if (!image) return {};
-    const std::vector<std::byte> avif = testing::encodeAvifLossless(*image);
+    const std::vector<std::byte> avif = globe::testing::encodeAvifLossless(*image);
     EXPECT_FALSE(avif.empty()) << tile.file;
     EXPECT_TRUE((*writer)->add(tile.z, tile.x, tile.y, avif)) << tile.file;
     minZoom = std::min(minZoom, tile.z);
@@ -103,19 +101,7 @@ TEST(AvifTiles, APmtilesArchiveOfAvifTilesReadsAsTheWebpArchive) {
                            "/tests/data/interop/pmtiles/usgs-mt-whitney-8-15-webp-512.pmtiles",
                        network);
   ASSERT_TRUE(webp) << webp.error();
-  size_t compared = 0;
-  for (uint32_t level = 8; level <= 14; ++level) {
-    const auto tile = geo::GeographicTilingScheme::positionToTile(
-        -118.2920 * std::numbers::pi / 180, 36.5785 * std::numbers::pi / 180, level);
-    ASSERT_TRUE(tile);
-    auto a = (*avif)->loadImage(*tile);
-    auto b = (*webp)->loadImage(*tile);
-    ASSERT_TRUE(a && b) << (a ? b.error() : a.error());
-    ASSERT_EQ(a->has_value(), b->has_value()) << level;
-    if (!*a) continue;
-    EXPECT_EQ((*a)->pixels, (*b)->pixels) << "level " << level;
-    ++compared;
-  }
+  const size_t compared = testing::compareTilesAtWhitney(**avif, **webp);
   EXPECT_GE(compared, 6u);
 }
 

@@ -16,6 +16,7 @@
 #include "formats/image_io.hpp"
 #include "geo/tiling_scheme.hpp"
 #include "services/imagery_services.hpp"
+#include "tests/services/whitney_tiles.hpp"
 #include "tests/support/build_paths.hpp"
 #include "tests/support/nginx_server.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
@@ -204,19 +205,7 @@ TEST_F(ImageryServices, PmtilesArchiveEqualsTheSameTilesAsAZxyTree) {
           "?minzoom=8&maxzoom=15&tilesize=512",
       network);
   ASSERT_TRUE(tree) << tree.error();
-  size_t compared = 0;
-  for (uint32_t level = 8; level <= 14; ++level) {
-    const auto tile = globe::geo::GeographicTilingScheme::positionToTile(
-        -118.2920 * kPiImagery / 180, 36.5785 * kPiImagery / 180, level);
-    ASSERT_TRUE(tile);
-    auto a = (*archive)->loadImage(*tile);
-    auto b = (*tree)->loadImage(*tile);
-    ASSERT_TRUE(a && b) << (a ? b.error() : a.error());
-    ASSERT_EQ(a->has_value(), b->has_value()) << level;
-    if (!*a) continue;
-    EXPECT_EQ((*a)->pixels, (*b)->pixels) << "level " << level;
-    ++compared;
-  }
+  const size_t compared = globe::services::testing::compareTilesAtWhitney(**archive, **tree);
   EXPECT_GE(compared, 6u);
   // Stamen Toner: PNG tiles, run-length and deduplicated entries, the whole world at zoom 0-3.
   auto toner = globe::services::openImageryTiles(
