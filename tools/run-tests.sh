@@ -19,35 +19,27 @@ stage "test packages (apt)" bash tools/install-deps.sh --tests
 use_test_tmpdir
 echo "test scratch files in ${TMPDIR:-/tmp}"
 bash tools/configure.sh "$BUILD" -DGLOBE_BUILD_TESTS=ON
+# The tests and the programs they run (target globe_tests); the benchmarks and tools build when
+# their scripts run them (CI builds everything: .ci/run).
+stage "build ($BUILD)" build_checked "$BUILD" --target globe_tests
 # Chromium, node and npm (apt, where missing) and tools/web's pinned npm packages: the web
 # clients (CesiumJS, MapLibre) that tests/web shows the exports in. Slurm, munge, GNU parallel and
 # python3-yaml (apt, where missing): what tests/cluster runs.
 test_installs() { bash tools/web/install.sh && bash tools/cluster/install.sh; }
 stage "test installs" test_installs
-# The programs first (nothing to do after tools/setup.sh), then the tests that run nothing else
-# (tests/web, tests/cluster: tools/lib/early-tests.sh) start while the test programs compile:
-# they wait on Chromium's frames and on daemons for half their time, which the compiler fills.
-stage "build programs ($BUILD)" build_checked "$BUILD" --target globe globe-tiler
-. tools/lib/early-tests.sh
-start_early_tests "$BUILD"
-# The tests and the programs they run (target globe_tests); the benchmarks and tools build when
-# their scripts run them (CI builds everything: .ci/run).
-stage "build ($BUILD)" build_checked "$BUILD" --target globe_tests
 # CTest starts the longest tests first when it knows their times; a new build directory does not,
 # so it gets the committed ones (without them the long tests may start last and the suite waits).
 . tools/lib/seed-ctest-costs.sh
 seed_ctest_costs "$BUILD"
 COSTS=$BUILD/Testing/Temporary/CTestCostData.txt
-CTEST=(ctest --test-dir "$BUILD" -j"$(nproc)" --output-on-failure --timeout 900 -LE early)
+CTEST=(ctest --test-dir "$BUILD" -j"$(nproc)" --output-on-failure --timeout 900)
 if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null 2>&1; then
   CTEST=(xvfb-run -a -s "-screen 0 1280x1024x24" "${CTEST[@]}")
 fi
 status=0
 suite() { "${CTEST[@]}" 2>&1 | tee "$BUILD/ctest-output.txt"; }
 stage "suite" suite || status=$?
-stage "early tests (what is left)" finish_early_tests || status=1
-skipped=$(cat "$BUILD/ctest-output.txt" "$BUILD/early-tests-output.txt" 2>/dev/null |
-  grep -E '\(Skipped\)$' || true)
+skipped=$(grep -E '\(Skipped\)$' "$BUILD/ctest-output.txt" || true)
 if [ -n "$skipped" ]; then
   echo
   echo "!!! $(echo "$skipped" | wc -l) test(s) SKIPPED: they did not run here. Their reasons are in"
