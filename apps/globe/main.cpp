@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
       globe::app::addQueryCommand(app, common),  globe::app::addViewCommand(app, common),
       globe::app::addPlayCommand(app, common),   globe::app::addSourcesCommand(app, common),
       globe::app::addSearchCommand(app, common), globe::app::addProfileCommand(app, common),
-      globe::app::addViewsCommand(app, common)};
+      globe::app::addViewsCommand(app, common),  globe::app::addRegressCommand(app, common)};
 
   CLI11_PARSE(app, argc, argv);
   const auto context = globe::app::makeCommandContext(common);

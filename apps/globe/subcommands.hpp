@@ -26,5 +26,6 @@ Subcommand addSourcesCommand(CLI::App& app, CommonArguments& common);
 Subcommand addSearchCommand(CLI::App& app, CommonArguments& common);
 Subcommand addProfileCommand(CLI::App& app, CommonArguments& common);
 Subcommand addViewsCommand(CLI::App& app, CommonArguments& common);
+Subcommand addRegressCommand(CLI::App& app, CommonArguments& common);
 
 }  // namespace globe::app

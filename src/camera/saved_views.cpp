@@ -14,6 +14,7 @@
 
 #include "geo/ecef.hpp"
 #include "transport/atomic_file.hpp"
+#include "core/xml_escape.hpp"
 
 namespace globe::camera {
 namespace {
@@ -40,28 +41,6 @@ const tinyxml2::XMLElement* viewChild(const tinyxml2::XMLElement& parent, std::s
   return nullptr;
 }
 
-std::string viewXmlEscaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '&':
-        out += "&amp;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -160,7 +139,7 @@ std::string savedViewsToKml(const std::vector<SavedView>& views) {
                   v.pose.position.heightMeters, v.pose.headingRadians * deg,
                   v.pose.pitchRadians * deg + 90, v.pose.rollRadians * deg,
                   v.heightAboveTerrain ? "relativeToGround" : "absolute");
-    kml += "<Placemark>\n  <name>" + viewXmlEscaped(v.name) + "</name>\n" + camera + "</Placemark>\n";
+    kml += "<Placemark>\n  <name>" + xmlEscaped(v.name) + "</name>\n" + camera + "</Placemark>\n";
   }
   return kml + "</Document>\n</kml>\n";
 }

@@ -16,6 +16,7 @@
 #include "publish/pmtiles_writer.hpp"
 #include "publish/web_mercator.hpp"
 #include "transport/atomic_file.hpp"
+#include "core/xml_escape.hpp"
 
 namespace globe::publish {
 namespace {
@@ -199,28 +200,6 @@ Result<nlohmann::json> mergedTileJson(const fs::path& outDir, const ImageryPlan&
   return j;
 }
 
-std::string xmlEscaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
 
 // OSGeo TMS 1.0.0's TileMap, global-mercator profile: the box in projected metres, the origin at
 // the world's south-west corner, one TileSet per zoom (href is the zoom's folder).

@@ -1,22 +1,12 @@
-// Image comparison for screenshot regression: per-pixel tolerance, a budget of differing pixels,
-// and a diff image that shows where they differ.
+// Image comparison for the tests: globe regress's own (regression/image_difference.hpp), so the
+// tests judge pictures exactly as the product does.
 #pragma once
 
-#include <cstdint>
-#include <vector>
-
-#include "formats/image_io.hpp"
+#include "regression/image_difference.hpp"
 
 namespace globe::testing {
 
-struct ImageDifference {
-  double differingFraction = 1;  // pixels whose largest channel difference exceeds the tolerance
-  int largestChannelDifference = 255;
-  double meanChannelDifference = 255;  // over the red, green and blue of every pixel
-  std::vector<uint8_t> diffRgba;  // differing pixels red over a dimmed copy of the expected image
-};
-
-ImageDifference compareImages(const formats::ImageRgba& expected, const formats::ImageRgba& actual,
-                              int channelTolerance);
+using regression::compareImages;
+using regression::ImageDifference;
 
 }  // namespace globe::testing

@@ -15,6 +15,7 @@
 
 #include "camera/camera_path_file.hpp"
 #include "tests/support/build_paths.hpp"
+#include "tests/support/damaged_pyramid.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 
 namespace globe::app {
@@ -35,30 +36,9 @@ CommandRun runGlobeCommand(const std::string& arguments, const fs::path& log) {
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
 }
 
-// The bundled pyramid with every block of levels 8 and finer damaged past the pack's first third
-// (the index stays readable: the packs open, their blocks fail their CRC).
-fs::path damagedPyramid(const fs::path& dir) {
-  const fs::path copy = dir / "damaged";
-  fs::copy(globe::testing::bundledPyramid(), copy, fs::copy_options::recursive);
-  for (const auto& entry : fs::recursive_directory_iterator(copy)) {
-    if (entry.path().extension() != ".pack") continue;
-    const std::string level = entry.path().parent_path().filename().string();  // "L12"
-    if (std::stoi(level.substr(1)) < 8) continue;
-    std::fstream file(entry.path(), std::ios::in | std::ios::out | std::ios::binary);
-    const auto size = static_cast<std::streamoff>(fs::file_size(entry.path()));
-    for (std::streamoff at = size / 3; at + 8 < size; at += 97) {
-      file.seekg(at);
-      const char byte = static_cast<char>(file.get() ^ 0xff);
-      file.seekp(at);
-      file.put(byte);
-    }
-  }
-  return copy;
-}
-
 TEST(MissingTiles, ASnapshotOrPlaybackWithFailedTilesSaysSoAndExitsOne) {
   const fs::path dir = globe::testing::freshTempDir("missing-tiles");
-  const fs::path pyramid = damagedPyramid(dir);
+  const fs::path pyramid = globe::testing::damagedPyramid(dir);
   const std::string snapshot = "snapshot " + pyramid.string() +
                                " --camera 138.72,35.33,4500,20,-60,0 --size 320x180 -o " +
                                (dir / "view.png").string();

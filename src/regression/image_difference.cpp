@@ -1,16 +1,17 @@
-#include "tests/support/golden_compare.hpp"
+#include "regression/image_difference.hpp"
 
 #include <algorithm>
 #include <cstdlib>
 
-namespace globe::testing {
+namespace globe::regression {
 
 ImageDifference compareImages(const formats::ImageRgba& expected, const formats::ImageRgba& actual,
-                              int channelTolerance) {
+                              int channelThreshold) {
   ImageDifference result;
   if (expected.widthPixels != actual.widthPixels || expected.heightPixels != actual.heightPixels) {
     return result;
   }
+  result.sameSize = true;
   const size_t pixels = static_cast<size_t>(expected.widthPixels) * expected.heightPixels;
   result.diffRgba.resize(pixels * 4);
   size_t differing = 0;
@@ -24,7 +25,7 @@ ImageDifference compareImages(const formats::ImageRgba& expected, const formats:
       sum += d;
     }
     largest = std::max(largest, worst);
-    const bool differs = worst > channelTolerance;
+    const bool differs = worst > channelThreshold;
     differing += differs ? 1 : 0;
     for (size_t c = 0; c < 3; ++c) {
       const auto dimmed = static_cast<uint8_t>(expected.pixels[4 * p + c] / 4);
@@ -32,10 +33,11 @@ ImageDifference compareImages(const formats::ImageRgba& expected, const formats:
     }
     result.diffRgba[4 * p + 3] = 255;
   }
-  result.differingFraction = static_cast<double>(differing) / static_cast<double>(pixels);
+  const double count = pixels == 0 ? 1.0 : static_cast<double>(pixels);
+  result.differingFraction = static_cast<double>(differing) / count;
   result.largestChannelDifference = largest;
-  result.meanChannelDifference = sum / (3.0 * static_cast<double>(pixels));
+  result.meanChannelDifference = sum / (3.0 * count);
   return result;
 }
 
-}  // namespace globe::testing
+}  // namespace globe::regression

@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# globe regress's speed: a suite of 40 views of the bundled data at 480x270 (the globe, Fuji,
+# Zion, the poles, the Blue Marble and Landsat layers), run at --jobs 1 and 2, against the same
+# views as single `globe snapshot` runs one after another (the sum of their wall times). The
+# issue's goal: a run at N jobs within 1.2x of that sum divided by N. Medians of RUNS runs, in one
+# run of this script. Writes docs/performance/regress-speed.md.
+#
+#   tools/bench/regress_speed.sh BUILD_DIR [RUNS]
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+BUILD=${1:?build directory}
+RUNS=${2:-3}
+cmake --build "$BUILD" -j"$(nproc)" --target globe globe-tiler >/dev/null
+GLOBE=$(realpath "$BUILD/apps/globe/globe")
+WORK=$(mktemp -d /tmp/globe-regress-speed.XXXXXX)
+trap 'rm -rf "$WORK"' EXIT
+bash tools/bench/tile_bundled.sh "$BUILD/apps/globe-tiler/globe-tiler" "$WORK"
+
+# 40 views: 8 places x 5 variants (terrain alone, lit, each layer, a coarser SSE).
+python3 - "$WORK/suite.json" <<'PY'
+import json, sys
+places = {
+    "globe": "138,30,20000000", "fuji": "138.60,35.20,6000,30,-15,0",
+    "fuji_top": "138.73,35.36,9000,0,-60,0", "zion": "-112.93,37.16,4500,330,-20,0",
+    "zion_nadir": "-112.98,37.27,9000", "north_pole": "0,90,3000000",
+    "bering": "180,58,1800000,0,-45,0", "europe": "2,54,2500000",
+}
+variants = {
+    "terrain": [], "lit": ["--lighting"], "bm": ["--layer", "blue-marble"],
+    "zion": ["--layer", "blue-marble", "--layer", "zion,0.7"], "sse8": ["--sse", "8"],
+}
+views = [{"name": f"{p}_{v}", "snapshot": ["pyramid", "--camera", c, "--size", "480x270", *a]}
+         for p, c in places.items() for v, a in variants.items()]
+json.dump({"views": views}, open(sys.argv[1], "w"), indent=1)
+PY
+"$GLOBE" regress "$WORK/suite.json" --out "$WORK/out" --update >/dev/null
+
+median() { sort -n | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
+seconds() { local s=$EPOCHREALTIME; "$@" >/dev/null 2>&1; awk -v a="$s" -v b="$EPOCHREALTIME" 'BEGIN {printf "%.3f\n", b - a}'; }
+singles() {  # every view as its own globe snapshot, one after another: the sum of their times
+  python3 -c 'import json,sys; [print("\t".join(v["snapshot"])) for v in json.load(open(sys.argv[1]))["views"]]' \
+    "$WORK/suite.json" | (cd "$WORK" && while IFS=$'\t' read -r -a args; do
+      "$GLOBE" snapshot "${args[@]}" -o "$WORK/single.png" >/dev/null 2>&1
+    done)
+}
+: >"$WORK/t-single" >"$WORK/t-j1" >"$WORK/t-j2"
+for _ in $(seq "$RUNS"); do
+  seconds singles >>"$WORK/t-single"
+  seconds "$GLOBE" regress "$WORK/suite.json" --out "$WORK/out" --jobs 1 >>"$WORK/t-j1"
+  seconds "$GLOBE" regress "$WORK/suite.json" --out "$WORK/out" --jobs 2 >>"$WORK/t-j2"
+done
+"$GLOBE" regress "$WORK/suite.json" --out "$WORK/out" --jobs 2 >/dev/null  # exit 0: all passed
+S=$(median <"$WORK/t-single")
+J1=$(median <"$WORK/t-j1")
+J2=$(median <"$WORK/t-j2")
+OUT_MD=${OUT_MD:-docs/performance/regress-speed.md}
+{
+  echo "# globe regress: speed"
+  echo
+  echo "A suite of 40 views of the bundled data at 480x270 (8 places x terrain, lit, Blue Marble,"
+  echo "Blue Marble + Landsat, SSE 8), every view compared with its reference (all pass). Medians"
+  echo "of $RUNS runs in one run of \`tools/bench/regress_speed.sh\` ($(date -u +%Y-%m-%d),"
+  echo "$(nproc) cores, $(git rev-parse --short HEAD)). The single snapshots: the same 40 views,"
+  echo "each \`globe snapshot\` run alone, one after another."
+  echo
+  echo "| run | wall s | views/s | vs single snapshots / jobs |"
+  echo "|---|---|---|---|"
+  awk -v s="$S" 'BEGIN {printf "| 40 single snapshots | %.2f | %.2f | 1.00 |\n", s, 40 / s}'
+  awk -v s="$S" -v t="$J1" 'BEGIN {printf "| regress --jobs 1 | %.2f | %.2f | %.2f |\n", t, 40 / t, t / s}'
+  awk -v s="$S" -v t="$J2" 'BEGIN {printf "| regress --jobs 2 | %.2f | %.2f | %.2f |\n", t, 40 / t, t / (s / 2)}'
+  echo
+  echo "Goal (issue 51): at most 1.20 in the last column."
+} >"$OUT_MD.tmp"
+mv "$OUT_MD.tmp" "$OUT_MD"
+cat "$OUT_MD"
