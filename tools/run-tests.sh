@@ -32,10 +32,7 @@ stage "test installs" test_installs
 . tools/lib/seed-ctest-costs.sh
 seed_ctest_costs "$BUILD"
 COSTS=$BUILD/Testing/Temporary/CTestCostData.txt
-# One test more than the cores: a third of the suite's time is spent in tests that wait (on a
-# window's events, a stalled server, Chromium's frames), whose slot would otherwise idle a core
-# (docs/performance/ci-time.md).
-CTEST=(ctest --test-dir "$BUILD" -j"$(($(nproc) + 1))" --output-on-failure --timeout 900)
+CTEST=(ctest --test-dir "$BUILD" -j"$(nproc)" --output-on-failure --timeout 900)
 if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null 2>&1; then
   CTEST=(xvfb-run -a -s "-screen 0 1280x1024x24" "${CTEST[@]}")
 fi
