@@ -1,7 +1,8 @@
 #include "apps/globe/regress_command.hpp"
 
+#include <regex.h>
+
 #include <chrono>
-#include <regex>
 
 #include "apps/globe/regress_view.hpp"
 #include "apps/globe/snapshot_processes.hpp"
@@ -15,17 +16,22 @@ using regression::ViewOutcome;
 // Past the snapshot's own --timeout (its wait for tiles), the time to start, draw and write.
 constexpr double kProcessGraceSeconds = 60;
 
+// POSIX extended regular expressions (as grep -E), searched anywhere in a view's name.
 Result<std::vector<const regression::RegressionView*>> selectedViews(
     const regression::RegressionSuite& suite, const std::string& filter) {
-  std::vector<const regression::RegressionView*> views;
-  try {
-    const std::regex pattern(filter.empty() ? std::string(".*") : filter);
-    for (const auto& view : suite.views) {
-      if (std::regex_search(view.name, pattern)) views.push_back(&view);
-    }
-  } catch (const std::regex_error& error) {
-    return makeError("--filter \"" + filter + "\" is not a regular expression: " + error.what());
+  regex_t pattern;
+  if (const int err = ::regcomp(&pattern, filter.empty() ? "." : filter.c_str(),
+                                REG_EXTENDED | REG_NOSUB);
+      err != 0) {
+    char reason[256];
+    ::regerror(err, &pattern, reason, sizeof reason);
+    return makeError("--filter \"" + filter + "\" is not a regular expression: " + reason);
   }
+  std::vector<const regression::RegressionView*> views;
+  for (const auto& view : suite.views) {
+    if (::regexec(&pattern, view.name.c_str(), 0, nullptr, 0) == 0) views.push_back(&view);
+  }
+  ::regfree(&pattern);
   if (views.empty()) return makeError("--filter \"" + filter + "\" selects no view of the suite");
   return views;
 }

@@ -2,7 +2,6 @@
 
 #include <cstdio>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <vector>
 
@@ -48,12 +47,16 @@ std::string processError(const SnapshotExit& exit, const fs::path& log, double t
   if (exit.exitCode != 0) {
     return "globe snapshot exited with " + std::to_string(exit.exitCode) + ": " + logTail(log);
   }
-  std::smatch drawn;
+  // Its summary line: "OUT.png: N tiles drawn, ...".
   const std::string text = readText(log);
-  if (!std::regex_search(text, drawn, std::regex(": (\\d+) tiles drawn"))) {
+  const size_t drawn = text.find(" tiles drawn");
+  if (drawn == std::string::npos) {
     return "globe snapshot did not say what it drew: " + logTail(log);
   }
-  if (drawn[1] == "0") return "the view drew nothing (0 tiles drawn): " + logTail(log);
+  const size_t number = text.rfind(' ', drawn - 1);
+  if (text.substr(number + 1, drawn - number - 1) == "0") {
+    return "the view drew nothing (0 tiles drawn): " + logTail(log);
+  }
   return "";
 }
 
