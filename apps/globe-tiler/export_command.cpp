@@ -17,6 +17,57 @@
 namespace globe::tiler_app {
 namespace {
 
+// The tile trees export writes, one row each: its --format name, whether its tiles may be
+// lossless WebP, and the exporter. The option's choices, the --webp check and the dispatch all
+// read this table (a name not in it is refused by the option, never exported as another).
+struct ExportSettings {
+  publish::ExportRegion region;
+  geo::Ellipsoid ellipsoid = geo::Ellipsoid::wgs84();
+  publish::ElevationTileFormat tiles = publish::ElevationTileFormat::Png;
+  double meshErrorFraction = 1.0;
+  unsigned threads = 1;
+};
+using Exporter = Result<publish::ExportReport> (*)(streaming::TerrainSource& store,
+                                                   const std::string& out,
+                                                   const ExportSettings& s);
+struct TreeFormat {
+  const char* name;
+  bool webpTiles;
+  Exporter run;
+};
+constexpr TreeFormat kTreeFormats[] = {
+    {"quantized-mesh", false,
+     [](streaming::TerrainSource& store, const std::string& out, const ExportSettings& s) {
+       return publish::exportQuantizedMesh(store, s.region, out, s.ellipsoid, s.meshErrorFraction,
+                                           s.threads);
+     }},
+    {"heightmap", false,
+     [](streaming::TerrainSource& store, const std::string& out, const ExportSettings& s) {
+       return publish::exportHeightmap(store, s.region, out, s.ellipsoid);
+     }},
+    {"terrarium", true,
+     [](streaming::TerrainSource& store, const std::string& out, const ExportSettings& s) {
+       return publish::exportTerrarium(store, s.region, out, s.ellipsoid, s.tiles);
+     }},
+    {"terrain-rgb", true,
+     [](streaming::TerrainSource& store, const std::string& out, const ExportSettings& s) {
+       return publish::exportTerrainRgb(store, s.region, out, s.ellipsoid, s.tiles);
+     }},
+};
+
+const TreeFormat* treeFormatNamed(const std::string& name) {
+  for (const TreeFormat& f : kTreeFormats) {
+    if (name == f.name) return &f;
+  }
+  return nullptr;
+}
+
+std::vector<std::string> treeFormatNames() {
+  std::vector<std::string> names;
+  for (const TreeFormat& f : kTreeFormats) names.emplace_back(f.name);
+  return names;
+}
+
 // globe-tiler export --format F -o DIR PYRAMID: a tile tree for web viewers.
 int exportTree(const std::string& format, const std::string& out, const std::string& pyramid,
                const std::string& levels, const std::string& bounds, bool webp,
@@ -40,15 +91,13 @@ int exportTree(const std::string& format, const std::string& out, const std::str
     return 1;
   }
   const auto start = std::chrono::steady_clock::now();
-  const geo::Ellipsoid ellipsoid = geo::Ellipsoid::wgs84();
-  const auto tiles =
+  ExportSettings settings;
+  settings.region = region;
+  settings.tiles =
       webp ? publish::ElevationTileFormat::WebpLossless : publish::ElevationTileFormat::Png;
-  auto report =
-      format == "quantized-mesh" ? publish::exportQuantizedMesh(**store, region, out, ellipsoid,
-                                                                meshErrorFraction, threads)
-      : format == "heightmap"    ? publish::exportHeightmap(**store, region, out, ellipsoid)
-      : format == "terrain-rgb"  ? publish::exportTerrainRgb(**store, region, out, ellipsoid, tiles)
-                                 : publish::exportTerrarium(**store, region, out, ellipsoid, tiles);
+  settings.meshErrorFraction = meshErrorFraction;
+  settings.threads = threads;
+  auto report = treeFormatNamed(format)->run(**store, out, settings);
   if (!report) {
     std::fprintf(stderr, "globe-tiler export: %s\n", report.error().c_str());
     return 1;
@@ -78,7 +127,7 @@ int runExportCommand(int argc, char** argv) {
   app.add_option("--format", format,
                  "quantized-mesh | heightmap | terrarium | terrain-rgb (a tile tree into -o DIR; "
                  "heightmap: Cesium's heightmap-1.0)")
-      ->check(CLI::IsMember({"quantized-mesh", "heightmap", "terrarium", "terrain-rgb"}));
+      ->check(CLI::IsMember(treeFormatNames()));
   app.add_flag("--webp", webp,
                "terrarium, terrain-rgb: tiles as lossless WebP ({z}/{x}/{y}.webp) instead of PNG "
                "(always lossless: a lossy colour would be another height)");
@@ -106,7 +155,7 @@ int runExportCommand(int argc, char** argv) {
       std::fprintf(stderr, "globe-tiler export: --format needs -o DIR and one PYRAMID\n");
       return 2;
     }
-    if (webp && format != "terrarium" && format != "terrain-rgb") {
+    if (webp && !treeFormatNamed(format)->webpTiles) {
       std::fprintf(stderr,
                    "globe-tiler export: --webp is for --format terrarium or terrain-rgb "
                    "(lossless WebP elevation tiles), not '%s'\n",

@@ -31,7 +31,13 @@ int main(int argc, char** argv) {
       globe::app::addSearchCommand(app, common), globe::app::addProfileCommand(app, common),
       globe::app::addViewsCommand(app, common),  globe::app::addRegressCommand(app, common)};
 
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    // --help and --version end here too (exit 0). A mistake in the arguments is exit 2 for every
+    // subcommand, as they document, whatever CLI11's own code for the kind of mistake.
+    return app.exit(error) == 0 ? 0 : 2;
+  }
   const auto context = globe::app::makeCommandContext(common);
   if (!context) return 2;
   for (const globe::app::Subcommand& subcommand : subcommands) {

@@ -116,14 +116,6 @@ Result<std::vector<std::byte>> encodePngRgba(std::span<const uint8_t> rgba, int 
   return encodePngChannels<4>(rgba.data(), widthPixels, heightPixels);
 }
 
-Result<std::vector<std::byte>> encodePngGrey(std::span<const uint8_t> grey, int widthPixels,
-                                             int heightPixels) {
-  if (!sized(grey.size(), widthPixels, heightPixels, 1)) {
-    return makeError("cannot encode PNG: malformed grey image");
-  }
-  return encodePngChannels<1>(grey.data(), widthPixels, heightPixels);
-}
-
 Result<std::vector<std::byte>> encodePngGreyAlpha(std::span<const uint8_t> greyAlpha,
                                                   int widthPixels, int heightPixels) {
   if (!sized(greyAlpha.size(), widthPixels, heightPixels, 2)) {

@@ -11,10 +11,8 @@
 
 namespace globe::formats {
 
-// 8-bit RGBA, grey, grey+alpha. An error for a size that does not match the pixels.
+// 8-bit RGBA, grey+alpha. An error for a size that does not match the pixels.
 Result<std::vector<std::byte>> encodePngRgba(std::span<const uint8_t> rgba, int widthPixels,
-                                             int heightPixels);
-Result<std::vector<std::byte>> encodePngGrey(std::span<const uint8_t> grey, int widthPixels,
                                              int heightPixels);
 Result<std::vector<std::byte>> encodePngGreyAlpha(std::span<const uint8_t> greyAlpha,
                                                   int widthPixels, int heightPixels);

@@ -107,11 +107,6 @@ Result<std::vector<std::byte>> encodePngFast(const formats::ImageRgba& image) {
   return formats::encodePngRgba(image.pixels, image.widthPixels, image.heightPixels);
 }
 
-Result<std::vector<std::byte>> encodePngGreyFast(std::span<const uint8_t> grey, int widthPixels,
-                                                 int heightPixels) {
-  return formats::encodePngGrey(grey, widthPixels, heightPixels);
-}
-
 Result<std::vector<std::byte>> encodePngGreyAlphaFast(std::span<const uint8_t> greyAlpha,
                                                       int widthPixels, int heightPixels) {
   return formats::encodePngGreyAlpha(greyAlpha, widthPixels, heightPixels);

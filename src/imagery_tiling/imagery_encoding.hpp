@@ -20,9 +20,6 @@ Result<std::vector<std::byte>> encodeJpegFast(const formats::ImageRgba& image, i
                                               bool exactEdges = false);
 // 8-bit RGBA PNG, each row's filter chosen by the minimum-sum-of-differences heuristic.
 Result<std::vector<std::byte>> encodePngFast(const formats::ImageRgba& image);
-// 8-bit grey PNG of width × height bytes, row by row (water masks).
-Result<std::vector<std::byte>> encodePngGreyFast(std::span<const uint8_t> grey, int widthPixels,
-                                                 int heightPixels);
 // 8-bit grey+alpha PNG of width × height pixel pairs (grey, alpha), row by row.
 Result<std::vector<std::byte>> encodePngGreyAlphaFast(std::span<const uint8_t> greyAlpha,
                                                       int widthPixels, int heightPixels);

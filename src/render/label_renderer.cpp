@@ -325,7 +325,6 @@ void LabelRenderer::drawTextPanel(const std::vector<std::string>& paragraphs,
   impl_->endDraw();
 }
 
-void LabelRenderer::setTextPanelStyle(const TextPanelStyle& style) { impl_->panelStyle = style; }
 
 const FontFace& LabelRenderer::font() const { return *impl_->font; }
 

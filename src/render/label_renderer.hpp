@@ -64,7 +64,6 @@ class LabelRenderer {
   void drawTextPanel(const std::vector<std::string>& paragraphs, glm::vec2 topLeftPixels,
                      float maxWidthPixels, glm::ivec2 viewportPixels);
 
-  void setTextPanelStyle(const TextPanelStyle& style);
   const FontFace& font() const;
 
  private:

@@ -1,5 +1,7 @@
 #include "services/terrain_services.hpp"
 
+#include <string_view>
+
 #include "services/quantized_mesh_source.hpp"
 #include "services/xyz_elevation_source.hpp"
 #include "streaming/tile_store.hpp"
@@ -7,33 +9,56 @@
 namespace globe::services {
 namespace {
 
-bool startsWith(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
+using Opened = Result<std::unique_ptr<streaming::TerrainSource>>;
 
 template <class T>
-Result<std::unique_ptr<streaming::TerrainSource>> widen(Result<std::unique_ptr<T>> opened) {
+Opened widen(Result<std::unique_ptr<T>> opened) {
   if (!opened) return Error{opened.error()};
   return std::unique_ptr<streaming::TerrainSource>(std::move(*opened));
 }
 
+// The terrain services a source spec names by its prefix ("terrarium:URL"), one row each: the
+// prefix and what opens the rest of the spec. Anything else is a pyramid (a directory or URL).
+struct TerrainService {
+  std::string_view prefix;
+  Opened (*open)(const std::string& url, terrain::SeaSurface sea,
+                 std::shared_ptr<transport::Network> network);
+};
+constexpr TerrainService kTerrainServices[] = {
+    {"quantized-mesh:",
+     [](const std::string& url, terrain::SeaSurface sea,
+        std::shared_ptr<transport::Network> network) {
+       return widen(openQuantizedMeshSource(url, sea, std::move(network)));
+     }},
+    {"terrarium:",
+     [](const std::string& url, terrain::SeaSurface sea,
+        std::shared_ptr<transport::Network> network) {
+       return widen(
+           openXyzElevationSource(ElevationEncoding::Terrarium, url, sea, std::move(network)));
+     }},
+    {"terrain-rgb:",
+     [](const std::string& url, terrain::SeaSurface sea,
+        std::shared_ptr<transport::Network> network) {
+       return widen(
+           openXyzElevationSource(ElevationEncoding::TerrainRgb, url, sea, std::move(network)));
+     }},
+};
+
+const TerrainService* serviceOf(const std::string& spec) {
+  for (const TerrainService& service : kTerrainServices) {
+    if (std::string_view(spec).starts_with(service.prefix)) return &service;
+  }
+  return nullptr;
+}
+
 }  // namespace
 
-bool isTerrainService(const std::string& spec) {
-  return startsWith(spec, "quantized-mesh:") || startsWith(spec, "terrarium:") ||
-         startsWith(spec, "terrain-rgb:");
-}
+bool isTerrainService(const std::string& spec) { return serviceOf(spec) != nullptr; }
 
 Result<std::unique_ptr<streaming::TerrainSource>> openTerrainSource(
     const std::string& spec, terrain::SeaSurface sea, std::shared_ptr<transport::Network> network) {
-  if (startsWith(spec, "quantized-mesh:")) {
-    return widen(openQuantizedMeshSource(spec.substr(15), sea, std::move(network)));
-  }
-  if (startsWith(spec, "terrarium:")) {
-    return widen(openXyzElevationSource(ElevationEncoding::Terrarium, spec.substr(10), sea,
-                                        std::move(network)));
-  }
-  if (startsWith(spec, "terrain-rgb:")) {
-    return widen(openXyzElevationSource(ElevationEncoding::TerrainRgb, spec.substr(12), sea,
-                                        std::move(network)));
+  if (const TerrainService* service = serviceOf(spec)) {
+    return service->open(spec.substr(service->prefix.size()), sea, std::move(network));
   }
   return widen(streaming::TileStore::open(spec, sea, std::move(network)));
 }

@@ -111,8 +111,8 @@ TEST(NonFiniteInput, NumericOptionsAreNamed) {
       {snapshot + "--size nanx100", "--size 'nanx100': expected WxH", 2},
       {snapshot + "--size 1e999x100", "--size '1e999x100': expected WxH", 2},
       {snapshot + "--size 0x100", "width and height must be 1..16384", 2},
-      {snapshot + "--max-load-level nan", "--max-load-level", 104},  // CLI11: could not convert
-      {snapshot + "--max-load-level -1", "--max-load-level", 104},
+      {snapshot + "--max-load-level nan", "--max-load-level", 2},  // CLI11: could not convert
+      {snapshot + "--max-load-level -1", "--max-load-level", 2},
       {snapshot + "--globe nan", "--globe must be wgs84 or sphere, not 'nan'", 2},
       {play + "--fps nan", "globe play: --fps 'nan': not a finite number", 2},
       {play + "--fps inf", "--fps 'inf': not a finite number", 2},
@@ -122,12 +122,12 @@ TEST(NonFiniteInput, NumericOptionsAreNamed) {
       {play + "--fps 0", "--fps '0': must be in (0, 1000]", 2},
       {play + "--fps 1001", "--fps '1001': must be in (0, 1000]", 2},
       {play + "--size 10xinf", "--size '10xinf': expected WxH", 2},
-      {"view PYRAMID --frames nan", "--frames", 104},
-      {"view PYRAMID --frames 1e999", "--frames", 104},
+      {"view PYRAMID --frames nan", "--frames", 2},
+      {"view PYRAMID --frames 1e999", "--frames", 2},
       {"view PYRAMID --frames -1", "globe view: --frames -1: must be at least 0", 2},
       {"view PYRAMID --size infxinf", "--size 'infxinf': expected WxH", 2},
-      {"query PYRAMID --level nan", "--level", 104},
-      {"query PYRAMID --level 1e999", "--level", 104},
+      {"query PYRAMID --level nan", "--level", 2},
+      {"query PYRAMID --level 1e999", "--level", 2},
       {"info PYRAMID --globe inf", "--globe must be wgs84 or sphere, not 'inf'", 2},
   });
 }

@@ -168,7 +168,11 @@ TEST(GlobeRegress, ABadSuiteOrFilterIsExitTwoWithTheReason) {
   EXPECT_EQ(run.exitCode, 2);
   EXPECT_NE(run.output.find("is not a regular expression"), std::string::npos) << run.output;
   run = runGlobe(regress(dir / "good.json", dir / "out", "--filter zzz"));
+  EXPECT_EQ(run.exitCode, 2);
   EXPECT_NE(run.output.find("selects no view"), std::string::npos) << run.output;
+  run = runGlobe(regress(dir / "good.json", dir / "out", "--jobs 0"));
+  EXPECT_EQ(run.exitCode, 2) << "a bad option is exit 2 too, not CLI11's own code\n" << run.output;
+  EXPECT_EQ(runGlobe("regress --help").exitCode, 0);
 }
 
 }  // namespace
