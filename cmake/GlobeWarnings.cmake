@@ -58,9 +58,11 @@ function(globe_module name)
   globe_precompile(${name})
 endfunction()
 
-# globe_test(NAME SOURCES... DEPENDS targets...): a GoogleTest executable registered with CTest.
+# globe_test(NAME SOURCES... DEPENDS targets... [SOLO Suite.Test...]): a GoogleTest executable
+# registered with CTest, one CTest test per suite, and one per SOLO test (a test that must have a
+# process of its own: cmake/GlobeTestGroupsScript.cmake).
 function(globe_test name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS;SOLO" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} GTest::gtest_main GTest::gmock globe_warnings
     globe_build_paths)  # tests/support/build_paths.hpp
@@ -76,6 +78,27 @@ function(globe_test name)
   globe_precompile(${name} <gtest/gtest.h>)
   # The fixtures the test processes share (tests/support/shared_fixture.hpp) live for one CTest
   # run: its setup test empties the folder first, its cleanup test removes it last.
-  gtest_discover_tests(${name} TEST_PREFIX "${name}." DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 600
-    FIXTURES_REQUIRED globe_shared_fixtures ENVIRONMENT GLOBE_TEST_FIXTURES=${GLOBE_TEST_FIXTURES})
+  globe_register_test_groups(${name} "${ARG_SOLO}" TIMEOUT 600 FIXTURES_REQUIRED
+    globe_shared_fixtures ENVIRONMENT GLOBE_TEST_FIXTURES=${GLOBE_TEST_FIXTURES})
+endfunction()
+
+# After NAME links, its tests are listed and registered (cmake/GlobeTestGroupsScript.cmake); the
+# reports go to GLOBE_GTEST_XML_DIR. Before it has linked, CTest sees one test saying so.
+set(GLOBE_GTEST_XML_DIR "${PROJECT_BINARY_DIR}/Testing/gtest")
+function(globe_register_test_groups name solo)
+  set(base "${CMAKE_CURRENT_BINARY_DIR}/${name}")
+  string(REPLACE ";" "|" properties "${ARGN}")  # one argument each on the command line
+  string(REPLACE ";" "|" solo "${solo}")
+  set(script "${PROJECT_SOURCE_DIR}/cmake/GlobeTestGroupsScript.cmake")
+  set_property(TARGET ${name} APPEND PROPERTY LINK_DEPENDS "${script}")  # a new script relists
+  add_custom_command(TARGET ${name} POST_BUILD BYPRODUCTS "${base}_tests.cmake"
+    COMMAND ${CMAKE_COMMAND} -D "TEST_EXECUTABLE=$<TARGET_FILE:${name}>" -D "TEST_PREFIX=${name}."
+      -D "WORKING_DIR=${CMAKE_CURRENT_BINARY_DIR}" -D "CTEST_FILE=${base}_tests.cmake"
+      -D "XML_DIR=${GLOBE_GTEST_XML_DIR}" -D "SOLO=${solo}" -D "PROPERTIES=${properties}"
+      -P "${script}"
+    VERBATIM)
+  file(WRITE "${base}_include.cmake" "if(EXISTS [==[${base}_tests.cmake]==])\n"
+    "  include([==[${base}_tests.cmake]==])\n"
+    "else()\n  add_test(${name}_NOT_BUILT ${name}_NOT_BUILT)\nendif()\n")
+  set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${base}_include.cmake")
 endfunction()

@@ -17,6 +17,7 @@ TSAN_FLAGS=(-DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
 use_test_tmpdir  # scratch files on tmpfs where there is one (tools/lib/test-tmpdir.sh)
 . tools/lib/build-checked.sh
 . tools/lib/stage-time.sh
+. tools/lib/gtest-results.sh  # the tests each pass ran, counted from GoogleTest's reports
 
 # A list file's entries: the first word of each line that is not a comment, TARGET or
 # TARGET:SuiteA,SuiteB.
@@ -40,6 +41,7 @@ echo "== ASan+UBSan: the tests that feed the program bytes (tools/sanitizers/asa
 bash tools/configure.sh build-asan -DGLOBE_SANITIZE=ON
 # shellcheck disable=SC2086 # one argument per target
 stage "asan build" build_checked build-asan --target $ASAN_TARGETS
+rm -rf build-asan/Testing/gtest
 # The longest tests first (tools/run-tests.sh explains), from the committed times.
 seed_ctest_costs build-asan
 # The GLFW window tests (Xvfb) leak 112 bytes inside a GL/X driver module that is dlclose'd before
@@ -55,6 +57,7 @@ ASAN_OPTIONS=halt_on_error=1:abort_on_error=1:detect_leaks=1:strict_string_check
 ASAN_OPTIONS=halt_on_error=1:abort_on_error=1:detect_leaks=0:strict_string_checks=1 \
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
   stage "asan window tests" "${ASAN_RUN[@]}" -R "$WINDOW_TESTS"
+gtest_results build-asan/Testing/gtest
 
 echo "== TSan: the tests of code that runs on several threads (tools/sanitizers/tsan-tests.txt)"
 # Everything instrumented, the tests too: TSan reports false races where an uninstrumented
@@ -62,6 +65,7 @@ echo "== TSan: the tests of code that runs on several threads (tools/sanitizers/
 bash tools/configure.sh build-tsan -DGLOBE_SANITIZE_THREAD=ON "${TSAN_FLAGS[@]}"
 # shellcheck disable=SC2086
 stage "tsan build" build_checked build-tsan --target $TSAN_TARGETS
+rm -rf build-tsan/Testing/gtest
 seed_ctest_costs build-tsan
 # Mesa's llvmpipe draws on threads of its own, uninstrumented, whose hand-offs TSan cannot see:
 # it draws on the calling thread here, and keeps no shader-cache thread.
@@ -69,3 +73,4 @@ LP_NUM_THREADS=0 MESA_SHADER_CACHE_DISABLE=true \
   TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$PWD/tools/sanitizers/tsan-gdal.supp" \
   stage "tsan suite" ctest --test-dir build-tsan -j"$JOBS" \
   -R "$(pattern tools/sanitizers/tsan-tests.txt)" --output-on-failure --timeout 1800
+gtest_results build-tsan/Testing/gtest
