@@ -3,20 +3,19 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <iterator>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <optional>
 #include <sstream>
 #include <vector>
 
+#include "core/read_file.hpp"
+#include "core/xml_escape.hpp"
 #include "formats/pmtiles.hpp"
 #include "publish/layer_sampler.hpp"
 #include "publish/pmtiles_writer.hpp"
 #include "publish/web_mercator.hpp"
 #include "transport/atomic_file.hpp"
-#include "core/xml_escape.hpp"
 
 namespace globe::publish {
 namespace {
@@ -24,6 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 constexpr uint32_t kImageryTileSize = kWebMercatorTileSizePixels;
 constexpr uint32_t kMaxExportZoom = 24;
+constexpr std::uintmax_t kMaxTileJsonBytes = 4u << 20;  // an earlier export's tilejson.json
 
 // What an export covers: zooms, and where the layer's sources lie within the region (latitudes
 // within the projection's). The sources' own rectangles, not the layer's (the union of its
@@ -166,11 +166,13 @@ Result<nlohmann::json> mergedTileJson(const fs::path& outDir, const ImageryPlan&
                       {"bounds", {b.west, b.south, b.east, b.north}}};
   if (!attribution.empty()) j["attribution"] = attribution;
   const fs::path path = outDir / "tilejson.json";
-  std::ifstream in(path);
-  if (in) {
+  std::error_code missing;
+  if (fs::exists(path, missing)) {
+    const auto text = readFileBounded(path, kMaxTileJsonBytes);
+    if (!text) return makeError(text.error() + "; remove it or the tree");
     nlohmann::json earlier;
     try {
-      earlier = nlohmann::json::parse(std::string(std::istreambuf_iterator<char>(in), {}));
+      earlier = nlohmann::json::parse(*text);
     } catch (const nlohmann::json::exception& e) {
       return makeError(path.string() + ": not JSON (" + e.what() + "); remove it or the tree");
     }

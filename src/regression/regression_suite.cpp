@@ -1,9 +1,10 @@
 #include "regression/regression_suite.hpp"
 
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
+
+#include "core/read_file.hpp"
 
 namespace globe::regression {
 namespace {
@@ -134,20 +135,9 @@ Result<RegressionSuite> parseRegressionSuite(const std::string& text,
 }
 
 Result<RegressionSuite> loadRegressionSuite(const std::filesystem::path& file) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(file, error)) {
-    return makeError(file.string() + ": no such suite file");
-  }
-  const auto bytes = std::filesystem::file_size(file, error);
-  if (error || bytes > kMaxSuiteBytes) {
-    return makeError(file.string() + ": larger than the " +
-                     std::to_string(kMaxSuiteBytes >> 20) + " MiB a suite may have");
-  }
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in && !in.eof()) return makeError(file.string() + ": cannot be read");
-  return parseRegressionSuite(text.str(), file);
+  auto text = readFileBounded(file, kMaxSuiteBytes);
+  if (!text) return makeError(text.error() + " (a regression suite)");
+  return parseRegressionSuite(*text, file);
 }
 
 std::filesystem::path referencePath(const RegressionSuite& suite, const std::string& viewName) {

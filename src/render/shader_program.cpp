@@ -1,27 +1,20 @@
 // Shader file reading, compilation and linking with info-log error reporting.
 #include "render/shader_program.hpp"
 
-#include <fstream>
-#include <sstream>
 #include <string>
+
+#include "core/read_file.hpp"
 
 namespace globe::render {
 namespace {
 
-constexpr std::streamoff kMaxShaderFileBytes = 1 << 20;
+constexpr std::uintmax_t kMaxShaderFileBytes = 1 << 20;
 
 Result<std::string> readTextFile(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return makeError(path.string() + ": cannot read shader file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return makeError(path.string() + ": cannot read shader file");
-  std::string result = std::move(text).str();
-  if (static_cast<std::streamoff>(result.size()) > kMaxShaderFileBytes) {
-    return makeError(path.string() + ": shader file larger than 1 MiB");
-  }
-  if (result.empty()) return makeError(path.string() + ": shader file is empty");
-  return result;
+  auto text = readFileBounded(path, kMaxShaderFileBytes);
+  if (!text) return makeError(text.error() + " (a shader file)");
+  if (text->empty()) return makeError(path.string() + ": shader file is empty");
+  return text;
 }
 
 // `defines` go on the line after the "#version" line (no code may precede it), or first without

@@ -62,7 +62,7 @@ TEST(RegressionSuite, EachMistakeIsNamed) {
 TEST(RegressionSuite, AMissingFileIsNamed) {
   auto suite = loadRegressionSuite("/nonexistent/suite.json");
   ASSERT_FALSE(suite);
-  EXPECT_EQ(suite.error(), "/nonexistent/suite.json: no such suite file");
+  EXPECT_EQ(suite.error(), "/nonexistent/suite.json: no such file (a regression suite)");
 }
 
 }  // namespace

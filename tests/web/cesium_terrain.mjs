@@ -19,11 +19,7 @@ const HEIGHT = 540;
 const CAMERA = [138.60, 35.20, 2200, 33, 2, 0];
 const LEVEL_ZERO_ERROR = (6378137 * 2 * Math.PI * 0.25) / (65 * 2);
 
-const failures = [];
-const check = (ok, what) => {
-  h.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
-  if (!ok) failures.push(what);
-};
+const { check, finish } = h.checks();
 
 const work = h.tempDir('cesium');
 const pyramid = h.bundledPyramid(work);
@@ -35,7 +31,7 @@ const { browser } = await h.launchBrowser({ width: WIDTH, height: HEIGHT });
 
 const pngOf = (dataUrl) => Buffer.from(dataUrl.slice(dataUrl.indexOf(',') + 1), 'base64');
 
-try {
+await finish(async () => {
   // 1. Heights.
   const { page, refused } = await h.openPage(browser, server.url('/pages/cesium.html'));
   const info = await page.evaluate((o) => window.globeTest.init(o), { terrainUrl: server.url('/qm/') });
@@ -119,16 +115,7 @@ try {
   check(se.max >= 40 && relief >= 0.2, 'the relief differs from the bare ellipsoid (max ≥ 40 px, ≥ 20% of columns > 10 px)');
 
   check(refused.length === 0, `no request beyond 127.0.0.1${refused.length ? ': ' + refused.slice(0, 5).join(' ') : ''}`);
-} catch (e) {
-  failures.push(e.stack || String(e));
-  console.log(`FAIL ${e.stack || e}`);
-} finally {
+}, async () => {
   await browser.close().catch(() => {});
   server.stop();
-}
-if (failures.length) {
-  console.log(`${failures.length} check(s) failed`);
-  process.exit(1);
-}
-console.log('all checks passed');
-process.exit(0);
+});

@@ -22,11 +22,7 @@ const TOP_VIEW = { center: [138.7274, 35.3606], zoom: 12.5, pitch: 0, bearing: 0
 // Oblique, from the south-west like the CesiumJS picture.
 const PICTURE_VIEW = { center: [138.7274, 35.3606], zoom: 11.2, pitch: 72, bearing: 33 };
 
-const failures = [];
-const check = (ok, what) => {
-  h.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
-  if (!ok) failures.push(what);
-};
+const { check, finish } = h.checks();
 const pngOf = (dataUrl) => Buffer.from(dataUrl.slice(dataUrl.indexOf(',') + 1), 'base64');
 
 const work = h.tempDir('maplibre');
@@ -49,7 +45,7 @@ const toLonLat = ([x, y], z) => {
   return [(x / size) * 360 - 180, (180 / Math.PI) * Math.atan(Math.sinh(n))];
 };
 
-try {
+await finish(async () => {
   const { page, refused } = await h.openPage(browser, server.url('/pages/maplibre.html'));
   await page.waitForFunction(() => window.globeTestReady === true, { timeout: 60000 });
   const api = (fn, ...args) => page.evaluate((f, a) => window.globeTest[f](...a), fn, args);
@@ -129,16 +125,7 @@ try {
   check(tiles.length > 0 && failed.length === 0,
     `MapLibre fetched ${tiles.length} tiles, each served${failed.length ? ': ' + failed.slice(0, 3).join('; ') : ''}`);
   check(refused.length === 0, `no request beyond 127.0.0.1${refused.length ? ': ' + refused.slice(0, 5).join(' ') : ''}`);
-} catch (e) {
-  failures.push(e.stack || String(e));
-  h.log(`FAIL ${e.stack || e}`);
-} finally {
+}, async () => {
   await browser.close().catch(() => {});
   server.stop();
-}
-if (failures.length) {
-  console.log(`${failures.length} check(s) failed`);
-  process.exit(1);
-}
-console.log('all checks passed');
-process.exit(0);
+});

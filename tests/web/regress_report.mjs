@@ -9,11 +9,7 @@ import { spawnSync } from 'node:child_process';
 import * as h from '../../tools/web/lib/harness.mjs';
 
 h.watchdog(Number(process.env.GLOBE_WEB_TIMEOUT_S || 540), 'the regress report test');
-const failures = [];
-const check = (ok, what) => {
-  h.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
-  if (!ok) failures.push(what);
-};
+const { check, finish } = h.checks();
 
 const work = h.tempDir('regress');
 h.bundledPyramid(work);
@@ -32,7 +28,7 @@ check(changed.status === 1, `globe regress exits 1 for the changed view (exit ${
 
 const server = await h.startNginx(h.makeSite(path.join(work, 'site'), { report: out }));
 const { browser } = await h.launchBrowser({ width: 1280, height: 800 });
-try {
+await finish(async () => {
   const { page, refused } = await h.openPage(browser, server.url('/report/report.html'));
   const images = await page.evaluate(() => [...document.images].map((i) => ({
     src: i.getAttribute('src'), width: i.naturalWidth, height: i.naturalHeight,
@@ -48,15 +44,7 @@ try {
   check(status === 'fail', 'the table marks the view failed');
   await page.screenshot({ path: h.outputPath('regress-report.png') });
   check(refused.length === 0, 'no request beyond 127.0.0.1');
-} catch (e) {
-  failures.push(e.stack || String(e));
-} finally {
+}, async () => {
   await browser.close().catch(() => {});
   server.stop();
-}
-if (failures.length) {
-  console.log(`${failures.length} check(s) failed`);
-  process.exit(1);
-}
-console.log('all checks passed');
-process.exit(0);
+});

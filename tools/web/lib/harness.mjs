@@ -305,3 +305,31 @@ export function outputPath(name) {
   fs.mkdirSync(dir, { recursive: true });
   return path.resolve(dir, name);
 }
+
+// A web test's checks: check(ok, what) logs each and keeps the failures; finish(body, cleanup)
+// runs the test's body, counts a throw as a failure, always cleans up, then exits: 0 when every
+// check held, 1 otherwise.
+export function checks() {
+  const failures = [];
+  const check = (ok, what) => {
+    log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
+    if (!ok) failures.push(what);
+  };
+  const finish = async (body, cleanup) => {
+    try {
+      await body();
+    } catch (e) {
+      failures.push(e.stack || String(e));
+      log(`FAIL ${e.stack || e}`);
+    } finally {
+      await cleanup();
+    }
+    if (failures.length) {
+      console.log(`${failures.length} check(s) failed`);
+      process.exit(1);
+    }
+    console.log('all checks passed');
+    process.exit(0);
+  };
+  return { check, finish };
+}
