@@ -1,10 +1,9 @@
 #include "apps/globe/regress_view.hpp"
 
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <vector>
 
+#include "core/read_file.hpp"
 #include "formats/image_io.hpp"
 #include "regression/image_difference.hpp"
 #include "regression/structural_similarity.hpp"
@@ -17,16 +16,19 @@ namespace fs = std::filesystem;
 using regression::ViewOutcome;
 using regression::ViewStatus;
 
-std::string readText(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+// A snapshot's log, bounded: what it says is a few lines; "" when there is none to read.
+constexpr std::uintmax_t kMaxLogBytes = 16u << 20;
+// A reference or an actual image copied whole: far above any image globe snapshot writes.
+constexpr std::uintmax_t kMaxImageBytes = 1u << 30;
+
+std::string readLog(const fs::path& log) {
+  auto text = readFileBounded(log, kMaxLogBytes);
+  return text ? std::move(*text) : std::string();
 }
 
 // The last lines of the process's output: what it said about why it failed.
 std::string logTail(const fs::path& log) {
-  const std::string text = readText(log);
+  const std::string text = readLog(log);
   std::string tail = text.size() > 600 ? "..." + text.substr(text.size() - 600) : text;
   while (!tail.empty() && (tail.back() == '\n' || tail.back() == ' ')) tail.pop_back();
   for (char& c : tail) c = c == '\n' ? ' ' : c;
@@ -48,7 +50,7 @@ std::string processError(const SnapshotExit& exit, const fs::path& log, double t
     return "globe snapshot exited with " + std::to_string(exit.exitCode) + ": " + logTail(log);
   }
   // Its summary line: "OUT.png: N tiles drawn, ...".
-  const std::string text = readText(log);
+  const std::string text = readLog(log);
   const size_t drawn = text.find(" tiles drawn");
   if (drawn == std::string::npos) {
     return "globe snapshot did not say what it drew: " + logTail(log);
@@ -63,9 +65,10 @@ std::string processError(const SnapshotExit& exit, const fs::path& log, double t
 Result<void> copyFileAtomically(const fs::path& from, const fs::path& to) {
   std::error_code error;
   fs::create_directories(to.parent_path(), error);
-  const std::string bytes = readText(from);
-  if (bytes.empty()) return makeError(from.string() + ": empty or unreadable");
-  return transport::writeFileAtomically(to, bytes);
+  const auto bytes = readFileBounded(from, kMaxImageBytes);
+  if (!bytes) return makeError(bytes.error());
+  if (bytes->empty()) return makeError(from.string() + ": empty");
+  return transport::writeFileAtomically(to, *bytes);
 }
 
 void removeQuietly(const fs::path& file) {

@@ -1,5 +1,7 @@
-// `globe snapshot` runs as child processes, a few at a time: globe regress renders each view in a
-// process of its own, so views run in parallel and one view's crash or hang is that view's error.
+// `globe snapshot` runs in child processes, a few at a time: globe regress sends each view to a
+// `globe snapshot-worker` (snapshot_worker_cli.cpp), which draws one view after another in one
+// process, so views run in parallel, the program starts once per worker rather than per view, and
+// one view's crash or hang is that view's error (its worker is replaced).
 #pragma once
 
 #include <filesystem>
@@ -17,7 +19,7 @@ struct SnapshotJob {
 };
 
 struct SnapshotExit {
-  bool started = false;    // false: never started (message says why)
+  bool started = false;    // false: not started, or its exit lost (message says why)
   int exitCode = -1;       // the process's, when it exited
   int signal = 0;          // the signal that ended it, when one did
   bool timedOut = false;   // killed: past its timeout or the run's budget

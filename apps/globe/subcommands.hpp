@@ -27,5 +27,7 @@ Subcommand addSearchCommand(CLI::App& app, CommonArguments& common);
 Subcommand addProfileCommand(CLI::App& app, CommonArguments& common);
 Subcommand addViewsCommand(CLI::App& app, CommonArguments& common);
 Subcommand addRegressCommand(CLI::App& app, CommonArguments& common);
+// Hidden: what `globe regress` starts to render its views (snapshot_worker_cli.cpp).
+Subcommand addSnapshotWorkerCommand(CLI::App& app);
 
 }  // namespace globe::app

@@ -11,6 +11,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "tests/apps/globe/run_globe.hpp"
 #include "tests/support/damaged_pyramid.hpp"
@@ -117,6 +119,67 @@ TEST(GlobeRegress, ReferencesThenPassThenOneChangedViewFailsAloneThenUpdateRewri
   EXPECT_EQ(runGlobe(regress(suite, out)).exitCode, 0);
   EXPECT_EQ(runGlobe(regress(suite, out, "--filter '^fuji$'")).exitCode, 0);
   EXPECT_EQ(statuses(out).size(), 1u) << "--filter ran one view";
+}
+
+// One worker draws the three views one after another (--jobs 1): each image is byte for byte
+// what `globe snapshot` alone draws, so nothing of one view reaches the next.
+TEST(GlobeRegress, OneWorkerDrawsEachViewAsItsOwnSnapshotWould) {
+  const fs::path dir = globe::testing::freshTempDir("regress-worker");
+  const fs::path suite = makeSuite(dir / "suite");
+  const std::string plain = "--camera 138.60,35.20,6000,30,-15,0 --size 240x135";
+  const std::string overlaid = "--camera 138.80,35.25,9000,315,-25,0 --size 240x135 --overlay " +
+                               (dir / "suite/overlay.kml").string();
+  writeText(suite, R"({"views": [
+    {"name": "fuji", "snapshot": ["pyramid", "--camera", "138.60,35.20,6000,30,-15,0",
+                                  "--size", "240x135"]},
+    {"name": "fuji_overlay", "snapshot": ["pyramid", "--camera", "138.80,35.25,9000,315,-25,0",
+                                          "--overlay", "overlay.kml", "--size", "240x135"]},
+    {"name": "fuji_again", "snapshot": ["pyramid", "--camera", "138.60,35.20,6000,30,-15,0",
+                                        "--size", "240x135"]}]})");
+  const auto run = runGlobe(regress(suite, dir / "out", "--update --jobs 1"));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const std::string pyramid = globe::testing::bundledPyramid().string();
+  const std::pair<std::string, std::string> views[] = {
+      {"fuji", plain}, {"fuji_overlay", overlaid}, {"fuji_again", plain}};
+  for (const auto& [name, arguments] : views) {
+    const fs::path single = dir / (name + ".single.png");
+    const auto alone = runGlobe("snapshot " + pyramid + " " + arguments + " -o " + single.string());
+    ASSERT_EQ(alone.exitCode, 0) << alone.output;
+    EXPECT_EQ(readText(dir / "suite/references" / (name + ".png")), readText(single))
+        << name << ": drawn by the worker differs from its own snapshot";
+  }
+}
+
+// The worker's protocol: an answer for every line, and what is not a snapshot request refused.
+TEST(GlobeSnapshotWorker, AnswersEveryRequestAndRefusesWhatIsNotASnapshot) {
+  const fs::path dir = globe::testing::freshTempDir("snapshot-worker");
+  const auto request = [&](const std::string& folder, const std::string& name,
+                           std::vector<std::string> arguments) {
+    return nlohmann::json{{"folder", folder}, {"log", (dir / (name + ".log")).string()},
+                          {"arguments", arguments}}.dump() + "\n";
+  };
+  const std::string pyramid = globe::testing::bundledPyramid().string();
+  const std::vector<std::string> view = {"snapshot", pyramid, "--camera", "138.7,35.3,9000",
+                                         "--size", "64x36", "-o", (dir / "a.png").string()};
+  writeText(dir / "requests", request(dir.string(), "a", view) + "not json\n" +
+                                  request(dir.string(), "b", {"info", pyramid}) +
+                                  request("/nonexistent-folder", "c", view));
+  const auto run = runGlobe("snapshot-worker < " + (dir / "requests").string());
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_EQ(run.output.find("{\"exit\": 0}"), run.output.rfind("{\"exit\": 0}")) << run.output;
+  size_t refused = 0;
+  for (size_t at = run.output.find("{\"exit\": 2}"); at != std::string::npos;
+       at = run.output.find("{\"exit\": 2}", at + 1)) {
+    ++refused;
+  }
+  EXPECT_EQ(refused, 3u) << run.output;
+  EXPECT_NE(run.output.find("{\"exit\": 0}"), std::string::npos) << run.output;
+  EXPECT_NE(readText(dir / "a.log").find(" tiles drawn"), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir / "a.png"));
+  for (const char* reason : {"is not {folder, log, arguments}", "runs `snapshot` only",
+                             "/nonexistent-folder: No such file or directory"}) {
+    EXPECT_NE(run.output.find(reason), std::string::npos) << reason << "\n" << run.output;
+  }
 }
 
 TEST(GlobeRegress, ViewsThatCannotRenderAreErrorsNeverPasses) {
