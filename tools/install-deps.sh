@@ -24,7 +24,7 @@ PACKAGES=(
 VIDEO_PACKAGES=(ffmpeg)
 TEST_PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev help2man time xvfb xdotool x11-apps imagemagick
-  gnuplot-nox python3-matplotlib mesa-utils nginx-light openssl gdal-bin
+  gnuplot-nox python3-matplotlib mesa-utils nginx-light openssl gdal-bin libxml2-utils
 )
 case "${1:-}" in
   "") PACKAGES+=("${VIDEO_PACKAGES[@]}") ;;

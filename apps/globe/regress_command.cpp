@@ -1,6 +1,7 @@
 #include "apps/globe/regress_command.hpp"
 
 #include <regex.h>
+#include <unistd.h>
 
 #include <chrono>
 
@@ -76,6 +77,9 @@ Result<RegressReport> runRegress(const RegressOptions& options,
   RegressReport report;
   report.outcomes.resize(jobs.size());
   const auto start = std::chrono::steady_clock::now();
+  const int64_t startedUtc = std::chrono::duration_cast<std::chrono::seconds>(
+                                 std::chrono::system_clock::now().time_since_epoch())
+                                 .count();
   runSnapshotJobs(options.globeExecutable, jobs, std::max(1, options.jobs), options.budgetSeconds,
                   [&](size_t index, const SnapshotExit& exit) {
                     report.outcomes[index] =
@@ -85,6 +89,10 @@ Result<RegressReport> runRegress(const RegressOptions& options,
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   report.summary = regression::summarize(report.outcomes, seconds);
+  report.summary.startedUtcSeconds = startedUtc;
+  if (char host[256] = {}; ::gethostname(host, sizeof host - 1) == 0 && host[0] != '\0') {
+    report.summary.hostname = host;
+  }
   const std::string name = options.suiteFile.stem().string();
   for (auto written : {regression::writeJsonReport(out, report.outcomes, report.summary),
                        regression::writeJunitReport(out, name, report.outcomes, report.summary),

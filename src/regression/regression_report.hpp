@@ -3,6 +3,7 @@
 // view's expected, actual and diff images side by side). docs/regression.md describes them.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -34,6 +35,9 @@ struct ViewOutcome {
 struct RunSummary {
   size_t passed = 0, failed = 0, errors = 0, updated = 0;
   double seconds = 0;
+  // When and where it ran (junit.xml's timestamp and hostname): UTC, seconds since 1970.
+  int64_t startedUtcSeconds = 0;
+  std::string hostname = "localhost";
 };
 
 RunSummary summarize(const std::vector<ViewOutcome>& outcomes, double seconds);

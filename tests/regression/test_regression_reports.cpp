@@ -4,12 +4,14 @@
 #include <gtest/gtest.h>
 #include <tinyxml2.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "regression/regression_report.hpp"
+#include "tests/support/build_paths.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 
 namespace globe::regression {
@@ -87,6 +89,47 @@ TEST(RegressionReports, JsonJunitAndHtmlSayTheSame) {
   }
   EXPECT_EQ(html.find("summit.diff.png"), std::string::npos) << "only failed views' images";
   EXPECT_NE(html.find("2% &lt;differ&gt; &amp; &quot;more&quot;"), std::string::npos);
+}
+
+// xmllint's complaints about `file` under tests/data/junit/SCHEMA; "" when it is valid.
+std::string schemaErrors(const fs::path& file, const char* schema) {
+  const fs::path xsd = fs::path(GLOBE_SOURCE_DIR) / "tests/data/junit" / schema;
+  const std::string command =
+      "xmllint --noout --schema '" + xsd.string() + "' '" + file.string() + "' 2>&1";
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (pipe == nullptr) return "popen failed";
+  std::string output;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) output += buffer;
+  const int status = ::pclose(pipe);
+  return status == 0 ? "" : "exit status " + std::to_string(status) + ": " + output;
+}
+
+// Valid under the strict Ant schema (properties, system-out, system-err, a zoneless timestamp, a
+// hostname, typed failures and errors) and Jenkins' xUnit one; a message with terminal colours
+// and other control characters (which XML 1.0 forbids) still gives a valid document.
+TEST(RegressionReports, JunitIsValidUnderTheAntAndJenkinsSchemas) {
+  const fs::path dir = globe::testing::freshTempDir("regression-junit");
+  auto views = outcomes();
+  views.push_back(outcome("tty", ViewStatus::error, 1, 255, 0, 0.2,
+                          "globe snapshot exited with 1: \x1b[31mred\x1b[0m \x01\x7f done"));
+  RunSummary summary = summarize(views, 3.5);
+  summary.startedUtcSeconds = 1765000000;
+  summary.hostname = "ci-runner-7";
+  ASSERT_TRUE(writeJunitReport(dir, "my suite", views, summary));
+  const fs::path junit = dir / "junit.xml";
+  EXPECT_EQ(schemaErrors(junit, "ant-junit.xsd"), "");
+  EXPECT_EQ(schemaErrors(junit, "jenkins-junit-10.xsd"), "");
+  const std::string xml = readText(junit);
+  EXPECT_NE(xml.find("timestamp=\"2025-12-06T05:46:40\" "), std::string::npos) << xml;
+  EXPECT_NE(xml.find("hostname=\"ci-runner-7\""), std::string::npos);
+  EXPECT_NE(xml.find("red"), std::string::npos) << "the message is kept, its controls replaced";
+
+  // The check can fail: a failure without its type is refused by the Ant schema.
+  std::string broken = xml;
+  broken.erase(broken.find(" type=\"differs\""), 15);
+  std::ofstream(dir / "broken.xml", std::ios::binary) << broken;
+  EXPECT_NE(schemaErrors(dir / "broken.xml", "ant-junit.xsd"), "");
 }
 
 }  // namespace

@@ -16,23 +16,7 @@ WORK=$(mktemp -d /tmp/globe-regress-speed.XXXXXX)
 trap 'rm -rf "$WORK"' EXIT
 bash tools/bench/tile_bundled.sh "$BUILD/apps/globe-tiler/globe-tiler" "$WORK"
 
-# 40 views: 8 places x 5 variants (terrain alone, lit, each layer, a coarser SSE).
-python3 - "$WORK/suite.json" <<'PY'
-import json, sys
-places = {
-    "globe": "138,30,20000000", "fuji": "138.60,35.20,6000,30,-15,0",
-    "fuji_top": "138.73,35.36,9000,0,-60,0", "zion": "-112.93,37.16,4500,330,-20,0",
-    "zion_nadir": "-112.98,37.27,9000", "north_pole": "0,90,3000000",
-    "bering": "180,58,1800000,0,-45,0", "europe": "2,54,2500000",
-}
-variants = {
-    "terrain": [], "lit": ["--lighting"], "bm": ["--layer", "blue-marble"],
-    "zion": ["--layer", "blue-marble", "--layer", "zion,0.7"], "sse8": ["--sse", "8"],
-}
-views = [{"name": f"{p}_{v}", "snapshot": ["pyramid", "--camera", c, "--size", "480x270", *a]}
-         for p, c in places.items() for v, a in variants.items()]
-json.dump({"views": views}, open(sys.argv[1], "w"), indent=1)
-PY
+python3 tools/bench/regress_bench_suite.py "$WORK/suite.json"  # 40 views at 480x270
 "$GLOBE" regress "$WORK/suite.json" --out "$WORK/out" --update >/dev/null
 
 median() { sort -n | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
