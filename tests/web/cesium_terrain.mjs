@@ -34,7 +34,8 @@ const pngOf = (dataUrl) => Buffer.from(dataUrl.slice(dataUrl.indexOf(',') + 1), 
 await finish(async () => {
   // 1. Heights.
   const { page, refused } = await h.openPage(browser, server.url('/pages/cesium.html'));
-  const info = await page.evaluate((o) => window.globeTest.init(o), { terrainUrl: server.url('/qm/') });
+  const info = await page.evaluate((o) => window.globeTest.init(o),
+    { terrainUrl: server.url('/qm/'), requestRenderMode: true });
   h.log(`layer.json maxzoom ${layer.maxzoom}; CesiumJS availability to level ${info.maxLevel}`);
   check(info.maxLevel === layer.maxzoom, `CesiumJS reads the tree's levels (0-${layer.maxzoom})`);
   const points = h.randomPoints(300, [138.15, 35.15, 138.85, 35.85]);
