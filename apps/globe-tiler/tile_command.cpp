@@ -138,6 +138,9 @@ int runTileCommand(int argc, char** argv, TileCommandKind kind) {
                            ->excludes(zUnitsOption);
   app.add_flag("--no-data-is-sea", options.noDataIsSea,
                "every input's no data is water (an explicit water code), not missing data");
+  app.add_flag("--force", options.allowImages,
+               "tile an 8-bit colour or paletted image's band 1 as heights (refused otherwise: "
+               "such a file is a layer for globe-tiler imagery)");
   bool quiet = false;
   app.add_flag("-q,--quiet", quiet, "no progress bar");
   app.footer(

@@ -46,8 +46,9 @@ Result<camera::CameraPose> parseCameraArgument(const std::string& text) {
   }
   if (v[1] < -90 || v[1] > 90)
     return makeError("--camera '" + text + "': latitude must be within -90..90");
-  if (v[0] < -540 || v[0] > 540)
-    return makeError("--camera '" + text + "': longitude out of range");
+  if (v[0] < -180 || v[0] > 180) {  // not wrapped: 200 is more likely a slip than 200-360
+    return makeError("--camera '" + text + "': longitude out of range (-180..180)");
+  }
   if (v[2] < -12000 || v[2] > 1e9) {
     return makeError("--camera '" + text + "': height must be between -12000 m and 1e9 m");
   }

@@ -1,5 +1,6 @@
 #include "apps/globe/common_options.hpp"
 #include "apps/globe/stderr_warnings.hpp"
+#include "apps/globe/wrong_kind_hint.hpp"
 #include "overlays/overlay_file.hpp"
 #include "services/imagery_services.hpp"
 #include "services/terrain_services.hpp"
@@ -164,12 +165,18 @@ bool applySceneArguments(const char* command, const CommonArguments& arguments,
       std::fprintf(stderr, "globe %s: %s\n", command, layer.error().c_str());
       return false;
     }
+    if (const std::string hint = layerGivenAnOverlayHint(layer->directory); !hint.empty()) {
+      std::fprintf(stderr, "globe %s: --layer %s: not a layer%s\n", command, given.c_str(),
+                   hint.c_str());
+      return false;
+    }
     scene.layers.push_back(*layer);
   }
   for (const std::string& file : arguments.overlayFiles) {
     auto document = overlays::readOverlayFile(file);
     if (!document) {
-      std::fprintf(stderr, "globe %s: --overlay %s\n", command, document.error().c_str());
+      std::fprintf(stderr, "globe %s: --overlay %s%s\n", command, document.error().c_str(),
+                   overlayGivenALayerHint(file).c_str());
       return false;
     }
     for (const std::string& warning : document->warnings) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/globe/cli_hints.hpp"
 #include "apps/globe/common_options.hpp"
 #include "apps/globe/globe_command_line.hpp"
 #include "apps/globe/subcommands.hpp"
@@ -42,7 +43,9 @@ int runGlobeCommandLine(const std::vector<std::string>& arguments) {
   } catch (const CLI::ParseError& error) {
     // --help and --version end here too (exit 0). A mistake in the arguments is exit 2 for every
     // subcommand, as they document, whatever CLI11's own code for the kind of mistake.
-    return app.exit(error) == 0 ? 0 : 2;
+    const int code = app.exit(error);
+    if (code != 0) std::fputs(mistakeHints(app, arguments).c_str(), stderr);
+    return code == 0 ? 0 : 2;
   }
   const auto context = makeCommandContext(common);
   if (!context) return 2;

@@ -11,6 +11,13 @@
 namespace globe::app {
 namespace {
 
+// A compass heading in [0, 360), as --camera takes it (330, not -30).
+double compassDegrees(double radians) {
+  double degrees = std::fmod(geo::radiansToDegrees(radians), 360.0);
+  if (degrees < 0) degrees += 360.0;
+  return std::round(degrees * 1e3) >= 360e3 ? 0.0 : degrees;  // 359.9999 would print as 360
+}
+
 // Degrees in (-180, 180]; "-0.000" never printed.
 double signedAngleDegrees(double radians) {
   double degrees = geo::radiansToDegrees(radians);
@@ -71,7 +78,7 @@ std::string formatPlayLog(const std::vector<FrameRecord>& frames) {
         printable(r.clearanceMeters, 1e3), r.collided ? 1 : 0,
         std::string(collision::toString(r.response)).c_str(), r.tilesDrawn,
         std::string(toString(r.terrainSource)).c_str(),
-        printable(signedAngleDegrees(r.pose.headingRadians), 1e3),
+        printable(compassDegrees(r.pose.headingRadians), 1e3),
         printable(geo::radiansToDegrees(r.pose.pitchRadians), 1e3),
         printable(signedAngleDegrees(r.pose.rollRadians), 1e3),
         printable(r.scriptedHeightMeters, 1e3), printable(r.nearClearanceMeters, 1e3),

@@ -1,17 +1,48 @@
 #include "apps/globe/snapshot_command.hpp"
 
 #include <chrono>
+#include <cstdio>
 
 #include "apps/globe/attribution_stamp.hpp"
 #include "apps/globe/imagery.hpp"
 #include "apps/globe/overlay_drawing.hpp"
 #include "apps/globe/renderer_gpu.hpp"
+#include "collision/clearance_settings.hpp"
 #include "formats/image_io.hpp"
 #include "render/hud_renderer.hpp"
 #include "render/osmesa_context.hpp"
 #include "render/read_pixels.hpp"
 
 namespace globe::app {
+
+namespace {
+
+// The pose with a height above the terrain made absolute, and a camera inside the terrain (which
+// would see the terrain's inside: a black picture) lifted to the eye height the collision response
+// keeps, with a warning.
+Result<camera::CameraPose> placeCamera(scene::TerrainScene& scene, camera::CameraPose pose,
+                                       bool heightAboveTerrain, const core::WarningSink& warnings) {
+  // Above the highest ground on Earth no camera can be inside it: no height to look up.
+  constexpr double kAboveAnyGroundMeters = 9000;
+  if (!heightAboveTerrain && pose.position.heightMeters > kAboveAnyGroundMeters) return pose;
+  auto ground =
+      scene.terrainHeightMeters(pose.position.longitudeRadians, pose.position.latitudeRadians);
+  if (!ground && heightAboveTerrain) return Error{ground.error()};
+  if (!ground) return pose;  // a tile that failed: drawn coarser, and said so by the scene
+  if (heightAboveTerrain) pose.position.heightMeters += *ground;
+  const double floorMeters = *ground + collision::ClearanceSettings{}.eyeMeters;
+  if (pose.position.heightMeters < floorMeters) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "the camera at %.1f m is inside the terrain (%.1f m there): lifted to %.1f m",
+                  pose.position.heightMeters, *ground, floorMeters);
+    core::warn(warnings, text);
+    pose.position.heightMeters = floorMeters;
+  }
+  return pose;
+}
+
+}  // namespace
 
 Result<SnapshotReport> runSnapshot(const SnapshotOptions& options) {
   const auto start = std::chrono::steady_clock::now();
@@ -21,12 +52,9 @@ Result<SnapshotReport> runSnapshot(const SnapshotOptions& options) {
   if (!scene) return Error{scene.error()};
   camera::CameraPose pose = options.pose;
   if (!pose.isFinite()) return makeError("the camera pose is not finite");
-  if (options.heightAboveTerrain) {
-    auto ground = (*scene)->terrainHeightMeters(pose.position.longitudeRadians,
-                                                pose.position.latitudeRadians);
-    if (!ground) return Error{ground.error()};
-    pose.position.heightMeters += *ground;
-  }
+  auto placed = placeCamera(**scene, pose, options.heightAboveTerrain, options.scene.warnings);
+  if (!placed) return Error{placed.error()};
+  pose = *placed;
   auto context = render::OsMesaContext::create(options.widthPixels, options.heightPixels);
   if (!context) return Error{context.error()};
   render::TerrainRendererOptions rendererOptions;

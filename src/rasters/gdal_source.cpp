@@ -220,6 +220,29 @@ Result<formats::VerticalUnits> bandVerticalUnits(GDALDatasetH source, const std:
                                        hasOffset ? offset : 0.0, zOverride);
 }
 
+// What makes `dataset` a picture rather than heights ("" when nothing does): 8-bit bands that
+// GDAL calls red, green and blue, or a palette.
+std::string pictureBands(GDALDatasetH dataset) {
+  GDALRasterBandH first = GDALGetRasterBand(dataset, 1);
+  if (GDALGetRasterColorInterpretation(first) == GCI_PaletteIndex) return "a paletted image";
+  if (GDALGetRasterDataType(first) != GDT_Byte || GDALGetRasterCount(dataset) < 3) return "";
+  struct Colour {
+    GDALColorInterp interpretation;
+    const char* name;
+  };
+  static constexpr Colour kColours[] = {
+      {GCI_RedBand, "red"}, {GCI_GreenBand, "green"}, {GCI_BlueBand, "blue"}};
+  std::string named;
+  for (int b = 1; b <= 3; ++b) {
+    const Colour& c = kColours[b - 1];
+    if (GDALGetRasterColorInterpretation(GDALGetRasterBand(dataset, b)) != c.interpretation) {
+      return "";
+    }
+    named += (named.empty() ? "" : ", ") + std::to_string(b) + " " + c.name;
+  }
+  return "an 8-bit colour image (bands " + named + ")";
+}
+
 }  // namespace
 
 Result<std::unique_ptr<RasterSource>> openGdalSource(const std::filesystem::path& path,
@@ -232,6 +255,11 @@ Result<std::unique_ptr<RasterSource>> openGdalSource(const std::filesystem::path
                                nullptr, nullptr));
   if (!source) return makeError(name + ": GDAL cannot open it as a raster: " + quiet.message());
   if (GDALGetRasterCount(source.get()) < 1) return makeError(name + ": has no raster band");
+  if (const std::string picture = pictureBands(source.get());
+      !picture.empty() && !options.allowImages) {
+    return makeError(name + ": " + picture + ", not elevation: tile it as a layer with " +
+                     "`globe-tiler imagery`, or give --force to tile its band 1 as heights");
+  }
   const std::string driver = GDALGetDriverShortName(GDALGetDatasetDriver(source.get()));
   auto vertical = bandVerticalUnits(source.get(), name, options.vertical);
   if (!vertical) return Error{vertical.error()};

@@ -48,6 +48,9 @@ class RasterSource {
 
 struct RasterOpenOptions {
   formats::VerticalOverride vertical;  // unset: each file's own unit type, scale and offset
+  // A picture (8-bit red/green/blue bands, or a palette) is refused as elevation unless this is
+  // set (globe-tiler --force): its band 1 would be tiled as heights in metres.
+  bool allowImages = false;
 };
 
 // Native GTOPO30 reader: pread per row, never loads the file.

@@ -11,7 +11,8 @@ namespace globe::tiling {
 Result<ShardPlanReport> planShards(const TilerOptions& options) {
   if (options.shardCount == 0) return makeError("--shards must be at least 1");
   auto opened = openSources(options.inputs, {options.verticesPerSide, options.maxLevel,
-                                             options.vertical, options.noDataIsSea});
+                                             options.vertical, options.noDataIsSea,
+                                             options.allowImages});
   if (!opened) return Error{opened.error()};
   const std::vector<TilerSource>& sources = *opened;
   const TilingPlan plan = planOfSources(sources, options.packTilesPerSide);

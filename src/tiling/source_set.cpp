@@ -123,7 +123,7 @@ Result<std::vector<TilerSource>> openSources(const std::vector<std::string>& inp
   }
   std::vector<TilerSource> sources;
   for (const std::string& input : inputs) {
-    const rasters::RasterOpenOptions openOptions{options.vertical};
+    const rasters::RasterOpenOptions openOptions{options.vertical, options.allowImages};
     auto raster = rasters::openRasterSource(input, openOptions);
     if (!raster) return Error{raster.error()};
     TilerSource source;

@@ -60,6 +60,7 @@ struct SourceSetOptions {
   std::optional<uint32_t> maxLevel;      // caps every source's finest level
   formats::VerticalOverride vertical{};  // --z-units / --z-scale, for every input
   bool noDataIsSea = false;              // --no-data-is-sea: every input's no data is water
+  bool allowImages = false;              // --force: a colour image's band 1 as heights
 };
 
 // GTOPO30 itself (a 30″ grid in GTOPO30's format) has no voids: its -9999 is the ocean mask, an

@@ -205,7 +205,8 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
   }
   TilerReport report;
   auto opened = openSources(options.inputs, {options.verticesPerSide, options.maxLevel,
-                                             options.vertical, options.noDataIsSea});
+                                             options.vertical, options.noDataIsSea,
+                                             options.allowImages});
   if (!opened) return Error{opened.error()};
   std::vector<TilerSource>& allSources = *opened;
   if (options.vertical.units || options.vertical.metersPerUnit) {

@@ -31,6 +31,7 @@ struct TilerOptions {
   ProgressSink progress;                 // how far the run is; empty: not reported
   formats::VerticalOverride vertical{};  // --z-units / --z-scale: replace every input's own unit
   bool noDataIsSea = false;              // --no-data-is-sea: every input's no data is water
+  bool allowImages = false;              // --force: tile a colour image's band 1 as heights
   TilerRole role = TilerRole::Whole;
   uint32_t shardIndex = 0, shardCount = 1;  // TilerRole::Shard
   std::optional<uint32_t> shardLevel;       // TilerRole::Shard (default: defaultShardLevel)

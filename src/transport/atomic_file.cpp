@@ -73,7 +73,16 @@ Result<void> writeFileAtomically(const std::filesystem::path& path,
                                      std::to_string(::getpid()) + "-" +
                                      std::to_string(++tempCounter);
   Fd fd(::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644));
-  if (fd.get() < 0) return ioError(temp, "cannot create", errno);
+  if (fd.get() < 0) {  // named as the caller gave it: the temporary name is ours, not theirs
+    const int err = errno;
+    const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : ".";
+    std::error_code missing;
+    if (err == ENOENT && !std::filesystem::is_directory(folder, missing)) {
+      return makeError(path.string() + ": cannot write: its folder " + folder.string() +
+                       " does not exist");
+    }
+    return ioError(path, "cannot create", err);
+  }
 
   auto fail = [&](std::string_view what, int err) -> Result<void> {
     ::unlink(temp.c_str());

@@ -1,7 +1,7 @@
 // Fixtures made once per CTest run and shared by every test process that asks for them: the
-// bundled pyramid, the imagery layers, the water mask. Each GoogleTest case runs in a process of
-// its own, so a fixture kept in a static was rebuilt by every case (the bundled pyramid alone in
-// some 400 processes a run: most of the suite's time, and under ASan most of CI's).
+// bundled pyramid, the imagery layers, the water mask. Each GoogleTest suite runs in a process of
+// its own (cmake/GlobeTestGroupsScript.cmake), so a fixture kept in a static would be rebuilt by
+// every suite that asks.
 #pragma once
 
 #include <filesystem>

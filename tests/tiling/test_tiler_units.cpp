@@ -326,6 +326,23 @@ TEST(TilerUnits, BadOverridesAreErrors) {
   EXPECT_NE(both.output.find("excludes"), std::string::npos) << both.output;
 }
 
+// A colour photo's red band is not elevation: refused, naming the bands and the imagery tiler;
+// tiled as heights only when told --force.
+TEST(TilerUnits, AColourImageIsRefusedAsElevationUnlessForced) {
+  const std::string tif = std::string(GLOBE_SOURCE_DIR) + "/data/imagery/zion-landsat8-rgb.tif";
+  const ProgramRun refused = runGlobeTiler(workDir() / "photo", {tif});
+  EXPECT_EQ(refused.exitCode, 1) << refused.output;
+  EXPECT_NE(refused.output.find(tif + ": an 8-bit colour image (bands 1 red, 2 green, 3 blue), "
+                                      "not elevation: tile it as a layer with `globe-tiler "
+                                      "imagery`, or give --force"),
+            std::string::npos)
+      << refused.output;
+  EXPECT_FALSE(fs::exists(workDir() / "photo" / formats::kManifestFileName));
+  const ProgramRun forced = runGlobeTiler(workDir() / "photo-forced", {tif}, {"--force"});
+  EXPECT_EQ(forced.exitCode, 0) << forced.output;
+  EXPECT_TRUE(fs::exists(workDir() / "photo-forced" / formats::kManifestFileName));
+}
+
 TEST(TilerUnits, HelpListsTheOptions) {
   const ProgramRun help = runUnitsProgram(GLOBE_TILER_EXE, {"--help"});
   EXPECT_EQ(help.exitCode, 0);

@@ -90,6 +90,8 @@ TEST(NonFiniteInput, CameraArgumentsOfSnapshotAndViewAreNamed) {
       {snapshot + "138,35,1000,0,0,NaN", "'NaN' is not a finite number", 2},
       {snapshot + "138,35,1e300", "height must be between", 2},
       {snapshot + "1e300,35,1000", "longitude out of range", 2},
+      {snapshot + "200,35,1000", "longitude out of range (-180..180)", 2},
+      {snapshot + "-180.5,35,1000", "longitude out of range (-180..180)", 2},
       {"view PYRAMID --frames 1 --camera nan,nan,nan", "globe view: --camera 'nan,nan,nan'", 2},
       {"view PYRAMID --frames 1 --camera 0,0,inf", "'inf' is not a finite number", 2},
       {"view PYRAMID --frames 1 --camera 0,0,1e999,0,0,0", "'1e999' is not a finite number", 2},

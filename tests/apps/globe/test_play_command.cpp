@@ -263,6 +263,22 @@ namespace {
 // samples; the largest, 314 samples in the Southern Alps) and skims the filled surface 1 m up:
 // the camera never goes below the drawn surface, nor more than 3 m below the filled one (the
 // finest tiles), where it used to follow a void's pit down to sea level.
+// The log's heading is a compass heading, as the path and --camera give it: 330, not -30.
+TEST(GlobePlayLog, HeadingsAreCompassHeadingsAsTheCameraTakesThem) {
+  const fs::path dir = freshTempDir("play-heading");
+  camera::CameraPathFile path;
+  path.keyframes = {{0.0, 138.70, 35.33, 9000, 330, -30, 0},
+                    {0.5, 138.71, 35.34, 9000, 330, -30, 0}};
+  ASSERT_TRUE(camera::writeCameraPathJson(dir / "north-west.json", path));
+  const PlayRun run = runGlobe(bundledPyramid().string() + " " +
+                               (dir / "north-west.json").string() + " --fps 10 --no-frames --out " +
+                               (dir / "out").string());
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const auto rows = readLog(dir / "out" / "log.csv");
+  ASSERT_FALSE(rows.empty());
+  for (const auto& row : rows) EXPECT_EQ(row.at("heading_deg"), "330.000") << row.at("frame");
+}
+
 TEST(GlobePlayVoids, ADiveIntoFormerVoidsStaysOnTheFilledSurface) {
   const fs::path dir = freshTempDir("play-voids");
   auto store = streaming::TileStore::open(bundledPyramid());
