@@ -53,7 +53,7 @@ OUT_MD=${OUT_MD:-docs/performance/regress-drivers.md}
   echo "references drawn by the default driver, judged with the default tolerance (16/255 per"
   echo "channel on at most 0.1 % of pixels, SSIM at least 0.99) as each driver draws them. One run"
   echo "of \`tools/bench/regress_drivers.sh\` ($(date -u +%Y-%m-%d), $(nproc) cores,"
-  echo "$(git rev-parse --short HEAD), Mesa $(dpkg-query -W -f '${Version}' libosmesa6 2>/dev/null || echo '?'))."
+  echo "$(git describe --always --dirty), Mesa $(dpkg-query -W -f '${Version}' libosmesa6 2>/dev/null || echo '?'))."
   echo
   echo "| driver | s | views failed | errors | most pixels over 16/255, % (view) | largest channel difference | lowest SSIM | lowest window SSIM |"
   echo "|---|---|---|---|---|---|---|---|"

@@ -49,7 +49,7 @@ OUT_MD=${OUT_MD:-docs/performance/regress-speed.md}
   echo "A suite of 40 views of the bundled data at 480x270 (8 places x terrain, lit, Blue Marble,"
   echo "Blue Marble + Landsat, SSE 8), every view compared with its reference (all pass). Medians"
   echo "of $RUNS runs in one run of \`tools/bench/regress_speed.sh\` ($(date -u +%Y-%m-%d),"
-  echo "$(nproc) cores, $(git rev-parse --short HEAD)). The single snapshots: the same 40 views,"
+  echo "$(nproc) cores, $(git describe --always --dirty)). The single snapshots: the same 40 views,"
   echo "each \`globe snapshot\` run alone, one after another."
   echo
   echo "The own times: the sum of what each single snapshot says it took (from opening the"
