@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "core/read_file.hpp"
+#include "transport/read_file.hpp"
 #include "formats/image_io.hpp"
 #include "regression/image_difference.hpp"
 #include "regression/structural_similarity.hpp"
@@ -22,7 +22,7 @@ constexpr std::uintmax_t kMaxLogBytes = 16u << 20;
 constexpr std::uintmax_t kMaxImageBytes = 1u << 30;
 
 std::string readLog(const fs::path& log) {
-  auto text = readFileBounded(log, kMaxLogBytes);
+  auto text = transport::readFileBounded(log, kMaxLogBytes);
   return text ? std::move(*text) : std::string();
 }
 
@@ -65,7 +65,7 @@ std::string processError(const SnapshotExit& exit, const fs::path& log, double t
 Result<void> copyFileAtomically(const fs::path& from, const fs::path& to) {
   std::error_code error;
   fs::create_directories(to.parent_path(), error);
-  const auto bytes = readFileBounded(from, kMaxImageBytes);
+  const auto bytes = transport::readFileBounded(from, kMaxImageBytes);
   if (!bytes) return makeError(bytes.error());
   if (bytes->empty()) return makeError(from.string() + ": empty");
   return transport::writeFileAtomically(to, *bytes);

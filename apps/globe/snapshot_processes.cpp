@@ -117,8 +117,11 @@ std::optional<SnapshotExit> readAnswer(Worker& worker, bool& gone) {
   SnapshotExit exit;
   exit.started = true;
   exit.seconds = secondsSince(worker.job->started);
+  // {"exit": N} from the worker; anything else (never expected) counts as a failed view.
   const auto answer = nlohmann::json::parse(worker.answer.substr(0, end), nullptr, false);
-  exit.exitCode = answer.is_object() && answer.value("exit", -1) >= 0 ? answer.value("exit", 1) : 1;
+  const bool understood = answer.is_object() && answer.contains("exit") &&
+                          answer["exit"].is_number_unsigned();
+  exit.exitCode = understood ? answer["exit"].get<int>() : 1;
   worker.answer.erase(0, end + 1);
   return exit;
 }

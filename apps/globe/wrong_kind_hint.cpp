@@ -2,17 +2,16 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <string_view>
+
+#include "core/ascii_case.hpp"
 
 namespace globe::app {
 
 std::string layerGivenAnOverlayHint(const std::filesystem::path& layerPath) {
   static constexpr std::array<std::string_view, 5> kOverlayExtensions = {
       ".kml", ".kmz", ".gpx", ".geojson", ".json"};
-  std::string extension = layerPath.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string extension = core::asciiLower(layerPath.extension().string());
   std::error_code error;
   if (!std::filesystem::is_regular_file(layerPath, error) ||
       std::find(kOverlayExtensions.begin(), kOverlayExtensions.end(), extension) ==

@@ -9,7 +9,7 @@
 #include <sstream>
 #include <vector>
 
-#include "core/read_file.hpp"
+#include "transport/read_file.hpp"
 #include "core/xml_escape.hpp"
 #include "formats/pmtiles.hpp"
 #include "publish/layer_sampler.hpp"
@@ -168,7 +168,7 @@ Result<nlohmann::json> mergedTileJson(const fs::path& outDir, const ImageryPlan&
   const fs::path path = outDir / "tilejson.json";
   std::error_code missing;
   if (fs::exists(path, missing)) {
-    const auto text = readFileBounded(path, kMaxTileJsonBytes);
+    const auto text = transport::readFileBounded(path, kMaxTileJsonBytes);
     if (!text) return makeError(text.error() + "; remove it or the tree");
     nlohmann::json earlier;
     try {

@@ -4,7 +4,7 @@
 #include <set>
 #include <sstream>
 
-#include "core/read_file.hpp"
+#include "transport/read_file.hpp"
 
 namespace globe::regression {
 namespace {
@@ -135,7 +135,7 @@ Result<RegressionSuite> parseRegressionSuite(const std::string& text,
 }
 
 Result<RegressionSuite> loadRegressionSuite(const std::filesystem::path& file) {
-  auto text = readFileBounded(file, kMaxSuiteBytes);
+  auto text = transport::readFileBounded(file, kMaxSuiteBytes);
   if (!text) return makeError(text.error() + " (a regression suite)");
   return parseRegressionSuite(*text, file);
 }

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "core/read_file.hpp"
+#include "transport/read_file.hpp"
 
 namespace globe::render {
 namespace {
@@ -11,7 +11,7 @@ namespace {
 constexpr std::uintmax_t kMaxShaderFileBytes = 1 << 20;
 
 Result<std::string> readTextFile(const std::filesystem::path& path) {
-  auto text = readFileBounded(path, kMaxShaderFileBytes);
+  auto text = transport::readFileBounded(path, kMaxShaderFileBytes);
   if (!text) return makeError(text.error() + " (a shader file)");
   if (text->empty()) return makeError(path.string() + ": shader file is empty");
   return text;

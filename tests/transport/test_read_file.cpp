@@ -7,10 +7,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/read_file.hpp"
+#include "transport/read_file.hpp"
 
 namespace fs = std::filesystem;
-using globe::readFileBounded;
+using globe::transport::readFileBounded;
 
 namespace {
 
