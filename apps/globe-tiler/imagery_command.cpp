@@ -48,8 +48,10 @@ int runImageryCommand(int argc, char** argv) {
       "overlap; its transparent pixels let coarser ones show.\n"
       "Bands: --bands R,G,B[,A] when given; else GDAL's colour interpretation: red, green and "
       "blue in any band order (BGR files draw right), a palette expanded. Otherwise one band is "
-      "grey, and three or more draw their first three (alpha aside) as red, green, blue, with a "
-      "warning naming them when the image has more. Alpha: the band GDAL calls alpha, or the A "
+      "grey (one of heights, signed or float samples or a unit of length, is an elevation model: "
+      "refused without --force; one unsigned 16-bit band is drawn with a warning), and three or "
+      "more draw their first three (alpha aside) as red, green, blue, with a warning naming "
+      "them when the image has more. Alpha: the band GDAL calls alpha, or the A "
       "of --bands.\n"
       "Depth: 8-bit bands are drawn as they are; deeper ones (16-bit, float) are stretched per "
       "band from its 2nd to its 98th percentile (whole band, no data excluded) to 0..255, or by "
@@ -79,6 +81,9 @@ int runImageryCommand(int argc, char** argv) {
   app.add_option("--pack-tiles", options.packTilesPerSide, "tiles per pack file side")
       ->capture_default_str();
   app.add_option("-j,--threads", options.threads, "worker threads (default: every core)");
+  app.add_flag("--force", options.input.allowElevation,
+               "draw one band of heights (signed or float samples, or a unit of length) as grey "
+               "(refused otherwise: such a file is an elevation model, for globe-tiler -o PYRAMID)");
   bool quiet = false;
   app.add_flag("-q,--quiet", quiet, "no progress bar");
   CLI11_PARSE(app, argc, argv);

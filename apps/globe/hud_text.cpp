@@ -113,25 +113,4 @@ std::optional<ScaleBarLength> scaleBarLength(double metersPerPixel, double maxim
   return ScaleBarLength{meters / metersPerPixel, label};
 }
 
-std::vector<std::string> hudHelpLines() {
-  return {
-      "F / Tab      switch orbit <-> fly",
-      "orbit:  left-drag rotates; right/middle/Shift/Ctrl-drag tilts and turns",
-      "        scroll, +/-, PgUp/PgDn zoom; arrows pan; double-click flies there",
-      "fly:    W/S forward/back, A/D left/right, E/Q up/down, Shift x5",
-      "        drag (either button) or arrows look, scroll changes the speed",
-      "        speed = max(2 m/s, clearance per second)",
-      "P            start/stop recording the path (globe-path-*.json)",
-      "K / F12      screenshot (globe-shot-*.png); F11 full screen",
-      "R            back to the start camera; M ruler, Backspace undoes",
-      "G / V / O    go to a place or saved view / save this view / open a file",
-      "N            north up (or click the compass rose, top right)",
-      "L            lighting on imagery: auto -> on -> off",
-      "1 - 4        show / hide layer 1-4 (and select it for [ ])",
-      "[ / ]        the selected layer's opacity -/+ 10%",
-      "H / F1       this help; X elevation profile of ruler / picked line",
-      "Esc          quit",
-  };
-}
-
 }  // namespace globe::app

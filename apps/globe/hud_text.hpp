@@ -1,4 +1,4 @@
-// What the `globe view` HUD says: the always-on status lines and the help overlay. Pure text; the
+// What the `globe view` HUD says: the always-on status lines (the help overlay is the key table's:
 // loop redraws only when the text (frame time aside) changes.
 #pragma once
 
@@ -72,7 +72,5 @@ struct ScaleBarLength {
 };
 std::optional<ScaleBarLength> scaleBarLength(double metersPerPixel, double maximumPixels);
 
-// The help overlay: every key and mouse action.
-std::vector<std::string> hudHelpLines();
 
 }  // namespace globe::app

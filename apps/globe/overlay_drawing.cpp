@@ -72,7 +72,7 @@ void OverlayDrawing::draw(const scene::TerrainScene& scene) {
     const scene::PointMark& mark = marks[point.mark];
     const overlays::Placemark& placemark = placemarkOf(scene, {mark.document, mark.placemark});
     const overlays::Style& style = placemark.style;
-    render::ScreenLabel label;
+    text::ScreenLabel label;
     label.text = style.labelScale > 0 ? placemark.name : std::string();
     label.anchorPixels = point.anchorPixels;
     label.sizePixels =

@@ -47,9 +47,9 @@ class OverlayDrawing {
       : renderer_(std::move(renderer)), shapes_(std::move(shapes)) {}
   std::unique_ptr<render::LabelRenderer> renderer_;
   std::unique_ptr<render::WorldOverlayRenderer> shapes_;  // null: nothing in 3D
-  std::vector<render::ScreenLabel> labels_;
+  std::vector<text::ScreenLabel> labels_;
   std::vector<size_t> labelMarks_;  // per label, its index in scene.pointMarks()
-  std::vector<render::PlacedLabel> placed_;
+  std::vector<text::PlacedLabel> placed_;
   std::optional<overlays::PlacemarkRef> selected_;
 };
 

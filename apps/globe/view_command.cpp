@@ -24,6 +24,7 @@
 #include "apps/globe/go_to.hpp"
 #include "apps/globe/hud_text.hpp"
 #include "apps/globe/imagery.hpp"
+#include "apps/globe/view_actions.hpp"
 #include "apps/globe/overlay_drawing.hpp"
 #include "apps/globe/path_recorder.hpp"
 #include "apps/globe/profile_panel.hpp"
@@ -198,7 +199,7 @@ std::vector<render::HudItem> hudItems(std::vector<std::string> status, bool help
   const float scale = statusBlock.scale;
   if (help) {
     render::HudTextBlock helpBlock;
-    helpBlock.lines = hudHelpLines();
+    helpBlock.lines = helpLines();  // view_actions.hpp
     helpBlock.scale = scale;
     helpBlock.topLeftPixels = statusBlock.topLeftPixels +
                               glm::vec2(0.0f, render::hudBlockSizePixels(statusBlock).y + 8.0f);

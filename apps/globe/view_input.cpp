@@ -2,10 +2,13 @@
 #define GLFW_INCLUDE_NONE
 #include "apps/globe/view_input.hpp"
 
+#include "apps/globe/view_actions.hpp"
+
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace globe::app {
 namespace {
@@ -14,34 +17,23 @@ ViewInput& inputOf(GLFWwindow* window) {
   return *static_cast<ViewInput*>(glfwGetWindowUserPointer(window));
 }
 
-// Held movement keys; true when the key is one of them.
+// Held movement keys: each key and the FlyKeys flag it holds.
+constexpr std::pair<int, bool camera::FlyKeys::*> kFlyKeys[] = {
+    {GLFW_KEY_W, &camera::FlyKeys::forward},   {GLFW_KEY_S, &camera::FlyKeys::back},
+    {GLFW_KEY_A, &camera::FlyKeys::left},      {GLFW_KEY_D, &camera::FlyKeys::right},
+    {GLFW_KEY_Q, &camera::FlyKeys::down},      {GLFW_KEY_E, &camera::FlyKeys::up},
+    {GLFW_KEY_LEFT_SHIFT, &camera::FlyKeys::fast}, {GLFW_KEY_RIGHT_SHIFT, &camera::FlyKeys::fast},
+};
+
+// True when the key is one of them.
 bool trackFlyKey(camera::FlyKeys& keys, int key, bool down) {
-  switch (key) {
-    case GLFW_KEY_W:
-      keys.forward = down;
+  for (const auto& [flyKey, flag] : kFlyKeys) {
+    if (flyKey == key) {
+      keys.*flag = down;
       return true;
-    case GLFW_KEY_S:
-      keys.back = down;
-      return true;
-    case GLFW_KEY_A:
-      keys.left = down;
-      return true;
-    case GLFW_KEY_D:
-      keys.right = down;
-      return true;
-    case GLFW_KEY_Q:
-      keys.down = down;
-      return true;
-    case GLFW_KEY_E:
-      keys.up = down;
-      return true;
-    case GLFW_KEY_LEFT_SHIFT:
-    case GLFW_KEY_RIGHT_SHIFT:
-      keys.fast = down;
-      return true;
-    default:
-      return false;
+    }
   }
+  return false;
 }
 
 // F11: the window over the whole primary monitor and back to where and how large it was.
@@ -60,142 +52,17 @@ void toggleFullscreen(GLFWwindow* window, ViewInput& input) {
   glfwSetWindowMonitor(window, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
 }
 
-// Keys that do the same in both modes; false when the key is not one of them.
-bool commonKey(GLFWwindow* window, ViewInput& input, int key) {
-  switch (key) {
-    case GLFW_KEY_ESCAPE:
-      glfwSetWindowShouldClose(window, GLFW_TRUE);
-      return true;
-    case GLFW_KEY_F:
-    case GLFW_KEY_TAB:
-      input.navigator->toggleMode();
-      return true;
-    case GLFW_KEY_R:
-      input.navigator->reset();
-      return true;
-    case GLFW_KEY_P:
-      input.recordToggleRequested = true;
-      return true;
-    case GLFW_KEY_K:
-    case GLFW_KEY_F12:
-      input.screenshotRequested = true;
-      return true;
-    case GLFW_KEY_H:
-    case GLFW_KEY_F1:
-      input.helpVisible = !input.helpVisible;
-      return true;
-    case GLFW_KEY_G:
-    case GLFW_KEY_V:
-    case GLFW_KEY_O:  // Ctrl+O too: Google Earth's File > Open
-      input.promptOpen = input.promptSwallowG = true;
-      input.promptSavesView = key == GLFW_KEY_V;
-      input.promptOpensFile = key == GLFW_KEY_O;
-      input.promptText.clear();
-      input.promptMessage.clear();
-      return true;
-    case GLFW_KEY_N:
-      input.navigator->northUp();
-      return true;
-    case GLFW_KEY_M:
-      input.rulerOn = !input.rulerOn;
-      return true;
-    case GLFW_KEY_BACKSPACE:
-      input.rulerUndoRequested = input.rulerOn;
-      return input.rulerOn;
-    case GLFW_KEY_X:
-      input.profileVisible = !input.profileVisible;
-      return true;
-    case GLFW_KEY_F11:
-      toggleFullscreen(window, input);
-      return true;
-    default:
-      return false;
-  }
-}
+// The window's side of the actions (view_actions.hpp): closing it and full screen.
+class GlfwViewWindow final : public ViewWindow {
+ public:
+  GlfwViewWindow(GLFWwindow* window, ViewInput& input) : window_(window), input_(input) {}
+  void close() override { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
+  void toggleFullScreen() override { toggleFullscreen(window_, input_); }
 
-// L, 1-4, [ and ] (ImageryControls); false when the key is not one of them or does nothing here
-// (a layer key without that layer). Only [ and ] repeat.
-bool imageryKey(ImageryControls& imagery, int key, bool press) {
-  if (key == GLFW_KEY_L && press) {
-    imagery.lighting = terrain::nextImageryLighting(imagery.lighting);
-    return true;
-  }
-  if (key >= GLFW_KEY_1 && key <= GLFW_KEY_4 && press) {
-    const auto layer = static_cast<uint32_t>(key - GLFW_KEY_1);
-    if (layer >= imagery.layerCount) return false;
-    imagery.shown[layer] = !imagery.shown[layer];
-    imagery.selected = layer;
-    return true;
-  }
-  if ((key == GLFW_KEY_LEFT_BRACKET || key == GLFW_KEY_RIGHT_BRACKET) && imagery.layerCount > 0) {
-    float& opacity = imagery.opacity[imagery.selected];
-    const float step = key == GLFW_KEY_RIGHT_BRACKET ? kOpacityStep : -kOpacityStep;
-    // On the steps' grid, so ten presses go from 0 to 1 exactly.
-    opacity = std::clamp(std::round((opacity + step) / kOpacityStep) * kOpacityStep, 0.0f, 1.0f);
-    return true;
-  }
-  return false;
-}
-
-bool orbitKey(ViewInput& input, int key) {
-  camera::Navigator& navigator = *input.navigator;
-  switch (key) {
-    case GLFW_KEY_UP:
-      navigator.panByKey(0, kPanPixelsPerKey);
-      return true;
-    case GLFW_KEY_DOWN:
-      navigator.panByKey(0, -kPanPixelsPerKey);
-      return true;
-    case GLFW_KEY_LEFT:
-      navigator.panByKey(kPanPixelsPerKey, 0);
-      return true;
-    case GLFW_KEY_RIGHT:
-      navigator.panByKey(-kPanPixelsPerKey, 0);
-      return true;
-    case GLFW_KEY_EQUAL:  // '+' is shift + '=' on most layouts
-    case GLFW_KEY_KP_ADD:
-    case GLFW_KEY_PAGE_UP:  // Google Earth's
-      navigator.zoom(1);
-      return true;
-    case GLFW_KEY_MINUS:
-    case GLFW_KEY_KP_SUBTRACT:
-    case GLFW_KEY_PAGE_DOWN:
-      navigator.zoom(-1);
-      return true;
-    default:
-      return false;
-  }
-}
-
-bool flyKey(ViewInput& input, int key) {
-  camera::Navigator& navigator = *input.navigator;
-  switch (key) {
-    case GLFW_KEY_UP:
-      navigator.lookRadians(0, kLookRadiansPerKey);
-      return true;
-    case GLFW_KEY_DOWN:
-      navigator.lookRadians(0, -kLookRadiansPerKey);
-      return true;
-    case GLFW_KEY_LEFT:
-      navigator.lookRadians(-kLookRadiansPerKey, 0);
-      return true;
-    case GLFW_KEY_RIGHT:
-      navigator.lookRadians(kLookRadiansPerKey, 0);
-      return true;
-    case GLFW_KEY_EQUAL:
-    case GLFW_KEY_KP_ADD:
-    case GLFW_KEY_PAGE_UP:
-      navigator.changeSpeed(1);
-      return true;
-    case GLFW_KEY_MINUS:
-    case GLFW_KEY_KP_SUBTRACT:
-    case GLFW_KEY_PAGE_DOWN:
-      navigator.changeSpeed(-1);
-      return true;
-    default:
-      return false;
-  }
-}
+ private:
+  GLFWwindow* window_;
+  ViewInput& input_;
+};
 
 // While the go-to prompt is open it takes every key: Enter submits, Escape closes it, Backspace
 // deletes; the text itself comes from the character callback.
@@ -267,11 +134,10 @@ void onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int mods) 
     return;
   }
   if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
-  const bool handled =
-      (action == GLFW_PRESS && commonKey(window, input, key)) ||
-      imageryKey(input.imagery, key, action == GLFW_PRESS) ||
-      (input.navigator->mode() == camera::NavigationMode::Orbit ? orbitKey(input, key)
-                                                                : flyKey(input, key));
+  const auto viewAction = actionForKey(key, input.navigator->mode(), action == GLFW_REPEAT);
+  if (!viewAction) return;
+  GlfwViewWindow viewWindow(window, input);
+  const bool handled = runAction(*viewAction, input, viewWindow);
   // With Ctrl held no character follows the key: nothing to swallow.
   if (handled && input.promptOpen && (mods & GLFW_MOD_CONTROL) != 0) input.promptSwallowG = false;
   if (handled) input.changed = true;

@@ -2,7 +2,7 @@
 
 #include "core/big_endian.hpp"
 #include "core/crc32.hpp"
-#include "formats/deflate_bytes.hpp"
+#include "compression/deflate_bytes.hpp"
 
 namespace globe::formats {
 namespace {
@@ -43,7 +43,7 @@ std::vector<std::byte> encodeCompressedBlock(std::span<const std::byte> samplesB
       planes[count + i] = static_cast<std::byte>(z & 0xFFU);
     }
   }
-  std::vector<std::byte> stored = deflateCompress(planes, kBlockDeflateLevel);
+  std::vector<std::byte> stored = compression::deflateCompress(planes, kBlockDeflateLevel);
   const size_t body = stored.size();
   stored.resize(body + 4);
   core::storeBigEndian32(&stored[body], core::crc32(std::span(stored).first(body)));
@@ -61,7 +61,7 @@ Result<void> decodeCompressedBlock(std::span<const std::byte> stored, size_t sid
     return makeError("fails its CRC");
   }
   std::vector<std::byte> planes(2 * count);
-  if (!deflateInflateExactly(body, planes)) {
+  if (!compression::deflateInflateExactly(body, planes)) {
     return makeError("does not inflate to its " + std::to_string(count) + " samples");
   }
   std::vector<int> samples(count);

@@ -7,7 +7,7 @@
 
 #include "core/big_endian.hpp"
 #include "core/crc32.hpp"
-#include "formats/deflate_bytes.hpp"
+#include "compression/deflate_bytes.hpp"
 #include "formats/pack_block_codec.hpp"
 #include "formats/pack_index_codec.hpp"
 
@@ -104,7 +104,7 @@ std::vector<std::byte> encodePackV6(const Pack& pack) {
     blocks.insert(blocks.end(), stored.begin(), stored.end());
   }
   const std::vector<std::byte> index =
-      zlibCompress(encodeIndexColumns(entries, order, layout.tilesPerSide), 9);
+      compression::zlibCompress(encodeIndexColumns(entries, order, layout.tilesPerSide), 9);
   std::vector<std::byte> bytes(kPackHeaderBytes);
   storeHeader(bytes.data(), pack.id, layout, order.size(), static_cast<uint32_t>(index.size()));
   bytes.insert(bytes.end(), index.begin(), index.end());
@@ -204,7 +204,7 @@ std::vector<std::byte> encodePack(const Pack& pack) {
       const uint64_t offset = core::loadBigEndian64(entry);
       core::storeBigEndian64(entry, offset == 0 ? 0 : offset - plainIndexEnd + 1);
     }
-    const std::vector<std::byte> index = zlibCompress(entries, 9);
+    const std::vector<std::byte> index = compression::zlibCompress(entries, 9);
     std::vector<std::byte> bytes(plain.begin(), plain.begin() + kPackHeaderBytes);
     core::storeBigEndian32(&bytes[8], pack.layout.formatVersion);
     core::storeBigEndian32(&bytes[36], static_cast<uint32_t>(index.size()));
@@ -302,7 +302,7 @@ Result<PackIndex> decodeIndexV6(PackIndex index, uint32_t present,
   if (headAndIndex.size() < indexEnd) return packError(path, "pack index is truncated");
   std::vector<std::byte> columns(presenceBitmapBytes(layout.tilesPerSide) +
                                  indexColumnBytes(present));
-  if (!zlibInflateExactly(headAndIndex.subspan(kPackHeaderBytes, layout.indexBytes), columns)) {
+  if (!compression::zlibInflateExactly(headAndIndex.subspan(kPackHeaderBytes, layout.indexBytes), columns)) {
     return packError(path, "pack index does not inflate to its " + std::to_string(present) +
                                " tiles (corrupt pack)");
   }
@@ -359,7 +359,7 @@ Result<PackIndex> decodePackIndex(std::span<const std::byte> headAndIndex, uint6
       headAndIndex.subspan(kPackHeaderBytes, layout.indexEndOffset() - kPackHeaderBytes);
   if (layout.hasCompressedIndex()) {
     inflated.resize(layout.slotCount() * layout.entryBytes());
-    if (!zlibInflateExactly(entries, inflated)) {
+    if (!compression::zlibInflateExactly(entries, inflated)) {
       return packError(path, "pack index does not inflate to its " +
                                  std::to_string(layout.slotCount()) + " entries (corrupt pack)");
     }

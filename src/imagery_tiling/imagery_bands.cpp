@@ -3,8 +3,10 @@
 #include <cpl_conv.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <string_view>
 #include <vector>
 
 namespace globe::imagery_tiling {
@@ -126,6 +128,40 @@ std::string bandList(const std::vector<int>& bands) {
   return text;
 }
 
+// Heights in a band: a unit of length, or signed samples (Int16 as SRTM and GTOPO30, Float32 as
+// Copernicus): an image's digital numbers are unsigned (Landsat's and Sentinel-2's UInt16).
+bool holdsHeights(GDALRasterBandH band) {
+  static constexpr std::string_view kLengthUnits[] = {"m", "metre", "metres", "meter", "meters",
+                                                      "ft", "foot", "feet", "us-ft"};
+  std::string unit = GDALGetRasterUnitType(band) != nullptr ? GDALGetRasterUnitType(band) : "";
+  for (char& c : unit) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const GDALDataType type = GDALGetRasterDataType(band);
+  return std::find(std::begin(kLengthUnits), std::end(kLengthUnits), unit) !=
+             std::end(kLengthUnits) ||
+         GDALDataTypeIsSigned(type) != 0;
+}
+
+// One band deeper than 8 bits without colour is how an elevation model looks: refused when its
+// samples are heights (holdsHeights), drawn with a loud warning when they may be an image's
+// (one unsigned 16-bit band: a Landsat band, or a DEM stored unsigned).
+Result<void> checkNotElevation(GDALDatasetH dataset, int bandNumber, const std::string& name,
+                               ImageryInput& input) {
+  GDALRasterBandH band = GDALGetRasterBand(dataset, bandNumber);
+  const GDALDataType type = GDALGetRasterDataType(band);
+  if (type == GDT_Byte) return {};
+  const std::string tileElevation =
+      "tile elevation with `globe-tiler -o PYRAMID " + name + "`";
+  if (holdsHeights(band)) {
+    return makeError(name + ": one band of " + GDALGetDataTypeName(type) +
+                     " samples without colour, as an elevation model has; " + tileElevation +
+                     ", or add --force to draw it as grey imagery");
+  }
+  input.warnings.push_back(name + ": one band of " + GDALGetDataTypeName(type) +
+                           " samples without colour: drawn as grey imagery; if they are heights, "
+                           "it is an elevation model: " + tileElevation);
+  return {};
+}
+
 Result<void> chooseImageryBands(GDALDatasetH dataset, const std::string& name,
                                 const ImageryInputOptions& options, ImageryInput& input) {
   const int count = GDALGetRasterCount(dataset);
@@ -174,8 +210,12 @@ Result<void> chooseImageryBands(GDALDatasetH dataset, const std::string& name,
   } else if (notAlpha.empty()) {
     return makeError(name + ": every band is alpha; choose colour bands with --bands R,G,B");
   } else {
-    input.alphaBand = alpha;
     const bool grey = notAlpha.size() < 3;
+    if (grey && !options.allowElevation) {
+      if (auto checked = checkNotElevation(dataset, notAlpha[0], name, input); !checked)
+        return checked;
+    }
+    input.alphaBand = alpha;
     input.colourBands.assign(notAlpha.begin(), notAlpha.begin() + (grey ? 1 : 3));
     // GDAL's convention for three bands without interpretation (JPEG, NAIP's gray, undefined...);
     // beyond what is drawn, nothing says which bands are the colours: a guess the user must hear.

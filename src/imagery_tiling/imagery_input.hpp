@@ -32,6 +32,7 @@ struct ImageryInputOptions {
   std::optional<ImageryStretch> scale;  // --scale MIN,MAX for every band of 16-bit/float inputs
   bool scaleAuto = false;  // --scale auto: each band's 2–98 % percentiles (also the default)
   std::optional<uint32_t> maxLevel;
+  bool allowElevation = false;  // --force: one 16-bit or float band drawn as grey, not refused
 };
 
 struct ImageryInput {

@@ -114,7 +114,8 @@ Result<formats::ImagePack> readImagePack(const fs::path& path) {
 
 // What the manifest needs from one finished pack.
 struct ImagePackSummary {
-  uint64_t tiles = 0;
+  uint64_t tiles = 0;         // tiles holding pixels
+  uint64_t plannedTiles = 0;  // for a pack kept from an earlier run: the tiles it stands for
   formats::BoundsDegrees bounds{180, 90, -180, -90};
 };
 
@@ -257,10 +258,7 @@ struct PackWork {
   size_t summaryIndex = 0;
 };
 
-}  // namespace
-
-Result<ImageryTilerReport> runImageryTiler(const ImageryTilerOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+Result<void> checkOptions(const ImageryTilerOptions& options) {
   if (options.inputs.empty()) return makeError("no input given");
   if (options.jpegQuality < 1 || options.jpegQuality > 100) {
     return makeError("--quality must be between 1 and 100");
@@ -273,6 +271,63 @@ Result<ImageryTilerReport> runImageryTiler(const ImageryTilerOptions& options) {
   if (options.input.maxLevel && *options.input.maxLevel > geo::kMaxLevel) {
     return makeError("--max-level must be at most " + std::to_string(geo::kMaxLevel));
   }
+  return {};
+}
+
+// The level's packs still to build. A complete pack from an interrupted run is kept: its
+// summary (with its planned tiles, counted as done) goes into `summaries`; a damaged or foreign
+// file is rebuilt.
+std::vector<std::unique_ptr<PackWork>> packsToBuild(const ImageryPlan& plan, uint32_t level,
+                                                    const fs::path& outputDir,
+                                                    uint32_t tilesPerSide,
+                                                    std::vector<ImagePackSummary>& summaries,
+                                                    ImageryTilerReport& report) {
+  const std::vector<formats::PackId>& packs = plan.packs(level);
+  std::vector<std::unique_ptr<PackWork>> work;
+  for (size_t i = 0; i < packs.size(); ++i) {
+    const fs::path path = formats::packPath(outputDir, packs[i]);
+    std::error_code error;
+    if (fs::exists(path, error)) {
+      auto existing = readImagePack(path);
+      if (existing && existing->index.id == packs[i] &&
+          existing->index.tilesPerSide == tilesPerSide) {
+        summaries[i] = summarise(existing->index);
+        summaries[i].plannedTiles = plan.tilesInPack(packs[i]).size();
+        ++report.packsReused;
+        continue;
+      }
+    }
+    auto pack = std::make_unique<PackWork>();
+    pack->id = packs[i];
+    pack->tiles = plan.tilesInPack(packs[i]);
+    pack->payloads.resize(size_t{tilesPerSide} * tilesPerSide);
+    pack->remaining = pack->tiles.size();
+    pack->summaryIndex = i;
+    work.push_back(std::move(pack));
+  }
+  return work;
+}
+
+// The manifest's entry for a level: its packs, tiles and the bounds of those that hold pixels.
+formats::ImageryLevelInfo levelInfo(uint32_t level, const std::vector<formats::PackId>& packs,
+                                    const std::vector<ImagePackSummary>& summaries) {
+  formats::ImageryLevelInfo info;
+  info.level = level;
+  info.packs = packs;
+  info.bounds = {180, 90, -180, -90};
+  for (const ImagePackSummary& s : summaries) {
+    info.tileCount += s.tiles;
+    include(info.bounds, s.bounds);
+  }
+  if (info.tileCount == 0) info.bounds = {};
+  return info;
+}
+
+}  // namespace
+
+Result<ImageryTilerReport> runImageryTiler(const ImageryTilerOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  if (auto checked = checkOptions(options); !checked) return Error{checked.error()};
   auto described = describeImageryInputs(options.inputs, options.input);
   if (!described) return Error{described.error()};
   // Samples at the tiles' edges (no colour step between tiles), unless a TMS tree's own
@@ -333,28 +388,9 @@ Result<ImageryTilerReport> runImageryTiler(const ImageryTilerOptions& options) {
   for (uint32_t level = plan.maxLevel() + 1; level-- > 0;) {
     const std::vector<formats::PackId>& packs = plan.packs(level);
     std::vector<ImagePackSummary> summaries(packs.size());
-    std::vector<std::unique_ptr<PackWork>> work;
-    for (size_t i = 0; i < packs.size(); ++i) {
-      const fs::path path = formats::packPath(options.outputDir, packs[i]);
-      std::error_code error;
-      if (fs::exists(path, error)) {  // a damaged or foreign file is rebuilt
-        auto existing = readImagePack(path);
-        if (existing && existing->index.id == packs[i] &&
-            existing->index.tilesPerSide == options.packTilesPerSide) {
-          summaries[i] = summarise(existing->index);
-          ++report.packsReused;
-          tilesDone += plan.tilesInPack(packs[i]).size();
-          continue;
-        }
-      }
-      auto pack = std::make_unique<PackWork>();
-      pack->id = packs[i];
-      pack->tiles = plan.tilesInPack(packs[i]);
-      pack->payloads.resize(size_t{options.packTilesPerSide} * options.packTilesPerSide);
-      pack->remaining = pack->tiles.size();
-      pack->summaryIndex = i;
-      work.push_back(std::move(pack));
-    }
+    std::vector<std::unique_ptr<PackWork>> work =
+        packsToBuild(plan, level, options.outputDir, options.packTilesPerSide, summaries, report);
+    for (const ImagePackSummary& reused : summaries) tilesDone += reused.plannedTiles;
     std::vector<std::pair<size_t, size_t>> items;  // (pack, tile), packs in order
     for (size_t p = 0; p < work.size(); ++p) {
       for (size_t t = 0; t < work[p]->tiles.size(); ++t) items.emplace_back(p, t);
@@ -445,20 +481,10 @@ Result<ImageryTilerReport> runImageryTiler(const ImageryTilerOptions& options) {
     report.tilesCopied += copied;
     report.packsBuilt += packsBuilt;
 
-    formats::ImageryLevelInfo& info = manifest.levels[level];
-    info.level = level;
-    info.packs = packs;
-    info.bounds = {180, 90, -180, -90};
-    for (const ImagePackSummary& s : summaries) {
-      info.tileCount += s.tiles;
-      include(info.bounds, s.bounds);
-    }
-    if (info.tileCount == 0) {
-      info.bounds = {};
-    } else {
-      include(manifest.bounds, info.bounds);
-    }
-    report.tiles += info.tileCount;
+    manifest.levels[level] = levelInfo(level, packs, summaries);
+    if (manifest.levels[level].tileCount != 0)
+      include(manifest.bounds, manifest.levels[level].bounds);
+    report.tiles += manifest.levels[level].tileCount;
   }
   if (options.progress) options.progress({tilesDone, plan.tileCount(), "done", true});
   if (manifest.tileCount() == 0) {

@@ -4,8 +4,10 @@
 #include <charconv>
 #include <cmath>
 
-#include "formats/gzip_bytes.hpp"
+#include "compression/gzip_bytes.hpp"
+#include "places/edit_distance.hpp"
 #include "places/name_fold.hpp"
+#include "places/query_forms.hpp"
 #include "transport/atomic_file.hpp"
 
 namespace globe::places {
@@ -43,25 +45,77 @@ bool parseDouble(std::string_view text, double& value) {
   return parseNumber(text, value);
 }
 
-std::string withoutSpaces(std::string_view text) {
-  std::string out;
-  for (char c : text) {
-    if (c != ' ') out.push_back(c);
+// The same letters, spaces aside ("usa" and "u s a"), without copying: it runs for every key.
+bool sameWithoutSpaces(std::string_view a, std::string_view b) {
+  size_t i = 0, j = 0;
+  while (true) {
+    while (i < a.size() && a[i] == ' ') ++i;
+    while (j < b.size() && b[j] == ' ') ++j;
+    if (i == a.size() || j == b.size()) return i == a.size() && j == b.size();
+    if (a[i++] != b[j++]) return false;
   }
-  return out;
 }
 
-// How well a folded name matches the folded query: 0 the same, 1 it begins so, 2 a word of it
-// begins so, 3 it holds it; 4 none.
-int matchTier(const std::string& key, const std::string& query) {
-  if (key == query) return 0;
-  if (key.size() > query.size() && key.compare(0, query.size(), query) == 0) return 1;
+// How well a place's folded names match the query's forms, best first: the same name, its own
+// name beginning so, one typing slip from a name, two slips, another of its names beginning so,
+// a word of a name beginning so, a name holding it; kNoMatch none. Slips rank above an alternate
+// name's beginning: "Zoin" means Zion rather than Joinville, whose Lithuanian name is
+// "Zoinvilis".
+enum Tier : size_t { kSame, kOwnPrefix, kOneSlip, kTwoSlips, kOtherPrefix, kWord, kHolds, kNoMatch };
+
+struct Match {
+  Tier tier = kNoMatch;
+  bool ownName = false;  // the name the place goes by, not a translation or former name
+};
+
+// Among places one or two slips away, one whose own name was mistyped counts as this many times
+// as important: "Aukland" is Auckland (417,910 people), not Oakland (419,267, whose Lithuanian
+// name is "Oukland"), while "Zoin" is still Zion National Park, not Zlín.
+constexpr uint64_t kOwnNameSlipWeight = 4;
+
+bool beginsWith(const std::string& key, const std::string& form) {
+  return key.size() > form.size() && key.compare(0, form.size(), form) == 0;
+}
+
+Tier textTier(const std::string& key, const std::string& form, bool ownName) {
+  if (key == form) return kSame;
+  if (beginsWith(key, form)) return ownName ? kOwnPrefix : kOtherPrefix;
   for (size_t at = key.find(' '); at != std::string::npos; at = key.find(' ', at + 1)) {
-    if (key.compare(at + 1, query.size(), query) == 0) return 2;
+    if (key.compare(at + 1, form.size(), form) == 0) return kWord;
   }
-  if (query.size() >= 3 && key.find(query) != std::string::npos) return 3;
-  if (withoutSpaces(key) == withoutSpaces(query)) return 0;  // "usa" for "u s a"
-  return 4;
+  if (form.size() >= 3 && key.find(form) != std::string::npos) return kHolds;
+  if (sameWithoutSpaces(key, form)) return kSame;  // "usa" for "u s a"
+  return kNoMatch;
+}
+
+Tier slipTier(const std::string& key, const std::string& form) {
+  const size_t allowed = typosAllowed(form.size());
+  if (allowed == 0) return kNoMatch;
+  const size_t slips = editDistanceWithin(key, form, allowed);
+  if (slips > allowed) return kNoMatch;
+  return slips == 0 ? kSame : slips == 1 ? kOneSlip : kTwoSlips;
+}
+
+void keepBetter(Match& best, Tier tier, bool ownName) {
+  if (tier < best.tier || (tier == best.tier && ownName && !best.ownName)) best = {tier, ownName};
+}
+
+Match placeMatch(const std::vector<std::string>& keys, const std::vector<std::string>& forms) {
+  Match best;
+  for (const std::string& form : forms) {
+    for (size_t k = 0; k < keys.size() && best.tier != kSame; ++k)
+      keepBetter(best, textTier(keys[k], form, k == 0), k == 0);
+  }
+  if (best.tier < kOneSlip) return best;
+  for (const std::string& form : forms) {
+    for (size_t k = 0; k < keys.size(); ++k) keepBetter(best, slipTier(keys[k], form), k == 0);
+  }
+  return best;
+}
+
+uint64_t rankWeight(const Place& place, const Match& match) {
+  const bool slip = match.tier == kOneSlip || match.tier == kTwoSlips;
+  return slip && match.ownName ? place.importance * kOwnNameSlipWeight : place.importance;
 }
 
 }  // namespace
@@ -69,7 +123,7 @@ int matchTier(const std::string& key, const std::string& query) {
 Result<Gazetteer> Gazetteer::load(const std::filesystem::path& path) {
   auto bytes = transport::readWholeFile(path, kMaxPlacesFileBytes);
   if (!bytes) return Error{bytes.error()};
-  auto text = formats::gunzipIfNeeded(*bytes, path.string(), kMaxPlacesFileBytes);
+  auto text = compression::gunzipIfNeeded(*bytes, path.string(), kMaxPlacesFileBytes);
   if (!text) return Error{text.error()};
   const std::string_view all(reinterpret_cast<const char*>(text->data()), text->size());
   Gazetteer g;
@@ -123,6 +177,7 @@ std::vector<const Place*> Gazetteer::search(std::string_view query, size_t limit
   }
   const std::string wanted = foldName(name);
   if (wanted.empty()) return {};
+  const std::vector<std::string> forms = queryForms(wanted);
   // WHERE as a country (its code or a name) or a first-level division (its code, or a name
   // from the builder's division lines: "Texas", "Western Australia").
   std::vector<std::string> countries;
@@ -130,7 +185,7 @@ std::vector<const Place*> Gazetteer::search(std::string_view query, size_t limit
   if (!where.empty()) {
     const auto names = [&](const std::vector<std::string>& keys) {
       return std::any_of(keys.begin(), keys.end(), [&](const std::string& k) {
-        return k == where || withoutSpaces(k) == withoutSpaces(where);
+        return k == where || sameWithoutSpaces(k, where);
       });
     };
     for (size_t i = 0; i < places_.size(); ++i) {
@@ -152,18 +207,19 @@ std::vector<const Place*> Gazetteer::search(std::string_view query, size_t limit
     }
     return foldName(p.countryCode) == where || foldName(p.divisionCode) == where;
   };
-  // Places are by importance already: the first `limit` of each tier, tiers in order.
-  std::vector<std::vector<const Place*>> tiers(4);
+  // Each tier's places by their weight (importance: the order they are kept in), tiers in order.
+  std::vector<std::vector<std::pair<uint64_t, const Place*>>> tiers(kNoMatch);
   for (size_t i = 0; i < places_.size(); ++i) {
-    int best = 4;
-    for (const std::string& key : keys_[i]) best = std::min(best, matchTier(key, wanted));
-    if (best >= 4 || tiers[static_cast<size_t>(best)].size() >= limit) continue;
-    if (places_[i].kind == kDivision || !inWhere(places_[i])) continue;
-    tiers[static_cast<size_t>(best)].push_back(&places_[i]);
+    if (places_[i].kind == kDivision) continue;
+    const Match match = placeMatch(keys_[i], forms);
+    if (match.tier == kNoMatch || !inWhere(places_[i])) continue;
+    tiers[match.tier].emplace_back(rankWeight(places_[i], match), &places_[i]);
   }
   std::vector<const Place*> found;
-  for (const auto& tier : tiers) {
-    for (const Place* p : tier) {
+  for (auto& tier : tiers) {
+    std::stable_sort(tier.begin(), tier.end(),
+                     [](const auto& a, const auto& b) { return a.first > b.first; });
+    for (const auto& [weight, p] : tier) {
       if (found.size() < limit) found.push_back(p);
     }
   }

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "formats/deflate_bytes.hpp"
-#include "formats/gzip_bytes.hpp"
+#include "compression/deflate_bytes.hpp"
+#include "compression/gzip_bytes.hpp"
 #include "formats/quantized_mesh.hpp"
 #include "geo/tiling_scheme.hpp"
 #include "publish/pyramid_surface.hpp"
@@ -88,7 +88,7 @@ Result<std::vector<std::byte>> makeTile(PyramidSurface& surface, const geo::Tile
   auto water = waterMask(surface, tile, sampleLevel);
   if (!water) return Error{water.error()};
   made.waterMask = std::move(*water);
-  return formats::gzipCompress(formats::encodeHeightmapTile(made), 9);
+  return compression::gzipCompress(formats::encodeHeightmapTile(made), 9);
 }
 
 // A tile kept from an earlier run whose children changed since (this run added some): its
@@ -98,7 +98,7 @@ Result<void> fixChildMask(const std::filesystem::path& outDir, const geo::TileId
   const std::filesystem::path path = terrainTilePath(outDir, tile);
   auto bytes = transport::readWholeFile(path, kMaxTileBytes);
   if (!bytes) return Error{bytes.error()};
-  auto inflated = formats::gunzipIfNeeded(*bytes, path.string(), kMaxTileBytes);
+  auto inflated = compression::gunzipIfNeeded(*bytes, path.string(), kMaxTileBytes);
   if (!inflated) return Error{inflated.error()};
   constexpr size_t kMaskAt = size_t{kSide} * kSide * 2;
   if (inflated->size() <= kMaskAt) {
@@ -108,7 +108,7 @@ Result<void> fixChildMask(const std::filesystem::path& outDir, const geo::TileId
   const auto mask = static_cast<std::byte>(childMask(outDir, tile, runTiles));
   if ((*inflated)[kMaskAt] == mask) return {};
   (*inflated)[kMaskAt] = mask;
-  return writeFileReplacing(path, formats::gzipCompress(*inflated, 9));
+  return writeFileReplacing(path, compression::gzipCompress(*inflated, 9));
 }
 
 Result<ExportReport> exportTree(streaming::TerrainSource& source, const ExportRegion& region,

@@ -6,7 +6,7 @@
 #include <cerrno>
 #include <cstring>
 
-#include "formats/deflate_bytes.hpp"
+#include "compression/deflate_bytes.hpp"
 
 namespace globe::publish {
 namespace {
@@ -24,7 +24,7 @@ uint64_t fnv1a(std::span<const std::byte> bytes) {
 }
 
 std::vector<std::byte> gzipDirectory(std::span<const formats::PmtilesEntry> entries) {
-  return formats::gzipCompress(formats::encodePmtilesDirectory(entries), kGzipLevel);
+  return compression::gzipCompress(formats::encodePmtilesDirectory(entries), kGzipLevel);
 }
 
 struct Directories {
@@ -144,7 +144,7 @@ Result<PmtilesSummary> PmtilesWriter::finish(formats::PmtilesHeader header,
                                              const std::string& metadataJson) {
   if (std::fflush(spoolFile_) != 0) return fileError(spool_, "write (disk full?)");
   const Directories directories = layOutDirectories(entries_);
-  const auto metadata = formats::gzipCompress(
+  const auto metadata = compression::gzipCompress(
       std::as_bytes(std::span(metadataJson.data(), metadataJson.size())), kGzipLevel);
 
   header.rootOffset = formats::kPmtilesHeaderBytes;

@@ -11,7 +11,7 @@
 #include <thread>
 #include <vector>
 
-#include "formats/deflate_bytes.hpp"
+#include "compression/deflate_bytes.hpp"
 #include "formats/pyramid_manifest.hpp"
 #include "publish/block_mesh.hpp"
 #include "publish/pyramid_surface.hpp"
@@ -114,7 +114,7 @@ Result<std::vector<std::byte>> makeTile(PyramidSurface& surface, streaming::Terr
   if (!water) return Error{water.error()};
   mesh.mesh.waterMask = std::move(*water);
   mesh.mesh.metadataJson = childrenMetadata(source, tile, lastLevel);
-  return formats::gzipCompress(formats::encodeQuantizedMesh(mesh.mesh, mesh.culling), 9);
+  return compression::gzipCompress(formats::encodeQuantizedMesh(mesh.mesh, mesh.culling), 9);
 }
 
 // Bumped when the tiles' making changes: their URLs change with it.

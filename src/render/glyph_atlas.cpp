@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "render/label_layout.hpp"
+#include "text/label_layout.hpp"
 #include "render/pixel_unpack.hpp"
 
 namespace globe::render {
@@ -46,7 +46,7 @@ std::optional<glm::ivec2> ShelfPacker::insert(glm::ivec2 sizePixels) {
   return at;
 }
 
-GlyphAtlas::GlyphAtlas(const FontFace& font)
+GlyphAtlas::GlyphAtlas(const text::FontFace& font)
     : font_(font), texture_(makeGlTexture()), packer_(kInitialSidePixels) {
   texels_.assign(static_cast<size_t>(2 * kInitialSidePixels * kInitialSidePixels), 0);
   glBindTexture(GL_TEXTURE_2D, texture_.get());
@@ -101,10 +101,10 @@ void GlyphAtlas::clear() {
 }
 
 std::optional<AtlasGlyph> GlyphAtlas::glyph(uint32_t glyphId, float sizePixels) {
-  const Key key{glyphId, labelPixelSize(sizePixels)};
+  const Key key{glyphId, text::labelPixelSize(sizePixels)};
   if (const auto found = glyphs_.find(key); found != glyphs_.end()) return found->second;
-  const GlyphBitmap bitmap =
-      font_.rasterize(glyphId, sizePixels, labelHaloPixels(static_cast<float>(key.pixelSize)));
+  const text::GlyphBitmap bitmap =
+      font_.rasterize(glyphId, sizePixels, text::labelHaloPixels(static_cast<float>(key.pixelSize)));
   AtlasGlyph placed;
   if (bitmap.widthPixels > 0 && bitmap.heightPixels > 0) {
     const glm::ivec2 size(bitmap.widthPixels, bitmap.heightPixels);

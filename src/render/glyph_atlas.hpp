@@ -12,7 +12,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "render/font_face.hpp"
+#include "text/font_face.hpp"
 #include "render/gl_object.hpp"
 
 namespace globe::render {
@@ -48,7 +48,7 @@ class GlyphAtlas {
   static constexpr int kInitialSidePixels = 1024;
   static constexpr int kMaxSidePixels = 4096;
 
-  explicit GlyphAtlas(const FontFace& font);
+  explicit GlyphAtlas(const text::FontFace& font);
 
   // The glyph at labelPixelSize(sizePixels) with the halo labelHaloPixels(sizePixels),
   // rasterised and uploaded on first use. The atlas doubles when full, up to kMaxSidePixels;
@@ -69,7 +69,7 @@ class GlyphAtlas {
   void uploadAll();
   bool growTexture();
 
-  const FontFace& font_;
+  const text::FontFace& font_;
   GlObject texture_;
   ShelfPacker packer_;
   std::vector<uint8_t> texels_;  // a copy of the texture (2 bytes a texel), to grow it

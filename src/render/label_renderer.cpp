@@ -17,7 +17,7 @@
 #include "render/pixel_unpack.hpp"
 #include "render/shader_directory.hpp"
 #include "render/shader_program.hpp"
-#include "render/text_wrap.hpp"
+#include "text/text_wrap.hpp"
 
 namespace globe::render {
 // Named, not anonymous: Impl's members use these types.
@@ -47,7 +47,7 @@ void appendLabelQuad(std::vector<LabelVertex>& out, glm::vec2 minPixels, glm::ve
 
 // One line of shaped text to draw, its baseline's left end on whole pixels.
 struct TextRun {
-  ShapedText shaped;
+  text::ShapedText shaped;
   glm::vec2 baselineOriginPixels;
   float sizePixels;
   glm::vec4 rgba, haloRgba;
@@ -59,7 +59,7 @@ struct PanelLayout {
   std::vector<TextRun> lines;
 };
 
-PanelLayout layoutPanel(const FontFace& font, const TextPanelStyle& style,
+PanelLayout layoutPanel(const text::FontFace& font, const TextPanelStyle& style,
                         const std::vector<std::string>& paragraphs, float maxWidthPixels) {
   PanelLayout out;
   if (paragraphs.empty()) return out;
@@ -74,9 +74,9 @@ PanelLayout layoutPanel(const FontFace& font, const TextPanelStyle& style,
     const auto widthOf = [&](std::string_view text) {
       return font.measure(text, size).widthPixels;
     };
-    for (const std::string& line : wrapText(paragraphs[p], textWidth, widthOf)) {
-      ShapedText shaped = font.shape(line, size);
-      const TextExtent extent = shaped.extent;
+    for (const std::string& line : text::wrapText(paragraphs[p], textWidth, widthOf)) {
+      text::ShapedText shaped = font.shape(line, size);
+      const text::TextExtent extent = shaped.extent;
       widest = std::max(widest, extent.widthPixels);
       out.lines.push_back({std::move(shaped),
                            {pad, std::round(y + extent.ascentPixels)},
@@ -95,7 +95,7 @@ PanelLayout layoutPanel(const FontFace& font, const TextPanelStyle& style,
 using namespace label_detail;
 
 struct LabelRenderer::Impl {
-  std::unique_ptr<FontFace> font;
+  std::unique_ptr<text::FontFace> font;
   std::unique_ptr<GlyphAtlas> atlas;
   ShaderProgram program;
   GLint viewportLocation = -1;
@@ -110,7 +110,7 @@ struct LabelRenderer::Impl {
   // left out).
   bool appendText(std::span<const TextRun> runs, bool skipFull, std::vector<LabelVertex>& out) {
     for (const TextRun& run : runs) {
-      for (const ShapedGlyph& glyph : run.shaped.glyphs) {
+      for (const text::ShapedGlyph& glyph : run.shaped.glyphs) {
         const std::optional<AtlasGlyph> placed = atlas->glyph(glyph.glyphId, run.sizePixels);
         if (!placed) {
           if (skipFull) continue;
@@ -179,7 +179,7 @@ LabelRenderer::~LabelRenderer() = default;
 
 Result<std::unique_ptr<LabelRenderer>> LabelRenderer::create(
     const std::filesystem::path& shaderDirectory) {
-  auto font = FontFace::loadDefault();
+  auto font = text::FontFace::loadDefault();
   if (!font) return makeError(font.error());
   const std::filesystem::path dir =
       shaderDirectory.empty() ? defaultShaderDirectory() : shaderDirectory;
@@ -250,15 +250,15 @@ void LabelRenderer::setIcon(const std::string& key, const formats::ImageRgba& im
 
 bool LabelRenderer::hasIcon(const std::string& key) const { return impl_->icons.contains(key); }
 
-std::vector<PlacedLabel> LabelRenderer::layout(std::span<const ScreenLabel> labels,
+std::vector<text::PlacedLabel> LabelRenderer::layout(std::span<const text::ScreenLabel> labels,
                                                glm::ivec2 viewportPixels) const {
-  const FontFace& font = *impl_->font;
-  return layoutLabels(labels, viewportPixels, [&font](const std::string& text, float size) {
+  const text::FontFace& font = *impl_->font;
+  return text::layoutLabels(labels, viewportPixels, [&font](const std::string& text, float size) {
     return font.measure(text, size);
   });
 }
 
-void LabelRenderer::draw(std::span<const ScreenLabel> labels, std::span<const PlacedLabel> placed,
+void LabelRenderer::draw(std::span<const text::ScreenLabel> labels, std::span<const text::PlacedLabel> placed,
                          glm::ivec2 viewportPixels) {
   if (viewportPixels.x <= 0 || viewportPixels.y <= 0) return;
   std::vector<LabelVertex> vertices;
@@ -268,12 +268,12 @@ void LabelRenderer::draw(std::span<const ScreenLabel> labels, std::span<const Pl
   };
   std::vector<IconRun> iconRuns;
   std::vector<TextRun> runs;
-  for (const PlacedLabel& place : placed) {
+  for (const text::PlacedLabel& place : placed) {
     if (place.index >= labels.size()) continue;
-    const ScreenLabel& label = labels[place.index];
-    ShapedText shaped;
+    const text::ScreenLabel& label = labels[place.index];
+    text::ShapedText shaped;
     if (place.withText) shaped = impl_->font->shape(label.text, label.sizePixels);
-    const LabelGeometry geometry = labelGeometry(label, shaped.extent);
+    const text::LabelGeometry geometry = text::labelGeometry(label, shaped.extent);
     const auto icon = impl_->icons.find(label.iconKey);
     if (geometry.hasIcon && icon != impl_->icons.end()) {
       const GLuint texture = icon->second.texture.get();
@@ -326,6 +326,6 @@ void LabelRenderer::drawTextPanel(const std::vector<std::string>& paragraphs,
 }
 
 
-const FontFace& LabelRenderer::font() const { return *impl_->font; }
+const text::FontFace& LabelRenderer::font() const { return *impl_->font; }
 
 }  // namespace globe::render

@@ -13,8 +13,8 @@
 
 #include "core/result.hpp"
 #include "formats/image_io.hpp"
-#include "render/font_face.hpp"
-#include "render/label_layout.hpp"
+#include "text/font_face.hpp"
+#include "text/label_layout.hpp"
 
 namespace globe::render {
 
@@ -48,12 +48,12 @@ class LabelRenderer {
   bool hasIcon(const std::string& key) const;
 
   // layoutLabels with this renderer's font: what draw() will draw, for picking.
-  std::vector<PlacedLabel> layout(std::span<const ScreenLabel> labels,
+  std::vector<text::PlacedLabel> layout(std::span<const text::ScreenLabel> labels,
                                   glm::ivec2 viewportPixels) const;
   // Blends the placed labels' icons (unknown keys draw none), then their text, over the current
   // framebuffer's (0, 0, width, height) viewport without depth test; leaves depth test and
   // culling enabled and blending disabled, as HudRenderer does.
-  void draw(std::span<const ScreenLabel> labels, std::span<const PlacedLabel> placed,
+  void draw(std::span<const text::ScreenLabel> labels, std::span<const text::PlacedLabel> placed,
             glm::ivec2 viewportPixels);
 
   // The size of the panel drawTextPanel draws (no GL).
@@ -64,7 +64,7 @@ class LabelRenderer {
   void drawTextPanel(const std::vector<std::string>& paragraphs, glm::vec2 topLeftPixels,
                      float maxWidthPixels, glm::ivec2 viewportPixels);
 
-  const FontFace& font() const;
+  const text::FontFace& font() const;
 
  private:
   struct Impl;

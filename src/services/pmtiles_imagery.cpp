@@ -2,7 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "formats/gzip_bytes.hpp"
+#include "compression/gzip_bytes.hpp"
 #include "formats/pmtiles.hpp"
 #include "services/recent_items.hpp"
 #include "services/url_reader.hpp"
@@ -54,7 +54,7 @@ class PmtilesImagery final : public ServiceImagery {
         if (!bytes) return Error{bytes.error()};
         if (header_.tileCompression == formats::PmtilesCompression::Gzip) {
           auto inflated =
-              formats::gunzipIfNeeded(*bytes, sourceTileUrl(matrix, column, row), kMaxTileBytes);
+              compression::gunzipIfNeeded(*bytes, sourceTileUrl(matrix, column, row), kMaxTileBytes);
           if (!inflated) return Error{inflated.error()};
           return std::optional<std::vector<std::byte>>(std::move(*inflated));
         }
@@ -102,7 +102,7 @@ class PmtilesImagery final : public ServiceImagery {
       std::span<const std::byte> bytes, const formats::PmtilesHeader& header,
       const std::string& name) {
     if (header.internalCompression == formats::PmtilesCompression::Gzip) {
-      auto inflated = formats::gunzipIfNeeded(bytes, name, kMaxDirectoryBytes);
+      auto inflated = compression::gunzipIfNeeded(bytes, name, kMaxDirectoryBytes);
       if (!inflated) return Error{inflated.error()};
       return formats::decodePmtilesDirectory(*inflated, name);
     }
@@ -171,7 +171,7 @@ Result<std::unique_ptr<ServiceImagery>> openPmtilesImagery(
   if (header->metadataLength > 0 && header->metadataLength <= (uint64_t{1} << 20)) {
     auto metadata = readAt(header->metadataOffset, header->metadataLength);
     if (metadata && header->internalCompression == formats::PmtilesCompression::Gzip) {
-      metadata = formats::gunzipIfNeeded(*metadata, location, size_t{4} << 20);
+      metadata = compression::gunzipIfNeeded(*metadata, location, size_t{4} << 20);
     }
     if (metadata) {
       try {

@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "formats/gzip_bytes.hpp"
+#include "compression/gzip_bytes.hpp"
 #include "formats/quantized_mesh.hpp"
 #include "formats/terrain_layer_json.hpp"
 #include "geo/cartographic.hpp"
@@ -70,7 +70,7 @@ class QuantizedMeshSource final : public ServiceTerrainSource {
         versioned ? reader_->readImmutable(url, kMaxTileBytes) : reader_->read(url, kMaxTileBytes);
     if (!bytes) return Error{bytes.error()};
     if (!*bytes) return std::optional<ServiceSamples>();  // listed but absent: the parent's
-    auto inflated = formats::gunzipIfNeeded(**bytes, url, kMaxInflatedTileBytes);
+    auto inflated = compression::gunzipIfNeeded(**bytes, url, kMaxInflatedTileBytes);
     if (!inflated) return Error{inflated.error()};
     if (layer_.format == formats::TerrainLayerJson::Format::Heightmap) {
       auto heightmap = formats::decodeHeightmapTile(*inflated, url);

@@ -185,10 +185,7 @@ std::vector<size_t> sourcesOfRole(const TilerOptions& options, const TilingPlan&
   return all;
 }
 
-}  // namespace
-
-Result<TilerReport> runTiler(const TilerOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+Result<void> checkOptions(const TilerOptions& options) {
   if (!terrain::isValidBlockSize(options.verticesPerSide)) {
     return makeError("block size " + std::to_string(options.verticesPerSide) +
                      " is not 2^k+1 between 3 and 1025");
@@ -203,24 +200,115 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
     return makeError("shard " + std::to_string(options.shardIndex) + " of " +
                      std::to_string(options.shardCount) + ": K must be below N");
   }
+  return {};
+}
+
+// --z-units / --z-scale given, and an input states its own unit: it keeps it, and says so.
+void warnOfKeptUnits(const TilerOptions& options, const std::vector<TilerSource>& sources,
+                     std::vector<std::string>& warnings) {
+  if (!options.vertical.units && !options.vertical.metersPerUnit) return;
+  for (const TilerSource& s : sources) {
+    const formats::VerticalUnitOrigin origin = s.verticalUnits.origin;
+    if (origin != formats::VerticalUnitOrigin::File &&
+        origin != formats::VerticalUnitOrigin::Format) {
+      continue;
+    }
+    warnings.push_back(s.argument + ": keeps its own unit (" + formats::describe(s.verticalUnits) +
+                       "): --z-units / --z-scale apply to inputs that state none");
+  }
+}
+
+// Only a source whose no data is its water code can be all no data (others are refused).
+void warnOfAllSea(const std::vector<TilerSource>& sources,
+                  const std::vector<formats::SourceConditioning>& conditioning,
+                  std::vector<std::string>& warnings) {
+  for (size_t i = 0; i < sources.size(); ++i) {
+    const auto samples = static_cast<uint64_t>(sources[i].grid.cols * sources[i].grid.rows);
+    if (conditioning[i].noDataSamples == samples) {
+      warnings.push_back(sources[i].argument +
+                         ": every sample is no data, its water code: tiled as sea");
+    }
+  }
+}
+
+// The merge's heights at and below the shard level: the fragments the shards sampled, each
+// position in a shard unit required to be there.
+std::function<Result<PrecomputedSamples>(const formats::PackId&, SampleTable&)> shardSamples(
+    const TilerOptions& options, const std::vector<formats::PackId>& units, uint32_t shardLevel) {
+  return [&options, &units, shardLevel](const formats::PackId& id,
+                                        SampleTable& table) -> Result<PrecomputedSamples> {
+    if (auto read = readSampleFragments(options.outputDir, id,
+                                        positionsPerTile(options.verticesPerSide), table);
+        !read) {
+      return Error{read.error()};
+    }
+    PrecomputedSamples heights;
+    heights.table = &table;
+    heights.mustHold = [&options, &units, shardLevel](const SamplePosition& p) {
+      return std::binary_search(units.begin(), units.end(),
+                                packHolding(p.longitudeDegrees, p.latitudeDegrees, shardLevel,
+                                            options.packTilesPerSide));
+    };
+    return heights;
+  };
+}
+
+// The manifest's entry for a level: its packs, their index sizes (all or none), tiles, bounds
+// and height range.
+formats::LevelInfo levelInfo(uint32_t level, const std::vector<formats::PackId>& packs,
+                             const std::vector<PackSummary>& summaries) {
+  formats::LevelInfo info;
+  info.level = level;
+  info.packs = packs;
+  for (const PackSummary& s : summaries) info.packIndexBytes.push_back(s.indexBytes);
+  if (std::find(info.packIndexBytes.begin(), info.packIndexBytes.end(), 0u) !=
+      info.packIndexBytes.end()) {
+    info.packIndexBytes.clear();
+  }
+  info.bounds = {180, 90, -180, -90};
+  info.heightRange = {INT16_MAX, INT16_MIN};
+  for (const PackSummary& s : summaries) {
+    info.tileCount += s.tiles;
+    info.bounds = {
+        std::min(info.bounds.west, s.bounds.west), std::min(info.bounds.south, s.bounds.south),
+        std::max(info.bounds.east, s.bounds.east), std::max(info.bounds.north, s.bounds.north)};
+    info.heightRange.include(s.range);
+  }
+  return info;
+}
+
+// Which packs of a level this run builds: all (one machine), those of the shard's units at and
+// below the shard level (a shard), those above it (the merge).
+std::vector<formats::PackId> packsOfRun(const TilerOptions& options, const TilingPlan& plan,
+                                        uint32_t level, uint32_t shardLevel,
+                                        const ShardPartition* partition) {
+  if (options.role == TilerRole::Whole) return plan.packs(level);
+  if (options.role == TilerRole::Merge) {
+    return level < shardLevel ? plan.packs(level) : std::vector<formats::PackId>{};
+  }
+  std::vector<formats::PackId> packs;
+  if (level < shardLevel) return packs;
+  const auto& units = partition->units[options.shardIndex];
+  for (const formats::PackId& pack : plan.packs(level)) {
+    if (std::binary_search(units.begin(), units.end(), packAncestor(pack, shardLevel))) {
+      packs.push_back(pack);
+    }
+  }
+  return packs;
+}
+
+}  // namespace
+
+Result<TilerReport> runTiler(const TilerOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  if (auto checked = checkOptions(options); !checked) return Error{checked.error()};
   TilerReport report;
   auto opened = openSources(options.inputs, {options.verticesPerSide, options.maxLevel,
                                              options.vertical, options.noDataIsSea,
                                              options.allowImages});
   if (!opened) return Error{opened.error()};
   std::vector<TilerSource>& allSources = *opened;
-  if (options.vertical.units || options.vertical.metersPerUnit) {
-    for (const TilerSource& s : allSources) {
-      const formats::VerticalUnitOrigin origin = s.verticalUnits.origin;
-      if (origin != formats::VerticalUnitOrigin::File &&
-          origin != formats::VerticalUnitOrigin::Format) {
-        continue;
-      }
-      report.warnings.push_back(s.argument + ": keeps its own unit (" +
-                                formats::describe(s.verticalUnits) +
-                                "): --z-units / --z-scale apply to inputs that state none");
-    }
-  }
+  warnOfKeptUnits(options, allSources, report.warnings);
   const TilingPlan plan = planOfSources(allSources, options.packTilesPerSide);
   const std::string fingerprint = planFingerprint(options, allSources);
   if (auto prepared = prepareOutput(options, fingerprint); !prepared) {
@@ -269,14 +357,7 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
   conditioningOptions.spillDirectory = options.outputDir;
   auto conditioning = conditionSources(sources, conditioningOptions);
   if (!conditioning) return Error{conditioning.error()};
-  for (size_t i = 0; i < sources.size(); ++i) {
-    const formats::SourceConditioning& c = (*conditioning)[i];
-    if (c.noDataSamples == static_cast<uint64_t>(sources[i].grid.cols * sources[i].grid.rows)) {
-      // Only a source whose no data is its water code gets here (others are refused).
-      report.warnings.push_back(sources[i].argument +
-                                ": every sample is no data, its water code: tiled as sea");
-    }
-  }
+  warnOfAllSea(sources, *conditioning, report.warnings);
   // Each source's conditioning by its index among all, from this run or (merge) a shard.
   std::map<size_t, formats::SourceConditioning> conditioningOf;
   for (size_t i = 0; i < used.size(); ++i) conditioningOf[used[i]] = (*conditioning)[i];
@@ -286,21 +367,8 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
     for (const auto& [id, summary] : shard.packs) shardPacks.emplace(id, summary);
   }
 
-  // Which packs of a level this run builds.
-  auto packsToBuild = [&](uint32_t level) {
-    std::vector<formats::PackId> packs;
-    if (options.role == TilerRole::Whole) return plan.packs(level);
-    if (options.role == TilerRole::Merge) {
-      return level < shardLevel ? plan.packs(level) : packs;
-    }
-    if (level < shardLevel) return packs;
-    const auto& units = partition->units[options.shardIndex];
-    for (const formats::PackId& pack : plan.packs(level)) {
-      if (std::binary_search(units.begin(), units.end(), packAncestor(pack, shardLevel))) {
-        packs.push_back(pack);
-      }
-    }
-    return packs;
+  const auto packsToBuild = [&](uint32_t level) {
+    return packsOfRun(options, plan, level, shardLevel, partition ? &*partition : nullptr);
   };
   uint64_t totalTiles = 0;
   for (uint32_t level = 0; level <= plan.maxLevel(); ++level) {
@@ -311,24 +379,7 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
   const formats::PackLayout layout{options.packTilesPerSide, options.verticesPerSide};
   PackJob job{options, layout, plan, sources, nullptr};
   if (options.role == TilerRole::Merge) {
-    const std::vector<formats::PackId>& units = plan.packs(shardLevel);
-    job.precomputed = [&options, &units, shardLevel](
-                          const formats::PackId& id,
-                          SampleTable& table) -> Result<PrecomputedSamples> {
-      if (auto read = readSampleFragments(options.outputDir, id,
-                                          positionsPerTile(options.verticesPerSide), table);
-          !read) {
-        return Error{read.error()};
-      }
-      PrecomputedSamples heights;
-      heights.table = &table;
-      heights.mustHold = [&options, &units, shardLevel](const SamplePosition& p) {
-        return std::binary_search(units.begin(), units.end(),
-                                  packHolding(p.longitudeDegrees, p.latitudeDegrees, shardLevel,
-                                              options.packTilesPerSide));
-      };
-      return heights;
-    };
+    job.precomputed = shardSamples(options, plan.packs(shardLevel), shardLevel);
   }
 
   formats::PyramidManifest manifest;
@@ -398,24 +449,7 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
       }
     }
 
-    formats::LevelInfo& info = manifest.levels[level];
-    info.level = level;
-    info.packs = plan.packs(level);
-    info.packIndexBytes.clear();
-    for (const PackSummary& s : summaries) info.packIndexBytes.push_back(s.indexBytes);
-    if (std::find(info.packIndexBytes.begin(), info.packIndexBytes.end(), 0u) !=
-        info.packIndexBytes.end()) {
-      info.packIndexBytes.clear();  // all or none
-    }
-    info.bounds = {180, 90, -180, -90};
-    info.heightRange = {INT16_MAX, INT16_MIN};
-    for (const PackSummary& s : summaries) {
-      info.tileCount += s.tiles;
-      info.bounds = {
-          std::min(info.bounds.west, s.bounds.west), std::min(info.bounds.south, s.bounds.south),
-          std::max(info.bounds.east, s.bounds.east), std::max(info.bounds.north, s.bounds.north)};
-      info.heightRange.include(s.range);
-    }
+    manifest.levels[level] = levelInfo(level, plan.packs(level), summaries);
   }
   if (options.progress) options.progress({tilesDone, totalTiles, "done", true});
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/big_endian.hpp"
-#include "formats/deflate_bytes.hpp"
+#include "compression/deflate_bytes.hpp"
 #include "formats/pack_block_codec.hpp"
 #include "formats/pack_format.hpp"
 #include "formats/pack_index_codec.hpp"
@@ -171,9 +171,9 @@ std::vector<std::byte> withColumns(const std::vector<std::byte>& pack,
   const uint32_t indexBytes = core::loadBigEndian32(&pack[36]);
   const uint32_t perSide = core::loadBigEndian32(&pack[24]);
   std::vector<std::byte> columns(presenceBitmapBytes(perSide) + indexColumnBytes(present));
-  EXPECT_TRUE(zlibInflateExactly(std::span(pack).subspan(kPackHeaderBytes, indexBytes), columns));
+  EXPECT_TRUE(globe::compression::zlibInflateExactly(std::span(pack).subspan(kPackHeaderBytes, indexBytes), columns));
   edit(columns);
-  const std::vector<std::byte> index = zlibCompress(columns, 6);
+  const std::vector<std::byte> index = globe::compression::zlibCompress(columns, 6);
   std::vector<std::byte> out(pack.begin(), pack.begin() + kPackHeaderBytes);
   core::storeBigEndian32(&out[36], static_cast<uint32_t>(index.size()));
   out.insert(out.end(), index.begin(), index.end());

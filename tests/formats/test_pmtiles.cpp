@@ -9,7 +9,7 @@
 #include <iterator>
 #include <vector>
 
-#include "formats/gzip_bytes.hpp"
+#include "compression/gzip_bytes.hpp"
 #include "formats/pmtiles.hpp"
 #include "tests/support/build_paths.hpp"
 
@@ -56,7 +56,7 @@ TEST(Pmtiles, RealArchivesHeadersAndRootDirectories) {
   EXPECT_EQ(h->tileEntries, 84u);
   EXPECT_EQ(h->tileContents, 80u);
   auto root =
-      gunzipIfNeeded(std::span(toner).subspan(h->rootOffset, h->rootLength), "toner", 1 << 24);
+      globe::compression::gunzipIfNeeded(std::span(toner).subspan(h->rootOffset, h->rootLength), "toner", 1 << 24);
   ASSERT_TRUE(root);
   auto entries = decodePmtilesDirectory(*root, "toner");
   ASSERT_TRUE(entries) << entries.error();
@@ -99,7 +99,7 @@ TEST(Pmtiles, OtherVersionsAndTruncationAreRefusedByName) {
   EXPECT_NE(cut.error().find("beyond the archive's 20000 bytes"), std::string::npos) << cut.error();
   auto header = decodePmtilesHeader(bytes, bytes.size(), "t");
   ASSERT_TRUE(header);
-  auto root = gunzipIfNeeded(std::span(bytes).subspan(header->rootOffset, header->rootLength), "t",
+  auto root = globe::compression::gunzipIfNeeded(std::span(bytes).subspan(header->rootOffset, header->rootLength), "t",
                              1 << 24);
   ASSERT_TRUE(root);
   for (size_t size = 0; size + 1 < root->size(); ++size) {

@@ -13,7 +13,7 @@
 #include <random>
 #include <vector>
 
-#include "formats/gzip_bytes.hpp"
+#include "compression/gzip_bytes.hpp"
 #include "formats/quantized_mesh.hpp"
 #include "formats/terrain_layer_json.hpp"
 #include "tests/support/build_paths.hpp"
@@ -106,7 +106,7 @@ TEST(QuantizedMesh, TheHaguesNormalsPointUpAtTheHague) {
 TEST(QuantizedMesh, LegacyVertexNormalsWithBigEndianLengthsDecode) {
   const fs::path tile = tilesOf(kInterop / "quantized-mesh/denhaag-ahn-octnormals").front();
   auto bytes = readBytes(tile);
-  auto inflated = gunzipIfNeeded(bytes, tile.string(), 64 << 20);
+  auto inflated = globe::compression::gunzipIfNeeded(bytes, tile.string(), 64 << 20);
   ASSERT_TRUE(inflated) << inflated.error();
   auto reference = decodeQuantizedMesh(*inflated, "t.terrain");
   ASSERT_TRUE(reference) << reference.error();
@@ -210,8 +210,8 @@ TEST(HeightmapTile, RawAndGzipTilesDecodeToDutchLowlands) {
   for (const char* name : {"51617.terrain", "51618.terrain", "1608.terrain"}) {
     SCOPED_TRACE(name);
     const auto stored = readBytes(kInterop / "heightmap-1.0" / name);
-    EXPECT_EQ(isGzip(stored), std::string(name) == "1608.terrain");
-    auto bytes = gunzipIfNeeded(stored, name, 1 << 20);
+    EXPECT_EQ(globe::compression::isGzip(stored), std::string(name) == "1608.terrain");
+    auto bytes = globe::compression::gunzipIfNeeded(stored, name, 1 << 20);
     ASSERT_TRUE(bytes) << bytes.error();
     EXPECT_EQ(bytes->size(), 8452u);
     auto tile = decodeHeightmapTile(*bytes, name);
@@ -231,9 +231,9 @@ TEST(HeightmapTile, RawAndGzipTilesDecodeToDutchLowlands) {
   auto damaged = readBytes(kInterop / "heightmap-1.0/1608.terrain");
   damaged[damaged.size() / 2] ^= std::byte{0x5a};
   damaged[damaged.size() / 2 + 1] ^= std::byte{0xa5};
-  auto inflated = gunzipIfNeeded(damaged, "1608.terrain", 1 << 20);
+  auto inflated = globe::compression::gunzipIfNeeded(damaged, "1608.terrain", 1 << 20);
   EXPECT_FALSE(inflated);
-  auto small = gunzipIfNeeded(readBytes(kInterop / "heightmap-1.0/1608.terrain"), "b", 1000);
+  auto small = globe::compression::gunzipIfNeeded(readBytes(kInterop / "heightmap-1.0/1608.terrain"), "b", 1000);
   ASSERT_FALSE(small);
   EXPECT_EQ(small.error(), "b: inflates to more than 1000 bytes");
 }

@@ -11,7 +11,7 @@
 #include "camera/camera_path_file.hpp"
 #include "core/big_endian.hpp"
 #include "core/crc32.hpp"
-#include "formats/gzip_bytes.hpp"
+#include "compression/gzip_bytes.hpp"
 #include "formats/image_io.hpp"
 #include "formats/image_pack.hpp"
 #include "formats/layer_manifest.hpp"
@@ -120,7 +120,7 @@ void imageTile(const uint8_t* data, size_t size) {
 
 void terrainTile(const uint8_t* data, size_t size) {
   const std::span<const std::byte> bytes(reinterpret_cast<const std::byte*>(data), size);
-  auto inflated = formats::gunzipIfNeeded(bytes, "fuzz.terrain", size_t{1} << 24);
+  auto inflated = compression::gunzipIfNeeded(bytes, "fuzz.terrain", size_t{1} << 24);
   if (!inflated) return;
   if (auto mesh = formats::decodeQuantizedMesh(*inflated, "fuzz.terrain")) {
     const services::ServiceSamples samples = services::sampleTin(*mesh);
@@ -156,7 +156,7 @@ void pmtiles(const uint8_t* data, size_t size) {
   auto header = formats::decodePmtilesHeader(bytes, uint64_t{1} << 40, "fuzz.pmtiles");
   if (header && header->rootOffset + header->rootLength <= size) {
     const auto root = bytes.subspan(header->rootOffset, header->rootLength);
-    auto inflated = formats::gunzipIfNeeded(root, "fuzz.pmtiles", size_t{1} << 24);
+    auto inflated = compression::gunzipIfNeeded(root, "fuzz.pmtiles", size_t{1} << 24);
     if (inflated) {
       if (auto entries = formats::decodePmtilesDirectory(*inflated, "fuzz.pmtiles")) {
         (void)formats::findPmtilesEntry(*entries, formats::pmtilesTileId(3, 5, 2));

@@ -306,6 +306,47 @@ TEST(ImageryBands, SixteenBitByTheStatedRule) {
   }
 }
 
+// A DEM given to the imagery tiler is refused, naming the file, its sample type and the command
+// that tiles elevation, when its band holds heights: signed samples (the bundled SRTM over Zion
+// as Int16 and as Float32) or a unit of length (as UInt16 with "metre"); --force draws it as
+// grey. One unsigned 16-bit band (the SRTM as bundled, like a Landsat band) is drawn with a
+// warning naming the file; an 8-bit grey image is imagery, drawn without one.
+TEST(ImageryBands, AnElevationModelIsRefusedUnlessForced) {
+  const std::string srtm =
+      translate(std::string(GLOBE_SOURCE_DIR) + "/data/dem/zion-srtm3.tif",
+                work() / "srtm.tif", {"-srcwin", "100", "100", "120", "120"});
+  const std::string int16 = translate(srtm, work() / "srtm-int16.tif", {"-ot", "Int16"});
+  const std::string floats = translate(srtm, work() / "srtm-float.tif", {"-ot", "Float32"});
+  const std::string metres = translate(srtm, work() / "srtm-metres.tif", {});
+  GDALDatasetH withUnit = GDALOpen(metres.c_str(), GA_Update);
+  ASSERT_NE(withUnit, nullptr);
+  EXPECT_EQ(GDALSetRasterUnitType(GDALGetRasterBand(withUnit, 1), "metre"), CE_None);
+  GDALClose(withUnit);
+  for (const auto& [path, type] : {std::pair{int16, "Int16"}, std::pair{floats, "Float32"},
+                                   std::pair{metres, "UInt16"}}) {
+    const fs::path out = globe::testing::freshTempDir("imagery-bands-dem") / "layer";
+    auto refused = tileLayer({path}, out, {});
+    ASSERT_FALSE(refused) << path;
+    EXPECT_NE(refused.error().find(path + ": one band of " + type + " samples"),
+              std::string::npos) << refused.error();
+    EXPECT_NE(refused.error().find("globe-tiler -o PYRAMID " + path), std::string::npos);
+    EXPECT_NE(refused.error().find("--force"), std::string::npos);
+    EXPECT_FALSE(fs::exists(out / "layer.json"));
+  }
+  ImageryTilerOptions forced;
+  forced.input.allowElevation = true;
+  EXPECT_EQ(tile(int16, "srtm-forced", forced).bands, "grey, nodata transparent");
+  const Layer unsignedBand = tile(srtm, "srtm-uint16");
+  ASSERT_EQ(unsignedBand.warnings.size(), 1u);
+  EXPECT_NE(unsignedBand.warnings[0].find(srtm + ": one band of UInt16 samples"),
+            std::string::npos) << unsignedBand.warnings[0];
+  EXPECT_NE(unsignedBand.warnings[0].find("elevation model"), std::string::npos);
+  const std::string grey = translate(zionCrop(), work() / "grey8.tif", {"-b", "1"});
+  const Layer greyLayer = tile(grey, "grey-8bit");
+  EXPECT_EQ(greyLayer.bands, "grey");
+  EXPECT_TRUE(greyLayer.warnings.empty());
+}
+
 TEST(ImageryBands, BoundsForAGeoreferencedImageIsAnError) {
   ImageryTilerOptions options;
   options.input.bounds = formats::BoundsDegrees{-180, -90, 180, 90};

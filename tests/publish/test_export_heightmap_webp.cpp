@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "formats/gzip_bytes.hpp"
+#include "compression/gzip_bytes.hpp"
 #include "formats/image_io.hpp"
 #include "formats/quantized_mesh.hpp"
 #include "formats/terrain_layer_json.hpp"
@@ -86,8 +86,8 @@ formats::HeightmapTile readTile(const fs::path& path) {
   auto bytes = transport::readWholeFile(path, 1U << 20);
   EXPECT_TRUE(bytes) << bytes.error();
   if (!bytes) return {};
-  EXPECT_TRUE(formats::isGzip(*bytes)) << path;
-  auto inflated = formats::gunzipIfNeeded(*bytes, path.string(), 1U << 20);
+  EXPECT_TRUE(compression::isGzip(*bytes)) << path;
+  auto inflated = compression::gunzipIfNeeded(*bytes, path.string(), 1U << 20);
   EXPECT_TRUE(inflated) << inflated.error();
   if (!inflated) return {};
   auto tile = formats::decodeHeightmapTile(*inflated, path.string());

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "core/crc32.hpp"
-#include "formats/gzip_bytes.hpp"
+#include "compression/gzip_bytes.hpp"
 #include "formats/image_io.hpp"
 #include "formats/pmtiles.hpp"
 #include "geo/tiling_scheme.hpp"
@@ -344,7 +344,7 @@ TEST(ExportImagery, PmtilesWriterDeduplicatesAndSpillsIntoLeaves) {
   EXPECT_EQ(h->tileEntries, summary->tileEntries);
   EXPECT_TRUE(h->clustered);
   const auto directory = [&](uint64_t offset, uint64_t length) {
-    auto inflated = formats::gunzipIfNeeded(span.subspan(offset, length), "directory", 1 << 24);
+    auto inflated = compression::gunzipIfNeeded(span.subspan(offset, length), "directory", 1 << 24);
     EXPECT_TRUE(inflated) << inflated.error();
     auto entries = formats::decodePmtilesDirectory(*inflated, "directory");
     EXPECT_TRUE(entries) << entries.error();

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "formats/gzip_bytes.hpp"
+#include "compression/gzip_bytes.hpp"
 #include "formats/image_io.hpp"
 #include "formats/quantized_mesh.hpp"
 #include "geo/tiling_scheme.hpp"
@@ -158,7 +158,7 @@ TEST(ExportTrees, QuantizedMeshNeighboursShareTheirSidesAndTilesCarryExtensions)
     const std::vector<std::byte> stored(
         reinterpret_cast<const std::byte*>(chars.data()),
         reinterpret_cast<const std::byte*>(chars.data()) + chars.size());
-    auto bytes = formats::gunzipIfNeeded(stored, path.string(), 64 << 20);
+    auto bytes = compression::gunzipIfNeeded(stored, path.string(), 64 << 20);
     EXPECT_TRUE(bytes) << path;
     auto mesh = formats::decodeQuantizedMesh(*bytes, path.string());
     EXPECT_TRUE(mesh) << mesh.error();
@@ -257,7 +257,7 @@ TEST(ExportTrees, QuantizedMeshTilesDecodeWithTheNpmDecoder) {
     const fs::path path = out / j["tile"].get<std::string>();
     std::ifstream file(path, std::ios::binary);
     const std::vector<char> chars{std::istreambuf_iterator<char>(file), {}};
-    auto bytes = formats::gunzipIfNeeded(std::as_bytes(std::span(chars.data(), chars.size())),
+    auto bytes = compression::gunzipIfNeeded(std::as_bytes(std::span(chars.data(), chars.size())),
                                          path.string(), 64 << 20);
     ASSERT_TRUE(bytes) << bytes.error();
     auto mesh = formats::decodeQuantizedMesh(*bytes, path.string());

@@ -10,14 +10,14 @@
 #include <string>
 #include <vector>
 
-#include "render/font_face.hpp"
+#include "text/font_face.hpp"
 #include "render/gl.hpp"
 #include "render/glyph_atlas.hpp"
-#include "render/label_layout.hpp"
+#include "text/label_layout.hpp"
 #include "render/label_renderer.hpp"
 #include "render/osmesa_context.hpp"
 #include "render/pin_icon.hpp"
-#include "render/text_wrap.hpp"
+#include "text/text_wrap.hpp"
 #include "tests/render/render_test_support.hpp"
 
 namespace globe::render {
@@ -30,32 +30,32 @@ const char* const kAthens = "\xCE\x91\xCE\xB8\xCE\xAE\xCE\xBD\xCE\xB1";   // Α�
 const char* const kMarhaba = "\xD9\x85\xD8\xB1\xD8\xAD\xD8\xA8\xD8\xA7";  // مرحبا
 const char* const kShalom = "\xD7\xA9\xD7\x9C\xD7\x95\xD7\x9D";           // שלום
 
-std::unique_ptr<FontFace> loadFont() {
-  auto font = FontFace::loadDefault();
+std::unique_ptr<text::FontFace> loadFont() {
+  auto font = text::FontFace::loadDefault();
   EXPECT_TRUE(font) << (font ? "" : font.error());
   return font ? std::move(*font) : nullptr;
 }
 
 TEST(FontFace, GlobeFontOverridesTheDefaultAndAMissingOneIsNamed) {
-  ASSERT_TRUE(findLabelFont()) << findLabelFont().error();
+  ASSERT_TRUE(text::findLabelFont()) << text::findLabelFont().error();
   setenv("GLOBE_FONT", "/nonexistent/font.ttf", 1);
-  const auto missing = findLabelFont();
+  const auto missing = text::findLabelFont();
   setenv("GLOBE_FONT", "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", 1);
-  const auto chosen = findLabelFont();
+  const auto chosen = text::findLabelFont();
   unsetenv("GLOBE_FONT");
   ASSERT_FALSE(missing);
   EXPECT_NE(missing.error().find("/nonexistent/font.ttf"), std::string::npos);
   ASSERT_TRUE(chosen);
   EXPECT_EQ(chosen->filename(), "DejaVuSans.ttf");
-  EXPECT_FALSE(FontFace::load("/nonexistent/font.ttf"));
+  EXPECT_FALSE(text::FontFace::load("/nonexistent/font.ttf"));
 }
 
 TEST(FontFace, MeasuredWidthGrowsWithTextLengthAndSize) {
   auto font = loadFont();
   ASSERT_TRUE(font);
-  const TextExtent shortText = font->measure("Zu", 16.0f);
-  const TextExtent longText = font->measure(kZurich, 16.0f);
-  const TextExtent larger = font->measure(kZurich, 32.0f);
+  const text::TextExtent shortText = font->measure("Zu", 16.0f);
+  const text::TextExtent longText = font->measure(kZurich, 16.0f);
+  const text::TextExtent larger = font->measure(kZurich, 32.0f);
   EXPECT_GT(shortText.widthPixels, 5.0f);
   EXPECT_GT(longText.widthPixels, shortText.widthPixels + 10.0f);
   EXPECT_NEAR(larger.widthPixels, 2.0f * longText.widthPixels, 0.05f * larger.widthPixels);
@@ -71,10 +71,10 @@ TEST(FontFace, LatinCyrillicAndGreekHaveGlyphsAndCjkIsTheNotdefBox) {
   auto font = loadFont();
   ASSERT_TRUE(font);
   for (const char* text : {kZurich, kMoscow, kAthens}) {
-    const ShapedText shaped = font->shape(text, 20.0f);
+    const text::ShapedText shaped = font->shape(text, 20.0f);
     EXPECT_FALSE(shaped.rightToLeft) << text;
     ASSERT_FALSE(shaped.glyphs.empty()) << text;
-    for (const ShapedGlyph& glyph : shaped.glyphs) EXPECT_NE(glyph.glyphId, 0u) << text;
+    for (const text::ShapedGlyph& glyph : shaped.glyphs) EXPECT_NE(glyph.glyphId, 0u) << text;
     // Left to right: the pen only moves right.
     for (size_t i = 1; i < shaped.glyphs.size(); ++i) {
       EXPECT_GT(shaped.glyphs[i].originPixels.x, shaped.glyphs[i - 1].originPixels.x) << text;
@@ -82,11 +82,11 @@ TEST(FontFace, LatinCyrillicAndGreekHaveGlyphsAndCjkIsTheNotdefBox) {
   }
   // DejaVu has no CJK: each character is glyph 0, the font's .notdef (a hollow box), which is
   // drawn like any glyph, so the label shows two boxes rather than nothing or garbage.
-  const ShapedText tokyo = font->shape(kTokyo, 20.0f);
+  const text::ShapedText tokyo = font->shape(kTokyo, 20.0f);
   ASSERT_EQ(tokyo.glyphs.size(), 2u);
-  for (const ShapedGlyph& glyph : tokyo.glyphs) EXPECT_EQ(glyph.glyphId, 0u);
+  for (const text::ShapedGlyph& glyph : tokyo.glyphs) EXPECT_EQ(glyph.glyphId, 0u);
   EXPECT_GT(tokyo.extent.widthPixels, 10.0f);
-  const GlyphBitmap box = font->rasterize(0, 20.0f, 2.0f);
+  const text::GlyphBitmap box = font->rasterize(0, 20.0f, 2.0f);
   EXPECT_GT(box.widthPixels, 4);
   EXPECT_GT(box.heightPixels, 8);
 }
@@ -95,7 +95,7 @@ TEST(FontFace, ArabicAndHebrewAreShapedRightToLeft) {
   auto font = loadFont();
   ASSERT_TRUE(font);
   for (const char* text : {kMarhaba, kShalom}) {
-    const ShapedText shaped = font->shape(text, 20.0f);
+    const text::ShapedText shaped = font->shape(text, 20.0f);
     EXPECT_TRUE(shaped.rightToLeft) << text;
     ASSERT_GE(shaped.glyphs.size(), 4u) << text;
     // Visual order: the first character (cluster 0) is the rightmost glyph.
@@ -103,11 +103,11 @@ TEST(FontFace, ArabicAndHebrewAreShapedRightToLeft) {
     for (size_t i = 1; i < shaped.glyphs.size(); ++i) {
       EXPECT_LE(shaped.glyphs[i].clusterByte, shaped.glyphs[i - 1].clusterByte) << text;
     }
-    for (const ShapedGlyph& glyph : shaped.glyphs) EXPECT_NE(glyph.glyphId, 0u) << text;
+    for (const text::ShapedGlyph& glyph : shaped.glyphs) EXPECT_NE(glyph.glyphId, 0u) << text;
   }
   // Joining: beh alone is its isolated form; in the middle of three it is the medial form.
-  const ShapedText alone = font->shape("\xD8\xA8", 20.0f);
-  const ShapedText three = font->shape("\xD8\xA8\xD8\xA8\xD8\xA8", 20.0f);
+  const text::ShapedText alone = font->shape("\xD8\xA8", 20.0f);
+  const text::ShapedText three = font->shape("\xD8\xA8\xD8\xA8\xD8\xA8", 20.0f);
   ASSERT_EQ(alone.glyphs.size(), 1u);
   ASSERT_EQ(three.glyphs.size(), 3u);
   EXPECT_NE(three.glyphs[1].glyphId, alone.glyphs[0].glyphId);
@@ -117,10 +117,10 @@ TEST(FontFace, InvalidUtf8IsReplacedNotACrash) {
   auto font = loadFont();
   ASSERT_TRUE(font);
   const std::string bad = "a\xFF\xFE b\xC3";  // stray bytes and a truncated sequence
-  const ShapedText shaped = font->shape(bad, 16.0f);
+  const text::ShapedText shaped = font->shape(bad, 16.0f);
   EXPECT_GE(shaped.glyphs.size(), 4u);
   EXPECT_GT(shaped.extent.widthPixels, 0.0f);
-  for (const ShapedGlyph& glyph : shaped.glyphs) {
+  for (const text::ShapedGlyph& glyph : shaped.glyphs) {
     EXPECT_LE(glyph.clusterByte, bad.size());
     (void)font->rasterize(glyph.glyphId, 16.0f, 2.0f);
   }
@@ -130,10 +130,10 @@ TEST(FontFace, InvalidUtf8IsReplacedNotACrash) {
 TEST(FontFace, TheHaloCoversTheGlyphAndGrowsItByItsRadius) {
   auto font = loadFont();
   ASSERT_TRUE(font);
-  const ShapedText shaped = font->shape("O", 24.0f);
+  const text::ShapedText shaped = font->shape("O", 24.0f);
   ASSERT_EQ(shaped.glyphs.size(), 1u);
-  const GlyphBitmap plain = font->rasterize(shaped.glyphs[0].glyphId, 24.0f, 0.0f);
-  const GlyphBitmap haloed = font->rasterize(shaped.glyphs[0].glyphId, 24.0f, 3.0f);
+  const text::GlyphBitmap plain = font->rasterize(shaped.glyphs[0].glyphId, 24.0f, 0.0f);
+  const text::GlyphBitmap haloed = font->rasterize(shaped.glyphs[0].glyphId, 24.0f, 3.0f);
   EXPECT_GE(haloed.widthPixels, plain.widthPixels + 5);
   EXPECT_GE(haloed.heightPixels, plain.heightPixels + 5);
   int fill = 0, halo = 0;
@@ -170,19 +170,19 @@ TEST(ShelfPacker, PacksWithoutOverlapUntilFull) {
 }
 
 // 10 pixels a byte, ascent 12, descent 4: layout without a font.
-TextExtent fakeMeasure(const std::string& text, float) {
+text::TextExtent fakeMeasure(const std::string& text, float) {
   return {10.0f * static_cast<float>(text.size()), 12.0f, 4.0f};
 }
 
-ScreenLabel labelAt(std::string text, double x, double y) {
-  ScreenLabel label;
+text::ScreenLabel labelAt(std::string text, double x, double y) {
+  text::ScreenLabel label;
   label.text = std::move(text);
   label.anchorPixels = {x, y};
   return label;
 }
 
 TEST(LabelLayout, DropsTheLaterOfTwoOverlappingLabelsAndOffScreenOnes) {
-  std::vector<ScreenLabel> labels{
+  std::vector<text::ScreenLabel> labels{
       labelAt("first", 100, 100),                               // 50 wide
       labelAt("second", 120, 105),                              // overlaps the first: dropped
       labelAt("third", 100, 200),                               // clear of both
@@ -190,24 +190,24 @@ TEST(LabelLayout, DropsTheLaterOfTwoOverlappingLabelsAndOffScreenOnes) {
       labelAt("edge", 390, 50),                                 // partly on screen: kept
       labelAt("nan", std::nan(""), 10), labelAt("", 300, 300),  // nothing to draw
   };
-  const std::vector<PlacedLabel> placed = layoutLabels(labels, {400, 300}, fakeMeasure);
+  const std::vector<text::PlacedLabel> placed = text::layoutLabels(labels, {400, 300}, fakeMeasure);
   std::vector<size_t> indices;
-  for (const PlacedLabel& p : placed) indices.push_back(p.index);
+  for (const text::PlacedLabel& p : placed) indices.push_back(p.index);
   EXPECT_EQ(indices, (std::vector<size_t>{0, 2, 4}));
-  const PlacedLabel& first = placed[0];
+  const text::PlacedLabel& first = placed[0];
   // The text starts at the anchor (plus the halo) and is centred on it vertically.
   EXPECT_NEAR(first.minPixels.x, 100.0f, 0.01f);
-  EXPECT_NEAR(first.maxPixels.x, 100.0f + 50.0f + 2 * std::ceil(labelHaloPixels(16.0f)), 0.01f);
+  EXPECT_NEAR(first.maxPixels.x, 100.0f + 50.0f + 2 * std::ceil(text::labelHaloPixels(16.0f)), 0.01f);
   EXPECT_LT(first.minPixels.y, 92.0f);
   EXPECT_GT(first.maxPixels.y, 104.0f);
   EXPECT_TRUE(first.withText);
 }
 
 TEST(LabelLayout, AnIconAloneIsKeptWhenOnlyItsTextCollides) {
-  std::vector<ScreenLabel> labels{labelAt("wide text here", 100, 100), labelAt("blocked", 60, 100)};
+  std::vector<text::ScreenLabel> labels{labelAt("wide text here", 100, 100), labelAt("blocked", 60, 100)};
   labels[1].iconKey = "pin";
   labels[1].iconSizePixels = 16;  // icon 52..68, text from ~75 runs into the first label
-  const std::vector<PlacedLabel> placed = layoutLabels(labels, {400, 300}, fakeMeasure);
+  const std::vector<text::PlacedLabel> placed = text::layoutLabels(labels, {400, 300}, fakeMeasure);
   ASSERT_EQ(placed.size(), 2u);
   EXPECT_EQ(placed[1].index, 1u);
   EXPECT_FALSE(placed[1].withText);
@@ -215,23 +215,23 @@ TEST(LabelLayout, AnIconAloneIsKeptWhenOnlyItsTextCollides) {
   EXPECT_EQ(placed[1].maxPixels, glm::vec2(68, 108));
   // With its icon in the way too, the whole label goes.
   labels[1].anchorPixels = {110, 100};
-  EXPECT_EQ(layoutLabels(labels, {400, 300}, fakeMeasure).size(), 1u);
+  EXPECT_EQ(text::layoutLabels(labels, {400, 300}, fakeMeasure).size(), 1u);
 }
 
 TEST(TextWrap, BreaksAtSpacesWithinTheWidth) {
   const auto width = [](std::string_view text) { return 8.0f * static_cast<float>(text.size()); };
   const std::vector<std::string> lines =
-      wrapText("the quick brown fox jumps over the lazy dog", 80.0f, width);
+      text::wrapText("the quick brown fox jumps over the lazy dog", 80.0f, width);
   EXPECT_EQ(lines,
             (std::vector<std::string>{"the quick", "brown fox", "jumps over", "the lazy", "dog"}));
   for (const std::string& line : lines) EXPECT_LE(width(line), 80.0f);
   // A word wider than a line is cut between characters, never inside a UTF-8 sequence.
   const std::vector<std::string> cut =
-      wrapText("ab \xC3\xBC\xC3\xBC\xC3\xBC\xC3\xBC", 33.0f, width);
+      text::wrapText("ab \xC3\xBC\xC3\xBC\xC3\xBC\xC3\xBC", 33.0f, width);
   EXPECT_EQ(cut, (std::vector<std::string>{"ab", "\xC3\xBC\xC3\xBC", "\xC3\xBC\xC3\xBC"}));
-  EXPECT_EQ(wrapText("one\ntwo three", 1000.0f, width),
+  EXPECT_EQ(text::wrapText("one\ntwo three", 1000.0f, width),
             (std::vector<std::string>{"one", "two three"}));
-  EXPECT_EQ(wrapText("", 80.0f, width), (std::vector<std::string>{""}));
+  EXPECT_EQ(text::wrapText("", 80.0f, width), (std::vector<std::string>{""}));
 }
 
 // Rendering -----------------------------------------------------------------------------------
@@ -259,8 +259,8 @@ LabelFrame makeFrame() {
   return frame;
 }
 
-bool insideAny(const std::vector<PlacedLabel>& placed, int x, int y) {
-  return std::any_of(placed.begin(), placed.end(), [&](const PlacedLabel& p) {
+bool insideAny(const std::vector<text::PlacedLabel>& placed, int x, int y) {
+  return std::any_of(placed.begin(), placed.end(), [&](const text::PlacedLabel& p) {
     const glm::vec2 centre(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
     return centre.x > p.minPixels.x && centre.x < p.maxPixels.x && centre.y > p.minPixels.y &&
            centre.y < p.maxPixels.y;
@@ -270,10 +270,10 @@ bool insideAny(const std::vector<PlacedLabel>& placed, int x, int y) {
 TEST(LabelRenderer, TextIsBrightWithADarkHaloInsideItsBoxAndNothingOutside) {
   LabelFrame frame = makeFrame();
   ASSERT_TRUE(frame.labels);
-  std::vector<ScreenLabel> labels{labelAt(kZurich, 40, 60), labelAt(kMoscow, 40, 140),
+  std::vector<text::ScreenLabel> labels{labelAt(kZurich, 40, 60), labelAt(kMoscow, 40, 140),
                                   labelAt(kMarhaba, 260, 60), labelAt(kTokyo, 260, 140)};
-  for (ScreenLabel& label : labels) label.sizePixels = 24.0f;
-  const std::vector<PlacedLabel> placed = frame.labels->layout(labels, {kFrameWidth, kFrameHeight});
+  for (text::ScreenLabel& label : labels) label.sizePixels = 24.0f;
+  const std::vector<text::PlacedLabel> placed = frame.labels->layout(labels, {kFrameWidth, kFrameHeight});
   ASSERT_EQ(placed.size(), labels.size());
   frame.labels->draw(labels, placed, {kFrameWidth, kFrameHeight});
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
@@ -295,7 +295,7 @@ TEST(LabelRenderer, TextIsBrightWithADarkHaloInsideItsBoxAndNothingOutside) {
     }
   }
   EXPECT_EQ(outside, 0);
-  for (const PlacedLabel& p : placed) {
+  for (const text::PlacedLabel& p : placed) {
     int bright = 0, dark = 0;
     for (int y = static_cast<int>(p.minPixels.y); y < static_cast<int>(p.maxPixels.y); ++y) {
       for (int x = static_cast<int>(p.minPixels.x); x < static_cast<int>(p.maxPixels.x); ++x) {
@@ -318,15 +318,15 @@ TEST(LabelRenderer, IconColoursAreMultipliedByIconRgba) {
   EXPECT_TRUE(frame.labels->hasIcon("square"));
   frame.labels->setIcon("broken", formats::ImageRgba{8, 8, {1, 2, 3}});
   EXPECT_FALSE(frame.labels->hasIcon("broken"));
-  std::vector<ScreenLabel> labels{labelAt("", 100, 100), labelAt("", 300, 100),
+  std::vector<text::ScreenLabel> labels{labelAt("", 100, 100), labelAt("", 300, 100),
                                   labelAt("", 200, 250)};
   labels[0].iconKey = "square";
   labels[0].iconRgba = {1.0f, 0.5f, 0.0f, 1.0f};
   labels[1].iconKey = "pin";
   labels[1].iconRgba = {1.0f, 1.0f, 0.0f, 1.0f};  // a yellow pin
   labels[2].iconKey = "no such icon";             // placed, draws nothing
-  for (ScreenLabel& label : labels) label.iconSizePixels = 40.0f;
-  const std::vector<PlacedLabel> placed = frame.labels->layout(labels, {kFrameWidth, kFrameHeight});
+  for (text::ScreenLabel& label : labels) label.iconSizePixels = 40.0f;
+  const std::vector<text::PlacedLabel> placed = frame.labels->layout(labels, {kFrameWidth, kFrameHeight});
   ASSERT_EQ(placed.size(), 3u);
   frame.labels->draw(labels, placed, {kFrameWidth, kFrameHeight});
   const test::Image image = test::readImage(kFrameWidth, kFrameHeight);
@@ -387,7 +387,7 @@ TEST(LabelRenderer, TheTestFrameIsWrittenAsAPng) {
     }
   }
   glDisable(GL_SCISSOR_TEST);
-  std::vector<ScreenLabel> labels{labelAt(kZurich, 30, 30),          labelAt(kMoscow, 30, 70),
+  std::vector<text::ScreenLabel> labels{labelAt(kZurich, 30, 30),          labelAt(kMoscow, 30, 70),
                                   labelAt(kAthens, 30, 110),         labelAt(kMarhaba, 30, 150),
                                   labelAt(kShalom, 30, 190),         labelAt(kTokyo, 30, 230),
                                   labelAt("Overlaps", 50, 35),  // dropped
@@ -400,7 +400,7 @@ TEST(LabelRenderer, TheTestFrameIsWrittenAsAPng) {
   labels[2].sizePixels = 20.0f;
   labels[7].sizePixels = 32.0f;
   labels[7].textRgba = {1.0f, 1.0f, 0.4f, 1.0f};
-  const std::vector<PlacedLabel> placed = frame.labels->layout(labels, {kFrameWidth, kFrameHeight});
+  const std::vector<text::PlacedLabel> placed = frame.labels->layout(labels, {kFrameWidth, kFrameHeight});
   EXPECT_EQ(placed.size(), 7u);
   frame.labels->draw(labels, placed, {kFrameWidth, kFrameHeight});
   frame.labels->drawTextPanel(

@@ -416,15 +416,6 @@ TEST(HudText, StatusShowsPositionTerrainCollisionTilesAndMode) {
   EXPECT_EQ(orbitText.find("REC"), std::string::npos);
 }
 
-TEST(HudText, HelpListsEveryKey) {
-  std::string help;
-  for (const auto& line : globe::app::hudHelpLines()) help += line + "\n";
-  for (const char* key : {"F / Tab", "W/S", "A/D", "E/Q", "Shift", "double-click", "P ", "K / F12",
-                          "H / F1", "Esc", "R ", "scroll", "L ", "1 - 4", "[ / ]"}) {
-    EXPECT_NE(help.find(key), std::string::npos) << key;
-  }
-}
-
 // With layers the HUD says the lighting and each layer's state; without, nothing about them.
 TEST(HudText, ImageryStatusShowsLightingAndLayers) {
   globe::app::HudState state;

@@ -67,6 +67,13 @@ TEST(GoTo, SuggestionsAreTheBestFewPlaces) {
   const auto lon = goToSuggestions("Londo", 3);
   ASSERT_FALSE(lon.empty());
   EXPECT_EQ(lon[0], "London, GB");
+  // Mistyped: the box offers the place meant, spelt right.
+  const auto zion = goToSuggestions("Zoin", 3);
+  ASSERT_FALSE(zion.empty());
+  EXPECT_EQ(zion[0], "Zion National Park, US");
+  const auto fuji = parseGoTo("Mt Fuji");
+  ASSERT_TRUE(fuji) << fuji.error();
+  EXPECT_EQ(fuji->name, "Mount Fuji, JP");
 }
 
 // `globe search` as a user runs it: CSV best first, a position read back, a miss an error.

@@ -867,7 +867,10 @@ TEST(GlobeViewWindow, GoToReachesThePlace) {
           kFindWindow +
           "send key --window $WID g\n"
           "send type --window $WID --delay 30 'Angels Landing'\n"
-          "send key --window $WID Return\n"
+          // Enter, then until the flight there is over (the window said where it goes and is
+          // still again): typing may still be in the window's queue when `send` returns.
+          "n=$(idles); xdotool key --window $WID Return\n"
+          "waitfor '^go to '; settle $n\n"
           "xdotool keydown --window $WID Escape\n"
           "wait $VIEW; echo exit=$?\n"
           "cat log.txt\n");

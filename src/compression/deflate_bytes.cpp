@@ -1,11 +1,11 @@
-#include "formats/deflate_bytes.hpp"
+#include "compression/deflate_bytes.hpp"
 
 #include <libdeflate.h>
 
 #include <array>
 #include <memory>
 
-namespace globe::formats {
+namespace globe::compression {
 namespace {
 
 struct CompressorDeleter {
@@ -68,4 +68,4 @@ bool deflateInflateExactly(std::span<const std::byte> in, std::span<std::byte> o
          actual == out.size();
 }
 
-}  // namespace globe::formats
+}  // namespace globe::compression

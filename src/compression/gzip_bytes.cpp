@@ -1,10 +1,10 @@
-#include "formats/gzip_bytes.hpp"
+#include "compression/gzip_bytes.hpp"
 
 #include <libdeflate.h>
 
 #include <memory>
 
-namespace globe::formats {
+namespace globe::compression {
 namespace {
 
 struct GzipDecompressorDeleter {
@@ -42,4 +42,4 @@ Result<std::vector<std::byte>> gunzipIfNeeded(std::span<const std::byte> bytes,
   }
 }
 
-}  // namespace globe::formats
+}  // namespace globe::compression

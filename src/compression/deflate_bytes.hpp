@@ -6,7 +6,7 @@
 #include <span>
 #include <vector>
 
-namespace globe::formats {
+namespace globe::compression {
 
 // level 1 (fast) .. 12 (smallest).
 std::vector<std::byte> zlibCompress(std::span<const std::byte> in, int level);
@@ -16,4 +16,4 @@ std::vector<std::byte> gzipCompress(std::span<const std::byte> in, int level);
 bool zlibInflateExactly(std::span<const std::byte> in, std::span<std::byte> out);
 bool deflateInflateExactly(std::span<const std::byte> in, std::span<std::byte> out);
 
-}  // namespace globe::formats
+}  // namespace globe::compression

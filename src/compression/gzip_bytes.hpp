@@ -9,7 +9,7 @@
 
 #include "core/result.hpp"
 
-namespace globe::formats {
+namespace globe::compression {
 
 bool isGzip(std::span<const std::byte> bytes);
 // The bytes inflated when gzip, else a copy; errors (damaged stream, more than maxBytes inflated)
@@ -17,4 +17,4 @@ bool isGzip(std::span<const std::byte> bytes);
 Result<std::vector<std::byte>> gunzipIfNeeded(std::span<const std::byte> bytes,
                                               const std::string& name, size_t maxBytes);
 
-}  // namespace globe::formats
+}  // namespace globe::compression

@@ -12,7 +12,7 @@
 
 #include "core/result.hpp"
 
-namespace globe::render {
+namespace globe::text {
 
 // $GLOBE_FONT when set and non-empty, else DejaVuSans-Bold.ttf or DejaVuSans.ttf in
 // /usr/share/fonts/truetype/dejavu. The error names what was looked for and the Debian package.
@@ -80,4 +80,4 @@ class FontFace {
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace globe::render
+}  // namespace globe::text

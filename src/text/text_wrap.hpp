@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-namespace globe::render {
+namespace globe::text {
 
 // The width of a piece of UTF-8 text in pixels (FontFace::measure(...).widthPixels).
 using TextWidth = std::function<float(std::string_view utf8)>;
@@ -17,4 +17,4 @@ using TextWidth = std::function<float(std::string_view utf8)>;
 std::vector<std::string> wrapText(std::string_view paragraph, float maxWidthPixels,
                                   const TextWidth& widthOf);
 
-}  // namespace globe::render
+}  // namespace globe::text

@@ -1,6 +1,6 @@
 // FontFace: HarfBuzz shapes from the font file's own tables (its default OpenType functions, at
 // scale = pixels·64), FreeType rasterises; both open the same file.
-#include "render/font_face.hpp"
+#include "text/font_face.hpp"
 
 #include <algorithm>
 #include <climits>
@@ -15,7 +15,7 @@
 #include FT_STROKER_H
 #include <hb.h>
 
-namespace globe::render {
+namespace globe::text {
 namespace {
 
 constexpr const char* kDejaVuDirectory = "/usr/share/fonts/truetype/dejavu";
@@ -227,4 +227,4 @@ GlyphBitmap FontFace::rasterize(uint32_t glyphId, float sizePixels, float haloPi
   return out;
 }
 
-}  // namespace globe::render
+}  // namespace globe::text

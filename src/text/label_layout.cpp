@@ -1,6 +1,6 @@
 // Label decluttering: boxes against the boxes placed before them, in priority order. Quadratic
 // in the number placed, which the screen bounds (a few hundred labels at most fit).
-#include "render/label_layout.hpp"
+#include "text/label_layout.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 
 #include <glm/common.hpp>
 
-namespace globe::render {
+namespace globe::text {
 namespace {
 
 struct LabelBox {
@@ -93,4 +93,4 @@ std::vector<PlacedLabel> layoutLabels(std::span<const ScreenLabel> labels,
   return placed;
 }
 
-}  // namespace globe::render
+}  // namespace globe::text

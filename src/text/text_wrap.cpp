@@ -1,11 +1,11 @@
 // Greedy word wrap: each line takes as many words as fit (the usual, not Knuth–Plass, which
 // would need the whole paragraph's costs and buys little in a small info box).
-#include "render/text_wrap.hpp"
+#include "text/text_wrap.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace globe::render {
+namespace globe::text {
 namespace {
 
 // The byte length of the UTF-8 character starting at text[at] (1 for a stray byte).
@@ -77,4 +77,4 @@ std::vector<std::string> wrapText(std::string_view paragraph, float maxWidthPixe
   return lines;
 }
 
-}  // namespace globe::render
+}  // namespace globe::text

@@ -12,9 +12,9 @@
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
-#include "render/font_face.hpp"
+#include "text/font_face.hpp"
 
-namespace globe::render {
+namespace globe::text {
 
 struct ScreenLabel {
   std::string text;           // UTF-8
@@ -61,4 +61,4 @@ LabelGeometry labelGeometry(const ScreenLabel& label, const TextExtent& text);
 std::vector<PlacedLabel> layoutLabels(std::span<const ScreenLabel> labels,
                                       glm::ivec2 viewportPixels, const MeasureText& measure);
 
-}  // namespace globe::render
+}  // namespace globe::text
