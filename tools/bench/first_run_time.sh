@@ -49,6 +49,8 @@ skipped=$(grep -Ec '^[[:space:]]+[0-9]+ - .*\(Skipped\)$' "$WORK/tests.log" || t
   echo
   echo "- suite: $passed; $skipped skipped"
   echo "- goal (issue 47): the second command at most 10 min on a fresh 2-core machine"
+  echo "- the test command's stages:"
+  grep '^CI-time:' "$WORK/tests.log" | sed 's/^CI-time: */  - /' || true
   if [ -s "$WORK/failed" ]; then echo "- FAILED: $(tr '\n' ' ' <"$WORK/failed")"; fi
 } >"$OUT_MD.tmp"
 mv "$OUT_MD.tmp" "$OUT_MD"
