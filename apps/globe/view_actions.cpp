@@ -103,11 +103,12 @@ constexpr ActionInfo kActions[] = {
      [](ViewInput& i, ViewWindow&) { return openPrompt(i, false, false); }},
     {A::SaveView, "save-view", "V", "save this view under a name", "save the view", 1,
      [](ViewInput& i, ViewWindow&) { return openPrompt(i, true, false); }},
-    {A::OpenFile, "open-file", "O / Ctrl+O", "open KML, KMZ, GeoJSON or GPX (or drop files)", "open files", 1,
-     [](ViewInput& i, ViewWindow&) { return openPrompt(i, false, true); }},
+    {A::OpenFile, "open-file", "O / Ctrl+O", "open KML, KMZ, GeoJSON or GPX (or drop files)",
+     "open files", 1, [](ViewInput& i, ViewWindow&) { return openPrompt(i, false, true); }},
     {A::Quit, "quit", "Esc", "quit (a path being recorded is written first)", "quit", 1,
      [](ViewInput&, ViewWindow& w) { return w.close(), true; }},
-    {A::ToggleRecording, "toggle-recording", "P", "start/stop recording the path (globe-path-*.json)", "record the path", 2,
+    {A::ToggleRecording, "toggle-recording", "P",
+     "start/stop recording the path (globe-path-*.json)", "record the path", 2,
      [](ViewInput& i, ViewWindow&) { return i.recordToggleRequested = true; }},
     {A::Screenshot, "screenshot", "K / F12", "screenshot (globe-shot-*.png)", "screenshot", 2,
      [](ViewInput& i, ViewWindow&) { return i.screenshotRequested = true; }},
@@ -115,23 +116,27 @@ constexpr ActionInfo kActions[] = {
      [](ViewInput&, ViewWindow& w) { return w.toggleFullScreen(), true; }},
     {A::ToggleRuler, "toggle-ruler", "M", "ruler: clicks add points, M again clears it", "ruler", 3,
      [](ViewInput& i, ViewWindow&) { return i.rulerOn = !i.rulerOn, true; }},
-    {A::RulerUndo, "ruler-undo", "Backspace", "the ruler's last point off (or reopen its ring)", "undoes a point", 3,
+    {A::RulerUndo, "ruler-undo", "Backspace", "the ruler's last point off (or reopen its ring)",
+     "undoes a point", 3,
      [](ViewInput& i, ViewWindow&) { return i.rulerUndoRequested = i.rulerOn; }},
-    {A::ToggleProfile, "toggle-profile", "X", "elevation profile of the ruler / picked line", "elevation profile", 3,
+    {A::ToggleProfile, "toggle-profile", "X", "elevation profile of the ruler / picked line",
+     "elevation profile", 3,
      [](ViewInput& i, ViewWindow&) { return i.profileVisible = !i.profileVisible, true; }},
-    {A::CycleLighting, "cycle-lighting", "L", "lighting on imagery: auto -> on -> off", "lighting", 4,
+    {A::CycleLighting, "cycle-lighting", "L", "lighting on imagery: auto -> on -> off", "lighting",
+     4,
      [](ViewInput& i, ViewWindow&) {
        return i.imagery.lighting = terrain::nextImageryLighting(i.imagery.lighting), true;
      }},
-    {A::ToggleLayer1, "toggle-layer-1", "1 - 4", "show / hide layer 1-4 (and select it for [ ])", "layers", 4,
-     [](ViewInput& i, ViewWindow&) { return toggleLayer(i.imagery, 0); }},
+    {A::ToggleLayer1, "toggle-layer-1", "1 - 4", "show / hide layer 1-4 (and select it for [ ])",
+     "layers", 4, [](ViewInput& i, ViewWindow&) { return toggleLayer(i.imagery, 0); }},
     {A::ToggleLayer2, "toggle-layer-2", "2", "", "", 4,
      [](ViewInput& i, ViewWindow&) { return toggleLayer(i.imagery, 1); }},
     {A::ToggleLayer3, "toggle-layer-3", "3", "", "", 4,
      [](ViewInput& i, ViewWindow&) { return toggleLayer(i.imagery, 2); }},
     {A::ToggleLayer4, "toggle-layer-4", "4", "", "", 4,
      [](ViewInput& i, ViewWindow&) { return toggleLayer(i.imagery, 3); }},
-    {A::LayerOpacityDown, "layer-opacity-down", "[ / ]", "the selected layer's opacity -/+ 10%", "opacity -/+", 4,
+    {A::LayerOpacityDown, "layer-opacity-down", "[ / ]", "the selected layer's opacity -/+ 10%",
+     "opacity -/+", 4,
      [](ViewInput& i, ViewWindow&) { return stepOpacity(i.imagery, -kOpacityStep); }},
     {A::LayerOpacityUp, "layer-opacity-up", "]", "", "", 4,
      [](ViewInput& i, ViewWindow&) { return stepOpacity(i.imagery, kOpacityStep); }},
@@ -143,8 +148,8 @@ constexpr ActionInfo kActions[] = {
      [](ViewInput& i, ViewWindow&) { return nav(i).panByKey(kPanPixelsPerKey, 0), true; }},
     {A::PanRight, "pan-right", "Right", "", "", 0,
      [](ViewInput& i, ViewWindow&) { return nav(i).panByKey(-kPanPixelsPerKey, 0), true; }},
-    {A::ZoomIn, "zoom-in", "+/-, PgUp/PgDn", "zoom at the centre (height x0.8 per press)", "zoom", 0,
-     [](ViewInput& i, ViewWindow&) { return nav(i).zoom(1), true; }},
+    {A::ZoomIn, "zoom-in", "+/-, PgUp/PgDn", "zoom at the centre (height x0.8 per press)", "zoom",
+     0, [](ViewInput& i, ViewWindow&) { return nav(i).zoom(1), true; }},
     {A::ZoomOut, "zoom-out", "-", "", "", 0,
      [](ViewInput& i, ViewWindow&) { return nav(i).zoom(-1), true; }},
     {A::LookUp, "look-up", "arrows", "look in 5 deg steps", "look", 0,
@@ -155,8 +160,8 @@ constexpr ActionInfo kActions[] = {
      [](ViewInput& i, ViewWindow&) { return nav(i).lookRadians(-kLookRadiansPerKey, 0), true; }},
     {A::LookRight, "look-right", "Right", "", "", 0,
      [](ViewInput& i, ViewWindow&) { return nav(i).lookRadians(kLookRadiansPerKey, 0), true; }},
-    {A::FlyFaster, "fly-faster", "+/-, PgUp/PgDn", "speed factor x2 / /2 (x1/8 to x64)", "speed x2 / /2", 1,
-     [](ViewInput& i, ViewWindow&) { return nav(i).changeSpeed(1), true; }},
+    {A::FlyFaster, "fly-faster", "+/-, PgUp/PgDn", "speed factor x2 / /2 (x1/8 to x64)",
+     "speed x2 / /2", 1, [](ViewInput& i, ViewWindow&) { return nav(i).changeSpeed(1), true; }},
     {A::FlySlower, "fly-slower", "-", "", "", 1,
      [](ViewInput& i, ViewWindow&) { return nav(i).changeSpeed(-1), true; }},
 };
@@ -164,8 +169,8 @@ constexpr ActionInfo kActions[] = {
 constexpr InputHelp kContinuous[] = {
     {M::Any, "double-click", "fly to the point under the cursor", "flies there", 5},
     {M::Orbit, "left-drag", "grab the ground and turn the globe under it", "rotates", 1},
-    {M::Orbit, "right/middle/Shift/Ctrl-drag", "tilt and turn about the centre",
-     "tilts and turns", 1},
+    {M::Orbit, "right/middle/Shift/Ctrl-drag", "tilt and turn about the centre", "tilts and turns",
+     1},
     {M::Orbit, "scroll", "zoom toward the ground under the cursor", "zooms at the cursor", 0},
     {M::Fly, "W/S A/D E/Q", "forward/back, left/right, up/down; Shift x5", "move (Shift x5)", 0},
     {M::Fly, "drag (either button)", "look", "looks", 2},
@@ -245,7 +250,7 @@ std::vector<std::string> helpLines() {
 std::string keysMarkdown() {
   std::string text;
   for (const KeyMode mode : {M::Any, M::Orbit, M::Fly}) {
-    text += mode == M::Any ? "| keys (any mode) | action |\n|---|---|\n"
+    text += mode == M::Any     ? "| keys (any mode) | action |\n|---|---|\n"
             : mode == M::Orbit ? "\n| orbit mode | action |\n|---|---|\n"
                                : "\n| fly mode | action |\n|---|---|\n";
     for (const ActionInfo& a : kActions) {
@@ -253,7 +258,8 @@ std::string keysMarkdown() {
       text += "| `" + std::string(a.keys) + "` | " + std::string(a.help) + " |\n";
     }
     for (const InputHelp& h : kContinuous) {
-      if (h.mode == mode) text += "| " + std::string(h.input) + " | " + std::string(h.help) + " |\n";
+      if (h.mode == mode)
+        text += "| " + std::string(h.input) + " | " + std::string(h.help) + " |\n";
     }
   }
   return text;

@@ -131,8 +131,8 @@ std::string bandList(const std::vector<int>& bands) {
 // Heights in a band: a unit of length, or signed samples (Int16 as SRTM and GTOPO30, Float32 as
 // Copernicus): an image's digital numbers are unsigned (Landsat's and Sentinel-2's UInt16).
 bool holdsHeights(GDALRasterBandH band) {
-  static constexpr std::string_view kLengthUnits[] = {"m", "metre", "metres", "meter", "meters",
-                                                      "ft", "foot", "feet", "us-ft"};
+  static constexpr std::string_view kLengthUnits[] = {"m",  "metre", "metres", "meter", "meters",
+                                                      "ft", "foot",  "feet",   "us-ft"};
   std::string unit = GDALGetRasterUnitType(band) != nullptr ? GDALGetRasterUnitType(band) : "";
   for (char& c : unit) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   const GDALDataType type = GDALGetRasterDataType(band);
@@ -149,8 +149,7 @@ Result<void> checkNotElevation(GDALDatasetH dataset, int bandNumber, const std::
   GDALRasterBandH band = GDALGetRasterBand(dataset, bandNumber);
   const GDALDataType type = GDALGetRasterDataType(band);
   if (type == GDT_Byte) return {};
-  const std::string tileElevation =
-      "tile elevation with `globe-tiler -o PYRAMID " + name + "`";
+  const std::string tileElevation = "tile elevation with `globe-tiler -o PYRAMID " + name + "`";
   if (holdsHeights(band)) {
     return makeError(name + ": one band of " + GDALGetDataTypeName(type) +
                      " samples without colour, as an elevation model has; " + tileElevation +
@@ -158,7 +157,8 @@ Result<void> checkNotElevation(GDALDatasetH dataset, int bandNumber, const std::
   }
   input.warnings.push_back(name + ": one band of " + GDALGetDataTypeName(type) +
                            " samples without colour: drawn as grey imagery; if they are heights, "
-                           "it is an elevation model: " + tileElevation);
+                           "it is an elevation model: " +
+                           tileElevation);
   return {};
 }
 

@@ -61,7 +61,16 @@ bool sameWithoutSpaces(std::string_view a, std::string_view b) {
 // a word of a name beginning so, a name holding it; kNoMatch none. Slips rank above an alternate
 // name's beginning: "Zoin" means Zion rather than Joinville, whose Lithuanian name is
 // "Zoinvilis".
-enum Tier : size_t { kSame, kOwnPrefix, kOneSlip, kTwoSlips, kOtherPrefix, kWord, kHolds, kNoMatch };
+enum Tier : size_t {
+  kSame,
+  kOwnPrefix,
+  kOneSlip,
+  kTwoSlips,
+  kOtherPrefix,
+  kWord,
+  kHolds,
+  kNoMatch
+};
 
 struct Match {
   Tier tier = kNoMatch;

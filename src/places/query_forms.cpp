@@ -13,12 +13,11 @@ struct WordForm {
 
 // Each pair is tried both ways: names hold both "St. Louis" and "Saint-Étienne".
 constexpr WordForm kWordForms[] = {
-    {"mt", "mount"},      {"mtn", "mountain"}, {"mtns", "mountains"}, {"st", "saint"},
-    {"ste", "sainte"},    {"ft", "fort"},      {"pt", "point"},       {"pk", "peak"},
-    {"lk", "lake"},       {"natl", "national"}, {"np", "national park"}, {"n", "north"},
-    {"s", "south"},       {"e", "east"},       {"w", "west"},         {"mt", "mont"},
-    {"mt", "monte"},
-    {"sta", "santa"},     {"sto", "santo"},    {"st", "sankt"},
+    {"mt", "mount"},   {"mtn", "mountain"},  {"mtns", "mountains"},   {"st", "saint"},
+    {"ste", "sainte"}, {"ft", "fort"},       {"pt", "point"},         {"pk", "peak"},
+    {"lk", "lake"},    {"natl", "national"}, {"np", "national park"}, {"n", "north"},
+    {"s", "south"},    {"e", "east"},        {"w", "west"},           {"mt", "mont"},
+    {"mt", "monte"},   {"sta", "santa"},     {"sto", "santo"},        {"st", "sankt"},
 };
 
 // Umlauts written out, as German and Swiss names are typed without them.

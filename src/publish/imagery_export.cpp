@@ -14,14 +14,14 @@
 #include "formats/pmtiles.hpp"
 #include "publish/layer_sampler.hpp"
 #include "publish/pmtiles_writer.hpp"
-#include "publish/web_mercator.hpp"
+#include "geo/web_mercator.hpp"
 #include "transport/atomic_file.hpp"
 
 namespace globe::publish {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr uint32_t kImageryTileSize = kWebMercatorTileSizePixels;
+constexpr uint32_t kImageryTileSize = geo::kWebMercatorTileSizePixels;
 constexpr uint32_t kMaxExportZoom = 24;
 constexpr std::uintmax_t kMaxTileJsonBytes = 4u << 20;  // an earlier export's tilejson.json
 
@@ -72,9 +72,9 @@ Result<ImageryPlan> planExport(streaming::ImageryTiles& layer, const ExportRegio
   for (const formats::BoundsDegrees& s : sources) {
     const formats::BoundsDegrees a{
         std::max(region.westDegrees, s.west),
-        std::max({region.southDegrees, s.south, -kWebMercatorMaxLatitudeDegrees}),
+        std::max({region.southDegrees, s.south, -geo::kWebMercatorMaxLatitudeDegrees}),
         std::min(region.eastDegrees, s.east),
-        std::min({region.northDegrees, s.north, kWebMercatorMaxLatitudeDegrees})};
+        std::min({region.northDegrees, s.north, geo::kWebMercatorMaxLatitudeDegrees})};
     if (!(a.west < a.east && a.south < a.north)) continue;
     plan.bounds = plan.areas.empty() ? a
                                      : formats::BoundsDegrees{std::min(plan.bounds.west, a.west),
@@ -104,7 +104,8 @@ struct MercatorTile {
 std::vector<MercatorTile> tilesOfZoom(const ImageryPlan& plan, uint32_t zoom) {
   std::vector<MercatorTile> tiles;
   for (const formats::BoundsDegrees& a : plan.areas) {
-    const WebMercatorTileRange range = webMercatorTilesOf(a.west, a.south, a.east, a.north, zoom);
+    const geo::WebMercatorTileRange range =
+        geo::webMercatorTilesOf(a.west, a.south, a.east, a.north, zoom);
     for (uint32_t y = range.firstY; y <= range.lastY; ++y) {
       for (uint32_t x = range.firstX; x <= range.lastX; ++x) {
         tiles.push_back({formats::pmtilesTileId(zoom, x, y), x, y});
@@ -126,11 +127,11 @@ Result<std::optional<formats::ImageRgba>> renderMercatorTile(LayerSampler& sampl
   bool any = false;
   for (uint32_t r = 0; r < kImageryTileSize; ++r) {
     const double latitudeDegrees =
-        webMercatorLatitudeRadiansOfRow(y + (r + 0.5) / kImageryTileSize, zoom) * 180 /
+        geo::webMercatorLatitudeRadiansOfRow(y + (r + 0.5) / kImageryTileSize, zoom) * 180 /
         std::numbers::pi;
     for (uint32_t c = 0; c < kImageryTileSize; ++c) {
       const double longitudeDegrees =
-          webMercatorLongitudeDegreesOfColumn(x + (c + 0.5) / kImageryTileSize, zoom);
+          geo::webMercatorLongitudeDegreesOfColumn(x + (c + 0.5) / kImageryTileSize, zoom);
       auto pixel = sampler.sample(longitudeDegrees, latitudeDegrees, level);
       if (!pixel) return Error{pixel.error()};
       any = any || (*pixel)[3] > 0;
@@ -214,19 +215,19 @@ std::string tileMapResource(const nlohmann::json& tileJson, ImageryTileFormat fo
       << "  <Title>" << xmlEscaped(tileJson.value("name", "")) << "</Title>\n"
       << "  <Abstract>" << xmlEscaped(tileJson.value("attribution", "")) << "</Abstract>\n"
       << "  <SRS>EPSG:3857</SRS>\n"
-      << "  <BoundingBox minx=\"" << webMercatorXMeters(b[0].get<double>()) << "\" miny=\""
-      << webMercatorYMeters(b[1].get<double>()) << "\" maxx=\""
-      << webMercatorXMeters(b[2].get<double>()) << "\" maxy=\""
-      << webMercatorYMeters(b[3].get<double>()) << "\"/>\n"
-      << "  <Origin x=\"" << -kWebMercatorHalfWorldMeters << "\" y=\""
-      << -kWebMercatorHalfWorldMeters << "\"/>\n"
+      << "  <BoundingBox minx=\"" << geo::webMercatorXMeters(b[0].get<double>()) << "\" miny=\""
+      << geo::webMercatorYMeters(b[1].get<double>()) << "\" maxx=\""
+      << geo::webMercatorXMeters(b[2].get<double>()) << "\" maxy=\""
+      << geo::webMercatorYMeters(b[3].get<double>()) << "\"/>\n"
+      << "  <Origin x=\"" << -geo::kWebMercatorHalfWorldMeters << "\" y=\""
+      << -geo::kWebMercatorHalfWorldMeters << "\"/>\n"
       << "  <TileFormat width=\"" << kImageryTileSize << "\" height=\"" << kImageryTileSize
       << "\" mime-type=\"" << mimeTypeOf(format) << "\" extension=\"" << extensionOf(format)
       << "\"/>\n"
       << "  <TileSets profile=\"global-mercator\">\n";
   for (uint32_t z = tileJson["minzoom"]; z <= tileJson["maxzoom"].get<uint32_t>(); ++z) {
-    xml << "    <TileSet href=\"" << z << "\" units-per-pixel=\"" << webMercatorMetersPerPixel(z)
-        << "\" order=\"" << z << "\"/>\n";
+    xml << "    <TileSet href=\"" << z << "\" units-per-pixel=\""
+        << geo::webMercatorMetersPerPixel(z) << "\" order=\"" << z << "\"/>\n";
   }
   xml << "  </TileSets>\n</TileMap>\n";
   return xml.str();

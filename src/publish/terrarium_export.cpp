@@ -10,12 +10,12 @@
 #include "formats/image_io.hpp"
 #include "formats/webp_lossless.hpp"
 #include "publish/pyramid_surface.hpp"
-#include "publish/web_mercator.hpp"
+#include "geo/web_mercator.hpp"
 
 namespace globe::publish {
 namespace {
 
-constexpr uint32_t kTileSize = kWebMercatorTileSizePixels;
+constexpr uint32_t kTileSize = geo::kWebMercatorTileSizePixels;
 
 // The pyramid level whose vertex spacing (180° / 2^L / (N−1)) is no wider than a pixel at the
 // equator (360° / 2^z / 256).
@@ -61,7 +61,7 @@ Result<ExportReport> exportElevationPngs(streaming::TerrainSource& source,
   const uint32_t lastZoom = std::min(region.maxLevel, 22U);
   for (uint32_t zoom = region.minLevel; zoom <= lastZoom; ++zoom) {
     const double tiles = std::ldexp(1.0, static_cast<int>(zoom));
-    const WebMercatorTileRange range = webMercatorTilesOf(
+    const geo::WebMercatorTileRange range = geo::webMercatorTilesOf(
         region.westDegrees, region.southDegrees, region.eastDegrees, region.northDegrees, zoom);
     const uint32_t x0 = range.firstX, x1 = range.lastX, y0 = range.firstY, y1 = range.lastY;
     const uint32_t level = levelForZoom(zoom, source.manifest().verticesPerSide);
@@ -75,7 +75,8 @@ Result<ExportReport> exportElevationPngs(streaming::TerrainSource& source,
               formats::ImageRgba image{static_cast<int>(kTileSize), static_cast<int>(kTileSize),
                                        std::vector<uint8_t>(kTileSize * kTileSize * 4, 255)};
               for (uint32_t r = 0; r < kTileSize; ++r) {
-                const double lat = webMercatorLatitudeRadiansOfRow(y + (r + 0.5) / kTileSize, zoom);
+                const double lat =
+                    geo::webMercatorLatitudeRadiansOfRow(y + (r + 0.5) / kTileSize, zoom);
                 for (uint32_t c = 0; c < kTileSize; ++c) {
                   const double lon =
                       ((x + (c + 0.5) / kTileSize) / tiles * 360 - 180) * std::numbers::pi / 180;

@@ -47,9 +47,7 @@ TileMatrixSet geographicQuad(uint32_t minZoom, uint32_t maxZoom, uint32_t tileSi
 std::optional<std::pair<double, double>> toCrs(TileCrs crs, double lon, double lat) {
   if (crs == TileCrs::Geographic) return std::pair{lon, lat};
   if (std::fabs(lat) > kWebMercatorMaxLatitudeDegrees + 1e-9) return std::nullopt;
-  const double phi = lat * std::numbers::pi / 180;
-  return std::pair{lon * std::numbers::pi / 180 * kMercatorRadiusMeters,
-                   std::log(std::tan(std::numbers::pi / 4 + phi / 2)) * kMercatorRadiusMeters};
+  return std::pair{geo::webMercatorXMeters(lon), geo::webMercatorYMeters(lat)};
 }
 
 double crsUnitsPerDegree(TileCrs crs, double lat) {

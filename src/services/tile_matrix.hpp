@@ -9,12 +9,14 @@
 #include <string>
 #include <vector>
 
+#include "geo/web_mercator.hpp"
+
 namespace globe::services {
 
 enum class TileCrs { WebMercator, Geographic };
 
-// Web Mercator's square world ends at this latitude, north and south.
-inline constexpr double kWebMercatorMaxLatitudeDegrees = 85.05112877980659;
+// Web Mercator's square world ends at geo::kWebMercatorMaxLatitudeDegrees, north and south.
+using geo::kWebMercatorMaxLatitudeDegrees;
 
 struct TileMatrix {
   std::string id;                   // the zoom's name in URLs (WMTS's TileMatrix)

@@ -9,6 +9,7 @@
 
 #include "formats/image_io.hpp"
 #include "geo/tiling_scheme.hpp"
+#include "geo/web_mercator.hpp"
 #include "services/recent_items.hpp"
 #include "services/tile_matrix.hpp"
 #include "services/tin_sampling.hpp"
@@ -107,11 +108,10 @@ class XyzElevationSource final : public ServiceTerrainSource {
   }
 
  private:
+  // The square world's x and y (0..1, y from the north) of a longitude and latitude in radians.
   static double mercatorX(double lon) { return lon / (2 * std::numbers::pi) + 0.5; }
   static double mercatorY(double lat) {
-    const double limit = kWebMercatorMaxLatitudeDegrees * std::numbers::pi / 180;
-    const double clamped = std::clamp(lat, -limit, limit);
-    return 0.5 - std::log(std::tan(std::numbers::pi / 4 + clamped / 2)) / (2 * std::numbers::pi);
+    return geo::webMercatorRowOf(lat * 180 / std::numbers::pi, 0);
   }
 
   // The Mercator zoom whose pixels are about the block's vertex step at the equator (a

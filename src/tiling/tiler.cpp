@@ -245,9 +245,9 @@ std::function<Result<PrecomputedSamples>(const formats::PackId&, SampleTable&)> 
     PrecomputedSamples heights;
     heights.table = &table;
     heights.mustHold = [&options, &units, shardLevel](const SamplePosition& p) {
-      return std::binary_search(units.begin(), units.end(),
-                                packHolding(p.longitudeDegrees, p.latitudeDegrees, shardLevel,
-                                            options.packTilesPerSide));
+      return std::binary_search(
+          units.begin(), units.end(),
+          packHolding(p.longitudeDegrees, p.latitudeDegrees, shardLevel, options.packTilesPerSide));
     };
     return heights;
   };
@@ -303,9 +303,9 @@ Result<TilerReport> runTiler(const TilerOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   if (auto checked = checkOptions(options); !checked) return Error{checked.error()};
   TilerReport report;
-  auto opened = openSources(options.inputs, {options.verticesPerSide, options.maxLevel,
-                                             options.vertical, options.noDataIsSea,
-                                             options.allowImages});
+  auto opened =
+      openSources(options.inputs, {options.verticesPerSide, options.maxLevel, options.vertical,
+                                   options.noDataIsSea, options.allowImages});
   if (!opened) return Error{opened.error()};
   std::vector<TilerSource>& allSources = *opened;
   warnOfKeptUnits(options, allSources, report.warnings);

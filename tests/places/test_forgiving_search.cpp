@@ -24,10 +24,10 @@ const Gazetteer& bundledPlaces() {
 
 TEST(EditDistance, CountsEachSlipOnce) {
   EXPECT_EQ(editDistanceWithin("zion", "zion", 2), 0u);
-  EXPECT_EQ(editDistanceWithin("zoin", "zion", 2), 1u);           // swapped neighbours
+  EXPECT_EQ(editDistanceWithin("zoin", "zion", 2), 1u);               // swapped neighbours
   EXPECT_EQ(editDistanceWithin("kilimanjro", "kilimanjaro", 2), 1u);  // one left out
-  EXPECT_EQ(editDistanceWithin("pariss", "paris", 2), 1u);        // one too many
-  EXPECT_EQ(editDistanceWithin("londen", "london", 2), 1u);       // one wrong
+  EXPECT_EQ(editDistanceWithin("pariss", "paris", 2), 1u);            // one too many
+  EXPECT_EQ(editDistanceWithin("londen", "london", 2), 1u);           // one wrong
   EXPECT_EQ(editDistanceWithin("istanbool", "istanbul", 2), 2u);
   EXPECT_EQ(editDistanceWithin("", "abc", 5), 3u);
   EXPECT_EQ(editDistanceWithin("abc", "", 5), 3u);
@@ -35,8 +35,8 @@ TEST(EditDistance, CountsEachSlipOnce) {
 }
 
 TEST(EditDistance, StopsPastTheLimit) {
-  EXPECT_EQ(editDistanceWithin("paris", "tokyo", 1), 2u);     // limit + 1, not the distance
-  EXPECT_EQ(editDistanceWithin("a", "abcdefgh", 2), 3u);      // lengths alone
+  EXPECT_EQ(editDistanceWithin("paris", "tokyo", 1), 2u);  // limit + 1, not the distance
+  EXPECT_EQ(editDistanceWithin("a", "abcdefgh", 2), 3u);   // lengths alone
   EXPECT_EQ(editDistanceWithin("abcdefgh", "hgfedcba", 0), 1u);
 }
 
@@ -132,7 +132,7 @@ TEST(ForgivingSearch, FortyQueriesFindThePlaceMeant) {
 // very short queries are not "corrected", and nonsense finds nothing.
 TEST(ForgivingSearch, ExactNamesAndPrefixesStillComeFirst) {
   const Meant meant[] = {
-      {"Lond", "London", "GB"},     // a prefix, not Lund one slip away
+      {"Lond", "London", "GB"},  // a prefix, not Lund one slip away
       {"Zion", "Zion National Park", "US"},
       {"Fujinom", "Fujinomiya", "JP"},
       {"Paris", "Paris", "FR"},

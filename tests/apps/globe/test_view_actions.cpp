@@ -30,8 +30,8 @@ class CountingWindow final : public ViewWindow {
 // A navigator over level ground at 0 m, 10 km above Zion looking 45 degrees down.
 struct Keys {
   camera::Navigator navigator{geo::Ellipsoid::wgs84(),
-                              camera::CameraPose::fromDegrees(-113.0, 37.3, 10000, 0, -45),
-                              0.8, [](double, double) { return std::optional<double>(0.0); }};
+                              camera::CameraPose::fromDegrees(-113.0, 37.3, 10000, 0, -45), 0.8,
+                              [](double, double) { return std::optional<double>(0.0); }};
   ViewInput input;
   CountingWindow window;
   Keys() {
@@ -176,9 +176,11 @@ TEST(ViewActions, HelpListsEveryActionAndTheMouseInAFewShortLines) {
       continue;
     }
     EXPECT_NE(help.find(std::string(a.keys) + " " + std::string(a.hud)), std::string::npos)
-        << a.name << " not in\n" << help;
+        << a.name << " not in\n"
+        << help;
   }
-  for (const char* input : {"W/S A/D E/Q", "double-click", "left-drag", "scroll", "orbit:", "fly:"}) {
+  for (const char* input :
+       {"W/S A/D E/Q", "double-click", "left-drag", "scroll", "orbit:", "fly:"}) {
     EXPECT_NE(help.find(input), std::string::npos) << input << " not in\n" << help;
   }
 }

@@ -1,10 +1,10 @@
-// Web Mercator (EPSG:3857) XYZ tile geometry shared by the exporters that write 256×256 tiles
-// for web maps: rows from the north, latitudes clamped to the square world's ±85.0511°.
+// Web Mercator (EPSG:3857) XYZ tile geometry, for the exporters that write 256×256 tiles for web
+// maps and the services that read them: rows from the north, latitudes clamped to ±85.0511°.
 #pragma once
 
 #include <cstdint>
 
-namespace globe::publish {
+namespace globe::geo {
 
 inline constexpr uint32_t kWebMercatorTileSizePixels = 256;
 inline constexpr double kWebMercatorMaxLatitudeDegrees = 85.05112877980659;
@@ -32,4 +32,4 @@ double webMercatorMetersPerPixel(uint32_t zoom);
 double webMercatorXMeters(double longitudeDegrees);
 double webMercatorYMeters(double latitudeDegrees);
 
-}  // namespace globe::publish
+}  // namespace globe::geo

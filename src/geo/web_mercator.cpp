@@ -1,10 +1,10 @@
-#include "publish/web_mercator.hpp"
+#include "geo/web_mercator.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-namespace globe::publish {
+namespace globe::geo {
 
 double webMercatorRowOf(double latitudeDegrees, uint32_t zoom) {
   const double lat =
@@ -49,4 +49,4 @@ double webMercatorYMeters(double latitudeDegrees) {
   return (1 - 2 * webMercatorRowOf(latitudeDegrees, 0)) * kWebMercatorHalfWorldMeters;
 }
 
-}  // namespace globe::publish
+}  // namespace globe::geo
