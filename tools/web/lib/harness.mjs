@@ -220,7 +220,7 @@ async function launchWith(puppeteer, mode, width, height) {
     headless: true,
     // DevTools over a pipe: Chromium exits when this process does, however it ends.
     pipe: true,
-    protocolTimeout: 180000,
+    protocolTimeout: 420000,  // beyond the pages' own waits (300 s), within the test's 540 s
     args: ['--no-sandbox', '--ignore-gpu-blocklist', ...GL_MODES[mode],
       '--disable-dev-shm-usage', '--no-first-run', '--no-default-browser-check',
       '--disable-background-networking', '--disable-component-update', '--disable-sync',
