@@ -70,7 +70,7 @@ function(globe_test name)
   # The tests' own code unoptimised (-O0 compiles in 0.7 of -O1's time, -O1 in 0.75 of -O2's;
   # what they test, the libraries and programs, keeps the build type's optimisation), except
   # where a test's own loops are the work (OPTIMIZED: the stress tests' 10^7 points at -O1):
-  # docs/performance/build-time.md.
+  # docs/performance/ci-time.md (issue 47's ninth session).
   if(CMAKE_BUILD_TYPE STREQUAL "RelWithDebInfo" OR CMAKE_BUILD_TYPE STREQUAL "Release")
     if(ARG_OPTIMIZED)
       target_compile_options(${name} PRIVATE -O1)
