@@ -137,7 +137,7 @@ void runFrame(ViewSession& s, int width, int height) {
       std::max(std::chrono::duration<double>(now - s.lastUpdate).count(), 0.0);
   s.lastUpdate = now;
   takeRequests(s, now);
-  takeClick(s, width, height);
+  takeClick(s, width);
   redraw = updateRulerAndProfile(s, width, height) || redraw;
   camera::CollisionState collision;
   const scene::FrameInfo info = moveCamera(s, now, frameSeconds, width, height, collision);

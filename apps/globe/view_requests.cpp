@@ -253,7 +253,7 @@ void takeRequests(ViewSession& s, ViewClock::time_point now) {
   }
 }
 
-void takeClick(ViewSession& s, int width, int /*height*/) {
+void takeClick(ViewSession& s, int width) {
   if (!s.input.clickRequest) return;
   if (s.input.rulerOn) {
     rulerClick(s, *s.input.clickRequest, width);

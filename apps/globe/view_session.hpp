@@ -90,7 +90,7 @@ Result<std::unique_ptr<ViewSession>> openViewSession(const ViewOptions& options)
 // view, going to a place or view, opening files; a click for the ruler or a pick); the ruler's
 // overlay and the profile chart brought up to date. True when the frame must be drawn again.
 void takeRequests(ViewSession& s, ViewClock::time_point now);
-void takeClick(ViewSession& s, int width, int height);
+void takeClick(ViewSession& s, int width);
 bool updateRulerAndProfile(ViewSession& s, int width, int height);
 
 // view_frame.cpp: the HUD's state for this frame; the frame drawn (terrain, overlays, panels,

@@ -3,11 +3,12 @@
 #include <cpl_conv.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <string_view>
 #include <vector>
+
+#include "core/ascii_case.hpp"
 
 namespace globe::imagery_tiling {
 namespace {
@@ -133,8 +134,8 @@ std::string bandList(const std::vector<int>& bands) {
 bool holdsHeights(GDALRasterBandH band) {
   static constexpr std::string_view kLengthUnits[] = {"m",  "metre", "metres", "meter", "meters",
                                                       "ft", "foot",  "feet",   "us-ft"};
-  std::string unit = GDALGetRasterUnitType(band) != nullptr ? GDALGetRasterUnitType(band) : "";
-  for (char& c : unit) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const char* unitType = GDALGetRasterUnitType(band);
+  const std::string unit = core::asciiLower(unitType != nullptr ? unitType : "");
   const GDALDataType type = GDALGetRasterDataType(band);
   return std::find(std::begin(kLengthUnits), std::end(kLengthUnits), unit) !=
              std::end(kLengthUnits) ||

@@ -13,7 +13,7 @@ constexpr double kMercatorRadiusMeters = 6378137.0;  // the sphere of EPSG:3857
 TileMatrixSet webMercatorQuad(uint32_t minZoom, uint32_t maxZoom, uint32_t tileSize) {
   TileMatrixSet set;
   set.crs = TileCrs::WebMercator;
-  const double half = std::numbers::pi * kMercatorRadiusMeters;
+  const double half = geo::kWebMercatorHalfWorldMeters;
   for (uint32_t z = minZoom; z <= maxZoom; ++z) {
     TileMatrix m;
     m.id = std::to_string(z);
