@@ -5,7 +5,7 @@
 
 namespace globe::mask_tiling {
 
-void countLandPoints(const std::vector<Ring>& rings, const SampleGrid& grid, int supersample,
+void countLandPoints(const std::vector<Ring>& rings, const TexelGrid& grid, int supersample,
                      std::vector<uint16_t>& counts) {
   const int points = grid.size * supersample;  // supersample points per side
   const double spacing = grid.stepDegrees / supersample;

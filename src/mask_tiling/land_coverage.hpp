@@ -13,7 +13,7 @@ namespace globe::mask_tiling {
 
 // size × size samples, sample (r, c) at longitude west + c·step, latitude north − r·step (the
 // edge-sampled grid of imagery layers: formats::ImageryPixelGrid::Edges).
-struct SampleGrid {
+struct TexelGrid {
   double westDegrees = 0, northDegrees = 0, stepDegrees = 0;
   int size = 256;
 };
@@ -21,7 +21,7 @@ struct SampleGrid {
 // counts[r·size + c]: how many of the box's supersample² points are inside an odd number of
 // rings, 0..supersample². The rings must cover the boxes (clip them to the grid's rectangle grown
 // by one step).
-void countLandPoints(const std::vector<Ring>& rings, const SampleGrid& grid, int supersample,
+void countLandPoints(const std::vector<Ring>& rings, const TexelGrid& grid, int supersample,
                      std::vector<uint16_t>& counts);
 
 }  // namespace globe::mask_tiling

@@ -89,7 +89,7 @@ class Maker {
     const double step = f.size / (kTileSize - 1);
     const RectangleDegrees tile = tileRectangle(node.tile);
     const RectangleDegrees ringBox = grown(tile, step);
-    const SampleGrid grid{f.west, f.north, step, kTileSize};
+    const TexelGrid grid{f.west, f.north, step, kTileSize};
     constexpr int kPoints = kWaterMaskSupersample * kWaterMaskSupersample;
 
     // Per layer over the tile: its land counts, or one count for the whole tile when its rings

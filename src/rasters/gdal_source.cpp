@@ -145,7 +145,7 @@ Result<DatasetPtr> warpToWgs84(GDALDatasetH source, const std::string& path) {
 
 class GdalSource final : public detail::ColumnMappedSource {
  public:
-  GdalSource(std::string path, const SampleGrid& grid, DatasetPtr source, DatasetPtr warped,
+  GdalSource(std::string path, const geo::SampleGrid& grid, DatasetPtr source, DatasetPtr warped,
              bool flipRows, std::string driver, formats::VerticalUnits vertical)
       : ColumnMappedSource(std::move(path), grid, std::move(vertical)),
         source_(std::move(source)),
@@ -296,7 +296,7 @@ Result<std::unique_ptr<RasterSource>> openGdalSource(const std::filesystem::path
   }
   // The geotransform gives the corner of pixel (0, 0); grids use sample centres, north first.
   const bool flipRows = gt[5] > 0;
-  SampleGrid grid;
+  geo::SampleGrid grid;
   grid.cols = cols;
   grid.rows = rows;
   grid.columnStepDegrees = gt[1];

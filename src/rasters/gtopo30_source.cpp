@@ -10,8 +10,8 @@
 namespace globe::rasters {
 namespace {
 
-SampleGrid nativeGrid(const Gtopo30Header& h) {
-  SampleGrid g;
+geo::SampleGrid nativeGrid(const Gtopo30Header& h) {
+  geo::SampleGrid g;
   g.cols = h.cols;
   g.rows = h.rows;
   g.firstColumnLongitudeDegrees = h.ulxMapDegrees;

@@ -28,31 +28,18 @@ void snapAxis(double& step, double& first, int64_t count) {
   if (std::abs(first - k / (2 * n)) <= 1e-3 * step) first = k / (2 * n);
 }
 
-bool coversEveryLongitude(const SampleGrid& g) {
+bool coversEveryLongitude(const geo::SampleGrid& g) {
   return static_cast<double>(g.cols) * g.columnStepDegrees >= 360.0 - 1e-3 * g.columnStepDegrees;
 }
 
 }  // namespace
-
-double SampleGrid::westDegrees() const {
-  return wrapsLongitude ? -180.0 : firstColumnLongitudeDegrees - columnStepDegrees / 2;
-}
-double SampleGrid::eastDegrees() const {
-  return wrapsLongitude
-             ? 180.0
-             : firstColumnLongitudeDegrees + (static_cast<double>(cols) - 0.5) * columnStepDegrees;
-}
-double SampleGrid::northDegrees() const { return firstRowLatitudeDegrees + rowStepDegrees / 2; }
-double SampleGrid::southDegrees() const {
-  return firstRowLatitudeDegrees - (static_cast<double>(rows) - 0.5) * rowStepDegrees;
-}
 
 const formats::VerticalUnits& RasterSource::verticalUnits() const {
   static const formats::VerticalUnits kMeters;
   return kMeters;
 }
 
-SampleGrid snapSampleGrid(SampleGrid grid) {
+geo::SampleGrid snapSampleGrid(geo::SampleGrid grid) {
   snapAxis(grid.columnStepDegrees, grid.firstColumnLongitudeDegrees, grid.cols);
   snapAxis(grid.rowStepDegrees, grid.firstRowLatitudeDegrees, grid.rows);
   grid.wrapsLongitude = coversEveryLongitude(grid);
@@ -61,8 +48,8 @@ SampleGrid snapSampleGrid(SampleGrid grid) {
 
 namespace detail {
 
-PublishedGrid publishGrid(const SampleGrid& native) {
-  SampleGrid g = snapSampleGrid(native);
+PublishedGrid publishGrid(const geo::SampleGrid& native) {
+  geo::SampleGrid g = snapSampleGrid(native);
   const double step = g.columnStepDegrees;
   const double turn = 360.0 / step;
   const double period = std::round(turn);
@@ -94,7 +81,7 @@ PublishedGrid publishGrid(const SampleGrid& native) {
 
 Result<void> ColumnMappedSource::readRow(int64_t row, int64_t firstColumn, int64_t count,
                                          int16_t* out) const {
-  const SampleGrid& g = published_.grid;
+  const geo::SampleGrid& g = published_.grid;
   const ColumnMap& map = published_.columns;
   auto outside = [&](const std::string& what) -> Result<void> {
     return makeError(path_ + ": cannot read " + what + " of a " + std::to_string(g.rows) + " x " +

@@ -11,31 +11,16 @@
 
 #include "core/result.hpp"
 #include "formats/vertical_units.hpp"
+#include "geo/sample_grid.hpp"
 
 namespace globe::rasters {
-
-// Sample grid of a source in geographic degrees, sample centres; snapped to exact values.
-struct SampleGrid {
-  int64_t cols = 0, rows = 0;
-  double firstColumnLongitudeDegrees = 0;  // centre of column 0
-  double firstRowLatitudeDegrees = 0;      // centre of row 0 (northernmost)
-  double columnStepDegrees = 0;            // > 0, eastwards
-  double rowStepDegrees = 0;               // > 0, southwards
-  bool wrapsLongitude = false;  // cols*columnStep >= 360 - tiny: the source covers every longitude
-  // Closed extent covered by the cells (sample centre ± half a step), in degrees; for wrapping
-  // sources west=-180, east=180.
-  double westDegrees() const;
-  double eastDegrees() const;
-  double southDegrees() const;
-  double northDegrees() const;
-};
 
 class RasterSource {
  public:
   virtual ~RasterSource() = default;
   virtual const std::string& path() const = 0;
   virtual std::string_view formatName() const = 0;  // "GTOPO30" or the GDAL driver short name
-  virtual const SampleGrid& grid() const = 0;
+  virtual const geo::SampleGrid& grid() const = 0;
   // Reads `count` samples of row `row` from column `firstColumn` into out as GTOPO30 heights:
   // int16 metres, rounded to nearest (ties to even); the source's no-data value, NaN and
   // infinities become -9999; finite values outside int16 are clamped. Columns may lie outside
@@ -69,7 +54,7 @@ Result<std::unique_ptr<RasterSource>> openRasterSource(const std::filesystem::pa
 // sample by more than 5% of a step); then a first centre within 1e-3 of a step of a multiple of
 // 1/(2n) becomes exactly k/(2n). Both axes; other values are left alone. wrapsLongitude is
 // recomputed from the snapped values.
-SampleGrid snapSampleGrid(SampleGrid grid);
+geo::SampleGrid snapSampleGrid(geo::SampleGrid grid);
 
 namespace detail {
 
@@ -85,21 +70,21 @@ struct ColumnMap {
 // cell whose west edge is at or east of -180. A wrapping grid whose step does not divide 360 is
 // published as not wrapping.
 struct PublishedGrid {
-  SampleGrid grid;
+  geo::SampleGrid grid;
   ColumnMap columns;
 };
-PublishedGrid publishGrid(const SampleGrid& native);
+PublishedGrid publishGrid(const geo::SampleGrid& native);
 
 // Implements readRow's argument checks and wrapping on top of contiguous reads of source columns.
 class ColumnMappedSource : public RasterSource {
  public:
   const std::string& path() const override { return path_; }
-  const SampleGrid& grid() const override { return published_.grid; }
+  const geo::SampleGrid& grid() const override { return published_.grid; }
   Result<void> readRow(int64_t row, int64_t firstColumn, int64_t count, int16_t* out) const final;
   const formats::VerticalUnits& verticalUnits() const override { return vertical_; }
 
  protected:
-  ColumnMappedSource(std::string path, const SampleGrid& nativeGrid,
+  ColumnMappedSource(std::string path, const geo::SampleGrid& nativeGrid,
                      formats::VerticalUnits vertical = {})
       : path_(std::move(path)),
         published_(publishGrid(nativeGrid)),

@@ -19,10 +19,10 @@ class ConditionedRaster : public rasters::RasterSource {
       : path_(original.path()), format_(original.formatName()), grid_(original.grid()) {}
   const std::string& path() const override { return path_; }
   std::string_view formatName() const override { return format_; }
-  const rasters::SampleGrid& grid() const override { return grid_; }
+  const geo::SampleGrid& grid() const override { return grid_; }
   Result<void> readRow(int64_t row, int64_t firstColumn, int64_t count,
                        int16_t* out) const override {
-    const rasters::SampleGrid& g = grid_;
+    const geo::SampleGrid& g = grid_;
     if (row < 0 || row >= g.rows || count < 0 ||
         (!g.wrapsLongitude && (firstColumn < 0 || firstColumn + count > g.cols))) {
       return makeError(path() + ": row " + std::to_string(row) + " columns " +
@@ -48,7 +48,7 @@ class ConditionedRaster : public rasters::RasterSource {
  private:
   std::string path_;
   std::string format_;
-  rasters::SampleGrid grid_;
+  geo::SampleGrid grid_;
 };
 
 class MemoryRaster final : public ConditionedRaster {

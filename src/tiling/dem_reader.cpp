@@ -6,7 +6,7 @@ namespace globe::tiling {
 
 Result<conditioning::DemGrid> readDemGrid(const rasters::RasterSource& source,
                                           const std::string& name) {
-  const rasters::SampleGrid& g = source.grid();
+  const geo::SampleGrid& g = source.grid();
   const auto samples = static_cast<uint64_t>(g.cols) * static_cast<uint64_t>(g.rows);
   if (samples > kMaxDemGridSamples) {
     return makeError(name + ": " + std::to_string(samples) + " samples is more than the " +
@@ -15,13 +15,7 @@ Result<conditioning::DemGrid> readDemGrid(const rasters::RasterSource& source,
                      "tiles (e.g. gdal_retile.py) and give them all");
   }
   conditioning::DemGrid grid;
-  grid.cols = g.cols;
-  grid.rows = g.rows;
-  grid.firstColumnLongitudeDegrees = g.firstColumnLongitudeDegrees;
-  grid.firstRowLatitudeDegrees = g.firstRowLatitudeDegrees;
-  grid.columnStepDegrees = g.columnStepDegrees;
-  grid.rowStepDegrees = g.rowStepDegrees;
-  grid.wrapsLongitude = g.wrapsLongitude;
+  static_cast<geo::SampleGrid&>(grid) = g;
   grid.samples.resize(static_cast<size_t>(samples));
   for (int64_t row = 0; row < g.rows; ++row) {
     if (auto read = source.readRow(row, 0, g.cols, grid.samples.data() + grid.index(row, 0));

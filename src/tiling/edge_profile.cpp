@@ -40,7 +40,7 @@ double EdgeProfile::meanMeters(double position, double halfWindow) const {
 }
 
 Result<EdgeProfiles> readEdgeProfiles(const rasters::RasterSource& raster) {
-  const rasters::SampleGrid& grid = raster.grid();
+  const geo::SampleGrid& grid = raster.grid();
   auto heights = [](const std::vector<int16_t>& samples) {
     std::vector<double> meters(samples.size());
     std::transform(samples.begin(), samples.end(), meters.begin(),

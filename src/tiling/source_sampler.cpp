@@ -18,7 +18,7 @@ int64_t wrapColumn(int64_t column, int64_t columns) {
 }
 
 // Fractional column of a longitude, clamped (or wrapped) into the grid.
-double columnOf(const rasters::SampleGrid& grid, double longitudeDegrees) {
+double columnOf(const geo::SampleGrid& grid, double longitudeDegrees) {
   double offset = longitudeDegrees - grid.firstColumnLongitudeDegrees;
   if (grid.wrapsLongitude) {
     offset -= 360.0 * std::floor(offset / 360.0);
@@ -27,14 +27,14 @@ double columnOf(const rasters::SampleGrid& grid, double longitudeDegrees) {
   return std::clamp(offset / grid.columnStepDegrees, 0.0, static_cast<double>(grid.cols - 1));
 }
 
-double rowOf(const rasters::SampleGrid& grid, double latitudeDegrees) {
+double rowOf(const geo::SampleGrid& grid, double latitudeDegrees) {
   const double offset = grid.firstRowLatitudeDegrees - latitudeDegrees;
   return std::clamp(offset / grid.rowStepDegrees, 0.0, static_cast<double>(grid.rows - 1));
 }
 
 // Whether the point lies between the grid's first and last sample centres (not in the half-cell
 // rim its cells reach beyond them, where its samples can only be clamped).
-bool betweenSampleCentres(const rasters::SampleGrid& grid, double longitudeDegrees,
+bool betweenSampleCentres(const geo::SampleGrid& grid, double longitudeDegrees,
                           double latitudeDegrees) {
   const double row = (grid.firstRowLatitudeDegrees - latitudeDegrees) / grid.rowStepDegrees;
   if (row < 0 || row > static_cast<double>(grid.rows - 1)) return false;
@@ -48,7 +48,7 @@ bool betweenSampleCentres(const rasters::SampleGrid& grid, double longitudeDegre
 // distance d beyond a side, that side's heights averaged over d each way along it; beyond a
 // corner, both sides' averages mixed by how far the point lies beyond each.
 double edgeHeightMeters(const TilerSource& finer, double longitudeDegrees, double latitudeDegrees) {
-  const rasters::SampleGrid& grid = finer.grid;
+  const geo::SampleGrid& grid = finer.grid;
   const formats::BoundsDegrees& e = finer.extent;
   const double dx = std::max({e.west - longitudeDegrees, 0.0, longitudeDegrees - e.east});
   const double dy = std::max({e.south - latitudeDegrees, 0.0, latitudeDegrees - e.north});
@@ -85,7 +85,7 @@ SourceSampler::SourceSampler(const std::vector<TilerSource>& sources, uint32_t m
     const bool bendOnly = source.finestLevel > maxFinestLevel;
     if (bendOnly && !(source.bendMarginDegrees > 0)) continue;
     const double reach = source.bendMarginDegrees;
-    const rasters::SampleGrid& grid = source.grid;
+    const geo::SampleGrid& grid = source.grid;
     if (!grid.wrapsLongitude && (source.extent.east + reach < stripWestDegrees ||
                                  source.extent.west - reach > stripEastDegrees)) {
       continue;
@@ -141,7 +141,7 @@ Result<int16_t> SourceSampler::sampleSource(const Candidate& c, double longitude
   const TilerSource& source = *c.source;
   if (latitudeDegrees >= 90.0 && source.northPoleHeight) return *source.northPoleHeight;
   if (latitudeDegrees <= -90.0 && source.southPoleHeight) return *source.southPoleHeight;
-  const rasters::SampleGrid& grid = source.grid;
+  const geo::SampleGrid& grid = source.grid;
   const double u = columnOf(grid, longitudeDegrees);
   const double v = rowOf(grid, latitudeDegrees);
   const int64_t column0 = floorToInt(u);

@@ -15,7 +15,7 @@ constexpr double kEdgeSnapDegrees = 1e-9;
 }  // namespace
 
 Result<int16_t> polarRowHeight(const rasters::RasterSource& raster, int64_t row) {
-  const rasters::SampleGrid& grid = raster.grid();
+  const geo::SampleGrid& grid = raster.grid();
   std::vector<int16_t> samples(static_cast<size_t>(grid.cols));
   if (auto read = raster.readRow(row, 0, grid.cols, samples.data()); !read)
     return Error{read.error()};
@@ -48,7 +48,7 @@ formats::SourceInfo TilerSource::info() const {
 }
 
 Result<void> checkValidSamples(const rasters::RasterSource& raster, bool noDataIsWater) {
-  const rasters::SampleGrid& g = raster.grid();
+  const geo::SampleGrid& g = raster.grid();
   const auto refuse = [&](const std::string& why) {
     return makeError(raster.path() + ": fewer than 2x2 valid samples (" + why +
                      "); nothing to tile");
@@ -81,7 +81,7 @@ Result<void> checkValidSamples(const rasters::RasterSource& raster, bool noDataI
 
 bool noDataIsOceanMask(const rasters::RasterSource& raster) {
   constexpr double kThirtySecondsDegrees = 1.0 / 120.0;
-  const rasters::SampleGrid& g = raster.grid();
+  const geo::SampleGrid& g = raster.grid();
   auto isThirtySeconds = [&](double step) {
     return std::abs(step - kThirtySecondsDegrees) < 1e-9 * kThirtySecondsDegrees;
   };
@@ -103,8 +103,8 @@ Result<void> openRaster(TilerSource& source) {
   if (source.raster) return {};
   auto raster = rasters::openRasterSource(source.argument, source.openOptions);
   if (!raster) return Error{raster.error()};
-  const rasters::SampleGrid& now = (*raster)->grid();
-  const rasters::SampleGrid& was = source.grid;
+  const geo::SampleGrid& now = (*raster)->grid();
+  const geo::SampleGrid& was = source.grid;
   if (now.cols != was.cols || now.rows != was.rows ||
       now.columnStepDegrees != was.columnStepDegrees || now.rowStepDegrees != was.rowStepDegrees ||
       now.firstColumnLongitudeDegrees != was.firstColumnLongitudeDegrees ||
@@ -138,7 +138,7 @@ Result<std::vector<TilerSource>> openSources(const std::vector<std::string>& inp
     source.grid = (*raster)->grid();
     source.raster = std::move(*raster);
     source.argument = input;
-    const rasters::SampleGrid& g = source.grid;
+    const geo::SampleGrid& g = source.grid;
     source.stepDegrees = std::min(g.columnStepDegrees, g.rowStepDegrees);
     source.finestLevel = finestLevelForStep(source.stepDegrees, options.verticesPerSide);
     if (options.maxLevel) source.finestLevel = std::min(source.finestLevel, *options.maxLevel);

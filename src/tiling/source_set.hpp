@@ -20,7 +20,7 @@ struct TilerSource {
   // of inputs must not hold thousands of descriptors); the conditioning opens it again
   // (openRaster), reads it whole and puts its conditioned copy here.
   std::unique_ptr<rasters::RasterSource> raster;
-  rasters::SampleGrid grid;
+  geo::SampleGrid grid;
   std::string argument;    // the path as given on the command line
   std::string rasterPath;  // the file the raster reads (GTOPO30: the .DEM of a .HDR argument)
   std::string format;      // the raster's format name ("GTOPO30" or GDAL's driver)

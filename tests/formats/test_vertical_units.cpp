@@ -125,7 +125,7 @@ void writeUnitTiff(const std::filesystem::path& path, int cols, int rows,
 }
 
 std::vector<int16_t> readEverySample(const rasters::RasterSource& s) {
-  const rasters::SampleGrid& g = s.grid();
+  const geo::SampleGrid& g = s.grid();
   std::vector<int16_t> all(static_cast<size_t>(g.cols * g.rows));
   for (int64_t r = 0; r < g.rows; ++r) {
     auto ok = s.readRow(r, 0, g.cols, all.data() + r * g.cols);

@@ -10,7 +10,7 @@ namespace globe::mask_tiling {
 namespace {
 
 // 9×9 samples one degree apart, from (0, 8) at the top left to (8, 0).
-const SampleGrid kGrid{0.0, 8.0, 1.0, 9};
+const TexelGrid kGrid{0.0, 8.0, 1.0, 9};
 constexpr int kSuper = 4;
 constexpr int kFull = kSuper * kSuper;
 

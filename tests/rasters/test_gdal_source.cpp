@@ -20,7 +20,7 @@ namespace {
 
 using globe::testing::TempDir;
 
-void expectSameGrid(const SampleGrid& a, const SampleGrid& b) {
+void expectSameGrid(const geo::SampleGrid& a, const geo::SampleGrid& b) {
   EXPECT_EQ(a.cols, b.cols);
   EXPECT_EQ(a.rows, b.rows);
   EXPECT_EQ(a.firstColumnLongitudeDegrees, b.firstColumnLongitudeDegrees);
@@ -31,7 +31,7 @@ void expectSameGrid(const SampleGrid& a, const SampleGrid& b) {
 }
 
 std::vector<int16_t> readAll(const RasterSource& s) {
-  const SampleGrid& g = s.grid();
+  const geo::SampleGrid& g = s.grid();
   std::vector<int16_t> all(static_cast<size_t>(g.cols * g.rows));
   for (int64_t r = 0; r < g.rows; ++r) {
     auto ok = s.readRow(r, 0, g.cols, all.data() + r * g.cols);
@@ -127,7 +127,7 @@ TEST(GdalSource, NetcdfEtopo20WrapsAndMatchesEtopo20Dem) {
   // Positions inside DEM cells, kept 5% of a cell from their edges: the raw geotransform
   // (step 0.3333333) drifts by up to 1.6e-5 degree across the globe.
   std::mt19937 random(20);
-  const SampleGrid& g = dem->grid();
+  const geo::SampleGrid& g = dem->grid();
   std::uniform_int_distribution<int64_t> anyCol(0, g.cols - 1), anyRow(0, g.rows - 1);
   std::uniform_real_distribution<double> within(-0.45, 0.45);
   int compared = 0;
@@ -167,7 +167,7 @@ TEST(GdalSource, NetcdfEtopo60IsAOneDegreeWrappingGrid) {
   GLOBE_REQUIRE_DEM_DIR(original, "original");
   auto cdf = open(original / "etopo60.cdf");
   ASSERT_TRUE(cdf);
-  const SampleGrid& g = cdf->grid();
+  const geo::SampleGrid& g = cdf->grid();
   EXPECT_EQ(g.cols, 360);
   EXPECT_EQ(g.rows, 180);
   EXPECT_TRUE(g.wrapsLongitude);
@@ -182,7 +182,7 @@ TEST(GdalSource, CraterLakeSnapsByAFractionOfACell) {
   GLOBE_REQUIRE_DEM_DIR(original, "original");
   auto tif = open(original / "craterlake-elev-16bit-30m.tif");
   ASSERT_TRUE(tif);
-  const SampleGrid& g = tif->grid();
+  const geo::SampleGrid& g = tif->grid();
   const double gdalStep = 0.000269965978544;
   EXPECT_EQ(g.cols, 429);
   EXPECT_EQ(g.rows, 279);
@@ -299,7 +299,7 @@ TEST(GdalSource, ProjectedRasterIsWarpedToDegrees) {
   writeTiff(tmp / "utm.tif", GDT_Int16, n, n, values, gt, globe::testing::wktOfEpsg(32632));
   auto s = open(tmp / "utm.tif");
   ASSERT_TRUE(s);
-  const SampleGrid& g = s->grid();
+  const geo::SampleGrid& g = s->grid();
   EXPECT_NEAR(g.westDegrees(), 4.8149, 0.002);  // corners from gdaltransform
   EXPECT_NEAR(g.northDegrees(), 49.9867, 0.002);
   EXPECT_NEAR(g.eastDegrees(), 4.9616, 0.002);

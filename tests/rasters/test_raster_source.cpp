@@ -14,8 +14,8 @@ namespace {
 
 using globe::testing::TempDir;
 
-SampleGrid gridOf(const Gtopo30Header& h) {
-  SampleGrid g;
+geo::SampleGrid gridOf(const Gtopo30Header& h) {
+  geo::SampleGrid g;
   g.cols = h.cols;
   g.rows = h.rows;
   g.firstColumnLongitudeDegrees = h.ulxMapDegrees;
@@ -30,7 +30,7 @@ TEST(SnapSampleGrid, RealHeaders) {
   auto etopo = readGtopo30(dir / "ETOPO20.HDR");
   ASSERT_TRUE(etopo.ok()) << etopo.error();
   // ETOPO20.HDR: XDIM 0.3333333, ULXMAP -179.83333335, ULYMAP 89.8333154.
-  const SampleGrid e = snapSampleGrid(gridOf(etopo->header));
+  const geo::SampleGrid e = snapSampleGrid(gridOf(etopo->header));
   EXPECT_EQ(e.columnStepDegrees, 1.0 / 3);
   EXPECT_EQ(e.rowStepDegrees, 1.0 / 3);
   EXPECT_EQ(e.firstColumnLongitudeDegrees, -1079.0 / 6);
@@ -43,7 +43,7 @@ TEST(SnapSampleGrid, RealHeaders) {
 
   auto w = readGtopo30(dir / "W002N52.HDR");
   ASSERT_TRUE(w.ok()) << w.error();
-  const SampleGrid g = snapSampleGrid(gridOf(w->header));
+  const geo::SampleGrid g = snapSampleGrid(gridOf(w->header));
   EXPECT_EQ(g.columnStepDegrees, 1.0 / 120);
   EXPECT_EQ(g.firstColumnLongitudeDegrees, -479.0 / 240);
   EXPECT_EQ(g.firstRowLatitudeDegrees, 12959.0 / 240);
@@ -56,7 +56,7 @@ TEST(SnapSampleGrid, RealHeaders) {
   // 3″ SRTM: samples on whole degrees, cells reaching half a cell beyond the degree square.
   auto fuji = readGtopo30(dir / "E138N35_FUJI.HDR");
   ASSERT_TRUE(fuji.ok()) << fuji.error();
-  const SampleGrid f = snapSampleGrid(gridOf(fuji->header));
+  const geo::SampleGrid f = snapSampleGrid(gridOf(fuji->header));
   EXPECT_EQ(f.columnStepDegrees, 1.0 / 1200);
   EXPECT_EQ(f.rowStepDegrees, 1.0 / 1200);
   EXPECT_EQ(f.firstColumnLongitudeDegrees, 138.0);
@@ -66,18 +66,18 @@ TEST(SnapSampleGrid, RealHeaders) {
 }
 
 TEST(SnapSampleGrid, GdalStyleAndUnsnappableValues) {
-  SampleGrid g;
+  geo::SampleGrid g;
   g.cols = g.rows = 1201;
   g.columnStepDegrees = g.rowStepDegrees = 0.000833333333333;  // as GDAL reports 3″
   g.firstColumnLongitudeDegrees = 7.999583333333334 + 0.000833333333333 / 2;
   g.firstRowLatitudeDegrees = 51.000416666666666 - 0.000833333333333 / 2;
-  const SampleGrid s = snapSampleGrid(g);
+  const geo::SampleGrid s = snapSampleGrid(g);
   EXPECT_EQ(s.columnStepDegrees, 1.0 / 1200);
   EXPECT_EQ(s.firstColumnLongitudeDegrees, 8.0);
   EXPECT_EQ(s.firstRowLatitudeDegrees, 51.0);
 
   // 1/0.0123 = 81.3: not near an integer, left exactly as it was.
-  SampleGrid odd = g;
+  geo::SampleGrid odd = g;
   odd.columnStepDegrees = 0.0123;
   odd.firstColumnLongitudeDegrees = 0.00615;
   EXPECT_EQ(snapSampleGrid(odd).columnStepDegrees, 0.0123);
@@ -85,7 +85,7 @@ TEST(SnapSampleGrid, GdalStyleAndUnsnappableValues) {
 
   // 1/10800.4 is within 1e-4 of 10800, but over 10800 columns 1/10800 would move the last
   // sample by 0.4 of a cell: left alone.
-  SampleGrid fine = g;
+  geo::SampleGrid fine = g;
   fine.cols = 10800;
   fine.columnStepDegrees = 1 / 10800.4;
   EXPECT_EQ(snapSampleGrid(fine).columnStepDegrees, 1 / 10800.4);
@@ -99,13 +99,13 @@ TEST(SnapSampleGrid, GdalStyleAndUnsnappableValues) {
   EXPECT_EQ(snapSampleGrid(odd).columnStepDegrees, 0.5);
 
   // Degenerate input is returned, not crashed on.
-  SampleGrid zero;
+  geo::SampleGrid zero;
   EXPECT_EQ(snapSampleGrid(zero).columnStepDegrees, 0.0);
   EXPECT_FALSE(snapSampleGrid(zero).wrapsLongitude);
 }
 
 TEST(PublishGrid, WrappingGridStartingAt20EIsCutToOneTurnAndRecentred) {
-  SampleGrid g;  // etopo20.cdf as GDAL describes it
+  geo::SampleGrid g;  // etopo20.cdf as GDAL describes it
   g.cols = 1081;
   g.rows = 540;
   g.columnStepDegrees = g.rowStepDegrees = 0.3333333;

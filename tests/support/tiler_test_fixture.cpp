@@ -123,7 +123,7 @@ Oracle::Oracle(const std::vector<std::string>& inputs) {
 
 int16_t Oracle::height(double lon, double lat) const {
   for (const Raster& r : rasters_) {
-    const rasters::SampleGrid& g = r.grid;
+    const geo::SampleGrid& g = r.grid;
     const double south = g.southDegrees() < -90.0 + 1e-9 ? -90.0 : g.southDegrees();
     const double north = g.northDegrees() > 90.0 - 1e-9 ? 90.0 : g.northDegrees();
     if (lat < south || lat > north) continue;
@@ -160,7 +160,7 @@ int16_t Oracle::height(double lon, double lat) const {
 // mean of that side's linear height profile over d each way along it (clipped to the side);
 // beyond a corner, both sides' means weighted by how far the point lies beyond each.
 double Oracle::edgeMeters(const Raster& r, double lon, double lat) const {
-  const rasters::SampleGrid& g = r.grid;
+  const geo::SampleGrid& g = r.grid;
   const double dx = std::max({r.extent.west - lon, 0.0, lon - r.extent.east});
   const double dy = std::max({r.extent.south - lat, 0.0, lat - r.extent.north});
   const double d = std::hypot(dx, dy);
@@ -200,7 +200,7 @@ double Oracle::edgeMeters(const Raster& r, double lon, double lat) const {
 
 int16_t Oracle::rasterHeight(const Raster& r, double lon, double lat) const {
   {
-    const rasters::SampleGrid& g = r.grid;
+    const geo::SampleGrid& g = r.grid;
     if (std::abs(lat) == 90.0) {  // the pole: highest sample of the polar row
       const int64_t row = lat > 0 ? 0 : g.rows - 1;
       int16_t bestLand = 0, bestWater = INT16_MIN;

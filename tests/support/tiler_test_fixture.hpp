@@ -37,7 +37,7 @@ class Oracle {
 
  private:
   struct Raster {
-    rasters::SampleGrid grid;
+    geo::SampleGrid grid;
     std::vector<int16_t> samples;
     double step;
     formats::BoundsDegrees extent;  // as the tiler snapped it

@@ -288,7 +288,7 @@ TEST(TilerConditioning, SpilledAndParallelConditioningReadsTheSameAsInMemory) {
   ASSERT_TRUE(report) << report.error();
   EXPECT_TRUE(std::filesystem::is_empty(options.spillDirectory)) << "spill files are unlinked";
   for (size_t i = 0; i < inMemory->size(); ++i) {
-    const rasters::SampleGrid& g = (*inMemory)[i].grid;
+    const geo::SampleGrid& g = (*inMemory)[i].grid;
     std::vector<int16_t> a(static_cast<size_t>(g.cols)), b(a.size());
     for (int64_t r = 0; r < g.rows; ++r) {
       ASSERT_TRUE((*inMemory)[i].raster->readRow(r, 0, g.cols, a.data()));

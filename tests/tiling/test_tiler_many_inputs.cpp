@@ -141,7 +141,7 @@ TEST(TilerManyInputs, EverySourceSpilledSharesOneFile) {
   EXPECT_TRUE(fs::is_empty(options.spillDirectory)) << "the spill file is unlinked";
   ASSERT_EQ(spilled.size(), inMemory->size());
   for (size_t i = 0; i < spilled.size(); ++i) {
-    const rasters::SampleGrid& g = spilled[i].grid;
+    const geo::SampleGrid& g = spilled[i].grid;
     std::vector<int16_t> a(static_cast<size_t>(g.cols)), b(a.size());
     for (int64_t r = 0; r < g.rows; ++r) {
       ASSERT_TRUE((*inMemory)[i].raster->readRow(r, 0, g.cols, a.data()));

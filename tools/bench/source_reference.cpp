@@ -27,7 +27,7 @@ Result<SourceReference> SourceReference::load(const std::vector<std::filesystem:
     }
     GDALRasterBandH band = GDALGetRasterBand(dataset.get(), 1);
     if (band == nullptr) return makeError(path.string() + ": no band 1");
-    rasters::SampleGrid grid;
+    geo::SampleGrid grid;
     grid.cols = GDALGetRasterXSize(dataset.get());
     grid.rows = GDALGetRasterYSize(dataset.get());
     grid.columnStepDegrees = transform[1];
@@ -63,7 +63,7 @@ int16_t SourceReference::Raster::sample(int64_t row, int64_t column) const {
 
 std::optional<double> SourceReference::heightMeters(double lon, double lat) const {
   for (const Raster& r : rasters_) {
-    const rasters::SampleGrid& g = r.grid;
+    const geo::SampleGrid& g = r.grid;
     const double south = std::max(-90.0, g.southDegrees());
     const double north = std::min(90.0, g.northDegrees());
     if (lat < south || lat > north) continue;

@@ -25,7 +25,7 @@ class SourceReference {
  private:
   struct Raster {
     std::string path;
-    rasters::SampleGrid grid;  // snapped as the tiler snaps it
+    geo::SampleGrid grid;  // snapped as the tiler snaps it
     std::vector<int16_t> samples;
     double step = 0;
     int16_t sample(int64_t row, int64_t column) const;
