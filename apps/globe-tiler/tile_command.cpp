@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "apps/globe-tiler/progress_bar.hpp"
+#include "apps/globe-tiler/shard_argument.hpp"
 #include "geo/ellipsoid.hpp"
 #include "globe_version.hpp"
-#include "tiling/shard_plan.hpp"
 #include "tiling/shard_report.hpp"
 #include "tiling/tiler.hpp"
 
@@ -169,7 +169,7 @@ int runTileCommand(int argc, char** argv, TileCommandKind kind) {
     return 2;
   }
   if (!shard.empty()) {
-    auto spec = tiling::parseShardSpec(shard);
+    auto spec = parseShardSpec(shard);
     if (!spec) {
       std::fprintf(stderr, "globe-tiler: %s\n", spec.error().c_str());
       return 2;

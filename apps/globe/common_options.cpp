@@ -1,4 +1,5 @@
 #include "apps/globe/common_options.hpp"
+#include "apps/globe/layer_argument.hpp"
 #include "apps/globe/stderr_warnings.hpp"
 #include "apps/globe/wrong_kind_hint.hpp"
 #include "overlays/overlay_file.hpp"
@@ -160,7 +161,7 @@ bool applySceneArguments(const char* command, const CommonArguments& arguments,
         break;
       }
     }
-    auto layer = scene::parseLayerArgument(text);
+    auto layer = parseLayerArgument(text);
     if (!layer) {
       std::fprintf(stderr, "globe %s: %s\n", command, layer.error().c_str());
       return false;

@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <memory>
 
-#include "apps/globe/finest_surface.hpp"
+#include "surface/pyramid_surface.hpp"
 #include "apps/globe/play_log.hpp"
 #include "camera/camera_controller.hpp"
 #include "camera/camera_path.hpp"
@@ -78,7 +78,7 @@ class PlaybackStep {
   bool realTime_;
   bool groundBefore_ = false;
   size_t missingTiles_ = 0;  // the last view's FrameInfo::missingTiles  // this frame's move ended over ground the checked array held
-  FinestSurface finestSurface_;
+  surface::PyramidSurface finestSurface_;  // the log's height where no drawn tile lies below
   camera::CameraController controller_;
 };
 

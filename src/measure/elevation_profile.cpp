@@ -5,7 +5,7 @@
 #include <numbers>
 #include <string>
 
-#include "publish/pyramid_surface.hpp"
+#include "surface/pyramid_surface.hpp"
 
 namespace globe::measure {
 
@@ -34,7 +34,7 @@ Result<std::vector<ProfileRow>> elevationProfile(streaming::TerrainSource& sourc
                      " km sampled every " + std::to_string(spacing) + " m would take more than " +
                      std::to_string(options.maxSamples) + " samples");
   }
-  publish::PyramidSurface surface(source, ellipsoid);
+  surface::PyramidSurface surface(source, ellipsoid);
   std::vector<ProfileRow> rows;
   for (const PathSample& s : sampleGeodesic(path, spacing)) {
     auto h = surface.heightMeters(s.longitudeDegrees * std::numbers::pi / 180,

@@ -11,7 +11,7 @@
 #include "compression/gzip_bytes.hpp"
 #include "formats/quantized_mesh.hpp"
 #include "geo/tiling_scheme.hpp"
-#include "publish/pyramid_surface.hpp"
+#include "surface/pyramid_surface.hpp"
 #include "publish/terrain_layer_writer.hpp"
 #include "terrain/block_grid.hpp"
 #include "transport/atomic_file.hpp"
@@ -49,7 +49,7 @@ uint8_t childMask(const std::filesystem::path& outDir, const geo::TileId& tile,
 }
 
 // 256×256 water flags, rows from the north, each of the pixel's centre; one byte where uniform.
-Result<std::vector<uint8_t>> waterMask(PyramidSurface& surface, const geo::TileId& tile,
+Result<std::vector<uint8_t>> waterMask(surface::PyramidSurface& surface, const geo::TileId& tile,
                                        uint32_t level) {
   const auto rect = geo::GeographicTilingScheme::tileRectangle(tile);
   std::vector<uint8_t> mask(size_t{kWaterMaskSide} * kWaterMaskSide);
@@ -70,7 +70,7 @@ Result<std::vector<uint8_t>> waterMask(PyramidSurface& surface, const geo::TileI
   return mask;
 }
 
-Result<std::vector<std::byte>> makeTile(PyramidSurface& surface, const geo::TileId& tile,
+Result<std::vector<std::byte>> makeTile(surface::PyramidSurface& surface, const geo::TileId& tile,
                                         uint32_t sampleLevel, uint8_t children) {
   formats::HeightmapTile made;
   made.childMask = children;
@@ -133,7 +133,7 @@ Result<ExportReport> exportTree(streaming::TerrainSource& source, const ExportRe
     }
     return tiles;
   };
-  PyramidSurface surface(source, ellipsoid);
+  surface::PyramidSurface surface(source, ellipsoid);
   ExportReport report;
   auto current = runTilesOf(region.minLevel);
   if (!current) return Error{current.error()};

@@ -14,7 +14,7 @@
 #include "compression/deflate_bytes.hpp"
 #include "formats/pyramid_manifest.hpp"
 #include "publish/block_mesh.hpp"
-#include "publish/pyramid_surface.hpp"
+#include "surface/pyramid_surface.hpp"
 #include "publish/terrain_layer_writer.hpp"
 #include "publish/tile_grid.hpp"
 #include "publish/tin_simplifier.hpp"
@@ -40,7 +40,7 @@ double levelGeometricErrorMeters(const geo::Ellipsoid& ellipsoid, uint32_t level
 // The water mask (extension 2) from the sea classification at the grid's samples: one byte where
 // the tile is all land or all water, else 256×256 (rows from the north), each texel the nearest
 // sample's class. The grid's samples are the pyramid's finest where it has them.
-Result<std::vector<uint8_t>> waterMask(PyramidSurface& surface, const geo::TileId& tile,
+Result<std::vector<uint8_t>> waterMask(surface::PyramidSurface& surface, const geo::TileId& tile,
                                        uint32_t level) {
   const terrain::BlockGrid grid{tile, kGridVertices};
   std::vector<uint8_t> water;
@@ -90,7 +90,7 @@ std::string childrenMetadata(streaming::TerrainSource& source, const geo::TileId
 }
 
 // One tile: the grid's TIN within the tile's error, with normals, water mask and metadata.
-Result<std::vector<std::byte>> makeTile(PyramidSurface& surface, streaming::TerrainSource& source,
+Result<std::vector<std::byte>> makeTile(surface::PyramidSurface& surface, streaming::TerrainSource& source,
                                         const geo::TileId& tile, uint32_t sampleLevel,
                                         uint32_t lastLevel, double errorFraction,
                                         const geo::Ellipsoid& ellipsoid) {
@@ -152,7 +152,7 @@ Result<ExportReport> exportQuantizedMesh(streaming::TerrainSource& source,
   std::mutex failureMutex;
   std::optional<std::string> failure;
   const auto work = [&](unsigned worker) {
-    PyramidSurface surface(source, ellipsoid);
+    surface::PyramidSurface surface(source, ellipsoid);
     for (size_t i = next++; i < tiles.size(); i = next++) {
       const geo::TileId& tile = tiles[i];
       auto written = writeTileOnce(

@@ -9,7 +9,7 @@
 
 #include "formats/image_io.hpp"
 #include "formats/webp_lossless.hpp"
-#include "publish/pyramid_surface.hpp"
+#include "surface/pyramid_surface.hpp"
 #include "geo/web_mercator.hpp"
 
 namespace globe::publish {
@@ -56,7 +56,7 @@ Result<ExportReport> exportElevationPngs(streaming::TerrainSource& source,
                                          const geo::Ellipsoid& ellipsoid, PixelEncoding encode,
                                          ElevationTileFormat format) {
   const bool webp = format == ElevationTileFormat::WebpLossless;
-  PyramidSurface surface(source, ellipsoid);
+  surface::PyramidSurface surface(source, ellipsoid);
   ExportReport report;
   const uint32_t lastZoom = std::min(region.maxLevel, 22U);
   for (uint32_t zoom = region.minLevel; zoom <= lastZoom; ++zoom) {

@@ -23,7 +23,7 @@ glm::dvec3 apronPositionEcefMeters(const TileGrid& grid, const geo::Ellipsoid& e
 
 }  // namespace
 
-Result<TileGrid> sampleTileGrid(PyramidSurface& surface, const geo::TileId& tile, uint32_t side,
+Result<TileGrid> sampleTileGrid(surface::PyramidSurface& surface, const geo::TileId& tile, uint32_t side,
                                 uint32_t maxLevel) {
   TileGrid grid{tile, side, {}, {}};
   const terrain::BlockGrid blockGrid{tile, side};

@@ -10,7 +10,7 @@
 #include "core/result.hpp"
 #include "geo/ellipsoid.hpp"
 #include "geo/tile_id.hpp"
-#include "publish/pyramid_surface.hpp"
+#include "surface/pyramid_surface.hpp"
 
 namespace globe::publish {
 
@@ -27,7 +27,7 @@ struct TileGrid {
 
 // The surface at the tile's side×side grid (the level's BlockGrid for that many vertices), from
 // the finest tile of level <= maxLevel under each sample.
-Result<TileGrid> sampleTileGrid(PyramidSurface& surface, const geo::TileId& tile, uint32_t side,
+Result<TileGrid> sampleTileGrid(surface::PyramidSurface& surface, const geo::TileId& tile, uint32_t side,
                                 uint32_t maxLevel);
 
 // The grid's samples in ECEF metres (rows from the north): the same bits for a vertex shared with

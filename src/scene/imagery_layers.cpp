@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <optional>
 #include <thread>
 #include <tuple>
@@ -95,35 +94,6 @@ struct ImageryLayers::Layer {
   }
   static constexpr size_t kPresentEntries = 1u << 16;
 };
-
-Result<LayerOptions> parseLayerArgument(const std::string& text) {
-  LayerOptions layer;
-  size_t comma = text.rfind(',');
-  std::string directory = text;
-  // A service's URL may hold commas (bounds=W,S,E,N): only a number after the last one is an
-  // opacity there.
-  if (comma != std::string::npos && services::isImageryService(text)) {
-    char* end = nullptr;
-    const std::string tail = text.substr(comma + 1);
-    (void)std::strtod(tail.c_str(), &end);
-    if (tail.empty() || end != tail.c_str() + tail.size()) comma = std::string::npos;
-  }
-  if (comma != std::string::npos) {
-    const std::string opacity = text.substr(comma + 1);
-    char* end = nullptr;
-    const double value = std::strtod(opacity.c_str(), &end);
-    if (opacity.empty() || end != opacity.c_str() + opacity.size() || !std::isfinite(value) ||
-        value < 0 || value > 1) {
-      return makeError("--layer " + text + ": the opacity after the comma must be 0..1, not '" +
-                       opacity + "'");
-    }
-    layer.opacity = static_cast<float>(value);
-    directory = text.substr(0, comma);
-  }
-  if (directory.empty()) return makeError("--layer " + text + ": no layer directory");
-  layer.directory = directory;
-  return layer;
-}
 
 ImageryLayers::ImageryLayers(std::vector<std::unique_ptr<Layer>> layers,
                              const ImageryBudget& budget, core::WarningSink warnings)

@@ -43,9 +43,6 @@ struct LayerOptions {
   std::shared_ptr<streaming::ImageryTiles> tiles;
 };
 
-// Parses --layer's "DIR" or "DIR,OPACITY" (opacity 0..1); errors name the argument.
-Result<LayerOptions> parseLayerArgument(const std::string& text);
-
 struct ImageryBudget {
   size_t decodedBytes = 64u << 20;   // decoded tiles waiting for (or kept after) upload, per layer
   size_t textureBytes = 256u << 20;  // textures on the GPU, mip chains included, all layers

@@ -1,5 +1,7 @@
 #include "services/imagery_services.hpp"
 
+#include <string_view>
+
 #include "services/pmtiles_imagery.hpp"
 #include "services/template_imagery.hpp"
 #include "services/wmts_imagery.hpp"
@@ -8,28 +10,54 @@
 namespace globe::services {
 namespace {
 
-bool startsWith(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
+using Opened = Result<std::unique_ptr<streaming::ImageryTiles>>;
 
 template <class T>
-Result<std::unique_ptr<streaming::ImageryTiles>> widen(Result<std::unique_ptr<T>> opened) {
+Opened widen(Result<std::unique_ptr<T>> opened) {
   if (!opened) return Error{opened.error()};
   return std::unique_ptr<streaming::ImageryTiles>(std::move(*opened));
 }
 
+// The imagery services a layer spec names by its prefix ("wmts:URL"), one row each: the prefix
+// and what opens the rest of the spec. Anything else is a layer (a directory or URL).
+struct ImageryService {
+  std::string_view prefix;
+  Opened (*open)(const std::string& url, std::shared_ptr<transport::Network> network);
+};
+constexpr ImageryService kImageryServices[] = {
+    {"xyz:",
+     [](const std::string& url, std::shared_ptr<transport::Network> network) {
+       return widen(openXyzImagery(url, std::move(network)));
+     }},
+    {"tms:",
+     [](const std::string& url, std::shared_ptr<transport::Network> network) {
+       return widen(openTmsImagery(url, std::move(network)));
+     }},
+    {"wmts:",
+     [](const std::string& url, std::shared_ptr<transport::Network> network) {
+       return widen(openWmtsImagery(url, std::move(network)));
+     }},
+    {"pmtiles:",
+     [](const std::string& url, std::shared_ptr<transport::Network> network) {
+       return widen(openPmtilesImagery(url, std::move(network)));
+     }},
+};
+
+const ImageryService* serviceOf(const std::string& spec) {
+  for (const ImageryService& service : kImageryServices) {
+    if (std::string_view(spec).starts_with(service.prefix)) return &service;
+  }
+  return nullptr;
+}
+
 }  // namespace
 
-bool isImageryService(const std::string& spec) {
-  return startsWith(spec, "xyz:") || startsWith(spec, "tms:") || startsWith(spec, "wmts:") ||
-         startsWith(spec, "pmtiles:");
-}
+bool isImageryService(const std::string& spec) { return serviceOf(spec) != nullptr; }
 
 Result<std::unique_ptr<streaming::ImageryTiles>> openImageryTiles(
     const std::string& spec, std::shared_ptr<transport::Network> network) {
-  if (startsWith(spec, "xyz:")) return widen(openXyzImagery(spec.substr(4), std::move(network)));
-  if (startsWith(spec, "tms:")) return widen(openTmsImagery(spec.substr(4), std::move(network)));
-  if (startsWith(spec, "wmts:")) return widen(openWmtsImagery(spec.substr(5), std::move(network)));
-  if (startsWith(spec, "pmtiles:")) {
-    return widen(openPmtilesImagery(spec.substr(8), std::move(network)));
+  if (const ImageryService* service = serviceOf(spec)) {
+    return service->open(spec.substr(service->prefix.size()), std::move(network));
   }
   return widen(streaming::ImageryStore::open(spec, std::move(network)));
 }

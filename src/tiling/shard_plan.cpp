@@ -1,7 +1,6 @@
 #include "tiling/shard_plan.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <map>
 
@@ -87,21 +86,6 @@ void forEachPackTouching(const formats::BoundsDegrees& r, uint32_t level, uint32
 }
 
 }  // namespace
-
-Result<ShardSpec> parseShardSpec(const std::string& text) {
-  const size_t slash = text.find('/');
-  ShardSpec spec;
-  auto number = [](std::string_view s, uint32_t& out) {
-    const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), out);
-    return error == std::errc() && end == s.data() + s.size() && !s.empty();
-  };
-  if (slash == std::string::npos || !number(std::string_view(text).substr(0, slash), spec.index) ||
-      !number(std::string_view(text).substr(slash + 1), spec.count) || spec.count == 0 ||
-      spec.index >= spec.count) {
-    return makeError("--shard '" + text + "': expected K/N with 0 <= K < N (e.g. 0/8)");
-  }
-  return spec;
-}
 
 TilingPlan planOfSources(const std::vector<TilerSource>& sources, uint32_t packTilesPerSide) {
   std::vector<formats::BoundsDegrees> extents;

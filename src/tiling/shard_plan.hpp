@@ -17,14 +17,6 @@
 
 namespace globe::tiling {
 
-struct ShardSpec {
-  uint32_t index = 0;  // K of K/N, from 0
-  uint32_t count = 1;  // N
-};
-
-// "K/N" with 0 <= K < N.
-Result<ShardSpec> parseShardSpec(const std::string& text);
-
 // Three levels above the deepest: the merge then builds about 1/192 of the tiles of a pyramid of
 // one resolution (and reads the shard level's packs, 1/64), and each unit is 8^2 packs of the
 // deepest level (for 30 m data over the world's land, about 10,000 units of 64x64-tile packs).

@@ -12,7 +12,7 @@
 
 #include "geo/ellipsoid.hpp"
 #include "geo/tiling_scheme.hpp"
-#include "publish/pyramid_surface.hpp"
+#include "surface/pyramid_surface.hpp"
 #include "publish/tile_grid.hpp"
 #include "publish/tin_simplifier.hpp"
 #include "streaming/tile_store.hpp"
@@ -33,16 +33,16 @@ std::vector<double> gridOf(const auto& heightAt) {
   return heights;
 }
 
-PyramidSurface& bundledSurface() {
+surface::PyramidSurface& bundledSurface() {
   static auto store = streaming::TileStore::open(globe::testing::bundledPyramid().string());
   EXPECT_TRUE(store);
-  static PyramidSurface surface(**store, geo::Ellipsoid::wgs84());
+  static surface::PyramidSurface surface(**store, geo::Ellipsoid::wgs84());
   return surface;
 }
 
 // The pyramid's exact surface at a tile's 65×65 grid, two levels deeper (17-vertex blocks).
 std::vector<double> realGrid(const geo::TileId& tile) {
-  PyramidSurface& surface = bundledSurface();
+  surface::PyramidSurface& surface = bundledSurface();
   const terrain::BlockGrid grid{tile, kSide};
   return gridOf([&](uint32_t row, uint32_t column) {
     auto h =

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "apps/globe/camera_argument.hpp"
+#include "apps/globe/layer_argument.hpp"
 #include "apps/globe/renderer_gpu.hpp"
 #include "apps/globe/stderr_warnings.hpp"
 #include "render/osmesa_context.hpp"
@@ -108,7 +109,7 @@ int main(int argc, char** argv) {
   const auto [width, height] = *size;
   std::vector<scene::LayerOptions> layers;
   for (const std::string& text : layerTexts) {
-    auto layer = scene::parseLayerArgument(text);
+    auto layer = app::parseLayerArgument(text);
     if (!layer) {
       std::fprintf(stderr, "globe-bench-drape: %s\n", layer.error().c_str());
       return 2;

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "geo/ellipsoid.hpp"
-#include "publish/pyramid_surface.hpp"
+#include "surface/pyramid_surface.hpp"
 #include "publish/terrain_layer_writer.hpp"
 #include "publish/tile_grid.hpp"
 #include "publish/tin_simplifier.hpp"
@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   const geo::Ellipsoid ellipsoid = geo::Ellipsoid::wgs84();
-  publish::PyramidSurface surface(**store, ellipsoid);
+  surface::PyramidSurface surface(**store, ellipsoid);
   std::filesystem::create_directories(out);
   std::ofstream grids(std::filesystem::path(out) / "grids.bin", std::ios::binary);
   std::vector<std::vector<double>> heights;

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "apps/globe/finest_surface.hpp"
+#include "surface/pyramid_surface.hpp"
 #include "camera/camera_path_file.hpp"
 #include "geo/cartographic.hpp"
 #include "streaming/tile_store.hpp"
@@ -55,7 +55,7 @@ std::string readFile(const fs::path& path) {
 fs::path writeHostilePath(const fs::path& dir) {
   auto store = streaming::TileStore::open(bundledPyramid());
   EXPECT_TRUE(store) << store.error();
-  FinestSurface surface(**store, geo::Ellipsoid::wgs84());
+  surface::PyramidSurface surface(**store, geo::Ellipsoid::wgs84());
   auto above = [&](double lon, double lat, double meters) {
     auto ground = surface.heightMeters(geo::degreesToRadians(lon), geo::degreesToRadians(lat));
     EXPECT_TRUE(ground) << ground.error();
@@ -283,7 +283,7 @@ TEST(GlobePlayVoids, ADiveIntoFormerVoidsStaysOnTheFilledSurface) {
   const fs::path dir = freshTempDir("play-voids");
   auto store = streaming::TileStore::open(bundledPyramid());
   ASSERT_TRUE(store) << store.error();
-  FinestSurface surface(**store, geo::Ellipsoid::wgs84());
+  surface::PyramidSurface surface(**store, geo::Ellipsoid::wgs84());
   auto ground = [&](double lon, double lat) {
     auto h = surface.heightMeters(geo::degreesToRadians(lon), geo::degreesToRadians(lat));
     EXPECT_TRUE(h) << h.error();

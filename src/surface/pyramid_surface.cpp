@@ -1,4 +1,4 @@
-#include "publish/pyramid_surface.hpp"
+#include "surface/pyramid_surface.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include "geo/tiling_scheme.hpp"
 #include "terrain/rendering_tile_array.hpp"
 
-namespace globe::publish {
+namespace globe::surface {
 
 Result<std::shared_ptr<const terrain::HeightBlock>> PyramidSurface::block(const geo::TileId& tile) {
   if (auto it = cache_.find(tile); it != cache_.end()) {
@@ -73,4 +73,4 @@ Result<bool> PyramidSurface::isWater(double longitudeRadians, double latitudeRad
   return terrain::isWater(found->block->heights[row * n + column]);
 }
 
-}  // namespace globe::publish
+}  // namespace globe::surface

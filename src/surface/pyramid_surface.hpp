@@ -1,9 +1,12 @@
 // Heights of a pyramid's exact surface (collision's: the mesh the renderer draws) anywhere, from
-// the finest tile present under a point down to a chosen level; blocks read once and kept for
-// the points around them. One per thread (it caches).
+// the finest tile present under a point, or the finest down to a chosen level; blocks read once
+// and kept for the points around them. The one sampler of a pyramid's surface: exporters,
+// elevation profiles and `globe play`'s log (where no drawn tile lies under the camera) use it.
+// One per thread (it caches).
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <list>
 #include <memory>
 #include <unordered_map>
@@ -14,7 +17,9 @@
 #include "streaming/terrain_source.hpp"
 #include "terrain/height_block.hpp"
 
-namespace globe::publish {
+namespace globe::surface {
+
+inline constexpr uint32_t kFinestLevel = std::numeric_limits<uint32_t>::max();
 
 class PyramidSurface {
  public:
@@ -23,11 +28,13 @@ class PyramidSurface {
 
   // The surface height at a point from the finest tile of level <= maxLevel there; 0 m where the
   // pyramid has none. Errors: unreadable packs, naming them.
-  Result<double> heightMeters(double longitudeRadians, double latitudeRadians, uint32_t maxLevel);
+  Result<double> heightMeters(double longitudeRadians, double latitudeRadians,
+                              uint32_t maxLevel = kFinestLevel);
   // Whether the vertex nearest the point, of the finest tile of level <= maxLevel there, is
   // water (terrain::isWater): a water mask that agrees with the heights' vertices. False where
   // the pyramid has no tile.
-  Result<bool> isWater(double longitudeRadians, double latitudeRadians, uint32_t maxLevel);
+  Result<bool> isWater(double longitudeRadians, double latitudeRadians,
+                       uint32_t maxLevel = kFinestLevel);
 
  private:
   static constexpr size_t kCachedBlocks = 512;
@@ -50,4 +57,4 @@ class PyramidSurface {
   std::unordered_map<geo::TileId, Cached> cache_;
 };
 
-}  // namespace globe::publish
+}  // namespace globe::surface
