@@ -49,9 +49,17 @@ function(globe_precompile name)
   endif()
 endfunction()
 
-# globe_module(NAME SOURCES... DEPENDS targets...): one static library per src/<module>.
+# globe_module(NAME SOURCES... PUBLIC_HEADERS... DEPENDS targets...): one static library per
+# src/<module>. PUBLIC_HEADERS are the library's interface, the headers other libraries and the
+# programs may include; every other header in the folder is private to it (tools/docs/
+# check_headers.py, a test, holds the rest of the project to that).
 function(globe_module name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "SOURCES;PUBLIC_HEADERS;DEPENDS" ${ARGN})
+  foreach(header IN LISTS ARG_PUBLIC_HEADERS)
+    if(NOT EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/${header})
+      message(FATAL_ERROR "${name}: PUBLIC_HEADERS names ${header}, which is not in ${CMAKE_CURRENT_SOURCE_DIR}")
+    endif()
+  endforeach()
   add_library(${name} STATIC ${ARG_SOURCES})
   target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR}/src)
   target_link_libraries(${name} PUBLIC ${ARG_DEPENDS} PRIVATE globe_warnings)
