@@ -13,10 +13,57 @@
 
 namespace globe::collision::testing {
 
+namespace {
+
+// The tile's vertices in ECEF, as tile_mesh builds them, for the last few tiles cast onto: the
+// sines and cosines of n² vertices were most of an oracle query, and the queries of one frame
+// fall on a few tiles. An entry is reused only for the same tile, ellipsoid and heights (compared
+// in full), so a reused block address never returns another tile's vertices.
+struct CachedVertices {
+  geo::TileId id{};
+  double semiMajorAxisMeters = 0, semiMinorAxisMeters = 0;
+  std::vector<double> heightsMeters;
+  std::vector<glm::dvec3> ecefMeters;
+};
+
+const std::vector<glm::dvec3>& tileVertices(const ArrayTile& tile, const geo::Ellipsoid& ellipsoid) {
+  constexpr size_t kEntries = 8;
+  thread_local std::array<CachedVertices, kEntries> cache;
+  thread_local size_t next = 0;
+  const uint32_t n = tile.block->verticesPerSide;
+  std::vector<double> heights(size_t{n} * n);
+  for (uint32_t i = 0; i < n; ++i) {
+    for (uint32_t j = 0; j < n; ++j) heights[size_t{i} * n + j] = tile.block->surfaceHeightMetersAt(i, j);
+  }
+  for (const CachedVertices& entry : cache) {
+    if (entry.id == tile.id && entry.semiMajorAxisMeters == ellipsoid.semiMajorAxisMeters &&
+        entry.semiMinorAxisMeters == ellipsoid.semiMinorAxisMeters &&
+        entry.heightsMeters == heights) {
+      return entry.ecefMeters;
+    }
+  }
+  CachedVertices& entry = cache[next];
+  next = (next + 1) % kEntries;
+  const terrain::BlockGrid grid{tile.id, n};
+  entry.ecefMeters.resize(heights.size());
+  for (uint32_t i = 0; i < n; ++i) {
+    for (uint32_t j = 0; j < n; ++j) {
+      const size_t k = size_t{i} * n + j;
+      entry.ecefMeters[k] = terrain::tileVertexEcefMeters(ellipsoid, grid, i, j, heights[k]);
+    }
+  }
+  entry.id = tile.id;
+  entry.semiMajorAxisMeters = ellipsoid.semiMajorAxisMeters;
+  entry.semiMinorAxisMeters = ellipsoid.semiMinorAxisMeters;
+  entry.heightsMeters = std::move(heights);
+  return entry.ecefMeters;
+}
+
+}  // namespace
+
 std::optional<MeshHit> castOntoTileMesh(const ArrayTile& tile, const geo::Ellipsoid& ellipsoid,
                                         double longitudeRadians, double latitudeRadians) {
   const uint32_t n = tile.block->verticesPerSide;
-  const terrain::BlockGrid grid{tile.id, n};
   const geo::Cartographic nadir{longitudeRadians, latitudeRadians, 0.0};
   const glm::dvec3 surface = geo::cartographicToEcef(ellipsoid, nadir);
   const glm::dvec3 up = geo::geodeticSurfaceNormal(ellipsoid, nadir);
@@ -24,14 +71,9 @@ std::optional<MeshHit> castOntoTileMesh(const ArrayTile& tile, const geo::Ellips
   const glm::dvec3 origin = kStartMeters * up;  // relative to the surface point
   const glm::dvec3 direction = -up;
 
-  std::vector<glm::dvec3> p(size_t{n} * n);
-  for (uint32_t i = 0; i < n; ++i) {
-    for (uint32_t j = 0; j < n; ++j) {
-      p[size_t{i} * n + j] = terrain::tileVertexEcefMeters(
-                                 ellipsoid, grid, i, j, tile.block->surfaceHeightMetersAt(i, j)) -
-                             surface;
-    }
-  }
+  const std::vector<glm::dvec3>& vertices = tileVertices(tile, ellipsoid);
+  std::vector<glm::dvec3> p(vertices.size());
+  for (size_t k = 0; k < p.size(); ++k) p[k] = vertices[k] - surface;
   auto at = [&](uint32_t i, uint32_t j) { return p[size_t{i} * n + j]; };
   std::optional<MeshHit> best;
   double bestT = 0.0;
