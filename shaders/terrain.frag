@@ -59,6 +59,7 @@ in float v_maskWeight;
 #endif
 in float v_logDepth;
 in float v_fog;          // terrain.vert: distance fog towards the horizon's colour
+in float v_day;          // terrain.vert: the daylight under the real Sun, 1 otherwise
 uniform vec3 u_fogColor;
 
 uniform float u_logDepthScale; // 1 / log2(1 + far)
@@ -138,7 +139,7 @@ void main() {
   color = drape(color, u_layer3, 3, level, relief);
 #endif
 #endif
-  o_color = vec4(mix(color, u_fogColor, v_fog), 1.0);
+  o_color = vec4(mix(color * v_day, u_fogColor, v_fog), 1.0);
 #ifndef GLOBE_VERTEX_LOG_DEPTH
   gl_FragDepth = log2(v_logDepth) * u_logDepthScale;
 #endif

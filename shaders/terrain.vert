@@ -30,6 +30,7 @@ uniform vec4 u_imageryRect;      // global equirectangular uv = xy + a_uv · zw
 uniform float u_logDepthScale;   // 1 / log2(1 + far)
 uniform vec3 u_sunDirection;     // unit, towards the sun, ECEF axes (zero: ambient only)
 uniform float u_ambient;         // light on faces turned away from the sun
+uniform bool u_daylight;         // the real Sun (--time): the night side dark (render/sky_model.hpp)
 uniform bool u_hillShading;      // false: light with the ellipsoid "up" only
 uniform vec4 u_coarserEdges;     // north, south, west, east: 1 where that neighbour is coarser
 uniform float u_fogDensity;      // per metre (render/sky_model.hpp)
@@ -44,6 +45,7 @@ uniform float u_fogMaximum;      // 0: no fog
 out vec3 v_landColor;  // lit (the light only, with imagery)
 out vec3 v_seaColor;   // lit with "up" (the light only, with imagery)
 #endif
+out float v_day;       // 1 by day, the night's floor by night (1 without u_daylight)
 #ifdef GLOBE_SEA_FLAG
 out float v_sea;       // 1 = sea; the fragment thresholds it at 0.5
 #endif
@@ -109,6 +111,9 @@ void main() {
   // drawn: water stays flat, and the floor's colour (its depth) shows its relief.
   vec3 up = normalize(u_tileCenterEcef + a_offset);
   float upLight = u_ambient + (1.0 - u_ambient) * max(dot(up, u_sunDirection), 0.0);
+  // The Sun from 6° below the horizon (night) to 4° above (day): render/sky_model.cpp daylight().
+  v_day = u_daylight ? mix(0.05, 1.0, smoothstep(-0.104528, 0.069756, dot(up, u_sunDirection)))
+                     : 1.0;
   // An edge that faces a coarser neighbour is lit with that level's normals, so the lighting does
   // not step at the level change (terrain/tile_mesh.hpp). uv is exactly 0 or 1 on the edges.
   vec4 onEdge = vec4(a_uv.y == 0.0, a_uv.y == 1.0, a_uv.x == 0.0, a_uv.x == 1.0);

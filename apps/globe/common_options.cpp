@@ -6,6 +6,7 @@
 #include "services/imagery_services.hpp"
 #include "services/terrain_services.hpp"
 #include "services/url_template.hpp"
+#include "sun/utc_time.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -110,6 +111,12 @@ void addLayerOptions(CLI::App& command, CommonArguments& arguments) {
       ->type_name("[auto|on|off]");  // checked in applySceneArguments: a bad value exits 2
   command.add_flag("--no-sky", arguments.noSky,
                    "black space instead of the sky, and no distance fog");
+  command.add_option("--time", arguments.time,
+                     "light the terrain by the real Sun at this instant, ISO-8601 with its zone "
+                     "(2024-06-21T06:30:00Z, 2024-06-21T08:30+02:00): slopes facing the Sun "
+                     "bright, the night side dark (`globe sun` says where the Sun stands); "
+                     "without it a light from the north-west follows the camera")
+      ->type_name("ISO-8601");
   command.add_flag("--nominal-lod", arguments.nominalLod,
                    "refine by each level's nominal error, not the tiler's measured one (more "
                    "triangles where the ground is smooth; as before pack format 3)");
@@ -199,6 +206,14 @@ bool applySceneArguments(const char* command, const CommonArguments& arguments,
   scene.imageryLighting = *lighting;
   scene.measuredLod = !arguments.nominalLod;
   scene.sky = !arguments.noSky;
+  if (!arguments.time.empty()) {
+    auto time = sun::parseUtcTime(arguments.time);
+    if (!time) {
+      std::fprintf(stderr, "globe %s: --%s\n", command, time.error().c_str());
+      return false;
+    }
+    scene.sunTimeUnixSeconds = *time;
+  }
   return true;
 }
 

@@ -31,6 +31,7 @@ struct CommonArguments {
   std::string lighting = "auto";          // --lighting auto | on | off; bare: on
   bool nominalLod = false;
   bool noSky = false;
+  std::string time;  // --time: ISO-8601; empty: the light that follows the camera
   std::string cacheDirectory;
   bool offline = false;
   uint64_t cacheMegabytes = 2048;
@@ -51,7 +52,7 @@ void addImageryOption(CLI::App& command, std::string& image);
 void addGlobeOption(CLI::App& command, CommonArguments& arguments);
 void addNetworkOptions(CLI::App& command, CommonArguments& arguments);
 void addSeaFloorOption(CLI::App& command, CommonArguments& arguments);
-// --layer, --overlay, --lighting, --no-sky and --nominal-lod.
+// --layer, --overlay, --lighting, --no-sky, --time and --nominal-lod.
 void addLayerOptions(CLI::App& command, CommonArguments& arguments);
 
 // What the chosen subcommand runs with, made from the shared options once they are parsed.
@@ -69,8 +70,8 @@ struct CommandContext {
 std::optional<CommandContext> makeCommandContext(const CommonArguments& arguments);
 
 // The context's globe, sea, network and warnings and the layer options (--layer, --lighting,
-// --no-sky, --nominal-lod) into `scene`; false (after printing "globe COMMAND: why") on a bad
-// --layer.
+// --no-sky, --time, --nominal-lod) into `scene`; false (after printing "globe COMMAND: why") on a
+// bad --layer or --time.
 bool applySceneArguments(const char* command, const CommonArguments& arguments,
                          const CommandContext& context, scene::SceneOptions& scene);
 

@@ -33,8 +33,8 @@ int runGlobeCommandLine(const std::vector<std::string>& arguments) {
       addQueryCommand(app, common),   addViewCommand(app, common),
       addPlayCommand(app, common),    addSourcesCommand(app, common),
       addSearchCommand(app, common),  addProfileCommand(app, common),
-      addViewsCommand(app, common),   addRegressCommand(app, common),
-      addSnapshotWorkerCommand(app)};
+      addSunCommand(app, common),     addViewsCommand(app, common),
+      addRegressCommand(app, common), addSnapshotWorkerCommand(app)};
 
   std::vector<const char*> argv;
   for (const std::string& a : arguments) argv.push_back(a.c_str());

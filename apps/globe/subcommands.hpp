@@ -25,6 +25,7 @@ Subcommand addPlayCommand(CLI::App& app, CommonArguments& common);
 Subcommand addSourcesCommand(CLI::App& app, CommonArguments& common);
 Subcommand addSearchCommand(CLI::App& app, CommonArguments& common);
 Subcommand addProfileCommand(CLI::App& app, CommonArguments& common);
+Subcommand addSunCommand(CLI::App& app, CommonArguments& common);
 Subcommand addViewsCommand(CLI::App& app, CommonArguments& common);
 Subcommand addRegressCommand(CLI::App& app, CommonArguments& common);
 // Hidden: what `globe regress` starts to render its views (snapshot_worker_cli.cpp).

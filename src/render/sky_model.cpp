@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include <glm/common.hpp>
 
@@ -40,6 +41,34 @@ SkyParameters skyAt(double cameraHeightMeters, double globeRadiusMeters) {
   const double visibilityMeters = 150'000.0 + 20.0 * h;
   sky.fogDensityPerMeter = static_cast<float>(1.0 / visibilityMeters);
   sky.fogMaximum = static_cast<float>(0.7 * (1.0 - smoothstep(5'000.0, 60'000.0, h)));
+  return sky;
+}
+
+namespace {
+
+// sin(elevation) of the twilight band's edges.
+const double kSunBelowForNight = std::sin(-6.0 * std::numbers::pi / 180);
+const double kSunAboveForDay = std::sin(4.0 * std::numbers::pi / 180);
+const double kSkyBelowForNight = std::sin(-10.0 * std::numbers::pi / 180);
+constexpr glm::vec3 kNightZenithRgb{0.004f, 0.006f, 0.016f};
+constexpr glm::vec3 kNightHorizonRgb{0.010f, 0.014f, 0.030f};
+
+}  // namespace
+
+float daylight(double sunUpCosine) {
+  if (!std::isfinite(sunUpCosine)) return 1.0f;
+  const double day = smoothstep(kSunBelowForNight, kSunAboveForDay, sunUpCosine);
+  return static_cast<float>(kNightLight + (1.0 - kNightLight) * day);
+}
+
+SkyParameters skyUnderSun(const SkyParameters& day, double sunUpCosine) {
+  if (!std::isfinite(sunUpCosine)) return day;
+  // The sky keeps some light longer than the ground: the air above is still sunlit.
+  const auto lit = static_cast<float>(smoothstep(kSkyBelowForNight, kSunAboveForDay, sunUpCosine));
+  SkyParameters sky = day;
+  sky.zenithRgb = glm::mix(kNightZenithRgb, day.zenithRgb, lit);
+  sky.horizonRgb = glm::mix(kNightHorizonRgb, day.horizonRgb, lit);
+  sky.glowRgb = day.glowRgb * lit;
   return sky;
 }
 

@@ -34,4 +34,16 @@ struct SkyParameters {
 // away); globeRadiusMeters > 0 (the mean earth radius for WGS84 is fine). Never NaN.
 SkyParameters skyAt(double cameraHeightMeters, double globeRadiusMeters);
 
+// The sky under the real Sun (--time): sunUpCosine is the cosine of the Sun's zenith angle at the
+// camera (the dot of the camera's up and the direction to the Sun). Day's colours while the Sun
+// is up, fading through twilight (the Sun down to 6° below the horizon) to a night of deep blue
+// near black; the fog (the horizon's colour) darkens with it, so the night side is not hazed.
+SkyParameters skyUnderSun(const SkyParameters& day, double sunUpCosine);
+
+// How much of the day's light reaches the ground where the Sun's zenith angle has this cosine:
+// 1 with the Sun above the horizon's twilight band, the night's floor (kNightLight) once it is 6°
+// below, smooth in between (the soft terminator the terrain shader draws too).
+inline constexpr float kNightLight = 0.05f;
+float daylight(double sunUpCosine);
+
 }  // namespace globe::render

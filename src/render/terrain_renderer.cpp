@@ -53,7 +53,7 @@ constexpr GLuint kWaterMaskUnit = 1 + terrain::kMaxDrapeLayers;
 struct TerrainRenderer::Impl {
   struct Uniforms {
     GLint modelView = -1, projection = -1, tileCenter = -1, imageryRect = -1;
-    GLint sunDirection = -1, ambient = -1, hillShading = -1, imagery = -1;
+    GLint sunDirection = -1, ambient = -1, hillShading = -1, imagery = -1, daylight = -1;
     GLint logDepthScale = -1, coarserEdges = -1;
     GLint fogColor = -1, fogDensity = -1, fogMaximum = -1;
     GLint layerTransform = -1, layerOpacity = -1, layerLight = -1, levelLight = -1;
@@ -270,6 +270,7 @@ Result<const TerrainRenderer::Impl::Program*> TerrainRenderer::Impl::program(
   u.tileCenter = p.uniformLocation("u_tileCenterEcef");
   u.imageryRect = p.uniformLocation("u_imageryRect");
   u.sunDirection = p.uniformLocation("u_sunDirection");
+  u.daylight = p.uniformLocation("u_daylight");
   u.ambient = p.uniformLocation("u_ambient");
   u.hillShading = p.uniformLocation("u_hillShading");
   u.imagery = p.uniformLocation("u_imagery");
@@ -558,6 +559,10 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
     }
     globeRadius = glm::length(view.cameraEcefMeters) - height;
     sky = skyAt(height, globeRadius);  // the fog needs it now; the sky is drawn last
+    if (view.sunIsReal) {
+      sky = skyUnderSun(sky, glm::dot(glm::normalize(view.cameraEcefMeters),
+                                      glm::normalize(view.sunDirectionEcef)));
+    }
   }
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -619,6 +624,7 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
         glUniformMatrix4fv(u.projection, 1, GL_FALSE, glm::value_ptr(projection));
         glUniform3fv(u.sunDirection, 1, glm::value_ptr(sun));
         glUniform1f(u.ambient, style.ambient);
+        glUniform1i(u.daylight, view.sunIsReal ? 1 : 0);
         glUniform3fv(u.fogColor, 1, glm::value_ptr(sky.horizonRgb));
         glUniform1f(u.fogDensity, sky.fogDensityPerMeter);
         glUniform1f(u.fogMaximum, sky.fogMaximum);

@@ -12,6 +12,7 @@
 #include "overlays/overlay_imagery.hpp"
 #include "scene/native_resolution.hpp"
 #include "services/terrain_services.hpp"
+#include "sun/solar_position.hpp"
 #include "terrain/block_grid.hpp"
 #include "terrain/tile_mesh.hpp"
 #include "terrain/upsampled_block.hpp"
@@ -311,7 +312,9 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   view_.farMeters = projection.farMeters;
   view_.widthPixels = widthPixels;
   view_.heightPixels = heightPixels;
-  view_.sunDirectionEcef = sunDirectionFor(ellipsoid_, pose);
+  view_.sunIsReal = options_.sunTimeUnixSeconds.has_value();
+  view_.sunDirectionEcef = view_.sunIsReal ? sun::sunDirectionEcef(*options_.sunTimeUnixSeconds)
+                                           : sunDirectionFor(ellipsoid_, pose);
   view_.cameraHeightMeters = pose.position.heightMeters;
 
   terrain::SelectionView selectionView;

@@ -60,6 +60,9 @@ struct SceneOptions {
   // (ImageryLayers::nominalErrorRegions).
   bool measuredLod = true;
   bool sky = true;  // the sky and distance fog (render/sky_model.hpp); --no-sky: black space
+  // --time: the terrain lit by the real Sun at this instant (seconds since 1970, UTC), the night
+  // side dark; unset: a light from the north-west that follows the camera, every place by day.
+  std::optional<double> sunTimeUnixSeconds;
   // Past the pyramid's finest data, terrain tiles made from their parent's surface
   // (terrain/upsampled_block.hpp) where a layer's imagery is finer, so imagery is drawn at its
   // own resolution; off: imagery stops one level above the pyramid's deepest tile there.

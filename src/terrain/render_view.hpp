@@ -23,6 +23,9 @@ struct RenderView {
   int widthPixels = 0;
   int heightPixels = 0;
   glm::dvec3 sunDirectionEcef{1.0, 0.0, 0.0};  // unit vector from the ground towards the sun
+  // The direction is the real Sun's at an instant (--time): the night side is dark, the sky too.
+  // Otherwise it is a light that follows the camera and every place is lit as by day.
+  bool sunIsReal = false;
   // The camera's height above the globe's surface, for the sky; NaN: its WGS84 geodetic height.
   double cameraHeightMeters = std::numeric_limits<double>::quiet_NaN();
 };

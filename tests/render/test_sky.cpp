@@ -37,6 +37,31 @@ TEST(SkyModel, DarkensUpwardsAndTurnsToSpace) {
   EXPECT_EQ(space.fogMaximum, 0.0f);
 }
 
+// Under the real Sun: day's sky and full light with the Sun up, twilight in between, the night's
+// floor (and a near-black sky, the fog with it) once the Sun is well below the horizon.
+TEST(SkyModel, TheSunsHeightDarkensTheSkyAndTheGround) {
+  const double degree = std::acos(-1.0) / 180;
+  const SkyParameters day = skyAt(1000.0, 6'371'000.0);
+  const SkyParameters noon = skyUnderSun(day, std::sin(60 * degree));
+  EXPECT_EQ(noon.zenithRgb, day.zenithRgb);
+  EXPECT_EQ(noon.horizonRgb, day.horizonRgb);
+  EXPECT_EQ(daylight(std::sin(60 * degree)), 1.0f);
+  const SkyParameters dusk = skyUnderSun(day, std::sin(-3 * degree));
+  const SkyParameters night = skyUnderSun(day, std::sin(-30 * degree));
+  EXPECT_LT(dusk.horizonRgb.b, day.horizonRgb.b);
+  EXPECT_GT(dusk.horizonRgb.b, night.horizonRgb.b);
+  EXPECT_LT(night.zenithRgb.r + night.zenithRgb.g + night.zenithRgb.b, 0.05f);
+  EXPECT_LT(night.horizonRgb.g, 0.05f) << "the fog darkens with the sky";
+  EXPECT_EQ(daylight(std::sin(-30 * degree)), kNightLight);
+  const float twilight = daylight(std::sin(-1 * degree));
+  EXPECT_GT(twilight, kNightLight);
+  EXPECT_LT(twilight, 1.0f);
+  for (double c = -1; c <= 1; c += 0.01) {
+    EXPECT_LE(daylight(c), daylight(c + 0.01)) << "brighter as the Sun rises";
+  }
+  EXPECT_EQ(daylight(std::numeric_limits<double>::quiet_NaN()), 1.0f);
+}
+
 TEST(SkyModel, NeverNaNWhateverTheHeight) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();

@@ -1,0 +1,100 @@
+// The terrain under the real Sun (--time) through the real program, over Fuji's cone in the
+// bundled pyramid: noon brighter than midnight, the morning Sun on the east slopes and the
+// evening Sun on the west ones; `globe sun` prints what the light is; bad times are refused.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "formats/image_io.hpp"
+#include "tests/apps/globe/run_globe.hpp"
+#include "tests/support/tiler_test_fixture.hpp"
+
+namespace globe::app {
+namespace {
+
+namespace fs = std::filesystem;
+using test::runGlobe;
+
+// Straight down on Fuji's summit from 30 km, north up: the cone's east flank is the right half.
+const std::string kOverFuji = " --camera 138.7274,35.3606,30000,0,-90,0 --size 160x160 ";
+
+struct Halves {
+  double west = 0, east = 0;
+  double mean() const { return (west + east) / 2; }
+};
+
+// Mean luminance (0..255) of the left and right halves of the central disc (the cone).
+Halves snapshotHalves(const std::string& time, const fs::path& dir) {
+  const fs::path out = dir / ("fuji-" + std::to_string(std::hash<std::string>{}(time)) + ".png");
+  const auto run = runGlobe("snapshot " + globe::testing::bundledPyramid().string() + kOverFuji +
+                            "--no-sky --time " + time + " -o " + out.string());
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  auto image = formats::loadImageRgba(out);
+  EXPECT_TRUE(image) << (image ? "" : image.error());
+  Halves h;
+  if (!image) return h;
+  double sums[2] = {0, 0};
+  int counts[2] = {0, 0};
+  const int w = image->widthPixels, hgt = image->heightPixels;
+  for (int y = 0; y < hgt; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const int dx = x - w / 2, dy = y - hgt / 2;
+      if (dx * dx + dy * dy > (w / 3) * (w / 3) || dx == 0) continue;
+      const size_t i = 4 * (static_cast<size_t>(y) * w + static_cast<size_t>(x));
+      const double luminance = 0.2126 * image->pixels[i] + 0.7152 * image->pixels[i + 1] +
+                               0.0722 * image->pixels[i + 2];
+      sums[dx > 0] += luminance;
+      ++counts[dx > 0];
+    }
+  }
+  h.west = sums[0] / counts[0];
+  h.east = sums[1] / counts[1];
+  return h;
+}
+
+TEST(SunLight, NightIsDarkAndMorningAndEveningLightOppositeSlopes) {
+  const fs::path dir = globe::testing::freshTempDir("sun-light");
+  // Japan is UTC+9: 06:00 (the Sun 16° up in the east-north-east), 12:00, 18:00 (11° up in the
+  // west-north-west) and midnight on the June solstice.
+  const Halves morning = snapshotHalves("2024-06-21T06:00+09:00", dir);
+  const Halves noon = snapshotHalves("2024-06-21T12:00+09:00", dir);
+  const Halves evening = snapshotHalves("2024-06-21T18:00+09:00", dir);
+  const Halves night = snapshotHalves("2024-06-21T00:00+09:00", dir);
+  std::printf("Fuji west/east luminance: morning %.1f/%.1f noon %.1f/%.1f evening %.1f/%.1f "
+              "night %.1f/%.1f\n",
+              morning.west, morning.east, noon.west, noon.east, evening.west, evening.east,
+              night.west, night.east);
+  EXPECT_GT(morning.east, 1.3 * morning.west) << "the morning Sun lights the east slopes";
+  EXPECT_GT(evening.west, 1.3 * evening.east) << "the evening Sun lights the west slopes";
+  EXPECT_LT(night.mean(), 0.15 * noon.mean()) << "the night side is dark";
+  EXPECT_GT(night.mean(), 0.0) << "but not nothing: the night's floor";
+}
+
+TEST(SunLight, GlobeSunPrintsThePositionAndRefusesMistakes) {
+  // The SPA paper's example place and time (geometric elevation; its zenith 50.11162° is with
+  // refraction at 820 mbar): azimuth 194.34°.
+  const auto run =
+      runGlobe("sun --time 2003-10-17T12:30:30-07:00 --at -105.1786,39.742476 --height 1830.14");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("azimuth_deg,elevation_deg\n194.34"), std::string::npos)
+      << run.output;
+  const auto refracted = runGlobe("sun --time 2003-10-17T19:30:30Z --at -105.1786,39.742476 "
+                                  "--height 1830.14 --refraction");
+  ASSERT_EQ(refracted.exitCode, 0) << refracted.output;
+  for (const auto& [arguments, says] :
+       std::vector<std::pair<std::string, std::string>>{
+           {"sun --time 2024-06-21T06:30 --at 0,0", "add Z for UTC"},
+           {"sun --time 2024-02-30T06:30Z --at 0,0", "no such date"},
+           {"sun --time 2024-06-21T06:30Z --at 200,0", "--at longitude"},
+           {"sun --time 2024-06-21T06:30Z --at 0", "LON,LAT"},
+           {"snapshot " + globe::testing::bundledPyramid().string() +
+                " --camera 0,0,1e6 --time noon -o /dev/null",
+            "--time 'noon'"}}) {
+    const auto bad = runGlobe(arguments);
+    EXPECT_EQ(bad.exitCode, 2) << arguments << "\n" << bad.output;
+    EXPECT_NE(bad.output.find(says), std::string::npos) << arguments << "\n" << bad.output;
+  }
+}
+
+}  // namespace
+}  // namespace globe::app
