@@ -6,7 +6,7 @@ _globe_complete() {
   local program=$1 current=${COMP_WORDS[COMP_CWORD]}
   local subcommands="" subcommand="" word
   case "${program##*/}" in
-    globe) subcommands="info snapshot query view play sources search profile views" ;;
+    globe) subcommands="info snapshot query view play sources search profile sun views regress" ;;
     globe-tiler) subcommands="imagery water-mask export export-imagery" ;;
   esac
   for word in "${COMP_WORDS[@]:1:COMP_CWORD-1}"; do
