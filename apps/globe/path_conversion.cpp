@@ -25,7 +25,7 @@ Result<camera::CameraPath> toCameraPath(const camera::CameraPathFile& file,
                          "]: the terrain height: " + ground.error());
       }
     }
-    path.keyframes.push_back({key.timeSeconds, pose, key.heightAboveTerrain});
+    path.keyframes.push_back({key.timeSeconds, pose, key.heightAboveTerrain, key.sunUnixSeconds});
   }
   return path;
 }

@@ -67,6 +67,9 @@ PlaybackStep::PlaybackStep(scene::TerrainScene& scene, scene::TileGpu& gpu,
       controller_(
           camera::samplePath(path, path.startSeconds(), scene.ellipsoid(), terrainOf(scene)),
           playbackSettings(glide)) {
+  if (const auto sunTime = camera::sampleSunTime(path, path.startSeconds())) {
+    scene.setSunTime(sunTime);
+  }
   const double fovY = scene.options().fovYRadians;
   controller_.setNearPlane(
       {camera::projectionForHeight(0, controller_.settings().clearance.eyeMeters, fovY, 1,
@@ -132,6 +135,8 @@ Result<FrameRecord> PlaybackStep::frame(int frameIndex, double timeSeconds, doub
   FrameRecord record;
   record.frame = frameIndex;
   record.timeSeconds = timeSeconds;
+  // Keyframes with a "time" move the Sun through the flight (else --time's, or none, stays).
+  if (const auto sunTime = camera::sampleSunTime(path_, timeSeconds)) scene_.setSunTime(sunTime);
   const camera::CameraPose scripted =
       camera::samplePath(path_, timeSeconds, ellipsoid, terrainOf(scene_));
   record.scriptedHeightMeters = scripted.position.heightMeters;

@@ -206,4 +206,18 @@ CameraPose samplePath(const CameraPath& path, double timeSeconds, const geo::Ell
   return pose;
 }
 
+std::optional<double> sampleSunTime(const CameraPath& path, double timeSeconds) {
+  const CameraKeyframe* before = nullptr;
+  for (const CameraKeyframe& key : path.keyframes) {
+    if (!key.sunUnixSeconds) continue;
+    if (!(key.timeSeconds < timeSeconds)) {
+      if (before == nullptr) return key.sunUnixSeconds;  // at or before the first
+      const double f = (timeSeconds - before->timeSeconds) / (key.timeSeconds - before->timeSeconds);
+      return *before->sunUnixSeconds + f * (*key.sunUnixSeconds - *before->sunUnixSeconds);
+    }
+    before = &key;
+  }
+  return before != nullptr ? before->sunUnixSeconds : std::nullopt;
+}
+
 }  // namespace globe::camera

@@ -33,6 +33,7 @@ struct CameraKeyframe {
   // ground is what is interpolated and the path follows the terrain (a mountain between them
   // is flown over, not into).
   bool heightAboveTerrain = false;
+  std::optional<double> sunUnixSeconds{};  // the Sun's instant here (camera_path_file.hpp "time")
 };
 
 // The terrain height (m above the ellipsoid) under a longitude and latitude in radians.
@@ -58,5 +59,10 @@ struct CameraPath {
 // `terrain` (or without such keyframes) the heights are taken as they are.
 CameraPose samplePath(const CameraPath& path, double timeSeconds, const geo::Ellipsoid& ellipsoid,
                       const TerrainHeightAt& terrain = {});
+
+// The Sun's instant at a path time: linear between the keyframes that have one (a day passes in
+// a minute of flight if the keyframes say so), the first one's before it and the last one's
+// after it; nullopt when no keyframe has one.
+std::optional<double> sampleSunTime(const CameraPath& path, double timeSeconds);
 
 }  // namespace globe::camera

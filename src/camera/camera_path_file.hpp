@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,9 @@ struct PathKeyframe {
   double pitchDegrees = -90;  // 0 = the horizon, -90 = straight down
   double rollDegrees = 0;
   bool heightAboveTerrain = false;
+  // "time": the instant the Sun lights the view at (ISO-8601 with its zone in the file; seconds
+  // since 1970, UTC, here), interpolated between the keyframes that have one (--time's light).
+  std::optional<double> sunUnixSeconds{};
 };
 
 // Keyframes with strictly increasing times (at least one); interpolation "linear" or "smooth".

@@ -7,6 +7,7 @@
 #include "camera/camera_path_file.hpp"
 #include "camera/json_locations.hpp"
 #include "camera/path_checks.hpp"
+#include "sun/utc_time.hpp"
 #include "transport/atomic_file.hpp"
 
 namespace globe::camera {
@@ -33,7 +34,7 @@ constexpr std::array<NumberField, 7> kNumberFields = {{
     {"roll", &PathKeyframe::rollDegrees, false, -kUnbounded, kUnbounded},
 }};
 constexpr std::string_view kKeyframeFields =
-    "t, lon, lat, height, heading, pitch, roll, aboveTerrain";
+    "t, lon, lat, height, heading, pitch, roll, aboveTerrain, time";
 
 std::string_view typeName(const json& value) {
   return value.is_number()    ? "a number"
@@ -57,7 +58,7 @@ Result<PathKeyframe> readKeyframe(const json& object, const std::string& where,
   }
   for (const auto& item : object.items()) {
     const std::string& key = item.key();  // not a structured binding: clang 14 cannot capture one
-    const bool known = key == "aboveTerrain" ||
+    const bool known = key == "aboveTerrain" || key == "time" ||
                        std::any_of(kNumberFields.begin(), kNumberFields.end(),
                                    [&](const NumberField& field) { return key == field.name; });
     if (!known) {
@@ -86,6 +87,14 @@ Result<PathKeyframe> readKeyframe(const json& object, const std::string& where,
       return fail("aboveTerrain", "expected true or false, got " + std::string(typeName(*it)));
     }
     keyframe.heightAboveTerrain = it->get<bool>();
+  }
+  if (const auto it = object.find("time"); it != object.end()) {
+    if (!it->is_string()) {
+      return fail("time", "expected an ISO-8601 string, got " + std::string(typeName(*it)));
+    }
+    auto instant = sun::parseUtcTime(it->get<std::string>());
+    if (!instant) return fail("time", instant.error());
+    keyframe.sunUnixSeconds = *instant;
   }
   if (previous != nullptr) {
     if (auto problem = detail::checkTimeAfter(at.written(where + ".t"), keyframe.timeSeconds,
@@ -190,6 +199,7 @@ Result<void> writeCameraPathJson(const std::filesystem::path& path, const Camera
               "\": " + detail::formatNumber(key.*kNumberFields[f].member);
     }
     if (key.heightAboveTerrain) text += ", \"aboveTerrain\": true";
+    if (key.sunUnixSeconds) text += ", \"time\": \"" + sun::formatUtcTime(*key.sunUnixSeconds) + "\"";
     text += k + 1 < file.keyframes.size() ? "},\n" : "}\n";
   }
   text += "  ]\n}\n";

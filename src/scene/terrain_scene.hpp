@@ -115,6 +115,9 @@ class TerrainScene {
   // Per tile of tiles(), the imagery drawn on it (empty without layers).
   const std::vector<terrain::TileDrapes>& drapes() const { return drapes_; }
   const SceneOptions& options() const { return options_; }
+  // The Sun's instant for the frames from now on (a camera path's keyframe times, the window's
+  // time keys); nullopt: the light that follows the camera.
+  void setSunTime(std::optional<double> unixSeconds) { options_.sunTimeUnixSeconds = unixSeconds; }
   // The overlays' visible points (scene/overlay_points.hpp), in file order.
   std::span<const PointMark> pointMarks() const { return pointMarks_; }
   // Shows these overlays instead of the options' (files opened in the window): their draped

@@ -160,6 +160,27 @@ SideVelocities velocitiesAround(const CameraPath& path, double t, double h) {
   return v;
 }
 
+// The Sun's instant along a path: linear between the keyframes that carry one, held before the
+// first and after the last, none when no keyframe has one.
+TEST(CameraPath, SunTimesAreInterpolatedBetweenTheKeyframesThatHaveThem) {
+  CameraPath path;
+  const CameraPose pose = CameraPose::fromDegrees(0, 0, 1000, 0, -90, 0);
+  path.keyframes = {{0, pose, false, std::nullopt},
+                    {10, pose, false, 1000.0},
+                    {20, pose, false, std::nullopt},
+                    {30, pose, false, 5000.0}};
+  EXPECT_EQ(sampleSunTime(path, -5), 1000.0);
+  EXPECT_EQ(sampleSunTime(path, 0), 1000.0);
+  EXPECT_EQ(sampleSunTime(path, 10), 1000.0);
+  EXPECT_EQ(sampleSunTime(path, 20), 3000.0) << "keyframes without a time do not stop it";
+  EXPECT_EQ(sampleSunTime(path, 25), 4000.0);
+  EXPECT_EQ(sampleSunTime(path, 30), 5000.0);
+  EXPECT_EQ(sampleSunTime(path, 99), 5000.0);
+  path.keyframes[1].sunUnixSeconds.reset();
+  path.keyframes[3].sunUnixSeconds.reset();
+  EXPECT_FALSE(sampleSunTime(path, 15));
+}
+
 TEST(CameraPath, SmoothIsC1AtEveryKeyAndLinearIsNot) {
   const CameraPath smooth = windingPath(PathInterpolation::Smooth);
   const CameraPath linear = windingPath(PathInterpolation::Linear);

@@ -130,6 +130,32 @@ std::string withThird(const std::string& third, const std::string& interpolation
          "}\n";
 }
 
+// "time": the Sun's instant at a keyframe (ISO-8601 with its zone), read, written back, refused
+// naming the line when it is not an instant.
+TEST_F(PathFiles, KeyframeTimesReadWriteAndAreChecked) {
+  auto file = readCameraPath(write("sun.json", R"({"keyframes": [
+    {"t": 0, "lon": 138.7, "lat": 35.3, "height": 9000, "time": "2024-06-21T06:00+09:00"},
+    {"t": 10, "lon": 138.8, "lat": 35.3, "height": 9000},
+    {"t": 20, "lon": 138.9, "lat": 35.3, "height": 9000, "time": "2024-06-21T09:00:00Z"}]})"));
+  ASSERT_TRUE(file) << file.error();
+  ASSERT_TRUE(file->keyframes[0].sunUnixSeconds);
+  EXPECT_EQ(*file->keyframes[0].sunUnixSeconds, 1718917200.0);  // 2024-06-20T21:00:00Z
+  EXPECT_FALSE(file->keyframes[1].sunUnixSeconds);
+  EXPECT_EQ(*file->keyframes[2].sunUnixSeconds, 1718960400.0);
+  ASSERT_TRUE(writeCameraPathJson(dir_ / "sun-out.json", *file));
+  auto back = readCameraPathJson(dir_ / "sun-out.json");
+  ASSERT_TRUE(back) << back.error();
+  for (size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(back->keyframes[k].sunUnixSeconds, file->keyframes[k].sunUnixSeconds) << k;
+  }
+  EXPECT_EQ(errorOf("t1.json", withThird(R"({"t": 5, "lon": 1, "lat": 2, "height": 3, "time": 12})")),
+            "t1.json:7: keyframes[2].time: expected an ISO-8601 string, got a number");
+  const std::string noZone = errorOf(
+      "t2.json", withThird(R"({"t": 5, "lon": 1, "lat": 2, "height": 3, "time": "2024-06-21T06:00"})"));
+  EXPECT_EQ(noZone.rfind("t2.json:7: keyframes[2].time: time '2024-06-21T06:00': no zone", 0), 0u)
+      << noZone;
+}
+
 TEST_F(PathFiles, BadJsonNamesFileLineAndField) {
   EXPECT_EQ(errorOf("path.json", withThird(R"({"t": 5, "lon": 1, "lat": 95, "height": 3})")),
             "path.json:7: keyframes[2].lat: 95 is outside -90..90");
@@ -154,7 +180,7 @@ TEST_F(PathFiles, BadJsonNamesFileLineAndField) {
             "path.json:7: keyframes[2].lon: expected a number, got a string");
   EXPECT_EQ(errorOf("path.json", withThird(R"({"t": 5, "lon": 1, "lat": 0, "heigth": 3})")),
             "path.json:7: keyframes[2].heigth: unknown field (a keyframe has t, lon, lat, "
-            "height, heading, pitch, roll, aboveTerrain)");
+            "height, heading, pitch, roll, aboveTerrain, time)");
   EXPECT_EQ(errorOf("path.json", withThird("[1, 2]")),
             "path.json:7: keyframes[2]: expected a keyframe object, got an array");
   EXPECT_EQ(

@@ -3,6 +3,7 @@
 // evening Sun on the west ones; `globe sun` prints what the light is; bad times are refused.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <string>
 
 #include "formats/image_io.hpp"
@@ -68,6 +69,29 @@ TEST(SunLight, NightIsDarkAndMorningAndEveningLightOppositeSlopes) {
   EXPECT_GT(evening.west, 1.3 * evening.east) << "the evening Sun lights the west slopes";
   EXPECT_LT(night.mean(), 0.15 * noon.mean()) << "the night side is dark";
   EXPECT_GT(night.mean(), 0.0) << "but not nothing: the night's floor";
+}
+
+// A path's keyframe "time"s move the Sun through the flight: dawn over Fuji in 2 s of path.
+TEST(SunLight, KeyframeTimesMoveTheSunThroughAPlay) {
+  const fs::path dir = globe::testing::freshTempDir("sun-play");
+  std::ofstream(dir / "dawn.json") << R"({"interpolation": "linear", "keyframes": [
+    {"t": 0, "lon": 138.7274, "lat": 35.3606, "height": 30000, "time": "2024-06-21T03:00+09:00"},
+    {"t": 2, "lon": 138.7274, "lat": 35.3606, "height": 30000, "time": "2024-06-21T07:00+09:00"}]})";
+  const auto run = runGlobe("play " + globe::testing::bundledPyramid().string() + " " +
+                            (dir / "dawn.json").string() + " --out " + (dir / "out").string() +
+                            " --fps 1 --size 96x96 --no-sky");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const auto mean = [&](const char* frame) {
+    auto image = formats::loadImageRgba(dir / "out" / "frames" / frame);
+    EXPECT_TRUE(image) << frame;
+    double sum = 0;
+    for (size_t i = 0; image && i < image->pixels.size(); i += 4) sum += image->pixels[i + 1];
+    return image ? sum / static_cast<double>(image->pixels.size() / 4) : 0.0;
+  };
+  const double night = mean("00000.png"), dawn = mean("00001.png"), morning = mean("00002.png");
+  std::printf("green at 03:00, 05:00, 07:00 JST: %.1f %.1f %.1f\n", night, dawn, morning);
+  EXPECT_LT(night, 0.15 * morning);
+  EXPECT_GT(dawn, 2 * night) << "the Sun has risen by 05:00";
 }
 
 TEST(SunLight, GlobeSunPrintsThePositionAndRefusesMistakes) {
