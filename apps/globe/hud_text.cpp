@@ -6,6 +6,7 @@
 
 #include "collision/collision_response.hpp"
 #include "geo/cartographic.hpp"
+#include "sun/utc_time.hpp"
 
 namespace globe::app {
 namespace {
@@ -87,6 +88,7 @@ std::vector<std::string> hudStatusLines(const HudState& s, bool withFrameTime) {
   }
   lines.push_back(tiles);
   if (std::string imagery = imageryStatus(s); !imagery.empty()) lines.push_back(std::move(imagery));
+  if (s.sunUnixSeconds) lines.push_back("sun " + sun::formatUtcTime(*s.sunUnixSeconds));
   if (!s.ruler.empty()) lines.push_back(s.ruler);
   if (s.recording) lines.push_back(format("REC  %zu keyframes  (P stops)", s.keyframes));
   lines.push_back("H: help");

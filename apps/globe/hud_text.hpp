@@ -49,6 +49,7 @@ struct HudState {
   terrain::ImageryLighting lighting = terrain::ImageryLighting::Auto;
   std::vector<Layer> layers;
   size_t selectedLayer = 0;
+  std::optional<double> sunUnixSeconds;  // the Sun's instant (--time, , and .), said when set
 };
 
 // "lighting auto  layers >1 on 100%  2 off 40%" (> marks the layer [ and ] change); empty

@@ -4,6 +4,7 @@
 #include <GLFW/glfw3.h>  // key codes only: nothing here calls GLFW
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -59,6 +60,8 @@ constexpr KeyBinding kBindings[] = {
     {GLFW_KEY_MINUS, M::Fly, A::FlySlower, true},
     {GLFW_KEY_KP_SUBTRACT, M::Fly, A::FlySlower, true},
     {GLFW_KEY_PAGE_DOWN, M::Fly, A::FlySlower, true},
+    {GLFW_KEY_COMMA, M::Any, A::SunEarlier, true},
+    {GLFW_KEY_PERIOD, M::Any, A::SunLater, true},
 };
 
 // G, V and O open the prompt: a place or saved view to go to, a name to save this view under,
@@ -88,6 +91,18 @@ bool stepOpacity(ImageryControls& imagery, float step) {
 }
 
 camera::Navigator& nav(ViewInput& input) { return *input.navigator; }
+
+// , and . move the Sun an hour; without --time the first press starts from now.
+bool stepSun(ViewInput& input, double seconds) {
+  const double from = input.sunUnixSeconds
+                          ? *input.sunUnixSeconds
+                          : std::chrono::duration<double>(
+                                std::chrono::system_clock::now().time_since_epoch())
+                                .count();
+  input.sunUnixSeconds = from + seconds;
+  return true;
+}
+constexpr double kSunStepSeconds = 3600;
 
 // Rows in the order the help lists them; an empty help is described by the row before it.
 constexpr ActionInfo kActions[] = {
@@ -164,6 +179,10 @@ constexpr ActionInfo kActions[] = {
      "speed x2 / /2", 1, [](ViewInput& i, ViewWindow&) { return nav(i).changeSpeed(1), true; }},
     {A::FlySlower, "fly-slower", "-", "", "", 1,
      [](ViewInput& i, ViewWindow&) { return nav(i).changeSpeed(-1), true; }},
+    {A::SunEarlier, "sun-earlier", ", / .", "the Sun an hour earlier / later (lit by the real Sun)",
+     "sun -/+ 1 h", 4, [](ViewInput& i, ViewWindow&) { return stepSun(i, -kSunStepSeconds); }},
+    {A::SunLater, "sun-later", ".", "", "", 4,
+     [](ViewInput& i, ViewWindow&) { return stepSun(i, kSunStepSeconds); }},
 };
 
 constexpr InputHelp kContinuous[] = {

@@ -49,6 +49,8 @@ enum class ViewAction {
   LookRight,
   FlyFaster,
   FlySlower,
+  SunEarlier,
+  SunLater,
 };
 
 enum class KeyMode { Any, Orbit, Fly };

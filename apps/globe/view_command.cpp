@@ -80,6 +80,7 @@ void startCamera(ViewSession& s, const camera::CameraPose& startPose) {
   input.navigator = &*s.navigator;
   input.goToRequest = s.options.goTo;
   input.imagery.lighting = s.options.scene.imageryLighting;
+  input.sunUnixSeconds = s.options.scene.sunTimeUnixSeconds;
   input.imagery.layerCount = static_cast<uint32_t>(
       std::min<size_t>(s.options.scene.layers.size(), terrain::kMaxDrapeLayers));
   for (uint32_t k = 0; k < input.imagery.layerCount; ++k)
@@ -140,6 +141,7 @@ void runFrame(ViewSession& s, int width, int height) {
   takeClick(s, width);
   redraw = updateRulerAndProfile(s, width, height) || redraw;
   camera::CollisionState collision;
+  s.scene->setSunTime(input.sunUnixSeconds);  // before the frame's view is made
   const scene::FrameInfo info = moveCamera(s, now, frameSeconds, width, height, collision);
   s.tilesChanged =
       s.tilesChanged || info.arrived > 0 || info.uploaded > 0 || s.scene->tiles() != s.drawnTiles;

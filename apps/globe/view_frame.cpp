@@ -181,6 +181,7 @@ HudState hudStateOf(ViewSession& s, const scene::FrameInfo& info,
   }
   hudState.metersPerPixel = navigator.metersPerPixelAtCentre();
   hudState.lighting = s.input.imagery.lighting;
+  hudState.sunUnixSeconds = s.input.sunUnixSeconds;
   hudState.selectedLayer = s.input.imagery.selected;
   for (uint32_t k = 0; k < s.input.imagery.layerCount; ++k) {
     hudState.layers.push_back({s.input.imagery.shown[k], s.input.imagery.opacity[k]});

@@ -59,6 +59,10 @@ struct ViewInput {
   glm::dvec2 compassTopLeft{-1.0}, compassBottomRight{-1.0};
 
   ImageryControls imagery;
+  // The Sun's instant (--time, seconds since 1970 UTC), moved an hour a press by , and . (the
+  // first press without --time starts from the clock's now); nullopt: the light that follows the
+  // camera.
+  std::optional<double> sunUnixSeconds;
 
   // One-shot requests, cleared by the loop when taken.
   bool recordToggleRequested = false;

@@ -6,6 +6,7 @@
 #include <GLFW/glfw3.h>  // key codes
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -135,6 +136,26 @@ TEST(ViewActions, LayerKeysActOnlyOnLayersThatExist) {
   const auto before = k.input.imagery.lighting;
   EXPECT_TRUE(k.press(GLFW_KEY_L));
   EXPECT_NE(k.input.imagery.lighting, before);
+}
+
+// , and . move the Sun an hour from --time's instant (held keys repeat); without --time the first
+// press starts from the clock's now.
+TEST(ViewActions, CommaAndPeriodMoveTheSunAnHour) {
+  Keys k;
+  k.input.sunUnixSeconds = 1718951400.0;  // 2024-06-21T06:30Z
+  EXPECT_TRUE(k.press(GLFW_KEY_PERIOD));
+  EXPECT_TRUE(k.press(GLFW_KEY_PERIOD, /*repeat=*/true));
+  EXPECT_EQ(*k.input.sunUnixSeconds, 1718951400.0 + 2 * 3600);
+  EXPECT_TRUE(k.press(GLFW_KEY_COMMA));
+  EXPECT_EQ(*k.input.sunUnixSeconds, 1718951400.0 + 3600);
+  Keys now;
+  ASSERT_FALSE(now.input.sunUnixSeconds);
+  const double before = std::chrono::duration<double>(
+                            std::chrono::system_clock::now().time_since_epoch())
+                            .count();
+  EXPECT_TRUE(now.press(GLFW_KEY_COMMA));
+  ASSERT_TRUE(now.input.sunUnixSeconds);
+  EXPECT_NEAR(*now.input.sunUnixSeconds, before - 3600, 60.0);
 }
 
 TEST(ViewActions, ArrowsPanInOrbitAndLookInFly) {
