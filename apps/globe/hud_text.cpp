@@ -31,6 +31,19 @@ double displayHeadingDegrees(double radians) {
 
 }  // namespace
 
+std::string spacingText(double stepDegrees) {
+  constexpr double kMetersPerDegree = 6'371'000.0 * 3.141592653589793 / 180;
+  const double meters = stepDegrees * kMetersPerDegree;
+  const std::string length =
+      meters >= 10'000 ? format("%.0f km", meters / 1000)
+      : meters >= 1000 ? format("%.1f km", meters / 1000)
+                       : format("%.0f m", meters);
+  const std::string angle = stepDegrees >= 1        ? format("%g deg", stepDegrees)
+                            : stepDegrees * 60 >= 1 ? format("%.3g'", stepDegrees * 60)
+                                                    : format("%.3g\"", stepDegrees * 3600);
+  return angle + " (~" + length + ")";
+}
+
 std::string terrainStatus(const camera::CollisionState& collision) {
   if (!collision.terrainFound) return "no terrain under the camera";
   return "terrain " + meters(collision.terrainHeightMeters) + "  clearance " +
@@ -60,6 +73,7 @@ std::vector<std::string> hudStatusLines(const HudState& s, bool withFrameTime) {
                          s.pose.position.latitudeDegrees()) +
                   meters(s.pose.position.heightMeters));
   lines.push_back(terrainStatus(s.collision));
+  if (!s.terrainData.empty()) lines.push_back("terrain data: " + s.terrainData);
   lines.push_back(format("heading %.1f  pitch %.1f", displayHeadingDegrees(s.pose.headingRadians),
                          geo::radiansToDegrees(s.pose.pitchRadians)));
   lines.push_back(s.collision.collided

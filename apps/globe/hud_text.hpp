@@ -50,7 +50,13 @@ struct HudState {
   std::vector<Layer> layers;
   size_t selectedLayer = 0;
   std::optional<double> sunUnixSeconds;  // the Sun's instant (--time, , and .), said when set
+  // What the terrain under the camera was made from: "ETOPO20.DEM, 20' (~37 km)" (empty: unknown).
+  std::string terrainData;
 };
+
+// A source's sample spacing as people say it, with its length along a meridian, in the HUD's
+// ASCII: "20' (~37 km)", "3\" (~93 m)", "2 deg (~222 km)".
+std::string spacingText(double stepDegrees);
 
 // "lighting auto  layers >1 on 100%  2 off 40%" (> marks the layer [ and ] change); empty
 // without layers.

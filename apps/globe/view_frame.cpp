@@ -17,6 +17,7 @@
 #include "apps/globe/view_actions.hpp"
 #include "apps/globe/view_session.hpp"
 #include "formats/image_io.hpp"
+#include "formats/pyramid_manifest.hpp"
 #include "geo/ecef.hpp"
 #include "render/hud_widgets.hpp"
 #include "render/read_pixels.hpp"
@@ -182,6 +183,12 @@ HudState hudStateOf(ViewSession& s, const scene::FrameInfo& info,
   hudState.metersPerPixel = navigator.metersPerPixelAtCentre();
   hudState.lighting = s.input.imagery.lighting;
   hudState.sunUnixSeconds = s.input.sunUnixSeconds;
+  const geo::Cartographic& at = hudState.pose.position;
+  if (const formats::SourceInfo* source = formats::finestSourceAt(
+          s.scene->store().manifest(), at.longitudeDegrees(), at.latitudeDegrees())) {
+    hudState.terrainData =
+        std::filesystem::path(source->path).filename().string() + ", " + spacingText(source->stepDegrees);
+  }
   hudState.selectedLayer = s.input.imagery.selected;
   for (uint32_t k = 0; k < s.input.imagery.layerCount; ++k) {
     hudState.layers.push_back({s.input.imagery.shown[k], s.input.imagery.opacity[k]});

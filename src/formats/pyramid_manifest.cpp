@@ -1,5 +1,7 @@
 #include "formats/pyramid_manifest.hpp"
 
+#include <cmath>
+
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -238,6 +240,21 @@ Result<PyramidManifest> readManifest(transport::ByteSource& source) {
 
 Result<PyramidManifest> readManifest(const std::filesystem::path& pyramidDir) {
   return readManifest(*transport::localByteSource(pyramidDir));
+}
+
+const SourceInfo* finestSourceAt(const PyramidManifest& manifest, double longitudeDegrees,
+                                 double latitudeDegrees) {
+  const SourceInfo* finest = nullptr;
+  for (const SourceInfo& source : manifest.sources) {
+    const BoundsDegrees& b = source.bounds;
+    // The longitude's turn that lands at or east of the source's west edge.
+    const double lon = b.west + std::fmod(std::fmod(longitudeDegrees - b.west, 360.0) + 360.0, 360.0);
+    const bool inside = lon <= b.east && latitudeDegrees >= b.south && latitudeDegrees <= b.north;
+    if (inside && source.stepDegrees > 0 && (!finest || source.stepDegrees < finest->stepDegrees)) {
+      finest = &source;
+    }
+  }
+  return finest;
 }
 
 }  // namespace globe::formats

@@ -71,6 +71,11 @@ struct PyramidManifest {
   PackLayout packLayout() const { return {packTilesPerSide, verticesPerSide}; }
 };
 
+// The finest source whose cells cover a point (the smallest step; longitudes taken modulo 360),
+// null where none does: what the terrain drawn there was made from (the HUD says it).
+const SourceInfo* finestSourceAt(const PyramidManifest& manifest, double longitudeDegrees,
+                                 double latitudeDegrees);
+
 std::string manifestToJson(const PyramidManifest& manifest);
 Result<PyramidManifest> manifestFromJson(std::string_view text, const std::filesystem::path& path);
 Result<PyramidManifest> readManifest(const std::filesystem::path& pyramidDir);

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/globe/hud_text.hpp"
+#include "formats/pyramid_manifest.hpp"
 #include "apps/globe/path_recorder.hpp"
 #include "camera/fly_controls.hpp"
 #include "camera/fly_to.hpp"
@@ -362,6 +363,35 @@ TEST(PathRecorder, FileNamesCarryTheTimeAndNeverOverwrite) {
   const auto second = globe::app::timestampedPath(dir, "globe-path", ".json");
   EXPECT_NE(second, first);
   std::filesystem::remove_all(dir);
+}
+
+// Where only the 20' base exists the HUD says so, and says what finer data is where it is.
+TEST(HudText, TheTerrainsDataAndItsSpacingAreSaid) {
+  EXPECT_EQ(globe::app::spacingText(1.0 / 3), "20' (~37 km)");
+  EXPECT_EQ(globe::app::spacingText(3.0 / 3600), "3\" (~93 m)");
+  EXPECT_EQ(globe::app::spacingText(0.5), "30' (~56 km)");
+  EXPECT_EQ(globe::app::spacingText(2.0), "2 deg (~222 km)");
+  EXPECT_EQ(globe::app::spacingText(1.0 / 120), "30\" (~927 m)");
+  globe::formats::PyramidManifest manifest;
+  manifest.sources.push_back({"data/dem/ETOPO20.DEM", "GTOPO30", 1080, 540, 1.0 / 3,
+                              {-180, -90, 180, 90}, 6, {}, std::nullopt});
+  manifest.sources.push_back({"data/dem/E138N35_FUJI.DEM", "GTOPO30", 1201, 1201, 3.0 / 3600,
+                              {138.0, 35.0, 139.0, 36.0}, 13, {}, std::nullopt});
+  const auto* fuji = globe::formats::finestSourceAt(manifest, 138.73, 35.36);
+  ASSERT_NE(fuji, nullptr);
+  EXPECT_EQ(fuji->path, "data/dem/E138N35_FUJI.DEM");
+  EXPECT_EQ(globe::formats::finestSourceAt(manifest, 2.35, 48.85)->path, "data/dem/ETOPO20.DEM")
+      << "Paris: the base alone";
+  EXPECT_EQ(globe::formats::finestSourceAt(manifest, 138.73 - 360, 35.36), fuji) << "a turn west";
+  manifest.sources.erase(manifest.sources.begin());
+  EXPECT_EQ(globe::formats::finestSourceAt(manifest, 2.35, 48.85), nullptr);
+  globe::app::HudState state;
+  state.terrainData = "ETOPO20.DEM, " + globe::app::spacingText(1.0 / 3);
+  bool said = false;
+  for (const std::string& line : globe::app::hudStatusLines(state)) {
+    said = said || line == "terrain data: ETOPO20.DEM, 20' (~37 km)";
+  }
+  EXPECT_TRUE(said);
 }
 
 TEST(HudText, StatusShowsPositionTerrainCollisionTilesAndMode) {
