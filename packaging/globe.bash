@@ -1,13 +1,16 @@
 # Bash completion for globe and globe-tiler: subcommands, then the options the program's own
-# --help lists for that subcommand (so it cannot fall out of step with the program), then files.
+# --help lists for that subcommand, then files. Both lists come from --help (globe's "Subcommands:"
+# table, globe-tiler's "globe-tiler NAME ..." lines), so they cannot fall out of step.
 # Installed to share/bash-completion/completions/ (for both names); or: source this file.
 
 _globe_complete() {
   local program=$1 current=${COMP_WORDS[COMP_CWORD]}
   local subcommands="" subcommand="" word
   case "${program##*/}" in
-    globe) subcommands="info snapshot query view play sources search profile sun views regress" ;;
-    globe-tiler) subcommands="imagery water-mask export export-imagery" ;;
+    globe) subcommands=$("$program" --help 2>/dev/null |
+      sed -nE '/^Subcommands:/,$ s/^  ([a-z][a-z-]*) .*/\1/p' | tr '\n' ' ') ;;
+    globe-tiler) subcommands=$("$program" --help 2>/dev/null |
+      sed -nE 's/^(Also:)? +globe-tiler ([a-z][a-z-]*) .*/\2/p' | sort -u | tr '\n' ' ') ;;
   esac
   for word in "${COMP_WORDS[@]:1:COMP_CWORD-1}"; do
     case " $subcommands " in *" $word "*) subcommand=$word; break ;; esac

@@ -81,8 +81,9 @@ int runTileCommand(int argc, char** argv, TileCommandKind kind) {
       "globe-tiler imagery -o LAYER_DIR INPUT... (imagery layers; see globe-tiler imagery --help)\n"
       "      globe-tiler export-imagery --format xyz|tms|pmtiles -o OUT LAYER_DIR (for web maps)\n"
       "      globe-tiler water-mask -o LAYER_DIR POLYGONS... (water masks from land polygons)\n"
-      "      globe-tiler --shard K/N -o OUT INPUT..., then globe-tiler merge -o OUT INPUT... "
-      "(on many machines; globe-tiler plan --shards N INPUT... first)",
+      "      globe-tiler plan --shards N INPUT... (how the work splits; then on many machines "
+      "globe-tiler --shard K/N -o OUT INPUT...)\n"
+      "      globe-tiler merge -o OUT INPUT... (after the shards)",
       "globe-tiler"};
   app.set_version_flag("--version",
                        std::string("globe-tiler ") + kVersion + " (" + sourceRevision() + ")");

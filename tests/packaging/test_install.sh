@@ -29,7 +29,9 @@ complete_line() {  # words of a command line being typed -> what TAB offers
 }
 for check in "globe sn=snapshot" "globe snapshot --cam=--camera" "globe snapshot --off=--offline" "globe view --lay=--layer" \
   "globe-tiler imagery --sc=--scale" "globe --=--help --version" \
-  "globe-tiler --z=--z-scale --z-units" "globe-tiler imagery --ba=--bands"; do
+  "globe-tiler --z=--z-scale --z-units" "globe-tiler imagery --ba=--bands" \
+  "globe su=sun" "globe re=regress" "globe-tiler wa=water-mask" "globe-tiler me=merge" \
+  "globe-tiler export-i=export-imagery"; do
   words=${check%%=*} wanted=${check#*=}
   # shellcheck disable=SC2086
   got=$(complete_line $words)
