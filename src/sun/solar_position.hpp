@@ -9,9 +9,6 @@
 
 namespace globe::sun {
 
-// The years the algorithm is published for.
-inline constexpr double kEarliestYear = -2000, kLatestYear = 6000;
-
 // The intermediate values the algorithm's paper tabulates for its example (tests check them).
 struct SpaTerms {
   double julianDay;                     // UT
