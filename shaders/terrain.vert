@@ -31,6 +31,7 @@ uniform float u_logDepthScale;   // 1 / log2(1 + far)
 uniform vec3 u_sunDirection;     // unit, towards the sun, ECEF axes (zero: ambient only)
 uniform float u_ambient;         // light on faces turned away from the sun
 uniform bool u_daylight;         // the real Sun (--time): the night side dark (render/sky_model.hpp)
+uniform vec3 u_daylightBand;     // night's light, night's and day's sun-up cosines (daylightBand())
 uniform bool u_hillShading;      // false: light with the ellipsoid "up" only
 uniform vec4 u_coarserEdges;     // north, south, west, east: 1 where that neighbour is coarser
 uniform float u_fogDensity;      // per metre (render/sky_model.hpp)
@@ -112,7 +113,8 @@ void main() {
   vec3 up = normalize(u_tileCenterEcef + a_offset);
   float upLight = u_ambient + (1.0 - u_ambient) * max(dot(up, u_sunDirection), 0.0);
   // The Sun from 6° below the horizon (night) to 4° above (day): render/sky_model.cpp daylight().
-  v_day = u_daylight ? mix(0.05, 1.0, smoothstep(-0.104528, 0.069756, dot(up, u_sunDirection)))
+  v_day = u_daylight ? mix(u_daylightBand.x, 1.0,
+                           smoothstep(u_daylightBand.y, u_daylightBand.z, dot(up, u_sunDirection)))
                      : 1.0;
   // An edge that faces a coarser neighbour is lit with that level's normals, so the lighting does
   // not step at the level change (terrain/tile_mesh.hpp). uv is exactly 0 or 1 on the edges.

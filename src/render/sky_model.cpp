@@ -55,6 +55,10 @@ constexpr glm::vec3 kNightHorizonRgb{0.010f, 0.014f, 0.030f};
 
 }  // namespace
 
+DaylightBand daylightBand() {
+  return {kNightLight, static_cast<float>(kSunBelowForNight), static_cast<float>(kSunAboveForDay)};
+}
+
 float daylight(double sunUpCosine) {
   if (!std::isfinite(sunUpCosine)) return 1.0f;
   const double day = smoothstep(kSunBelowForNight, kSunAboveForDay, sunUpCosine);

@@ -46,4 +46,11 @@ SkyParameters skyUnderSun(const SkyParameters& day, double sunUpCosine);
 inline constexpr float kNightLight = 0.05f;
 float daylight(double sunUpCosine);
 
+// The same band for the terrain shader (u_daylightBand): the night's floor and the cosines of the
+// Sun's zenith angle where night ends and day begins.
+struct DaylightBand {
+  float nightLight, nightCosine, dayCosine;
+};
+DaylightBand daylightBand();
+
 }  // namespace globe::render

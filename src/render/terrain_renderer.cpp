@@ -53,7 +53,8 @@ constexpr GLuint kWaterMaskUnit = 1 + terrain::kMaxDrapeLayers;
 struct TerrainRenderer::Impl {
   struct Uniforms {
     GLint modelView = -1, projection = -1, tileCenter = -1, imageryRect = -1;
-    GLint sunDirection = -1, ambient = -1, hillShading = -1, imagery = -1, daylight = -1;
+    GLint sunDirection = -1, ambient = -1, hillShading = -1, imagery = -1, daylight = -1,
+          daylightBand = -1;
     GLint logDepthScale = -1, coarserEdges = -1;
     GLint fogColor = -1, fogDensity = -1, fogMaximum = -1;
     GLint layerTransform = -1, layerOpacity = -1, layerLight = -1, levelLight = -1;
@@ -271,6 +272,7 @@ Result<const TerrainRenderer::Impl::Program*> TerrainRenderer::Impl::program(
   u.imageryRect = p.uniformLocation("u_imageryRect");
   u.sunDirection = p.uniformLocation("u_sunDirection");
   u.daylight = p.uniformLocation("u_daylight");
+  u.daylightBand = p.uniformLocation("u_daylightBand");
   u.ambient = p.uniformLocation("u_ambient");
   u.hillShading = p.uniformLocation("u_hillShading");
   u.imagery = p.uniformLocation("u_imagery");
@@ -625,6 +627,8 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
         glUniform3fv(u.sunDirection, 1, glm::value_ptr(sun));
         glUniform1f(u.ambient, style.ambient);
         glUniform1i(u.daylight, view.sunIsReal ? 1 : 0);
+        const DaylightBand band = daylightBand();
+        glUniform3f(u.daylightBand, band.nightLight, band.nightCosine, band.dayCosine);
         glUniform3fv(u.fogColor, 1, glm::value_ptr(sky.horizonRgb));
         glUniform1f(u.fogDensity, sky.fogDensityPerMeter);
         glUniform1f(u.fogMaximum, sky.fogMaximum);
