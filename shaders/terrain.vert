@@ -14,6 +14,10 @@
 // colour both travel, with the sea flag, so the coastline stays sharp (the fragment picks one)
 // instead of blending across a grid cell. Few varyings keep llvmpipe's per-triangle set-up cheap.
 #version 330 core
+// Tiles of one level share u_modelView, and a shared edge vertex's u_tileOrigin + a_offset is the
+// same exact sum in both tiles: invariant keeps every program variant computing it alike, so the
+// rasteriser sees the same vertex and the seam is watertight.
+invariant gl_Position;
 
 layout(location = 0) in vec3 a_offset;  // metres from the tile centre, ECEF axes
 layout(location = 1) in vec3 a_normal;  // unit, ECEF axes
@@ -23,7 +27,8 @@ layout(location = 3) in float a_sea;    // 1 = water (land below sea level is la
 layout(location = 4) in vec2 a_uv;      // tile-local: (0,0) north-west, (1,1) south-east
 layout(location = 5) in vec3 a_coarseNormal;  // on edges: the next coarser level's normal
 
-uniform mat4 u_modelView;        // view · translate(tile centre), cast from double
+uniform mat4 u_modelView;        // view · translate(the eye on the level's quantum), from double
+uniform vec3 u_tileOrigin;       // tile centre − that eye: exact in float (terrain_renderer.hpp)
 uniform mat4 u_projection;
 uniform vec3 u_tileCenterEcef;   // only used for a direction ("up"), so float is plenty
 uniform vec4 u_imageryRect;      // global equirectangular uv = xy + a_uv · zw
@@ -99,7 +104,7 @@ vec3 seaColor(float heightMeters) {
 }
 
 void main() {
-  gl_Position = u_projection * (u_modelView * vec4(a_offset, 1.0));
+  gl_Position = u_projection * (u_modelView * vec4(u_tileOrigin + a_offset, 1.0));
   v_logDepth = 1.0 + max(gl_Position.w, 0.0);
   float fogDepth = max(gl_Position.w, 0.0) * u_fogDensity;
   v_fog = u_fogMaximum * (1.0 - exp(-fogDepth * fogDepth));

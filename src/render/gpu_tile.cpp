@@ -33,6 +33,7 @@ GpuTile uploadGpuTile(const geo::TileId& tile, const terrain::TileMesh& mesh, GL
                               static_cast<float>(rect.widthRadians() / (2.0 * pi)),
                               static_cast<float>(rect.heightRadians() / pi));
   gpu.vertexBytes = mesh.vertices.size() * sizeof(float);
+  gpu.edgeHeightHashes = mesh.edgeHeightHashes;
   double radiusSquared = 0.0;
   gpu.allLand = gpu.allWater = !mesh.vertices.empty();
   for (size_t k = terrain::kTileVertexSeaOffset; k < mesh.vertices.size();

@@ -34,6 +34,7 @@ struct GpuTile {
   bool allLand = false;
   bool allWater = false;
   uint64_t vertexBytes = 0;
+  terrain::EdgeHeightHashes edgeHeightHashes{};  // the mesh's: which skirts a seam needs
 };
 
 // Uploads the mesh's vertices (GL_STATIC_DRAW) and binds `indexBuffer` into the vertex array.

@@ -19,6 +19,7 @@
 #include "geo/ecef.hpp"
 #include "render/gl_object.hpp"
 #include "render/gpu_tile.hpp"
+#include "terrain/tile_transform.hpp"
 #include "render/imagery_textures.hpp"
 #include "render/shader_directory.hpp"
 #include "render/shader_program.hpp"
@@ -52,7 +53,7 @@ constexpr GLuint kWaterMaskUnit = 1 + terrain::kMaxDrapeLayers;
 
 struct TerrainRenderer::Impl {
   struct Uniforms {
-    GLint modelView = -1, projection = -1, tileCenter = -1, imageryRect = -1;
+    GLint modelView = -1, tileOrigin = -1, projection = -1, tileCenter = -1, imageryRect = -1;
     GLint sunDirection = -1, ambient = -1, hillShading = -1, imagery = -1, daylight = -1,
           daylightBand = -1;
     GLint logDepthScale = -1, coarserEdges = -1;
@@ -102,6 +103,7 @@ struct TerrainRenderer::Impl {
   std::vector<DrawItem> drawItems[2];
   bool programErrorReported = false;  // per-frame scratch, kept to avoid reallocating
   std::unordered_set<geo::TileId> drawnIds;
+  std::unordered_map<geo::TileId, terrain::EdgeHeightHashes> drawnEdges;
   GlObject indexBuffer;
   GLenum indexType = GL_UNSIGNED_SHORT;
   GLsizei indexCount = 0;
@@ -267,6 +269,7 @@ Result<const TerrainRenderer::Impl::Program*> TerrainRenderer::Impl::program(
   const ShaderProgram& p = target.program;
   Uniforms& u = target.uniforms;
   u.modelView = p.uniformLocation("u_modelView");
+  u.tileOrigin = p.uniformLocation("u_tileOrigin");
   u.projection = p.uniformLocation("u_projection");
   u.tileCenter = p.uniformLocation("u_tileCenterEcef");
   u.imageryRect = p.uniformLocation("u_imageryRect");
@@ -291,10 +294,10 @@ Result<const TerrainRenderer::Impl::Program*> TerrainRenderer::Impl::program(
   for (uint32_t k = 0; k < terrain::kMaxDrapeLayers; ++k) {
     u.layerSamplers[k] = p.uniformLocation(("u_layer" + std::to_string(k)).c_str());
   }
-  if (u.modelView < 0 || u.projection < 0 || u.logDepthScale < 0) {
+  if (u.modelView < 0 || u.tileOrigin < 0 || u.projection < 0 || u.logDepthScale < 0) {
     return makeError((dir / "terrain.vert").string() +
                      " + terrain.frag: the program lacks "
-                     "u_modelView, u_projection or u_logDepthScale");
+                     "u_modelView, u_tileOrigin, u_projection or u_logDepthScale");
   }
   if (layers > 0 && (u.layerTransform < 0 || u.layerOpacity < 0)) {
     return makeError((dir / "terrain.vert").string() +
@@ -516,6 +519,7 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
   // depth test rejects hidden fragments early. Near tiles go first: they occlude the far ones.
   for (auto& items : impl.drawItems) items.clear();
   impl.drawnIds.clear();
+  impl.drawnEdges.clear();
   const Impl::Footprint footprint{view.cameraEcefMeters, terrain::pixelAngleRadians(view)};
   for (size_t i = 0; i < tiles.size(); ++i) {
     const geo::TileId& tile = tiles[i];
@@ -526,6 +530,7 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
     }
     impl.drawnIds.insert(tile);
     const GpuTile& gpu = found->second;
+    impl.drawnEdges.emplace(tile, gpu.edgeHeightHashes);
     const double nearest = std::max(
         0.0, glm::distance(view.cameraEcefMeters, gpu.centerEcefMeters) - gpu.radiusMeters);
     const bool far =
@@ -538,7 +543,13 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
   if (impl.options.skirts) {
     for (auto& items : impl.drawItems) {
       for (Impl::DrawItem& item : items) {
-        item.skirts = terrain::neededSkirtEdges(item.tile, impl.drawnIds);
+        item.skirts = terrain::neededSkirtEdges(item.tile, impl.drawnIds) |
+                      terrain::mismatchedEdges(item.tile, item.gpu->edgeHeightHashes,
+                                               impl.drawnEdges);
+        // Too far for exact float positions (terrain/tile_transform.hpp): seams below a pixel.
+        if (!terrain::tileTransform(view, item.tile.level, item.gpu->centerEcefMeters).exact) {
+          item.skirts = terrain::kAllSkirtEdges;
+        }
         if (item.skirts != 0)
           item.coarser = terrain::coarserNeighbourEdges(item.tile, impl.drawnIds);
       }
@@ -648,10 +659,11 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
       const Impl::Uniforms& u = *current;
       const GpuTile& gpu = *item.gpu;
       // Camera-relative in double: the ~6.4e6 m translation cancels before the cast to float.
-      const glm::dmat4 modelViewDouble =
-          view.viewMatrix * glm::translate(glm::dmat4(1.0), gpu.centerEcefMeters);
-      const glm::mat4 modelView(modelViewDouble);
-      glUniformMatrix4fv(u.modelView, 1, GL_FALSE, glm::value_ptr(modelView));
+      // The eye rounded to the level's quantum gives every tile of the level the same matrix and
+      // an exact float origin, so shared edge vertices come out bit-identical (header).
+      const terrain::TileTransform transform = terrain::tileTransform(view, item.tile.level, gpu.centerEcefMeters);
+      glUniformMatrix4fv(u.modelView, 1, GL_FALSE, glm::value_ptr(transform.levelView));
+      glUniform3fv(u.tileOrigin, 1, glm::value_ptr(transform.origin));
       const glm::vec3 center(gpu.centerEcefMeters);
       glUniform3fv(u.tileCenter, 1, glm::value_ptr(center));
       if (useImagery) glUniform4fv(u.imageryRect, 1, glm::value_ptr(gpu.imageryRect));

@@ -56,10 +56,11 @@ struct TerrainStyle {
 // Needs a current GL 3.3 core context (OsMesaContext or GlfwWindowContext) on the calling thread
 // for its whole life, and must be destroyed before that context.
 //
-// Precision: a mesh stores float offsets from a double tile centre; draw() forms
-// modelView = view · translate(centre) in double for each tile and only then casts it to float,
+// Precision: a mesh stores float offsets from a double tile centre; draw() forms the camera-
+// relative transform in double (terrain/tile_transform.hpp: view · translate(eye rounded to the
+// level's quantum), and the centre's exact offset from that eye) and only then casts to float,
 // so the large ECEF translation cancels in double and the GPU sees camera-relative numbers: no
-// jitter 1 m above the ground at earth radius.
+// jitter 1 m above the ground at earth radius, and bit-identical shared vertices between tiles.
 //
 // Depth: logarithmic, written per fragment: gl_FragDepth = log2(1 + w) / log2(1 + farMeters), w
 // the eye distance along the view axis. With the 24-bit depth buffer OSMesa and most windows give,
@@ -88,9 +89,10 @@ struct TerrainStyle {
 // texel over its own sample step, TileDrape::nativeTexelDegrees and terrainStepDegrees; without
 // them, of the drawn imagery tile's texel over the tile's vertex spacing; in double, once per
 // tile and layer). Imagery covers sea too. Texels are stored premultiplied.
-// Skirts: only on the edges whose same-level neighbour is not drawn this frame
-// (terrain/skirt_edges.hpp); tiles of one level share their edge samples and their meshes overlap
-// by a hair (terrain::kSeamOverlapFraction), so no crack opens there.
+// Skirts: only on the edges whose same-level neighbour is not drawn this frame or draws the shared
+// edge at other heights (terrain/skirt_edges.hpp, edge_heights.hpp). Tiles of one level with the
+// same edge heights need none: their shared vertices reach the rasteriser bit-identical
+// (terrain/tile_transform.hpp), so the seam is watertight.
 // Back faces are culled (meshes are counter-clockwise from outside); draw() leaves depth test and
 // culling enabled.
 class TerrainRenderer {

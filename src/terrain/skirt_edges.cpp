@@ -32,6 +32,22 @@ SkirtEdgeMask neededSkirtEdges(const geo::TileId& tile,
   return mask;
 }
 
+SkirtEdgeMask mismatchedEdges(const geo::TileId& tile, const EdgeHeightHashes& own,
+                              const std::unordered_map<geo::TileId, EdgeHeightHashes>& drawnEdges) {
+  // The neighbour's edge facing each of ours: North↔South, West↔East.
+  static constexpr uint32_t kFacing[4] = {1, 0, 3, 2};
+  SkirtEdgeMask mask = 0;
+  for (uint32_t edge = 0; edge < 4; ++edge) {
+    const auto neighbour = sameLevelNeighbour(tile, static_cast<TileEdge>(edge));
+    if (!neighbour) continue;
+    const auto found = drawnEdges.find(*neighbour);
+    if (found != drawnEdges.end() && found->second[kFacing[edge]] != own[edge]) {
+      mask |= SkirtEdgeMask{1} << edge;
+    }
+  }
+  return mask;
+}
+
 SkirtEdgeMask coarserNeighbourEdges(const geo::TileId& tile,
                                     const std::unordered_set<geo::TileId>& drawn) {
   SkirtEdgeMask mask = 0;

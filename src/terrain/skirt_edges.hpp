@@ -1,17 +1,20 @@
-// Which skirts a drawn tile needs: only the edges where the neighbour is not drawn at the same
-// level. Two tiles of one level have the same edge samples and their meshes overlap by a hair
-// (kSeamOverlapFraction, against float rounding), so no crack opens between them; a crack can open
-// only against a coarser or finer neighbour (its edge interpolates other samples) or where no
-// neighbour is drawn. Skirt triangles cost llvmpipe as much as grid triangles (vertex
-// shading and set-up run on one thread), so drawing only the needed ones matters.
+// Which skirts a drawn tile needs: the edges where the neighbour is not drawn at the same level,
+// and those where it is but draws the shared edge at other heights (edge_heights.hpp: a tile made
+// from its parent's surface beside one read from the pyramid, or one morphing). Two tiles of one
+// level with the same edge heights draw the same edge vertices, bit-identical on the GPU
+// (tile_transform.hpp), so no crack opens between them. Skirt triangles cost llvmpipe as much as
+// grid triangles (vertex shading and set-up run on one thread), so drawing only the needed ones
+// matters.
 #pragma once
 
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "geo/tile_id.hpp"
+#include "terrain/edge_heights.hpp"
 #include "terrain/tile_mesh.hpp"
 
 namespace globe::terrain {
@@ -26,6 +29,11 @@ std::optional<geo::TileId> sameLevelNeighbour(const geo::TileId& tile, TileEdge 
 // The edges of `tile` whose same-level neighbour is not in `drawn`.
 SkirtEdgeMask neededSkirtEdges(const geo::TileId& tile,
                                const std::unordered_set<geo::TileId>& drawn);
+
+// The edges of `tile` whose same-level neighbour is in `drawnEdges` with a different hash for the
+// shared edge than `own` (the tile's EdgeHeightHashes).
+SkirtEdgeMask mismatchedEdges(const geo::TileId& tile, const EdgeHeightHashes& own,
+                              const std::unordered_map<geo::TileId, EdgeHeightHashes>& drawnEdges);
 
 // The edges of `tile` whose neighbour is drawn coarser: the same-level neighbour is not in
 // `drawn` but one of its ancestors is. Lit with its coarse normals there (tile_mesh.hpp), the

@@ -59,29 +59,26 @@ glm::dvec3 levelVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGri
   return vertexEcef(ellipsoid, where.longitudeDegrees, where.latitudeDegrees, heightMeters);
 }
 
-// The drawn edges reach a hair past the tile's rectangle, so the edges of two tiles of one level
-// overlap instead of meeting: through two tiles' float transforms their shared vertices round to
-// slightly different pixels, and a pixel centre could fall through the sliver between them.
+double vertexQuantumMeters(uint32_t level) {
+  return std::ldexp(kLevelZeroVertexQuantumMeters, -static_cast<int>(level));
+}
+
+double originQuantumMeters(uint32_t level) {
+  return kOriginQuantumPerVertexQuantum * vertexQuantumMeters(level);
+}
+
+glm::dvec3 quantizedEcefMeters(const glm::dvec3& position, double quantumMeters) {
+  // Division and multiplication by a power of two are exact; only the rounding rounds.
+  return glm::dvec3(std::nearbyint(position.x / quantumMeters),
+                    std::nearbyint(position.y / quantumMeters),
+                    std::nearbyint(position.z / quantumMeters)) *
+         quantumMeters;
+}
+
 glm::dvec3 drawnVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGrid& grid,
                                  uint32_t row, uint32_t column, double heightMeters) {
-  const uint32_t n = grid.verticesPerSide;
-  double latitude = grid.latitudeDegrees(row);
-  double longitude = grid.longitudeDegrees(column);
-  if (n < 2) return vertexEcef(ellipsoid, longitude, latitude, heightMeters);
-  const double latitudeStep = std::abs(grid.latitudeDegrees(1) - grid.latitudeDegrees(0));
-  const double longitudeStep = std::abs(grid.longitudeDegrees(1) - grid.longitudeDegrees(0));
-  const double overlapDegrees = kSeamOverlapFraction * latitudeStep;
-  if (row == 0) latitude = std::min(latitude + overlapDegrees, 90.0);
-  if (row == n - 1) latitude = std::max(latitude - overlapDegrees, -90.0);
-  if (column == 0 || column == n - 1) {
-    // The same distance in metres as in latitude, but at most a quarter cell near the poles.
-    const double cosine = std::cos(geo::degreesToRadians(latitude));
-    const double quarterCell = 0.25 * longitudeStep;
-    const double overlap =
-        cosine * quarterCell > overlapDegrees ? overlapDegrees / cosine : quarterCell;
-    longitude += column == 0 ? -overlap : overlap;
-  }
-  return vertexEcef(ellipsoid, longitude, latitude, heightMeters);
+  return quantizedEcefMeters(tileVertexEcefMeters(ellipsoid, grid, row, column, heightMeters),
+                             vertexQuantumMeters(grid.tile.level));
 }
 
 TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
@@ -91,6 +88,7 @@ TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
   mesh.verticesPerSide = n;
   mesh.hasSkirts = skirtDepthMeters > 0.0;
   if (!isValidBlockSize(n) || block.heights.size() != static_cast<size_t>(n) * n) return mesh;
+  mesh.edgeHeightHashes = edgeHeightHashes(block);
 
   const BlockGrid grid{tile, n};
   std::vector<double> longitudes(n), latitudes(n);
@@ -178,14 +176,11 @@ TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
     }
   }
 
-  // Edge vertices are drawn a hair outside the rectangle (drawnVertexEcefMeters); the normals
-  // above come from the exact grid.
-  for (uint32_t i = 0; i < n; ++i) {
-    for (uint32_t j = 0; j < n; ++j) {
-      if (i != 0 && i != n - 1 && j != 0 && j != n - 1) continue;
-      Vertex& vertex = vertices[gridVertexIndex(i, j, n)];
-      vertex.positionEcef = drawnVertexEcefMeters(ellipsoid, grid, i, j, vertex.heightMeters);
-    }
+  // Vertices are drawn at the level's quantum (drawnVertexEcefMeters); the normals above come
+  // from the exact grid.
+  const double quantum = vertexQuantumMeters(tile.level);
+  for (uint32_t k = 0; k < n * n; ++k) {
+    vertices[k].positionEcef = quantizedEcefMeters(vertices[k].positionEcef, quantum);
   }
 
   if (mesh.hasSkirts) {
@@ -220,7 +215,8 @@ TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
     lo = glm::min(lo, vertex.positionEcef);
     hi = glm::max(hi, vertex.positionEcef);
   }
-  mesh.centerEcefMeters = 0.5 * (lo + hi);
+  // On the quantum too: the float offsets are then exact (tile_mesh.hpp).
+  mesh.centerEcefMeters = quantizedEcefMeters(0.5 * (lo + hi), originQuantumMeters(tile.level));
 
   mesh.vertices.reserve(vertices.size() * kTileVertexFloats);
   for (const Vertex& vertex : vertices) {

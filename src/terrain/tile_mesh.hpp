@@ -10,6 +10,7 @@
 #include "geo/ellipsoid.hpp"
 #include "geo/tile_id.hpp"
 #include "terrain/block_grid.hpp"
+#include "terrain/edge_heights.hpp"
 #include "terrain/height_block.hpp"
 
 namespace globe::terrain {
@@ -30,11 +31,20 @@ namespace globe::terrain {
 //          normal. Lit with it where the neighbour across that edge is coarser, a tile's edge
 //          shades like the neighbour's, so no lighting step shows at a level change.
 inline constexpr uint32_t kTileVertexFloats = 13;
-// How far (in vertex spacings) a mesh's edge vertices are drawn past the tile's rectangle, so
-// neighbouring tiles overlap by a hair instead of meeting at a float-rounded seam: far more than
-// float rounding at any distance the selection draws a tile from (≲ 200 spacings: ~1e-5
-// spacing), far less than anything visible.
-inline constexpr double kSeamOverlapFraction = 1e-3;
+// Drawn positions are whole multiples of a power of two per level, vertexQuantumMeters (1 m at
+// level 0, 0.06 mm at level 14), and a mesh's centre of a coarser one, originQuantumMeters (256
+// times that): then the tile's float offsets from its centre are exact (a level-0 tile spans
+// under 2^24 m), and so is the centre's offset from an eye rounded to the origin quantum
+// (terrain/tile_transform.hpp) within 2^24 of those (4.3e9 m / 2^level, beyond the farthest a
+// tile of the level is drawn). Two tiles of one level that share an edge then compute
+// bit-identical positions for its vertices, and the rasteriser closes the seam exactly (no
+// sliver, no overlap).
+inline constexpr double kLevelZeroVertexQuantumMeters = 1.0;
+inline constexpr double kOriginQuantumPerVertexQuantum = 256.0;
+double vertexQuantumMeters(uint32_t level);
+double originQuantumMeters(uint32_t level);
+// `position` rounded to the nearest multiple of `quantumMeters` (a power of two) per axis.
+glm::dvec3 quantizedEcefMeters(const glm::dvec3& position, double quantumMeters);
 inline constexpr uint32_t kTileVertexPositionOffset = 0;
 inline constexpr uint32_t kTileVertexNormalOffset = 3;
 inline constexpr uint32_t kTileVertexHeightOffset = 6;
@@ -65,6 +75,7 @@ struct TileMesh {
   std::vector<float> vertices;       // tileVertexCount(...) · kTileVertexFloats floats
   uint32_t verticesPerSide = 0;
   bool hasSkirts = false;
+  EdgeHeightHashes edgeHeightHashes{};  // of the block (edge_heights.hpp): where a skirt is needed
 
   uint32_t vertexCount() const {
     return static_cast<uint32_t>(vertices.size() / kTileVertexFloats);
@@ -84,10 +95,8 @@ glm::dvec3 tileVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGrid
 glm::dvec3 levelVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGrid& grid, int row,
                                  int column, double heightMeters);
 
-// Where buildTileMesh draws grid vertex (row, column): tileVertexEcefMeters inside the tile; on
-// its edges moved outwards by kSeamOverlapFraction of the latitude spacing (in metres; in
-// longitude at most a quarter cell, near the poles; never past a pole), so that neighbouring
-// meshes overlap by a hair.
+// Where buildTileMesh draws grid vertex (row, column): tileVertexEcefMeters rounded to the
+// tile level's vertexQuantumMeters, so neighbours draw their shared vertices at the same place.
 glm::dvec3 drawnVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGrid& grid,
                                  uint32_t row, uint32_t column, double heightMeters);
 

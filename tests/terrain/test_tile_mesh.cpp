@@ -81,13 +81,6 @@ double tileExtentMeters(const geo::TileId& tile) {
          kWgs84.semiMajorAxisMeters;
 }
 
-// How far a mesh's edge vertices are drawn outside the tile (along the meridian, ~1 % exact).
-double seamOverlapMeters(const geo::TileId& tile) {
-  const BlockGrid grid{tile, kN};
-  const double stepDegrees = std::abs(grid.latitudeDegrees(1) - grid.latitudeDegrees(0));
-  return kSeamOverlapFraction * geo::degreesToRadians(stepDegrees) * kWgs84.semiMajorAxisMeters;
-}
-
 TEST(TileMesh, LayoutAndCounts) {
   const geo::TileId tile{5, 10, 7};
   const TileMesh mesh = buildTileMesh(tile, syntheticBlock(tile), kWgs84, 100.0);
@@ -135,7 +128,7 @@ TEST(TileMesh, PositionsMatchCartographicToEcef) {
   const HeightBlock block = syntheticBlock(tile);
   const TileMesh mesh = buildTileMesh(tile, block, kWgs84, 0.0);
   const BlockGrid grid{tile, kN};
-  // Interior vertices (edge vertices are drawn a hair outside: SeamOverlap below).
+  // Interior vertices (the edges too, but these steps do not reach them).
   for (uint32_t i = 4; i + 1 < kN; i += 4) {
     for (uint32_t j = 4; j + 1 < kN; j += 4) {
       const glm::dvec3 expected = geo::cartographicToEcef(
@@ -146,29 +139,30 @@ TEST(TileMesh, PositionsMatchCartographicToEcef) {
   }
 }
 
-// Edge vertices are drawn a hair outside the tile (neighbours overlap instead of meeting at a
-// float-rounded seam), interior ones exactly; the pole stays on the axis.
-TEST(TileMesh, SeamOverlapMovesOnlyEdgeVerticesOutwards) {
+// Every vertex is drawn at its exact place rounded to the level's quantum (a power of two), so
+// neighbours' shared vertices land on the same point; the pole stays on the axis.
+TEST(TileMesh, DrawnVerticesLieOnTheLevelQuantum) {
   for (const geo::TileId& tile :
-       {geo::TileId{13, 9000, 3000}, geo::TileId{4, 3, 0}, geo::TileId{20, 1048575, 0}}) {
+       {geo::TileId{13, 9000, 3000}, geo::TileId{4, 3, 0}, geo::TileId{20, 1048575, 0},
+        geo::TileId{0, 1, 0}}) {
+    const TileMesh mesh = buildTileMesh(tile, syntheticBlock(tile), kWgs84, 50.0);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_EQ(std::fmod(mesh.centerEcefMeters[c], originQuantumMeters(tile.level)), 0.0);
+    }
     const BlockGrid grid{tile, kN};
-    const double overlap = seamOverlapMeters(tile);
+    const double quantum = vertexQuantumMeters(tile.level);
+    EXPECT_EQ(quantum, std::ldexp(1.0, -static_cast<int>(tile.level)));
     for (uint32_t i = 0; i < kN; ++i) {
       for (uint32_t j = 0; j < kN; ++j) {
         const glm::dvec3 exact = tileVertexEcefMeters(kWgs84, grid, i, j, 100.0);
         const glm::dvec3 drawn = drawnVertexEcefMeters(kWgs84, grid, i, j, 100.0);
-        const bool edge = i == 0 || j == 0 || i == kN - 1 || j == kN - 1;
-        if (!edge) {
-          EXPECT_EQ(drawn, exact);
-          continue;
+        for (int c = 0; c < 3; ++c) {
+          EXPECT_LE(std::abs(drawn[c] - exact[c]), 0.5 * quantum) << i << "," << j;
+          EXPECT_EQ(std::fmod(drawn[c], quantum), 0.0) << i << "," << j;
         }
-        const double moved = glm::length(drawn - exact);
-        const bool pole = std::abs(grid.latitudeDegrees(i)) == 90.0;
-        if (pole) {
-          EXPECT_EQ(drawn, exact) << "the pole stays on the axis";
-        } else {
-          EXPECT_GT(moved, 0.0) << i << "," << j;
-          EXPECT_LE(moved, 1.5 * overlap) << i << "," << j;
+        if (std::abs(grid.latitudeDegrees(i)) == 90.0) {
+          EXPECT_EQ(drawn.x, 0.0) << "the pole stays on the axis";
+          EXPECT_EQ(drawn.y, 0.0) << "the pole stays on the axis";
         }
       }
     }
@@ -314,20 +308,16 @@ TEST(TileMesh, SharedEdgeVerticesCoincideExactlyInDouble) {
           tileVertexEcefMeters(kWgs84, ga, k, kN - 1, a.surfaceHeightMetersAt(k, kN - 1));
       const glm::dvec3 pb = tileVertexEcefMeters(kWgs84, gb, k, 0, b.surfaceHeightMetersAt(k, 0));
       EXPECT_EQ(pa, pb) << "east edge k " << k;
-      // Drawn, the two edges overlap by twice the seam overlap: A's reaches east past B's.
-      const glm::dvec3 eastward = glm::normalize(glm::dvec3(-pa.y, pa.x, 0.0));
-      const double overlapEast = glm::dot(reconstructed(ma, gridVertexIndex(k, kN - 1, kN)) -
-                                              reconstructed(mb, gridVertexIndex(k, 0, kN)),
-                                          eastward);
-      EXPECT_NEAR(overlapEast, 2.0 * seamOverlapMeters(tile), 0.05 * seamOverlapMeters(tile) + 0.02)
+      // Drawn, both put it at the same point, exactly: the mesh's centre plus its float offset.
+      EXPECT_EQ(reconstructed(ma, gridVertexIndex(k, kN - 1, kN)),
+                reconstructed(mb, gridVertexIndex(k, 0, kN)))
           << "east edge k " << k;
       const glm::dvec3 qa =
           tileVertexEcefMeters(kWgs84, ga, kN - 1, k, a.surfaceHeightMetersAt(kN - 1, k));
       const glm::dvec3 qc = tileVertexEcefMeters(kWgs84, gc, 0, k, c.surfaceHeightMetersAt(0, k));
       EXPECT_EQ(qa, qc) << "south edge k " << k;
-      EXPECT_NEAR(glm::length(reconstructed(ma, gridVertexIndex(kN - 1, k, kN)) -
-                              reconstructed(mc, gridVertexIndex(0, k, kN))),
-                  2.0 * seamOverlapMeters(tile), 0.05 * seamOverlapMeters(tile) + 0.02)
+      EXPECT_EQ(reconstructed(ma, gridVertexIndex(kN - 1, k, kN)),
+                reconstructed(mc, gridVertexIndex(0, k, kN)))
           << "south edge k " << k;
       // The along-edge normal component agrees across the edge (it uses shared vertices only).
       const glm::dvec3 alongEdge =
