@@ -111,6 +111,12 @@ void addLayerOptions(CLI::App& command, CommonArguments& arguments) {
       ->type_name("[auto|on|off]");  // checked in applySceneArguments: a bad value exits 2
   command.add_flag("--no-sky", arguments.noSky,
                    "black space instead of the sky, and no distance fog");
+  command
+      .add_option("--samples", arguments.samples,
+                  "anti-aliasing: samples a pixel (1 = off; at most what the GL offers, 8 on "
+                  "llvmpipe): smooth silhouettes, coasts and lines")
+      ->check(CLI::Range(1, 32))
+      ->capture_default_str();
   command.add_option("--time", arguments.time,
                      "light the terrain by the real Sun at this instant, ISO-8601 with its zone "
                      "(2024-06-21T06:30:00Z, 2024-06-21T08:30+02:00): slopes facing the Sun "
@@ -206,6 +212,7 @@ bool applySceneArguments(const char* command, const CommonArguments& arguments,
   scene.imageryLighting = *lighting;
   scene.measuredLod = !arguments.nominalLod;
   scene.sky = !arguments.noSky;
+  scene.samples = arguments.samples;
   if (!arguments.time.empty()) {
     auto time = sun::parseUtcTime(arguments.time);
     if (!time) {

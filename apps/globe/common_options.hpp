@@ -31,6 +31,7 @@ struct CommonArguments {
   std::string lighting = "auto";          // --lighting auto | on | off; bare: on
   bool nominalLod = false;
   bool noSky = false;
+  int samples = scene::kDefaultSamples;  // --samples
   std::string time;  // --time: ISO-8601; empty: the light that follows the camera
   std::string cacheDirectory;
   bool offline = false;

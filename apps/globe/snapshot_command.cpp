@@ -11,6 +11,7 @@
 #include "formats/image_io.hpp"
 #include "render/hud_renderer.hpp"
 #include "render/osmesa_context.hpp"
+#include "render/multisample_target.hpp"
 #include "render/read_pixels.hpp"
 
 namespace globe::app {
@@ -62,6 +63,13 @@ Result<SnapshotReport> runSnapshot(const SnapshotOptions& options) {
   rendererOptions.verticesPerSide = (*scene)->store().manifest().verticesPerSide;
   auto renderer = render::TerrainRenderer::create(rendererOptions);
   if (!renderer) return Error{renderer.error()};
+  std::unique_ptr<render::MultisampleTarget> target;
+  if (options.scene.samples > 1) {
+    auto made = render::MultisampleTarget::create(options.widthPixels, options.heightPixels,
+                                                  options.scene.samples);
+    if (!made) return Error{made.error()};
+    target = std::move(*made);
+  }
   RendererGpu gpu(**renderer, options.scene);
   if (options.imagery) {
     if (auto draped = drapeImagery(**renderer, *options.imagery); !draped)
@@ -70,10 +78,12 @@ Result<SnapshotReport> runSnapshot(const SnapshotOptions& options) {
   auto frame = (*scene)->updateUntilComplete(pose, options.widthPixels, options.heightPixels, gpu,
                                              std::chrono::seconds(options.timeoutSeconds));
   if (!frame) return Error{frame.error()};
+  if (target) target->bind();
   const render::FrameStats stats = gpu.draw(**scene);
   auto labels = OverlayDrawing::create(**scene);
   if (!labels) return Error{labels.error()};
   if (*labels) (*labels)->draw(**scene);
+  if (target) target->resolve();
   if (options.attribution) {
     if (auto block =
             attributionBlock((*scene)->attributions(), options.widthPixels, options.heightPixels)) {

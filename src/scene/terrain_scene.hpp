@@ -35,6 +35,8 @@
 
 namespace globe::scene {
 
+inline constexpr int kDefaultSamples = 1;
+
 struct SceneOptions {
   geo::GlobeModel globeModel = geo::GlobeModel::Wgs84;
   double maximumScreenSpaceErrorPixels = 2.0;
@@ -60,6 +62,8 @@ struct SceneOptions {
   // (ImageryLayers::nominalErrorRegions).
   bool measuredLod = true;
   bool sky = true;  // the sky and distance fog (render/sky_model.hpp); --no-sky: black space
+  // Anti-aliasing: samples a pixel (render/multisample_target.hpp); 1 draws without.
+  int samples = kDefaultSamples;
   // --time: the terrain lit by the real Sun at this instant (seconds since 1970, UTC), the night
   // side dark; unset: a light from the north-west that follows the camera, every place by day.
   std::optional<double> sunTimeUnixSeconds;
