@@ -44,6 +44,13 @@ Result<void> openWindow(ViewSession& s) {
   if (!renderer) return Error{renderer.error()};
   s.renderer = std::move(*renderer);
   s.gpu = std::make_unique<RendererGpu>(*s.renderer, options.scene);
+  if (options.scene.samples > 1) {
+    auto target = render::MultisampleTarget::create(s.window->framebufferWidthPixels(),
+                                                    s.window->framebufferHeightPixels(),
+                                                    options.scene.samples);
+    if (!target) return Error{target.error()};
+    s.multisample = std::move(*target);
+  }
   auto hud = render::HudRenderer::create({});
   if (!hud) return Error{hud.error()};
   s.hud = std::move(*hud);
@@ -181,11 +188,8 @@ Result<void> finishView(ViewSession& s) {
     // The back buffer is undefined after a swap: draw the last frame again and read it back.
     const int width = s.window->framebufferWidthPixels();
     const int height = s.window->framebufferHeightPixels();
-    s.gpu->draw(*s.scene);
-    if (s.labels) {
-      s.labels->draw(*s.scene);
-      s.labels->drawPanel(*s.scene, width, height);
-    }
+    drawWorld(s, width, height);
+    if (s.labels) s.labels->drawPanel(*s.scene, width, height);
     const std::vector<uint8_t> pixels = render::readPixelsRgba(width, height);
     if (auto written = formats::writePngAtomically(*s.options.screenshot, pixels, width, height);
         !written) {

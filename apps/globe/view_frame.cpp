@@ -196,6 +196,22 @@ HudState hudStateOf(ViewSession& s, const scene::FrameInfo& info,
   return hudState;
 }
 
+void drawWorld(ViewSession& s, int width, int height) {
+  if (s.multisample) {
+    if (s.multisample->widthPixels() != width || s.multisample->heightPixels() != height) {
+      if (auto resized = s.multisample->resize(width, height); !resized) {
+        std::fprintf(stderr, "globe view: %s; drawing without anti-aliasing\n",
+                     resized.error().c_str());
+        s.multisample.reset();
+      }
+    }
+  }
+  if (s.multisample) s.multisample->bind();
+  s.gpu->draw(*s.scene);
+  if (s.labels) s.labels->draw(*s.scene);
+  if (s.multisample) s.multisample->resolve();
+}
+
 void drawFrame(ViewSession& s, HudState& hudState, std::vector<std::string> hudKey, bool hudChanged,
                int width, int height) {
   const auto drawStart = ViewClock::now();
@@ -204,11 +220,8 @@ void drawFrame(ViewSession& s, HudState& hudState, std::vector<std::string> hudK
     s.drawnHud = std::move(hudKey);
     s.drawnHelp = s.input.helpVisible;
   }
-  s.gpu->draw(*s.scene);
-  if (s.labels) {
-    s.labels->draw(*s.scene);
-    s.labels->drawPanel(*s.scene, width, height);
-  }
+  drawWorld(s, width, height);
+  if (s.labels) s.labels->drawPanel(*s.scene, width, height);
   // Above the scale bar at the bottom left.
   s.profilePanel->draw(width, height, height >= 600 ? 68.0f : 34.0f);
   s.hud->draw(width, height);

@@ -26,6 +26,7 @@
 #include "overlays/overlay_file.hpp"
 #include "render/glfw_window_context.hpp"
 #include "render/hud_renderer.hpp"
+#include "render/multisample_target.hpp"
 
 namespace globe::app {
 
@@ -45,6 +46,7 @@ struct ViewSession {
   std::unique_ptr<render::TerrainRenderer> renderer;
   std::unique_ptr<RendererGpu> gpu;
   std::unique_ptr<render::HudRenderer> hud;
+  std::unique_ptr<render::MultisampleTarget> multisample;  // --samples > 1: the frame's target
   std::unique_ptr<OverlayDrawing> labels;  // null: no overlay to label
   std::unique_ptr<ProfilePanel> profilePanel;
 
@@ -97,6 +99,9 @@ bool updateRulerAndProfile(ViewSession& s, int width, int height);
 // HUD, a screenshot when asked); the wait for the next event or load.
 HudState hudStateOf(ViewSession& s, const scene::FrameInfo& info,
                     const camera::CollisionState& collision);
+// The terrain and overlays (multisampled with --samples, resolved into the window's buffer, the
+// target following the window's size); then panels and the HUD are drawn sharp over them.
+void drawWorld(ViewSession& s, int width, int height);
 void drawFrame(ViewSession& s, HudState& hudState, std::vector<std::string> hudKey, bool hudChanged,
                int width, int height);
 void waitForEvents(ViewSession& s, bool visible);
