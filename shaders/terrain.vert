@@ -26,6 +26,7 @@ layout(location = 2) in float a_height; // metres: land height, or under water t
 layout(location = 3) in float a_sea;    // 1 = water (land below sea level is land)
 layout(location = 4) in vec2 a_uv;      // tile-local: (0,0) north-west, (1,1) south-east
 layout(location = 5) in vec3 a_coarseNormal;  // on edges: the next coarser level's normal
+layout(location = 6) in float a_sunlight;     // 0..1 of the Sun's disc seen (shadows); else 1
 
 uniform mat4 u_modelView;        // view · translate(the eye on the level's quantum), from double
 uniform vec3 u_tileOrigin;       // tile centre − that eye: exact in float (terrain_renderer.hpp)
@@ -116,7 +117,7 @@ void main() {
   // Sea is lit with the geocentric "up", whether the water surface at 0 m or the sea floor is
   // drawn: water stays flat, and the floor's colour (its depth) shows its relief.
   vec3 up = normalize(u_tileCenterEcef + a_offset);
-  float upLight = u_ambient + (1.0 - u_ambient) * max(dot(up, u_sunDirection), 0.0);
+  float upLight = u_ambient + (1.0 - u_ambient) * max(dot(up, u_sunDirection), 0.0) * a_sunlight;
   // The Sun from 6° below the horizon (night) to 4° above (day): render/sky_model.cpp daylight().
   v_day = u_daylight ? mix(u_daylightBand.x, 1.0,
                            smoothstep(u_daylightBand.y, u_daylightBand.z, dot(up, u_sunDirection)))
@@ -126,7 +127,8 @@ void main() {
   vec4 onEdge = vec4(a_uv.y == 0.0, a_uv.y == 1.0, a_uv.x == 0.0, a_uv.x == 1.0);
   vec3 normal = dot(onEdge, u_coarserEdges) > 0.0 ? a_coarseNormal : a_normal;
   float landLight = u_hillShading
-                        ? u_ambient + (1.0 - u_ambient) * max(dot(normal, u_sunDirection), 0.0)
+                        ? u_ambient + (1.0 - u_ambient) * max(dot(normal, u_sunDirection), 0.0) *
+                                          a_sunlight
                         : upLight;
 #if defined(GLOBE_OPAQUE_BASE)
 #elif defined(GLOBE_IMAGERY)

@@ -117,6 +117,9 @@ void addLayerOptions(CLI::App& command, CommonArguments& arguments) {
                   "llvmpipe): smooth silhouettes, coasts and lines")
       ->check(CLI::Range(1, 32))
       ->capture_default_str();
+  command.add_flag("--no-shadows", arguments.noShadows,
+                   "with --time: no terrain shadows (they are computed on the CPU, ~5 ms a tile "
+                   "at a low Sun)");
   command.add_option("--time", arguments.time,
                      "light the terrain by the real Sun at this instant, ISO-8601 with its zone "
                      "(2024-06-21T06:30:00Z, 2024-06-21T08:30+02:00): slopes facing the Sun "
@@ -213,6 +216,7 @@ bool applySceneArguments(const char* command, const CommonArguments& arguments,
   scene.measuredLod = !arguments.nominalLod;
   scene.sky = !arguments.noSky;
   scene.samples = arguments.samples;
+  scene.shadows = !arguments.noShadows;
   if (!arguments.time.empty()) {
     auto time = sun::parseUtcTime(arguments.time);
     if (!time) {

@@ -32,6 +32,7 @@ struct CommonArguments {
   bool nominalLod = false;
   bool noSky = false;
   int samples = scene::kDefaultSamples;  // --samples
+  bool noShadows = false;                // --no-shadows
   std::string time;  // --time: ISO-8601; empty: the light that follows the camera
   std::string cacheDirectory;
   bool offline = false;

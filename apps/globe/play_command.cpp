@@ -117,7 +117,10 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
     }
   }
   scene::SceneOptions sceneOptions = options.scene;
-  if (options.realTime) sceneOptions.morphFrames = options.morphFrames;
+  if (options.realTime) {
+    sceneOptions.morphFrames = options.morphFrames;
+    sceneOptions.shadowTilesPerFrame = 4;  // as the window does: a frame's time stays bounded
+  }
   auto playback = openScriptedPlayback(options.pyramid, options.pathFile, sceneOptions);
   if (!playback) return Error{playback.error()};
   scene::TerrainScene& scene = *playback->scene;

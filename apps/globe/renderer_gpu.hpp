@@ -21,6 +21,10 @@ class RendererGpu final : public scene::TileGpu {
     return renderer_.uploadTile(tile, mesh);
   }
   bool releaseTile(const geo::TileId& tile) override { return renderer_.evictTile(tile); }
+  Result<void> prepareTileSunlight(const geo::TileId& tile,
+                                   std::span<const float> gridVisibility) override {
+    return renderer_.setTileSunlight(tile, gridVisibility);
+  }
 
   bool hasImageryTile(uint32_t layer, const geo::TileId& tile) const override {
     return renderer_.hasImageryTile(layer, tile);

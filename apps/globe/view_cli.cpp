@@ -69,6 +69,7 @@ int runViewCommand(const ViewArguments& arguments, const CommonArguments& common
   if (remote) options.scene.retryFailedLoadsSeconds = 10;
   // Tiles arrive while the window draws: a finer tile near the camera rises over 8 frames.
   options.scene.morphFrames = 8;
+  options.scene.shadowTilesPerFrame = 4;  // ~5 ms a tile at a low Sun: shadows fill in over frames
   if (auto report = runView(options); !report) {
     std::fprintf(stderr, "globe view: %s\n", report.error().c_str());
     return 1;

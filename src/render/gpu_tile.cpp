@@ -34,6 +34,8 @@ GpuTile uploadGpuTile(const geo::TileId& tile, const terrain::TileMesh& mesh, GL
                               static_cast<float>(rect.heightRadians() / pi));
   gpu.vertexBytes = mesh.vertices.size() * sizeof(float);
   gpu.edgeHeightHashes = mesh.edgeHeightHashes;
+  gpu.verticesPerSide = mesh.verticesPerSide;
+  gpu.hasSkirts = mesh.hasSkirts;
   double radiusSquared = 0.0;
   gpu.allLand = gpu.allWater = !mesh.vertices.empty();
   for (size_t k = terrain::kTileVertexSeaOffset; k < mesh.vertices.size();
@@ -70,6 +72,32 @@ GpuTile uploadGpuTile(const geo::TileId& tile, const terrain::TileMesh& mesh, GL
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   return gpu;
+}
+
+bool setGpuTileSunlight(GpuTile& gpu, std::span<const float> gridVisibility) {
+  const uint32_t n = gpu.verticesPerSide;
+  if (gridVisibility.size() != static_cast<size_t>(n) * n) return false;
+  std::vector<float> values(terrain::tileVertexCount(n, gpu.hasSkirts), 1.0f);
+  std::copy(gridVisibility.begin(), gridVisibility.end(), values.begin());
+  if (gpu.hasSkirts) {
+    for (uint32_t k = 0; k < n; ++k) {
+      const uint32_t last = n - 1;
+      values[terrain::skirtVertexIndex(terrain::TileEdge::North, k, n)] = gridVisibility[k];
+      values[terrain::skirtVertexIndex(terrain::TileEdge::South, k, n)] = gridVisibility[last * n + k];
+      values[terrain::skirtVertexIndex(terrain::TileEdge::West, k, n)] = gridVisibility[k * n];
+      values[terrain::skirtVertexIndex(terrain::TileEdge::East, k, n)] = gridVisibility[k * n + last];
+    }
+  }
+  if (!gpu.sunlightBuffer) gpu.sunlightBuffer = makeGlBuffer();
+  glBindVertexArray(gpu.vertexArray.get());
+  glBindBuffer(GL_ARRAY_BUFFER, gpu.sunlightBuffer.get());
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(values.size() * sizeof(float)),
+               values.data(), GL_STATIC_DRAW);
+  glVertexAttribPointer(kAttributeSunlight, 1, GL_FLOAT, GL_FALSE, sizeof(float), nullptr);
+  glEnableVertexAttribArray(kAttributeSunlight);
+  glBindVertexArray(0);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  return true;
 }
 
 }  // namespace globe::render

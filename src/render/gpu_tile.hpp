@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -21,6 +22,7 @@ inline constexpr GLuint kAttributeHeight = 2;
 inline constexpr GLuint kAttributeSea = 3;
 inline constexpr GLuint kAttributeUv = 4;
 inline constexpr GLuint kAttributeCoarseNormal = 5;
+inline constexpr GLuint kAttributeSunlight = 6;  // 0..1 of the Sun seen (shadows); else 1
 
 struct GpuTile {
   GlObject vertexArray;
@@ -35,9 +37,17 @@ struct GpuTile {
   bool allWater = false;
   uint64_t vertexBytes = 0;
   terrain::EdgeHeightHashes edgeHeightHashes{};  // the mesh's: which skirts a seam needs
+  GlObject sunlightBuffer;  // one float a vertex (setGpuTileSunlight); none: attribute 6 is 1
+  uint32_t verticesPerSide = 0;
+  bool hasSkirts = false;
 };
 
 // Uploads the mesh's vertices (GL_STATIC_DRAW) and binds `indexBuffer` into the vertex array.
 GpuTile uploadGpuTile(const geo::TileId& tile, const terrain::TileMesh& mesh, GLuint indexBuffer);
+
+// Uploads the Sun's visibility at each grid vertex (row-major N×N, collision/sun_visibility.hpp)
+// as attribute kAttributeSunlight, skirt vertices taking their edge vertex's; false when the
+// count is not N².
+bool setGpuTileSunlight(GpuTile& gpu, std::span<const float> gridVisibility);
 
 }  // namespace globe::render

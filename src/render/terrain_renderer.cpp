@@ -434,6 +434,20 @@ bool TerrainRenderer::evictTile(const geo::TileId& tile) {
 
 bool TerrainRenderer::hasTile(const geo::TileId& tile) const { return impl_->tiles.contains(tile); }
 
+Result<void> TerrainRenderer::setTileSunlight(const geo::TileId& tile,
+                                              std::span<const float> gridVisibility) {
+  const auto found = impl_->tiles.find(tile);
+  if (found == impl_->tiles.end()) {
+    return makeError("terrain renderer: " + geo::tileName(tile) + " is not resident");
+  }
+  if (!setGpuTileSunlight(found->second, gridVisibility)) {
+    return makeError("terrain renderer: " + geo::tileName(tile) + ": " +
+                     std::to_string(gridVisibility.size()) + " sunlight values for " +
+                     std::to_string(found->second.verticesPerSide) + "² vertices");
+  }
+  return {};
+}
+
 void TerrainRenderer::evictAllTiles() {
   impl_->tiles.clear();
   impl_->tileBytes = 0;
@@ -634,6 +648,7 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
         current = &program.uniforms;
         const Impl::Uniforms& u = *current;
         glUseProgram(program.program.id());
+        glVertexAttrib1f(kAttributeSunlight, 1.0f);  // tiles without shadows: full sun
         glUniformMatrix4fv(u.projection, 1, GL_FALSE, glm::value_ptr(projection));
         glUniform3fv(u.sunDirection, 1, glm::value_ptr(sun));
         glUniform1f(u.ambient, style.ambient);

@@ -109,6 +109,10 @@ class TerrainRenderer {
   // Frees a tile's GPU buffers; false when it was not resident.
   bool evictTile(const geo::TileId& tile);
   bool hasTile(const geo::TileId& tile) const;
+  // Shadows: the Sun's visibility (0..1) at each grid vertex of a resident tile, row-major
+  // (collision/sun_visibility.hpp), multiplying its sunlight until the tile is uploaded again.
+  // Fails for a tile not resident or a count other than N².
+  Result<void> setTileSunlight(const geo::TileId& tile, std::span<const float> gridVisibility);
   void evictAllTiles();
 
   // A global equirectangular RGBA8 image, rows top-down: column 0 at -180°, row 0 at +90°.

@@ -231,6 +231,7 @@ Result<void> TerrainScene::uploadIfNeeded(const geo::TileId& tile,
   const uint32_t n = store_->manifest().verticesPerSide;
   const auto mesh = terrain::buildTileMesh(
       tile, block, ellipsoid_, terrain::recommendedSkirtDepthMeters(tile.level, n, ellipsoid_));
+  sunlight_.forget(tile);
   return gpu.prepareTile(tile, mesh);
 }
 
@@ -433,11 +434,18 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
       gpuLastUsedFrame_.erase(byAge[k].second);
     }
   }
+  if (options_.sunTimeUnixSeconds && options_.shadows) {
+    const bool settled = requests.empty() && loader_->counters().inFlight == 0 &&
+                         info.morphing == 0 && notOpen.empty();
+    info.shadowsPending = sunlight_.update(array_, ellipsoid_, view_.sunDirectionEcef, gpu,
+                                           options_.shadowTilesPerFrame, settled);
+  }
   info.selection = selection.counters;
   info.tilesSelected = tiles_.size();
   info.requests = requests.size();
   info.arrived += packOpens_.takeFinished();
   info.complete = requests.empty() && info.upsampled == 0 && info.morphing == 0 &&
+                  info.shadowsPending == 0 &&
                   loader_->counters().inFlight == 0 &&
                   notOpen.empty() && packOpens_.pending() == 0 && info.imagery.complete;
   return info;

@@ -21,6 +21,7 @@
 #include "scene/imagery_layers.hpp"
 #include "scene/overlay_points.hpp"
 #include "scene/tile_gpu.hpp"
+#include "scene/tile_sunlight.hpp"
 #include "scene/tile_morphs.hpp"
 #include "streaming/background_pack_opens.hpp"
 #include "streaming/block_cache.hpp"
@@ -79,6 +80,11 @@ struct SceneOptions {
   // 1: drawn at once. For views that draw while tiles arrive (globe view, play --real-time); a
   // complete view (snapshots, playback) waits for its tiles and needs none.
   uint32_t morphFrames = 0;
+  // Shadows under the real Sun (sunTimeUnixSeconds; scene/tile_sunlight.hpp): how many tiles'
+  // shadows a frame computes (0: all, as a complete view wants). Views that draw while moving
+  // take a few a frame, so a frame's time stays bounded.
+  uint32_t shadowTilesPerFrame = 0;
+  bool shadows = true;
   // What pyramids and layers given as http(s) URLs are read through: the program's, made from its
   // flags (transport/network_settings.hpp). Null: local directories only (a URL is an error).
   std::shared_ptr<transport::Network> network;
@@ -97,6 +103,7 @@ struct FrameInfo {
   size_t uploaded = 0;             // meshes built and uploaded this frame
   bool complete = false;           // nothing loadable is missing: the image is final
   size_t morphing = 0;             // tiles drawn on their way from a coarser surface
+  size_t shadowsPending = 0;       // drawn tiles whose shadows are not computed yet
   // Tiles (terrain and imagery) this view wanted whose load or pack failed: drawn coarser there.
   // What a complete view lacks (snapshot and play exit 1 on it unless --allow-missing).
   size_t missingTiles = 0;
@@ -207,6 +214,7 @@ class TerrainScene {
       blocks_;  // keep the array's blocks alive
   terrain::RenderingTileArray array_;
   TileMorphs morphs_;
+  TileSunlight sunlight_;
   // The store's errors said lately, so a failed load that repeats one is not said again.
   std::vector<std::string> reportedSourceErrors_;
   static constexpr size_t kReportedSourceErrorsKept = 256;

@@ -21,6 +21,12 @@ class TileGpu {
   virtual bool hasTile(const geo::TileId& tile) const = 0;
   virtual Result<void> prepareTile(const geo::TileId& tile, const terrain::TileMesh& mesh) = 0;
   virtual bool releaseTile(const geo::TileId& tile) = 0;
+  // Shadows (collision/sun_visibility.hpp) for a prepared tile: N² values, row-major. A GPU
+  // that draws no shadows keeps the default.
+  virtual Result<void> prepareTileSunlight(const geo::TileId& /*tile*/,
+                                           std::span<const float> /*gridVisibility*/) {
+    return {};
+  }
 
   // Imagery textures per layer: RGBA8, straight alpha, rows top-down (north first).
   virtual bool hasImageryTile(uint32_t layer, const geo::TileId& tile) const = 0;

@@ -8,6 +8,7 @@
 
 #include "formats/image_io.hpp"
 #include "tests/apps/globe/run_globe.hpp"
+#include "tests/support/imagery_test_layers.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 
 namespace globe::app {
@@ -25,10 +26,12 @@ struct Halves {
 };
 
 // Mean luminance (0..255) of the left and right halves of the central disc (the cone).
-Halves snapshotHalves(const std::string& time, const fs::path& dir) {
-  const fs::path out = dir / ("fuji-" + std::to_string(std::hash<std::string>{}(time)) + ".png");
+Halves snapshotHalves(const std::string& time, const fs::path& dir,
+                      const std::string& extra = "") {
+  const fs::path out =
+      dir / ("fuji-" + std::to_string(std::hash<std::string>{}(time + extra)) + ".png");
   const auto run = runGlobe("snapshot " + globe::testing::bundledPyramid().string() + kOverFuji +
-                            "--no-sky --time " + time + " -o " + out.string());
+                            "--no-sky --time " + time + " " + extra + " -o " + out.string());
   EXPECT_EQ(run.exitCode, 0) << run.output;
   auto image = formats::loadImageRgba(out);
   EXPECT_TRUE(image) << (image ? "" : image.error());
@@ -69,6 +72,41 @@ TEST(SunLight, NightIsDarkAndMorningAndEveningLightOppositeSlopes) {
   EXPECT_GT(evening.west, 1.3 * evening.east) << "the evening Sun lights the west slopes";
   EXPECT_LT(night.mean(), 0.15 * noon.mean()) << "the night side is dark";
   EXPECT_GT(night.mean(), 0.0) << "but not nothing: the night's floor";
+}
+
+// Mean luminance (0..255) of a 200×200 view straight down on Zion Canyon from 12 km.
+double zionLuminance(const std::string& time, const std::string& extra, const fs::path& dir) {
+  const fs::path out =
+      dir / ("zion-" + std::to_string(std::hash<std::string>{}(time + extra)) + ".png");
+  const auto run = runGlobe("snapshot " + globe::testing::zionPyramid().string() +
+                            " --camera -112.95,37.25,12000,0,-90,0 --size 200x200 --no-sky --time " +
+                            time + " " + extra + " -o " + out.string());
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  auto image = formats::loadImageRgba(out);
+  EXPECT_TRUE(image) << (image ? "" : image.error());
+  if (!image) return 0.0;
+  double sum = 0.0;
+  for (size_t i = 0; i + 3 < image->pixels.size(); i += 4) {
+    sum += 0.2126 * image->pixels[i] + 0.7152 * image->pixels[i + 1] +
+           0.0722 * image->pixels[i + 2];
+  }
+  return sum / static_cast<double>(image->pixels.size() / 4);
+}
+
+// Shadows (collision/sun_visibility.hpp): the evening Sun (15° up in the west-north-west) leaves
+// Zion's canyon floors and east-facing ledges under its west walls in shadow, darker than the
+// same view without them; the Sun 70° up at noon casts almost none.
+TEST(SunLight, ShadowsDarkenTheCanyonAtALowSunAndHardlyAtNoon) {
+  const fs::path dir = globe::testing::freshTempDir("sun-shadows");
+  const double low = zionLuminance("2024-06-21T19:30-06:00", "", dir);
+  const double lowFlat = zionLuminance("2024-06-21T19:30-06:00", "--no-shadows", dir);
+  const double noon = zionLuminance("2024-06-21T12:30-06:00", "", dir);
+  const double noonFlat = zionLuminance("2024-06-21T12:30-06:00", "--no-shadows", dir);
+  std::printf("Zion mean luminance, shadows/none: 19:30 %.1f/%.1f, 12:30 %.1f/%.1f\n", low,
+              lowFlat, noon, noonFlat);
+  EXPECT_LT(low, 0.95 * lowFlat) << "the low Sun's shadows";
+  EXPECT_GT(noon, 0.99 * noonFlat) << "hardly a shadow at noon";
+  EXPECT_LE(noon, noonFlat) << "a shadow never brightens";
 }
 
 // A path's keyframe "time"s move the Sun through the flight: dawn over Fuji in 2 s of path.
