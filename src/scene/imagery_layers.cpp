@@ -278,6 +278,10 @@ Result<ImageryFrame> ImageryLayers::update(std::span<const geo::TileId> tiles,
         wanted.push_back({target, priority(i)});
       }
       if (!found) continue;
+      // An overlay's own tile (lines and polygons the program rasterises) drawn from a coarser
+      // one would show its lines 2^k times as wide, a line's colour flooding the ground until the
+      // tile is made: nothing is draped there until then.
+      if (drawn != want && layer.store->emptyWhereAbsent()) continue;
       if (drawn != want) ++frame.fallbacks;
       layer.textureLastUsedFrame[drawn] = frame_;
       terrain::TileDrapes& tileDrapes = drapes[i];

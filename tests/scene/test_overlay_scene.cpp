@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <memory>
 
 #include <glm/geometric.hpp>
@@ -142,6 +143,51 @@ TEST(OverlayScene, TheDrapedLayerGoesOnTopAndIsReplacedByOtherFiles) {
   ASSERT_TRUE(scene.updateUntilComplete(pose, 640, 360, open->gpu, std::chrono::seconds(120)));
   EXPECT_EQ(drapedOn(0), 0u);
   EXPECT_TRUE(scene.pointMarks().empty());
+}
+
+// A file opened over a complete view (the window's O): while its tiles are made, the ground never
+// takes a coarser overlay tile's texels (a line 2^k times as wide, flooding the ground with its
+// colour); each terrain tile drapes its own overlay tile or none, the one the final frame drapes.
+TEST(OverlayScene, AnOpenedFileNeverDrapesACoarserTilesLines) {
+  const auto pose = camera::CameraPose::fromDegrees(138.73, 35.36, 20000, 0, -90, 0);
+  auto open = sceneWith(nullptr, pose);
+  ASSERT_TRUE(open);
+  TerrainScene& scene = *open->scene;
+  auto document = std::make_shared<overlays::OverlayDocument>();
+  document->placemarks = {placemarkAt("trail", GeometryKind::LineString,
+                                      AltitudeMode::ClampToGround,
+                                      {{138.70, 35.36, 0}, {138.76, 35.37, 0}})};
+  ASSERT_TRUE(scene.setOverlays({document}, open->gpu));
+  ASSERT_TRUE(scene.overlayLayer());
+  const uint32_t layer = *scene.overlayLayer();
+  using Mapping = std::map<geo::TileId, geo::TileId>;  // terrain tile → overlay tile draped
+  auto mapping = [&] {
+    Mapping drawn;
+    for (size_t i = 0; i < scene.tiles().size() && i < scene.drapes().size(); ++i) {
+      const terrain::TileDrapes& drapes = scene.drapes()[i];
+      for (uint32_t k = 0; k < drapes.count; ++k) {
+        if (drapes.layers[k].layer == layer) drawn[scene.tiles()[i]] = drapes.layers[k].imageryTile;
+      }
+    }
+    return drawn;
+  };
+  std::vector<Mapping> frames;
+  for (int f = 0; f < 200; ++f) {
+    const FrameInfo info = scene.update(pose, 640, 360, open->gpu);
+    frames.push_back(mapping());
+    if (info.complete) break;
+    scene.waitForLoads(std::chrono::milliseconds(50));
+  }
+  const Mapping final = mapping();
+  ASSERT_FALSE(final.empty()) << "the line is draped";
+  for (size_t f = 0; f < frames.size(); ++f) {
+    for (const auto& [tile, drawn] : frames[f]) {
+      const auto last = final.find(tile);
+      ASSERT_NE(last, final.end()) << "frame " << f << ": " << geo::tileName(tile);
+      EXPECT_EQ(drawn, last->second) << "frame " << f << ": " << geo::tileName(tile) << " drapes "
+                                     << geo::tileName(drawn);
+    }
+  }
 }
 
 TEST(OverlayScene, ShapesAtAnAltitudeStandAtTheirHeights) {
