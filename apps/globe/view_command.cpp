@@ -250,7 +250,11 @@ Result<ViewReport> runView(const ViewOptions& options) {
       std::printf("view size %dx%d\n", width, height);
     }
     const bool visible = width > 0 && height > 0;  // not minimised
-    if (visible && (s.input.changed || s.loading || s.continuous())) runFrame(s, width, height);
+    const bool messageDue = !s.shownMessage.empty() &&
+                            ViewClock::now() - s.shownMessageAt >= ViewSession::kMessageLifetime;
+    if (visible && (s.input.changed || s.loading || s.continuous() || messageDue)) {
+      runFrame(s, width, height);
+    }
     if (s.continuous() && s.report.framesDrawn >= options.frames) break;
     waitForEvents(s, visible);
   }

@@ -171,6 +171,7 @@ HudState hudStateOf(ViewSession& s, const scene::FrameInfo& info,
   hudState.keyframes = s.recorder.keyframes().size();
   hudState.flyingTo = navigator.flyingTo();
   promptState(s, hudState);
+  expireMessage(s, ViewClock::now());
   hudState.message = s.input.promptMessage;
   if (s.ruler.active()) hudState.ruler = rulerHudLine(s.ruler);
   hudState.warning = s.recentWarning->shown();
@@ -246,6 +247,21 @@ void drawFrame(ViewSession& s, HudState& hudState, std::vector<std::string> hudK
   }
 }
 
+void expireMessage(ViewSession& s, ViewClock::time_point now) {
+  if (s.input.promptMessage != s.shownMessage) {
+    s.shownMessage = s.input.promptMessage;
+    s.shownMessageAt = now;
+    return;
+  }
+  if (s.shownMessage.empty() || now - s.shownMessageAt < ViewSession::kMessageLifetime) return;
+  if (s.options.log) {
+    std::printf("message expired: %s\n", s.shownMessage.c_str());
+    std::fflush(stdout);
+  }
+  s.input.promptMessage.clear();
+  s.shownMessage.clear();
+}
+
 void waitForEvents(ViewSession& s, bool visible) {
   if (s.continuous() || (visible && s.input.changed)) {
     glfwPollEvents();
@@ -264,7 +280,12 @@ void waitForEvents(ViewSession& s, bool visible) {
       std::fflush(stdout);
       s.saidIdle = true;
     }
-    glfwWaitEvents();  // idle (or minimised): nothing moves until an event arrives
+    if (s.shownMessage.empty()) {
+      glfwWaitEvents();  // idle (or minimised): nothing moves until an event arrives
+    } else {  // a message to take down when its time is up
+      const auto left = ViewSession::kMessageLifetime - (ViewClock::now() - s.shownMessageAt);
+      glfwWaitEventsTimeout(std::max(0.01, std::chrono::duration<double>(left).count()));
+    }
   }
 }
 

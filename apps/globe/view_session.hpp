@@ -75,6 +75,11 @@ struct ViewSession {
   bool loading = true, wasComplete = false, tilesChanged = false;
   bool saidIdle = false;  // --log: the last state said was "view idle" (else "view busy")
   std::pair<int, int> saidSize{0, 0};
+  // The HUD's one-line message (input.promptMessage) and since when it shows: it goes after
+  // kMessageLifetime (expireMessage), the window waking for it.
+  std::string shownMessage;
+  ViewClock::time_point shownMessageAt;
+  static constexpr std::chrono::seconds kMessageLifetime{5};
 
   bool continuous() const { return options.frames > 0; }
   double secondsAt(ViewClock::time_point t) const {
@@ -105,6 +110,8 @@ void drawWorld(ViewSession& s, int width, int height);
 void drawFrame(ViewSession& s, HudState& hudState, std::vector<std::string> hudKey, bool hudChanged,
                int width, int height);
 void waitForEvents(ViewSession& s, bool visible);
+// A message shown kMessageLifetime ago is cleared (said on --log); a new one starts its time.
+void expireMessage(ViewSession& s, ViewClock::time_point now);
 void writeRecordedPath(const std::filesystem::path& directory,
                        const std::vector<PathKeyframe>& keyframes);
 std::string formatPose(const camera::CameraPose& pose);

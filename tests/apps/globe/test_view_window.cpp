@@ -543,6 +543,28 @@ TEST(GlobeViewWindow, VSavesTheViewByNameAndItComesBack) {
   EXPECT_NE(missing.output.find("Fuji south"), std::string::npos) << missing.output;
 }
 
+// A message in the HUD ("saved view …") goes by itself after 5 s, the idle window waking for it.
+TEST(GlobeViewWindow, AMessageGoesAfterFiveSeconds) {
+  SKIP_WITHOUT("xvfb-run");
+  SKIP_WITHOUT("xdotool");
+  const auto dir = globe::testing::freshTempDir("view-message");
+  const ShellRun run = runUnderXvfb(
+      "view-message",
+      "export XDG_CONFIG_HOME=" + (dir / "config").string() + "\n" +
+          globeView("--size 320x180 --log --camera 138.60,35.20,15000,30,-40,0 > log.txt &\n") +
+          "VIEW=$!\n" + kFindWindow +
+          "send key --window $WID v\n"
+          "send type --window $WID --delay 30 'Fuji'\n"
+          "send key --window $WID Return\n"
+          "waitfor '^message expired: saved view'\n"
+          "xdotool keydown --window $WID Escape\n"
+          "wait $VIEW; echo exit=$?\n"
+          "cat log.txt\n");
+  EXPECT_EQ(valuesOf(run.output)["exit"], "0") << run.output;
+  EXPECT_NE(run.output.find("message expired: saved view \"Fuji\""), std::string::npos)
+      << run.output;
+}
+
 // A server failing shows in the window, not only on stderr: with one level's packs answered
 // HTTP 500 the HUD says what the server said ("! URL: HTTP 500; drawing coarser tiles there"),
 // a line more of text than the same view from a healthy server (60 rows against 51).
