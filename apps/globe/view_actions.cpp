@@ -75,15 +75,26 @@ bool openPrompt(ViewInput& input, bool savesView, bool opensFile) {
   return true;
 }
 
-bool toggleLayer(ImageryControls& imagery, uint32_t layer) {
-  if (layer >= imagery.layerCount) return false;
+// A key for a layer that is not there says so in the HUD instead of doing nothing.
+bool toggleLayer(ViewInput& input, uint32_t layer) {
+  ImageryControls& imagery = input.imagery;
+  if (layer >= imagery.layerCount) {
+    input.promptMessage = "no layer " + std::to_string(layer + 1) + ": " +
+                          std::to_string(imagery.layerCount) + " layer" +
+                          (imagery.layerCount == 1 ? "" : "s") + " given (--layer)";
+    return true;
+  }
   imagery.shown[layer] = !imagery.shown[layer];
   imagery.selected = layer;
   return true;
 }
 
-bool stepOpacity(ImageryControls& imagery, float step) {
-  if (imagery.layerCount == 0) return false;
+bool stepOpacity(ViewInput& input, float step) {
+  ImageryControls& imagery = input.imagery;
+  if (imagery.layerCount == 0) {
+    input.promptMessage = "no layer to fade: none given (--layer)";
+    return true;
+  }
   float& opacity = imagery.opacity[imagery.selected];
   // On the steps' grid, so ten presses go from 0 to 1 exactly.
   opacity = std::clamp(std::round((opacity + step) / kOpacityStep) * kOpacityStep, 0.0f, 1.0f);
@@ -143,18 +154,18 @@ constexpr ActionInfo kActions[] = {
        return i.imagery.lighting = terrain::nextImageryLighting(i.imagery.lighting), true;
      }},
     {A::ToggleLayer1, "toggle-layer-1", "1 - 4", "show / hide layer 1-4 (and select it for [ ])",
-     "layers", 4, [](ViewInput& i, ViewWindow&) { return toggleLayer(i.imagery, 0); }},
+     "layers", 4, [](ViewInput& i, ViewWindow&) { return toggleLayer(i, 0); }},
     {A::ToggleLayer2, "toggle-layer-2", "2", "", "", 4,
-     [](ViewInput& i, ViewWindow&) { return toggleLayer(i.imagery, 1); }},
+     [](ViewInput& i, ViewWindow&) { return toggleLayer(i, 1); }},
     {A::ToggleLayer3, "toggle-layer-3", "3", "", "", 4,
-     [](ViewInput& i, ViewWindow&) { return toggleLayer(i.imagery, 2); }},
+     [](ViewInput& i, ViewWindow&) { return toggleLayer(i, 2); }},
     {A::ToggleLayer4, "toggle-layer-4", "4", "", "", 4,
-     [](ViewInput& i, ViewWindow&) { return toggleLayer(i.imagery, 3); }},
+     [](ViewInput& i, ViewWindow&) { return toggleLayer(i, 3); }},
     {A::LayerOpacityDown, "layer-opacity-down", "[ / ]", "the selected layer's opacity -/+ 10%",
      "opacity -/+", 4,
-     [](ViewInput& i, ViewWindow&) { return stepOpacity(i.imagery, -kOpacityStep); }},
+     [](ViewInput& i, ViewWindow&) { return stepOpacity(i, -kOpacityStep); }},
     {A::LayerOpacityUp, "layer-opacity-up", "]", "", "", 4,
-     [](ViewInput& i, ViewWindow&) { return stepOpacity(i.imagery, kOpacityStep); }},
+     [](ViewInput& i, ViewWindow&) { return stepOpacity(i, kOpacityStep); }},
     {A::PanUp, "pan-up", "arrows", "pan", "pan", 0,
      [](ViewInput& i, ViewWindow&) { return nav(i).panByKey(0, kPanPixelsPerKey), true; }},
     {A::PanDown, "pan-down", "Down", "", "", 0,

@@ -119,15 +119,21 @@ TEST(ViewActions, PromptsOpenForGoToSaveAndOpen) {
   }
 }
 
-TEST(ViewActions, LayerKeysActOnlyOnLayersThatExist) {
+TEST(ViewActions, LayerKeysActOnlyOnLayersThatExistAndSaySoOtherwise) {
   Keys k;
-  EXPECT_FALSE(k.press(GLFW_KEY_1));  // no layer: nothing happens, the key is not taken
-  EXPECT_FALSE(k.press(GLFW_KEY_RIGHT_BRACKET));
+  // No layer: nothing changes but the HUD's message, which says why.
+  EXPECT_TRUE(k.press(GLFW_KEY_1));
+  EXPECT_EQ(k.input.promptMessage, "no layer 1: 0 layers given (--layer)");
+  EXPECT_TRUE(k.press(GLFW_KEY_RIGHT_BRACKET));
+  EXPECT_EQ(k.input.promptMessage, "no layer to fade: none given (--layer)");
+  EXPECT_EQ(k.input.imagery.opacity[0], 1.0f);
   k.input.imagery.layerCount = 3;
   EXPECT_TRUE(k.press(GLFW_KEY_2));
   EXPECT_FALSE(k.input.imagery.shown[1]);
   EXPECT_EQ(k.input.imagery.selected, 1u);
-  EXPECT_FALSE(k.press(GLFW_KEY_4));  // three layers
+  EXPECT_TRUE(k.press(GLFW_KEY_4));  // three layers
+  EXPECT_EQ(k.input.promptMessage, "no layer 4: 3 layers given (--layer)");
+  EXPECT_EQ(k.input.imagery.selected, 1u) << "the selection stays";
   for (int i = 0; i < 4; ++i) EXPECT_TRUE(k.press(GLFW_KEY_LEFT_BRACKET, /*repeat=*/i > 0));
   EXPECT_FLOAT_EQ(k.input.imagery.opacity[1], 0.6f);
   for (int i = 0; i < 12; ++i) EXPECT_TRUE(k.press(GLFW_KEY_RIGHT_BRACKET, /*repeat=*/true));
