@@ -110,7 +110,7 @@ std::optional<overlays::PlacemarkRef> OverlayDrawing::pick(
 }
 
 void OverlayDrawing::drawPanel(const scene::TerrainScene& scene, int widthPixels,
-                               int heightPixels) {
+                               int heightPixels, PlacemarkPanelPlace place) {
   if (!selected_) return;
   const overlays::Placemark& placemark = placemarkOf(scene, *selected_);
   std::vector<std::string> paragraphs{placemark.name.empty() ? "(no name)" : placemark.name};
@@ -121,9 +121,11 @@ void OverlayDrawing::drawPanel(const scene::TerrainScene& scene, int widthPixels
     if (end > start) paragraphs.push_back(text.substr(start, end - start));
     start = end + 1;
   }
-  const float maxWidth = std::min(420.0f, 0.4f * static_cast<float>(widthPixels));
+  const float maxWidth =
+      std::min({place.maxWidthPixels, 420.0f, 0.4f * static_cast<float>(widthPixels)});
   const glm::vec2 size = renderer_->textPanelSizePixels(paragraphs, maxWidth);
-  renderer_->drawTextPanel(paragraphs, {static_cast<float>(widthPixels) - size.x - 12.0f, 12.0f},
+  renderer_->drawTextPanel(paragraphs,
+                           {static_cast<float>(widthPixels) - size.x - 12.0f, place.topPixels},
                            maxWidth, {widthPixels, heightPixels});
 }
 

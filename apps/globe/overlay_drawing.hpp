@@ -20,6 +20,12 @@
 
 namespace globe::app {
 
+// The placemark panel's top edge and its widest (at the window's right edge).
+struct PlacemarkPanelPlace {
+  float topPixels = 12.0f;
+  float maxWidthPixels = 420.0f;
+};
+
 class OverlayDrawing {
  public:
   // Needs the GL context current; nullptr when the scene has no overlays.
@@ -37,7 +43,9 @@ class OverlayDrawing {
   void select(std::optional<overlays::PlacemarkRef> placemark) { selected_ = placemark; }
   std::optional<overlays::PlacemarkRef> selected() const { return selected_; }
   // The selected placemark's name and description (HTML reduced to text), drawn at the top right.
-  void drawPanel(const scene::TerrainScene& scene, int widthPixels, int heightPixels);
+  // place: the view's HUD layout (placemarkPanelPlace).
+  void drawPanel(const scene::TerrainScene& scene, int widthPixels, int heightPixels,
+                 PlacemarkPanelPlace place = {});
 
   size_t labelsShown() const { return placed_.size(); }
 

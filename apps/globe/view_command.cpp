@@ -189,7 +189,7 @@ Result<void> finishView(ViewSession& s) {
     const int width = s.window->framebufferWidthPixels();
     const int height = s.window->framebufferHeightPixels();
     drawWorld(s, width, height);
-    if (s.labels) s.labels->drawPanel(*s.scene, width, height);
+    if (s.labels) s.labels->drawPanel(*s.scene, width, height, s.panelPlace);
     const std::vector<uint8_t> pixels = render::readPixelsRgba(width, height);
     if (auto written = formats::writePngAtomically(*s.options.screenshot, pixels, width, height);
         !written) {

@@ -56,6 +56,8 @@ void writeScreenshot(const std::filesystem::path& directory, int width, int heig
   std::fflush(stdout);
 }
 
+}  // namespace
+
 // The HUD, in framebuffer pixels: the status block at the top left and, when shown, the help
 // under it, the compass rose at the top right and the scale bar at the bottom left; larger on
 // tall windows. compassBox gets the rose's bounding box (a click there turns north up).
@@ -66,7 +68,7 @@ std::vector<render::HudItem> hudItems(std::vector<std::string> status, bool help
   std::vector<render::HudItem> items;
   render::HudTextBlock statusBlock;
   statusBlock.lines = std::move(status);
-  statusBlock.scale = heightPixels >= 600 ? 2.0f : 1.0f;
+  statusBlock.scale = hudScale(widthPixels, heightPixels);
   const float scale = statusBlock.scale;
   if (help) {
     render::HudTextBlock helpBlock;
@@ -93,6 +95,31 @@ std::vector<render::HudItem> hudItems(std::vector<std::string> status, bool help
   }
   return items;
 }
+
+PlacemarkPanelPlace placemarkPanelPlace(const std::vector<render::HudItem>& items,
+                                               size_t textBlocks,
+                                               const std::pair<glm::dvec2, glm::dvec2>& compassBox,
+                                               int widthPixels) {
+  float right = 0.0f, bottom = 0.0f;
+  for (size_t k = 0; k < std::min(textBlocks, items.size()); ++k) {
+    if (const auto* block = std::get_if<render::HudTextBlock>(&items[k])) {
+      const glm::vec2 corner = block->topLeftPixels + render::hudBlockSizePixels(*block);
+      right = std::max(right, corner.x);
+      bottom = std::max(bottom, corner.y);
+    }
+  }
+  PlacemarkPanelPlace place;
+  place.topPixels = static_cast<float>(compassBox.second.y) + 8.0f;
+  const float beside = static_cast<float>(widthPixels) - 12.0f - (right + 8.0f);
+  if (beside >= kMinimumPanelWidth) {
+    place.maxWidthPixels = beside;
+  } else {
+    place.topPixels = std::max(place.topPixels, bottom + 8.0f);
+  }
+  return place;
+}
+
+namespace {
 
 // The go-to box's text and, for a place, the gazetteer's suggestions (searched again only when
 // the text changes).
@@ -128,6 +155,7 @@ void setHudItems(ViewSession& s, HudState& hudState, int width, int height) {
       hudItems(hudStatusLines(hudState), s.input.helpVisible, s.controller->pose().headingRadians,
                hudState.metersPerPixel * toWindow, width, height, compassBox);
   if (auto block = attributionBlock(s.attributions, width, height)) items.push_back(*block);
+  s.panelPlace = placemarkPanelPlace(items, s.input.helpVisible ? 2 : 1, compassBox, width);
   s.input.compassTopLeft = compassBox.first * toWindow;
   s.input.compassBottomRight = compassBox.second * toWindow;
   s.hud->setItems(items);
@@ -222,9 +250,9 @@ void drawFrame(ViewSession& s, HudState& hudState, std::vector<std::string> hudK
     s.drawnHelp = s.input.helpVisible;
   }
   drawWorld(s, width, height);
-  if (s.labels) s.labels->drawPanel(*s.scene, width, height);
+  if (s.labels) s.labels->drawPanel(*s.scene, width, height, s.panelPlace);
   // Above the scale bar at the bottom left.
-  s.profilePanel->draw(width, height, height >= 600 ? 68.0f : 34.0f);
+  s.profilePanel->draw(width, height, 34.0f * hudScale(width, height));
   s.hud->draw(width, height);
   if (s.input.screenshotRequested) {
     s.input.screenshotRequested = false;

@@ -77,6 +77,7 @@ struct ViewSession {
   std::pair<int, int> saidSize{0, 0};
   // The HUD's one-line message (input.promptMessage) and since when it shows: it goes after
   // kMessageLifetime (expireMessage), the window waking for it.
+  PlacemarkPanelPlace panelPlace;  // the placemark panel's (placemarkPanelPlace)
   std::string shownMessage;
   ViewClock::time_point shownMessageAt;
   static constexpr std::chrono::seconds kMessageLifetime{5};
@@ -99,6 +100,28 @@ Result<std::unique_ptr<ViewSession>> openViewSession(const ViewOptions& options)
 void takeRequests(ViewSession& s, ViewClock::time_point now);
 void takeClick(ViewSession& s, int width);
 bool updateRulerAndProfile(ViewSession& s, int width, int height);
+
+// The HUD's items in framebuffer pixels (view_frame.cpp): the status block at the top left, the
+// help under it when shown, the compass rose at the top right (its box into compassBox) and the
+// scale bar at the bottom left.
+std::vector<render::HudItem> hudItems(std::vector<std::string> status, bool help,
+                                      double headingRadians, double metersPerPixel, int widthPixels,
+                                      int heightPixels,
+                                      std::pair<glm::dvec2, glm::dvec2>& compassBox);
+
+// The HUD's text and widgets twice the size on large windows (a 70-character status line at 2×
+// needs ~900 pixels besides the compass rose).
+inline float hudScale(int widthPixels, int heightPixels) {
+  return heightPixels >= 600 && widthPixels >= 1200 ? 2.0f : 1.0f;
+}
+
+// Where the placemark panel goes: at the right edge under the rose, beside the text blocks (the
+// first `textBlocks` items) when at least kMinimumPanelWidth is left there, else under them too.
+inline constexpr float kMinimumPanelWidth = 200.0f;
+PlacemarkPanelPlace placemarkPanelPlace(const std::vector<render::HudItem>& items,
+                                               size_t textBlocks,
+                                               const std::pair<glm::dvec2, glm::dvec2>& compassBox,
+                                               int widthPixels);
 
 // view_frame.cpp: the HUD's state for this frame; the frame drawn (terrain, overlays, panels,
 // HUD, a screenshot when asked); the wait for the next event or load.
