@@ -2,6 +2,7 @@
 #include "apps/globe/hud_text.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 
 #include "collision/collision_response.hpp"
@@ -127,6 +128,15 @@ std::optional<ScaleBarLength> scaleBarLength(double metersPerPixel, double maxim
                             : meters >= 1  ? format("%.0f m", meters)
                                            : format("%g m", meters);
   return ScaleBarLength{meters / metersPerPixel, label};
+}
+
+std::string terrainDataText(const formats::PyramidManifest& manifest, double longitudeDegrees,
+                            double latitudeDegrees) {
+  const formats::SourceInfo* source =
+      formats::finestSourceAt(manifest, longitudeDegrees, latitudeDegrees);
+  if (source == nullptr) return "";
+  return std::filesystem::path(source->path).filename().string() + ", " +
+         spacingText(source->stepDegrees);
 }
 
 }  // namespace globe::app

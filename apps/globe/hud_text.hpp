@@ -11,6 +11,7 @@
 #include "camera/camera_controller.hpp"
 #include "camera/camera_pose.hpp"
 #include "camera/navigator.hpp"
+#include "formats/pyramid_manifest.hpp"
 #include "geo/cartographic.hpp"
 #include "terrain/relief_shading.hpp"
 
@@ -57,6 +58,10 @@ struct HudState {
 // A source's sample spacing as people say it, with its length along a meridian, in the HUD's
 // ASCII: "20' (~37 km)", "3\" (~93 m)", "2 deg (~222 km)".
 std::string spacingText(double stepDegrees);
+// "ETOPO20.DEM, 20' (~37 km)": the finest source of the pyramid at (lon, lat) and its spacing;
+// empty where the manifest names none (a terrain service, or outside every source).
+std::string terrainDataText(const formats::PyramidManifest& manifest, double longitudeDegrees,
+                            double latitudeDegrees);
 
 // "lighting auto  layers >1 on 100%  2 off 40%" (> marks the layer [ and ] change); empty
 // without layers.

@@ -23,6 +23,7 @@ struct SnapshotArguments {
   uint32_t maxLoadLevel = geo::kMaxLevel;
   bool noAttribution = false;
   bool allowMissing = false;
+  bool verbose = false;
   int timeoutSeconds = SnapshotOptions{}.timeoutSeconds;
   std::string goTo;
   std::string view;
@@ -89,6 +90,11 @@ int runSnapshotCommand(const SnapshotArguments& arguments, const CommonArguments
               arguments.output.c_str(), report->tilesDrawn,
               static_cast<unsigned long long>(report->triangles),
               static_cast<unsigned long long>(report->tileLoads), report->seconds);
+  if (arguments.verbose) {
+    std::printf("terrain under the camera: %s\n",
+                report->terrainData.empty() ? "not known (the source names no files)"
+                                            : report->terrainData.c_str());
+  }
   if (report->failures > 0 && !arguments.allowMissing) {
     std::fprintf(stderr,
                  "globe snapshot: %llu tile(s) the view wanted failed to load (see above): %s "
@@ -130,6 +136,8 @@ Subcommand addSnapshotCommand(CLI::App& app, CommonArguments& common) {
   snapshot->add_flag("--allow-missing", arguments->allowMissing,
                      "exit 0 even when tiles failed to load (drawn coarser there; each is named "
                      "on stderr): by default such an image is written but the exit status is 1");
+  snapshot->add_flag("-v,--verbose", arguments->verbose,
+                     "also say what the terrain under the camera was made from (file, spacing)");
   snapshot->add_option("--timeout", arguments->timeoutSeconds,
                        "the longest to wait for the view's tiles, in seconds: past it nothing is "
                        "written and the exit status is 1")

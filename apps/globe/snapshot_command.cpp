@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "apps/globe/attribution_stamp.hpp"
+#include "apps/globe/hud_text.hpp"
 #include "apps/globe/imagery.hpp"
 #include "apps/globe/overlay_drawing.hpp"
 #include "apps/globe/renderer_gpu.hpp"
@@ -107,6 +108,9 @@ Result<SnapshotReport> runSnapshot(const SnapshotOptions& options) {
   report.triangles = stats.triangles;
   report.tileLoads = (*scene)->loader().counters().completed;
   report.failures = frame->missingTiles;
+  report.terrainData = terrainDataText((*scene)->store().manifest(),
+                                       pose.position.longitudeDegrees(),
+                                       pose.position.latitudeDegrees());
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }

@@ -30,6 +30,8 @@ struct SnapshotReport {
   // Tiles the view wanted whose load or pack failed (each named once on the warnings): the
   // image, written all the same, draws coarser ground or imagery there.
   uint64_t failures = 0;
+  // What the terrain under the camera was made from ("ETOPO20.DEM, 20' (~37 km)"; empty: unknown).
+  std::string terrainData;
   double seconds = 0;
 };
 

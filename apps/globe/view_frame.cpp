@@ -213,11 +213,8 @@ HudState hudStateOf(ViewSession& s, const scene::FrameInfo& info,
   hudState.lighting = s.input.imagery.lighting;
   hudState.sunUnixSeconds = s.input.sunUnixSeconds;
   const geo::Cartographic& at = hudState.pose.position;
-  if (const formats::SourceInfo* source = formats::finestSourceAt(
-          s.scene->store().manifest(), at.longitudeDegrees(), at.latitudeDegrees())) {
-    hudState.terrainData =
-        std::filesystem::path(source->path).filename().string() + ", " + spacingText(source->stepDegrees);
-  }
+  hudState.terrainData = terrainDataText(s.scene->store().manifest(), at.longitudeDegrees(),
+                                         at.latitudeDegrees());
   hudState.selectedLayer = s.input.imagery.selected;
   for (uint32_t k = 0; k < s.input.imagery.layerCount; ++k) {
     hudState.layers.push_back({s.input.imagery.shown[k], s.input.imagery.opacity[k]});

@@ -160,3 +160,33 @@ TEST(SunLight, GlobeSunPrintsThePositionAndRefusesMistakes) {
 
 }  // namespace
 }  // namespace globe::app
+
+namespace globe::app {
+namespace {
+
+// Honest blanks: `snapshot --verbose` says what the terrain under the camera was made from, fine
+// data over Fuji and only the 20' world grid over Paris.
+TEST(SnapshotVerbose, SaysTheTerrainsSourceAndSpacingUnderTheCamera) {
+  const fs::path dir = globe::testing::freshTempDir("snapshot-verbose");
+  const std::string pyramid = globe::testing::bundledPyramid().string();
+  const auto fuji = runGlobe("snapshot " + pyramid +
+                             " --camera 138.73,35.36,9000 --size 64x64 --verbose -o " +
+                             (dir / "fuji.png").string());
+  ASSERT_EQ(fuji.exitCode, 0) << fuji.output;
+  EXPECT_NE(fuji.output.find("terrain under the camera: E138N35_FUJI.DEM, 3\" (~93 m)"),
+            std::string::npos)
+      << fuji.output;
+  const auto paris = runGlobe("snapshot " + pyramid +
+                              " --camera 2.35,48.86,20000 --size 64x64 -v -o " +
+                              (dir / "paris.png").string());
+  ASSERT_EQ(paris.exitCode, 0) << paris.output;
+  EXPECT_NE(paris.output.find("terrain under the camera: ETOPO20.DEM, 20' (~37 km)"),
+            std::string::npos)
+      << paris.output;
+  const auto quiet = runGlobe("snapshot " + pyramid + " --camera 2.35,48.86,20000 --size 64x64 -o " +
+                              (dir / "quiet.png").string());
+  EXPECT_EQ(quiet.output.find("terrain under the camera"), std::string::npos) << quiet.output;
+}
+
+}  // namespace
+}  // namespace globe::app

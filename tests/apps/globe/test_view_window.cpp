@@ -1020,11 +1020,12 @@ TEST(GlobeViewWindow, ClickPicksPlacemarksAndOOpensAnOverlayFile) {
   const auto magenta = [](const uint8_t* p) { return p[0] > 180 && p[1] < 90 && p[2] > 180; };
   EXPECT_GT(count(221, 208, 261, 248, magenta), 800u) << "the opened polygon is drawn";
   EXPECT_EQ(count(300, 0, 640, 360, magenta), 0u) << "and nowhere east of it";
-  // The picked placemark's panel at the top right: its name in white on a dark box.
+  // The picked placemark's panel at the right edge under the compass rose (which ends 64 px
+  // down): its name in white on a dark box.
   const auto white = [](const uint8_t* p) { return p[0] > 235 && p[1] > 235 && p[2] > 235; };
   const auto dark = [](const uint8_t* p) { return p[0] < 60 && p[1] < 60 && p[2] < 60; };
-  EXPECT_GT(count(440, 0, 640, 60, white), 40u);
-  EXPECT_GT(count(440, 0, 640, 60, dark), 1000u);
+  EXPECT_GT(count(440, 66, 640, 260, white), 40u);
+  EXPECT_GT(count(440, 66, 640, 260, dark), 1000u);
 }
 
 // The ruler (M) and the elevation chart (X): two clicks 200 px apart measure the geodesic between
