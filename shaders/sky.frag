@@ -1,6 +1,7 @@
 // Sky pass fragment shader (render/sky_model.hpp): inside the air, a gradient from the horizon
 // haze to the zenith above the (dipping) horizon; from space, black with a glow where the view
-// ray grazes the air around the globe; the two blended by the camera's height.
+// ray grazes the air around the globe (under the real Sun only where that air is lit); the two
+// blended by the camera's height.
 #version 330 core
 
 in vec4 v_near;  // sky.vert: the pixel's point on the near plane, homogeneous
@@ -14,6 +15,9 @@ uniform vec3 u_horizon;
 uniform vec3 u_glow;
 uniform float u_spaceBlend;
 uniform float u_horizonCosine;
+uniform bool u_daylight;      // the real Sun (--time): the glow only where its air is lit
+uniform vec3 u_sunDirection;  // unit, towards the Sun (the same axes as u_up)
+uniform vec3 u_daylightBand;  // night's light, night's and day's sun-up cosines (daylightBand())
 
 out vec4 o_color;
 
@@ -31,6 +35,11 @@ void main() {
   float x = (closest - u_globeRadius) / u_atmosphereHeight;
   float fade = max(1.0 - x, 0.0);
   float glow = x <= 0.0 ? 1.0 : fade * fade;
+  if (u_daylight) {
+    // The air the ray grazes (its point nearest the centre) lit as the ground under it is.
+    vec3 grazed = normalize(u_up * u_cameraRadius + direction * max(-along, 0.0));
+    glow *= smoothstep(u_daylightBand.y, u_daylightBand.z, dot(grazed, u_sunDirection));
+  }
   vec3 space = u_glow * glow;
 
   o_color = vec4(mix(air, space, u_spaceBlend), 1.0);

@@ -29,6 +29,9 @@ Result<std::unique_ptr<SkyPass>> SkyPass::create(const std::filesystem::path& sh
   u.glow = p.uniformLocation("u_glow");
   u.spaceBlend = p.uniformLocation("u_spaceBlend");
   u.horizonCosine = p.uniformLocation("u_horizonCosine");
+  u.daylight = p.uniformLocation("u_daylight");
+  u.sunDirection = p.uniformLocation("u_sunDirection");
+  u.daylightBand = p.uniformLocation("u_daylightBand");
   if (u.inverseViewProjection < 0 || u.up < 0) {
     return makeError((shaderDirectory.empty() ? std::filesystem::path("embedded:sky.frag")
                                               : shaderDirectory / "sky.frag")
@@ -63,6 +66,11 @@ void SkyPass::draw(const terrain::RenderView& view, const SkyParameters& sky,
   glUniform3fv(u_.glow, 1, glm::value_ptr(sky.glowRgb));
   glUniform1f(u_.spaceBlend, sky.spaceBlend);
   glUniform1f(u_.horizonCosine, sky.horizonCosine);
+  // Under the real Sun the limb glows only where the air it grazes is lit.
+  glUniform1i(u_.daylight, view.sunIsReal ? 1 : 0);
+  glUniform3fv(u_.sunDirection, 1, glm::value_ptr(glm::vec3(view.sunDirectionEcef)));
+  const DaylightBand band = daylightBand();
+  glUniform3f(u_.daylightBand, band.nightLight, band.nightCosine, band.dayCosine);
   glBindVertexArray(vertexArray_.get());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);

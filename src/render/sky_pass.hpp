@@ -32,7 +32,7 @@ class SkyPass {
   struct Uniforms {
     GLint inverseViewProjection = -1, up = -1, cameraRadius = -1, globeRadius = -1;
     GLint atmosphereHeight = -1, zenith = -1, horizon = -1, glow = -1, spaceBlend = -1;
-    GLint horizonCosine = -1;
+    GLint horizonCosine = -1, daylight = -1, sunDirection = -1, daylightBand = -1;
   } u_;
 };
 

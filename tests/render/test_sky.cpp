@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "geo/cartographic.hpp"
 #include "geo/ecef.hpp"
@@ -82,7 +83,9 @@ class SkyPassTest : public RenderTest {
  protected:
   // The colour at the image centre looking from `heightMeters` above (0°, 0°) in `direction`
   // (east-north-up), nothing but the sky drawn.
-  std::array<uint8_t, 4> centre(double heightMeters, const glm::dvec3& enu) {
+  // With `sun`: lit by the real Sun from that direction (ECEF), as --time does.
+  std::array<uint8_t, 4> centre(double heightMeters, const glm::dvec3& enu,
+                                std::optional<glm::dvec3> sun = std::nullopt) {
     TerrainStyle style = renderer_->style();
     style.sky = true;
     renderer_->setStyle(style);
@@ -90,9 +93,10 @@ class SkyPassTest : public RenderTest {
     const glm::dvec3 eye = geo::cartographicToEcef(kWgs84, {0.0, 0.0, heightMeters});
     const glm::dvec3 direction = enu.x * f.east + enu.y * f.north + enu.z * f.up;
     const glm::dvec3 screenUp = std::abs(enu.z) > 0.9 ? f.north : f.up;
-    const terrain::RenderView view =
+    terrain::RenderView view =
         terrain::makeLookAtView(eye, eye + 1000.0 * direction, screenUp,
-                                geo::degreesToRadians(30.0), kWidth, kHeight, f.up);
+                                geo::degreesToRadians(30.0), kWidth, kHeight, sun.value_or(f.up));
+    view.sunIsReal = sun.has_value();
     const Image image = drawAndRead(view, {});
     return image.at(kWidth / 2, kHeight / 2);
   }
@@ -120,6 +124,13 @@ TEST_F(SkyPassTest, SpaceIsBlackAwayFromTheGlobeAndGlowsAtItsLimb) {
   const auto glow = centre(h, {0, std::sin(pastLimb), -std::cos(pastLimb)});
   EXPECT_GT(glow[2], 40);
   EXPECT_GT(glow[2], glow[0]);
+  // Under the real Sun the glow is the lit air's: that limb (north of the camera) glows with the
+  // Sun over the north, and is dark with it over the south, where its air is in the night.
+  const glm::dvec3 north(0.0, 0.0, 1.0);
+  const auto lit = centre(h, {0, std::sin(pastLimb), -std::cos(pastLimb)}, north);
+  const auto night = centre(h, {0, std::sin(pastLimb), -std::cos(pastLimb)}, -north);
+  EXPECT_GT(lit[2], 40);
+  EXPECT_EQ(night[0] + night[1] + night[2], 0) << int{night[2]};
 }
 
 }  // namespace
