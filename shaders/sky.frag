@@ -18,6 +18,32 @@ uniform float u_horizonCosine;
 uniform bool u_daylight;      // the real Sun (--time): the glow only where its air is lit
 uniform vec3 u_sunDirection;  // unit, towards the Sun (the same axes as u_up)
 uniform vec3 u_daylightBand;  // night's light, night's and day's sun-up cosines (daylightBand())
+// The physically based sky (atmosphere/sky_view.hpp): azimuth from the Sun's vertical across,
+// elevation up with rows crowded around the horizon at u_horizonElevation (radians).
+uniform bool u_physical;
+uniform sampler2D u_skyView;
+uniform float u_horizonElevation;
+
+const float kHalfPi = 1.5707963;
+
+// atmosphere::skyViewRow.
+float skyViewRow(float elevation, float horizon) {
+  if (elevation < horizon) {
+    return 0.5 * (1.0 - sqrt(clamp((horizon - elevation) / (horizon + kHalfPi), 0.0, 1.0)));
+  }
+  return 0.5 * (1.0 + sqrt(clamp((elevation - horizon) / (kHalfPi - horizon), 0.0, 1.0)));
+}
+
+vec3 physicalSky(vec3 direction, float mu) {
+  vec3 across = direction - u_up * mu;
+  vec3 sunAcross = u_sunDirection - u_up * dot(u_sunDirection, u_up);
+  float azimuth = 0.0;
+  if (dot(across, across) > 1e-12 && dot(sunAcross, sunAcross) > 1e-12) {
+    azimuth = acos(clamp(dot(normalize(across), normalize(sunAcross)), -1.0, 1.0)) / 3.14159265;
+  }
+  float elevation = asin(clamp(mu, -1.0, 1.0));
+  return texture(u_skyView, vec2(azimuth, skyViewRow(elevation, u_horizonElevation))).rgb;
+}
 
 out vec4 o_color;
 
@@ -42,5 +68,6 @@ void main() {
   }
   vec3 space = u_glow * glow;
 
-  o_color = vec4(mix(air, space, u_spaceBlend), 1.0);
+  o_color = u_physical ? vec4(physicalSky(direction, mu), 1.0)
+                       : vec4(mix(air, space, u_spaceBlend), 1.0);
 }

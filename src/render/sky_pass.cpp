@@ -1,5 +1,6 @@
 #include "render/sky_pass.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -7,9 +8,16 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
+#include "atmosphere/sky_view.hpp"
 #include "render/shader_directory.hpp"
 
 namespace globe::render {
+namespace {
+
+// Past the terrain's units (0 the global image, 1..4 layers, 5 the water mask).
+constexpr GLuint kSkyViewUnit = 6;
+
+}  // namespace
 
 Result<std::unique_ptr<SkyPass>> SkyPass::create(const std::filesystem::path& shaderDirectory) {
   auto program = loadNamedShaderProgram(shaderDirectory, "sky.vert", "sky.frag");
@@ -32,6 +40,9 @@ Result<std::unique_ptr<SkyPass>> SkyPass::create(const std::filesystem::path& sh
   u.daylight = p.uniformLocation("u_daylight");
   u.sunDirection = p.uniformLocation("u_sunDirection");
   u.daylightBand = p.uniformLocation("u_daylightBand");
+  u.physical = p.uniformLocation("u_physical");
+  u.skyView = p.uniformLocation("u_skyView");
+  u.horizonElevation = p.uniformLocation("u_horizonElevation");
   if (u.inverseViewProjection < 0 || u.up < 0) {
     return makeError((shaderDirectory.empty() ? std::filesystem::path("embedded:sky.frag")
                                               : shaderDirectory / "sky.frag")
@@ -71,12 +82,47 @@ void SkyPass::draw(const terrain::RenderView& view, const SkyParameters& sky,
   glUniform3fv(u_.sunDirection, 1, glm::value_ptr(glm::vec3(view.sunDirectionEcef)));
   const DaylightBand band = daylightBand();
   glUniform3f(u_.daylightBand, band.nightLight, band.nightCosine, band.dayCosine);
+  glUniform1i(u_.physical, physical_ ? 1 : 0);
+  glUniform1f(u_.horizonElevation, static_cast<float>(horizonElevationRadians_));
+  glUniform1i(u_.skyView, static_cast<GLint>(kSkyViewUnit));
+  glActiveTexture(GL_TEXTURE0 + kSkyViewUnit);
+  glBindTexture(GL_TEXTURE_2D, physical_ ? skyViewTexture_.get() : 0);
+  glActiveTexture(GL_TEXTURE0);
   glBindVertexArray(vertexArray_.get());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
+  glActiveTexture(GL_TEXTURE0 + kSkyViewUnit);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glActiveTexture(GL_TEXTURE0);
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_LESS);
   if (depthTest != GL_TRUE) glDisable(GL_DEPTH_TEST);
+}
+
+glm::vec3 SkyPass::usePhysicalSky(double heightMeters, double sunZenithCosine) {
+  physical_ = true;
+  const double height = std::isfinite(heightMeters) ? std::clamp(heightMeters, 0.0, 1e9) : 0.0;
+  const std::pair<long, long> key{std::lround(std::log(10.0 + height) / std::log(1.01)),
+                                  std::lround(std::clamp(sunZenithCosine, -1.0, 1.0) * 1000.0)};
+  if (key == skyViewKey_ && skyViewTexture_) return horizonRgb_;
+  skyViewKey_ = key;
+  const auto& tables = atmosphere::SkyTables::earth();
+  const atmosphere::SkyViewImage image = atmosphere::skyView(
+      tables, tables.atmosphere().groundRadiusMeters + height, sunZenithCosine);
+  horizonElevationRadians_ = image.horizonElevationRadians;
+  horizonRgb_ = glm::vec3(image.at(0.5, atmosphere::skyViewRow(std::max(0.0, horizonElevationRadians_),
+                                                               horizonElevationRadians_)));
+  if (!skyViewTexture_) skyViewTexture_ = makeGlTexture();
+  glBindTexture(GL_TEXTURE_2D, skyViewTexture_.get());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA,
+               GL_UNSIGNED_BYTE, image.rgba.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  return horizonRgb_;
 }
 
 }  // namespace globe::render

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <utility>
 
 #include "core/result.hpp"
 #include "render/gl_object.hpp"
@@ -25,6 +26,14 @@ class SkyPass {
   void draw(const terrain::RenderView& view, const SkyParameters& sky,
             double globeRadiusMeters) const;
 
+  // Under the real Sun (--time): the physically based sky seen from this height with the Sun at
+  // this zenith cosine (atmosphere/sky_view.hpp) instead of the model's gradient, made again on
+  // the CPU when the height has moved by 1 % (or 10 m) or the Sun by ~0.06°. Returns its colour
+  // at the horizon, square to the Sun (the terrain's fog).
+  glm::vec3 usePhysicalSky(double heightMeters, double sunZenithCosine);
+  // Back to the model's gradient (no --time).
+  void useModelSky() { physical_ = false; }
+
  private:
   SkyPass() = default;
   ShaderProgram program_;
@@ -33,7 +42,13 @@ class SkyPass {
     GLint inverseViewProjection = -1, up = -1, cameraRadius = -1, globeRadius = -1;
     GLint atmosphereHeight = -1, zenith = -1, horizon = -1, glow = -1, spaceBlend = -1;
     GLint horizonCosine = -1, daylight = -1, sunDirection = -1, daylightBand = -1;
+    GLint physical = -1, skyView = -1, horizonElevation = -1;
   } u_;
+  GlObject skyViewTexture_;
+  bool physical_ = false;
+  double horizonElevationRadians_ = 0.0;
+  std::pair<long, long> skyViewKey_{-1, -1};  // height bucket, Sun bucket
+  glm::vec3 horizonRgb_{0.0f};
 };
 
 }  // namespace globe::render

@@ -587,8 +587,13 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
     globeRadius = glm::length(view.cameraEcefMeters) - height;
     sky = skyAt(height, globeRadius);  // the fog needs it now; the sky is drawn last
     if (view.sunIsReal) {
-      sky = skyUnderSun(sky, glm::dot(glm::normalize(view.cameraEcefMeters),
-                                      glm::normalize(view.sunDirectionEcef)));
+      const double sunUp = glm::dot(glm::normalize(view.cameraEcefMeters),
+                                    glm::normalize(view.sunDirectionEcef));
+      sky = skyUnderSun(sky, sunUp);
+      // The physically based sky, and its horizon's colour for the haze over the terrain.
+      sky.horizonRgb = impl.sky->usePhysicalSky(height, sunUp);
+    } else {
+      impl.sky->useModelSky();
     }
   }
   glEnable(GL_DEPTH_TEST);

@@ -133,5 +133,24 @@ TEST_F(SkyPassTest, SpaceIsBlackAwayFromTheGlobeAndGlowsAtItsLimb) {
   EXPECT_EQ(night[0] + night[1] + night[2], 0) << int{night[2]};
 }
 
+// Under the real Sun the pass draws the physically based sky (atmosphere/sky_view.hpp): from
+// 100 m, blue overhead with the Sun high, and towards a Sun on the horizon a horizon redder than
+// blue and a darker zenith; without a real Sun the model's gradient as before.
+TEST_F(SkyPassTest, UnderTheRealSunTheSkyIsPhysical) {
+  const LocalFrame f = localFrame(0.0, 0.0);
+  const glm::dvec3 highSun = glm::normalize(f.up + 0.3 * f.north);
+  const auto noon = centre(100.0, {0, 0, 1}, highSun);
+  EXPECT_GT(noon[2], noon[1]);
+  EXPECT_GT(noon[1], noon[0]);
+  EXPECT_GT(noon[2], 120);
+  const glm::dvec3 setting = glm::normalize(f.north + 0.005 * f.up);
+  const auto sunsetHorizon = centre(100.0, {0, 1, 0.03}, setting);
+  const auto sunsetZenith = centre(100.0, {0, 0, 1}, setting);
+  EXPECT_GT(sunsetHorizon[0], sunsetHorizon[2]) << "red towards the setting Sun";
+  EXPECT_LT(sunsetZenith[2], noon[2]) << "a darker zenith";
+  // Without --time: exactly the model's zenith, as the goldens have it.
+  expectColour(centre(100.0, {0, 0, 1}), skyAt(100.0, 6'378'137.0).zenithRgb);
+}
+
 }  // namespace
 }  // namespace globe::render::test
