@@ -20,8 +20,8 @@
 #include "camera/camera_path_file.hpp"
 #include "formats/image_io.hpp"
 #include "render/glfw_window_context.hpp"
-#include "render/osmesa_context.hpp"
 #include "render/multisample_target.hpp"
+#include "render/osmesa_context.hpp"
 #include "render/read_pixels.hpp"
 #include "transport/atomic_file.hpp"
 
@@ -158,12 +158,8 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
   auto labels = OverlayDrawing::create(scene);
   if (!labels) return Error{labels.error()};
   const int width = surface->widthPixels, height = surface->heightPixels;
-  std::unique_ptr<render::MultisampleTarget> target;
-  if (options.scene.samples > 1) {
-    auto made = render::MultisampleTarget::create(width, height, options.scene.samples);
-    if (!made) return Error{made.error()};
-    target = std::move(*made);
-  }
+  auto target = render::multisampleTargetFor(width, height, options.scene.samples);
+  if (!target) return Error{target.error()};
   PlaybackStep step(scene, gpu, path, width, height, std::chrono::seconds(options.timeoutSeconds),
                     options.glide, options.realTime);
   // The first collision test runs against a complete view at the scripted start.
@@ -186,10 +182,10 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
     FrameRecord& record = *stepped;
 
     const auto drawStart = Clock::now();
-    if (target) target->bind();
+    if (*target) (*target)->bind();
     const render::FrameStats stats = gpu.draw(scene);
     if (*labels) (*labels)->draw(scene);
-    if (target) target->resolve();
+    if (*target) (*target)->resolve();
     record.tilesDrawn = stats.tilesDrawn;
     record.imageryTextureBytes = stats.imageryBytesResident;
     std::vector<uint8_t> pixels;

@@ -11,8 +11,8 @@
 #include "collision/clearance_settings.hpp"
 #include "formats/image_io.hpp"
 #include "render/hud_renderer.hpp"
-#include "render/osmesa_context.hpp"
 #include "render/multisample_target.hpp"
+#include "render/osmesa_context.hpp"
 #include "render/read_pixels.hpp"
 
 namespace globe::app {
@@ -64,13 +64,9 @@ Result<SnapshotReport> runSnapshot(const SnapshotOptions& options) {
   rendererOptions.verticesPerSide = (*scene)->store().manifest().verticesPerSide;
   auto renderer = render::TerrainRenderer::create(rendererOptions);
   if (!renderer) return Error{renderer.error()};
-  std::unique_ptr<render::MultisampleTarget> target;
-  if (options.scene.samples > 1) {
-    auto made = render::MultisampleTarget::create(options.widthPixels, options.heightPixels,
-                                                  options.scene.samples);
-    if (!made) return Error{made.error()};
-    target = std::move(*made);
-  }
+  auto target = render::multisampleTargetFor(options.widthPixels, options.heightPixels,
+                                             options.scene.samples);
+  if (!target) return Error{target.error()};
   RendererGpu gpu(**renderer, options.scene);
   if (options.imagery) {
     if (auto draped = drapeImagery(**renderer, *options.imagery); !draped)
@@ -79,12 +75,12 @@ Result<SnapshotReport> runSnapshot(const SnapshotOptions& options) {
   auto frame = (*scene)->updateUntilComplete(pose, options.widthPixels, options.heightPixels, gpu,
                                              std::chrono::seconds(options.timeoutSeconds));
   if (!frame) return Error{frame.error()};
-  if (target) target->bind();
+  if (*target) (*target)->bind();
   const render::FrameStats stats = gpu.draw(**scene);
   auto labels = OverlayDrawing::create(**scene);
   if (!labels) return Error{labels.error()};
   if (*labels) (*labels)->draw(**scene);
-  if (target) target->resolve();
+  if (*target) (*target)->resolve();
   if (options.attribution) {
     if (auto block =
             attributionBlock((*scene)->attributions(), options.widthPixels, options.heightPixels)) {
@@ -108,9 +104,9 @@ Result<SnapshotReport> runSnapshot(const SnapshotOptions& options) {
   report.triangles = stats.triangles;
   report.tileLoads = (*scene)->loader().counters().completed;
   report.failures = frame->missingTiles;
-  report.terrainData = terrainDataText((*scene)->store().manifest(),
-                                       pose.position.longitudeDegrees(),
-                                       pose.position.latitudeDegrees());
+  report.terrainData =
+      terrainDataText((*scene)->store().manifest(), pose.position.longitudeDegrees(),
+                      pose.position.latitudeDegrees());
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }

@@ -44,13 +44,11 @@ Result<void> openWindow(ViewSession& s) {
   if (!renderer) return Error{renderer.error()};
   s.renderer = std::move(*renderer);
   s.gpu = std::make_unique<RendererGpu>(*s.renderer, options.scene);
-  if (options.scene.samples > 1) {
-    auto target = render::MultisampleTarget::create(s.window->framebufferWidthPixels(),
-                                                    s.window->framebufferHeightPixels(),
-                                                    options.scene.samples);
-    if (!target) return Error{target.error()};
-    s.multisample = std::move(*target);
-  }
+  auto multisample =
+      render::multisampleTargetFor(s.window->framebufferWidthPixels(),
+                                   s.window->framebufferHeightPixels(), options.scene.samples);
+  if (!multisample) return Error{multisample.error()};
+  s.multisample = std::move(*multisample);
   auto hud = render::HudRenderer::create({});
   if (!hud) return Error{hud.error()};
   s.hud = std::move(*hud);

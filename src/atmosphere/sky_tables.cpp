@@ -41,7 +41,8 @@ SkyTables::SkyTables(const Atmosphere& atmosphere) : atmosphere_(atmosphere) {
     const double r = atmosphere.groundRadiusMeters + span * row / (kTransmittanceRows - 1);
     for (int column = 0; column < kTransmittanceColumns; ++column) {
       const double mu = -1.0 + 2.0 * column / (kTransmittanceColumns - 1);
-      transmittance_.values.push_back(transmittanceToTop(atmosphere, std::max(r, atmosphere.groundRadiusMeters + 1.0), mu));
+      transmittance_.values.push_back(
+          transmittanceToTop(atmosphere, std::max(r, atmosphere.groundRadiusMeters + 1.0), mu));
     }
   }
   multiple_ = {kMultipleColumns, kMultipleRows, {}};

@@ -26,13 +26,9 @@ Span airAlong(const Atmosphere& a, double r, double mu) {
     if (span.start < 0.0) return span;  // misses the air
   }
   span.ground = hitsGround(a, r, mu);
-  if (span.ground) {
-    const double b = r * mu;
-    span.end = -b - std::sqrt(std::max(b * b - (r * r - a.groundRadiusMeters * a.groundRadiusMeters), 0.0));
-  } else {
-    const double b = r * mu;
-    span.end = -b + std::sqrt(std::max(b * b - (r * r - a.topRadiusMeters * a.topRadiusMeters), 0.0));
-  }
+  const double b = r * mu, top = a.topRadiusMeters;
+  span.end = span.ground ? distanceToSphere(r, mu, a.groundRadiusMeters)
+                         : -b + std::sqrt(std::max(b * b - (r * r - top * top), 0.0));  // the exit
   return span;
 }
 
@@ -91,8 +87,10 @@ glm::dvec3 toneMapped(const glm::dvec3& radiance) {
 }
 
 glm::dvec3 SkyViewImage::at(double u, double v) const {
-  const double x = std::clamp(u, 0.0, 1.0) * (width - 1), y = std::clamp(v, 0.0, 1.0) * (height - 1);
-  const int x0 = std::min(static_cast<int>(x), width - 2), y0 = std::min(static_cast<int>(y), height - 2);
+  const double x = std::clamp(u, 0.0, 1.0) * (width - 1),
+               y = std::clamp(v, 0.0, 1.0) * (height - 1);
+  const int x0 = std::min(static_cast<int>(x), width - 2),
+            y0 = std::min(static_cast<int>(y), height - 2);
   const double fx = x - x0, fy = y - y0;
   auto texel = [&](int c, int r) {
     const size_t i = 4 * (static_cast<size_t>(r) * width + c);
@@ -113,14 +111,13 @@ SkyViewImage skyView(const SkyTables& tables, double cameraRadiusMeters, double 
   const glm::dvec3 sun(std::sqrt(1.0 - sunMu * sunMu), 0.0, sunMu);
   image.rgba.resize(4 * static_cast<size_t>(image.width) * image.height);
   for (int row = 0; row < image.height; ++row) {
-    const double elevation =
-        skyViewElevation(static_cast<double>(row) / (image.height - 1), image.horizonElevationRadians);
+    const double elevation = skyViewElevation(static_cast<double>(row) / (image.height - 1),
+                                              image.horizonElevationRadians);
     for (int column = 0; column < image.width; ++column) {
       const double azimuth = std::numbers::pi * column / (image.width - 1);
       const glm::dvec3 direction(std::cos(elevation) * std::cos(azimuth),
                                  std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
-      const glm::dvec3 colour =
-          toneMapped(skyRadiance(tables, cameraRadiusMeters, direction, sun));
+      const glm::dvec3 colour = toneMapped(skyRadiance(tables, cameraRadiusMeters, direction, sun));
       const size_t i = 4 * (static_cast<size_t>(row) * image.width + column);
       for (int c = 0; c < 3; ++c) {
         image.rgba[i + c] = static_cast<uint8_t>(std::lround(255.0 * colour[c]));

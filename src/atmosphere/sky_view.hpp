@@ -37,7 +37,7 @@ struct SkyViewImage {
   int width = 0, height = 0;
   double cameraRadiusMeters = 0.0;
   double horizonElevationRadians = 0.0;
-  std::vector<uint8_t> rgba;  // rows bottom (v = 0) first, as GL textures are
+  std::vector<uint8_t> rgba;                // rows bottom (v = 0) first, as GL textures are
   glm::dvec3 at(double u, double v) const;  // 0..1 colour, bilinear (for the fog and tests)
 };
 SkyViewImage skyView(const SkyTables& tables, double cameraRadiusMeters, double sunZenithCosine,

@@ -23,9 +23,8 @@ inline constexpr double kShadowReachMeters = 200000.0;
 
 // 0..1 of the Sun's disc seen from `pointEcefMeters` (on the ground) over the array; 1 where the
 // Sun is below the point's horizon plane (the night's darkness is the shader's, not a shadow's).
-// The march starts `firstStepMeters` out (a cell: no shadow from the point's own triangles) and
-// grows by a tenth of the distance a step; it ends above `highestMeters` (the array's highest
-// surface) or at kShadowReachMeters.
+// The march starts `firstStepMeters` out and steps by the larger of that and 4 % of the distance;
+// it ends above `highestMeters` (the array's highest surface) or at kShadowReachMeters.
 float sunVisibility(const RenderingTileArray& array, const geo::Ellipsoid& ellipsoid,
                     const glm::dvec3& pointEcefMeters, const glm::dvec3& sunDirectionEcef,
                     double firstStepMeters, double highestMeters);

@@ -79,13 +79,11 @@ bool setGpuTileSunlight(GpuTile& gpu, std::span<const float> gridVisibility) {
   if (gridVisibility.size() != static_cast<size_t>(n) * n) return false;
   std::vector<float> values(terrain::tileVertexCount(n, gpu.hasSkirts), 1.0f);
   std::copy(gridVisibility.begin(), gridVisibility.end(), values.begin());
-  if (gpu.hasSkirts) {
+  for (uint32_t edge = 0; gpu.hasSkirts && edge < 4; ++edge) {
     for (uint32_t k = 0; k < n; ++k) {
-      const uint32_t last = n - 1;
-      values[terrain::skirtVertexIndex(terrain::TileEdge::North, k, n)] = gridVisibility[k];
-      values[terrain::skirtVertexIndex(terrain::TileEdge::South, k, n)] = gridVisibility[last * n + k];
-      values[terrain::skirtVertexIndex(terrain::TileEdge::West, k, n)] = gridVisibility[k * n];
-      values[terrain::skirtVertexIndex(terrain::TileEdge::East, k, n)] = gridVisibility[k * n + last];
+      const auto side = static_cast<terrain::TileEdge>(edge);
+      values[terrain::skirtVertexIndex(side, k, n)] =
+          gridVisibility[terrain::edgeGridIndex(side, k, n)];
     }
   }
   if (!gpu.sunlightBuffer) gpu.sunlightBuffer = makeGlBuffer();

@@ -38,6 +38,12 @@ Result<std::unique_ptr<MultisampleTarget>> MultisampleTarget::create(int widthPi
   return target;
 }
 
+Result<std::unique_ptr<MultisampleTarget>> multisampleTargetFor(int widthPixels, int heightPixels,
+                                                                int samples) {
+  if (samples <= 1) return std::unique_ptr<MultisampleTarget>();
+  return MultisampleTarget::create(widthPixels, heightPixels, samples);
+}
+
 Result<void> MultisampleTarget::resize(int widthPixels, int heightPixels) {
   width_ = widthPixels;
   height_ = heightPixels;

@@ -43,6 +43,11 @@ class MultisampleTarget {
   int height_ = 0;
 };
 
+// What --samples asks for: a target when samples > 1, else none (nullptr: draw straight into
+// the context's framebuffer).
+Result<std::unique_ptr<MultisampleTarget>> multisampleTargetFor(int widthPixels, int heightPixels,
+                                                                int samples);
+
 // The most samples the current GL offers for colour and depth (at least 1).
 int maximumSamples();
 

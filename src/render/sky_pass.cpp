@@ -107,16 +107,17 @@ glm::vec3 SkyPass::usePhysicalSky(double heightMeters, double sunZenithCosine) {
   if (key == skyViewKey_ && skyViewTexture_) return horizonRgb_;
   skyViewKey_ = key;
   const auto& tables = atmosphere::SkyTables::earth();
-  const atmosphere::SkyViewImage image = atmosphere::skyView(
-      tables, tables.atmosphere().groundRadiusMeters + height, sunZenithCosine);
+  const atmosphere::SkyViewImage image =
+      atmosphere::skyView(tables, tables.atmosphere().groundRadiusMeters + height, sunZenithCosine);
   horizonElevationRadians_ = image.horizonElevationRadians;
-  horizonRgb_ = glm::vec3(image.at(0.5, atmosphere::skyViewRow(std::max(0.0, horizonElevationRadians_),
-                                                               horizonElevationRadians_)));
+  horizonRgb_ =
+      glm::vec3(image.at(0.5, atmosphere::skyViewRow(std::max(0.0, horizonElevationRadians_),
+                                                     horizonElevationRadians_)));
   if (!skyViewTexture_) skyViewTexture_ = makeGlTexture();
   glBindTexture(GL_TEXTURE_2D, skyViewTexture_.get());
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA,
-               GL_UNSIGNED_BYTE, image.rgba.data());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+               image.rgba.data());
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);

@@ -19,7 +19,6 @@
 #include "geo/ecef.hpp"
 #include "render/gl_object.hpp"
 #include "render/gpu_tile.hpp"
-#include "terrain/tile_transform.hpp"
 #include "render/imagery_textures.hpp"
 #include "render/shader_directory.hpp"
 #include "render/shader_program.hpp"
@@ -28,6 +27,7 @@
 #include "terrain/relief_shading.hpp"
 #include "terrain/skirt_edges.hpp"
 #include "terrain/texel_footprint.hpp"
+#include "terrain/tile_transform.hpp"
 #include "terrain/water_mask_weight.hpp"
 
 namespace globe::render {
@@ -92,6 +92,7 @@ struct TerrainRenderer::Impl {
     double nearestMeters;
     const GpuTile* gpu;
     geo::TileId tile;
+    terrain::TileTransform transform;  // made once a frame (terrain/tile_transform.hpp)
     terrain::SkirtEdgeMask skirts;
     BoundDrapes drapes;
     terrain::SkirtEdgeMask coarser = 0;  // edges facing a coarser neighbour
@@ -103,7 +104,6 @@ struct TerrainRenderer::Impl {
   std::vector<DrawItem> drawItems[2];
   bool programErrorReported = false;  // per-frame scratch, kept to avoid reallocating
   std::unordered_set<geo::TileId> drawnIds;
-  std::unordered_map<geo::TileId, terrain::EdgeHeightHashes> drawnEdges;
   GlObject indexBuffer;
   GLenum indexType = GL_UNSIGNED_SHORT;
   GLsizei indexCount = 0;
@@ -533,7 +533,6 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
   // depth test rejects hidden fragments early. Near tiles go first: they occlude the far ones.
   for (auto& items : impl.drawItems) items.clear();
   impl.drawnIds.clear();
-  impl.drawnEdges.clear();
   const Impl::Footprint footprint{view.cameraEcefMeters, terrain::pixelAngleRadians(view)};
   for (size_t i = 0; i < tiles.size(); ++i) {
     const geo::TileId& tile = tiles[i];
@@ -544,26 +543,28 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
     }
     impl.drawnIds.insert(tile);
     const GpuTile& gpu = found->second;
-    impl.drawnEdges.emplace(tile, gpu.edgeHeightHashes);
     const double nearest = std::max(
         0.0, glm::distance(view.cameraEcefMeters, gpu.centerEcefMeters) - gpu.radiusMeters);
     const bool far =
         nearest >= kVertexDepthMinMeters && nearest >= kVertexDepthRadii * gpu.radiusMeters;
     const terrain::TileDrapes* tileDrapes = i < drapes.size() ? &drapes[i] : nullptr;
     impl.drawItems[far ? 1 : 0].push_back(
-        {nearest, &gpu, tile, 0, impl.resolveDrapes(tileDrapes, tile, gpu, footprint, stats)});
+        {nearest, &gpu, tile, terrain::tileTransform(view, tile.level, gpu.centerEcefMeters), 0,
+         impl.resolveDrapes(tileDrapes, tile, gpu, footprint, stats)});
   }
   // Skirts face the tiles that are really drawn (resident ones), known once all are listed.
   if (impl.options.skirts) {
+    const terrain::DrawnEdgeHashes hashesOf =
+        [&impl](const geo::TileId& tile) -> const terrain::EdgeHeightHashes* {
+      if (!impl.drawnIds.contains(tile)) return nullptr;
+      return &impl.tiles.find(tile)->second.edgeHeightHashes;
+    };
     for (auto& items : impl.drawItems) {
       for (Impl::DrawItem& item : items) {
         item.skirts = terrain::neededSkirtEdges(item.tile, impl.drawnIds) |
-                      terrain::mismatchedEdges(item.tile, item.gpu->edgeHeightHashes,
-                                               impl.drawnEdges);
+                      terrain::mismatchedEdges(item.tile, item.gpu->edgeHeightHashes, hashesOf);
         // Too far for exact float positions (terrain/tile_transform.hpp): seams below a pixel.
-        if (!terrain::tileTransform(view, item.tile.level, item.gpu->centerEcefMeters).exact) {
-          item.skirts = terrain::kAllSkirtEdges;
-        }
+        if (!item.transform.exact) item.skirts = terrain::kAllSkirtEdges;
         if (item.skirts != 0)
           item.coarser = terrain::coarserNeighbourEdges(item.tile, impl.drawnIds);
       }
@@ -587,8 +588,8 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
     globeRadius = glm::length(view.cameraEcefMeters) - height;
     sky = skyAt(height, globeRadius);  // the fog needs it now; the sky is drawn last
     if (view.sunIsReal) {
-      const double sunUp = glm::dot(glm::normalize(view.cameraEcefMeters),
-                                    glm::normalize(view.sunDirectionEcef));
+      const double sunUp =
+          glm::dot(glm::normalize(view.cameraEcefMeters), glm::normalize(view.sunDirectionEcef));
       sky = skyUnderSun(sky, sunUp);
       // The physically based sky, and its horizon's colour for the haze over the terrain.
       sky.horizonRgb = impl.sky->usePhysicalSky(height, sunUp);
@@ -681,9 +682,8 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
       // Camera-relative in double: the ~6.4e6 m translation cancels before the cast to float.
       // The eye rounded to the level's quantum gives every tile of the level the same matrix and
       // an exact float origin, so shared edge vertices come out bit-identical (header).
-      const terrain::TileTransform transform = terrain::tileTransform(view, item.tile.level, gpu.centerEcefMeters);
-      glUniformMatrix4fv(u.modelView, 1, GL_FALSE, glm::value_ptr(transform.levelView));
-      glUniform3fv(u.tileOrigin, 1, glm::value_ptr(transform.origin));
+      glUniformMatrix4fv(u.modelView, 1, GL_FALSE, glm::value_ptr(item.transform.levelView));
+      glUniform3fv(u.tileOrigin, 1, glm::value_ptr(item.transform.origin));
       const glm::vec3 center(gpu.centerEcefMeters);
       glUniform3fv(u.tileCenter, 1, glm::value_ptr(center));
       if (useImagery) glUniform4fv(u.imageryRect, 1, glm::value_ptr(gpu.imageryRect));

@@ -273,6 +273,7 @@ void TerrainScene::finishMorphs(TileGpu& gpu, FrameInfo& info) {
   for (const geo::TileId& tile : morphs_.endFrame()) {
     gpu.releaseTile(tile);
     gpuLastUsedFrame_.erase(tile);
+    sunlight_.forget(tile);
   }
   info.morphing = morphs_.active();
 }
@@ -432,6 +433,7 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
     for (size_t k = 0; k < byAge.size() - options_.gpuTileBudget && byAge[k].first < frame_; ++k) {
       gpu.releaseTile(byAge[k].second);
       gpuLastUsedFrame_.erase(byAge[k].second);
+      sunlight_.forget(byAge[k].second);
     }
   }
   if (options_.sunTimeUnixSeconds && options_.shadows) {

@@ -26,9 +26,8 @@ class TileSunlight {
   size_t update(const terrain::RenderingTileArray& array, const geo::Ellipsoid& ellipsoid,
                 const glm::dvec3& sunDirectionEcef, TileGpu& gpu, uint32_t tilesPerFrame,
                 bool settled);
-  // The tile's mesh was uploaded again (its shadows went with the old one).
+  // The tile's mesh was uploaded again or left the GPU (its shadows went with it).
   void forget(const geo::TileId& tile) { sunKeys_.erase(tile); }
-  void clear() { sunKeys_.clear(); }
 
  private:
   using SunKey = std::array<int32_t, 3>;

@@ -2,6 +2,8 @@
 
 #include <bit>
 
+#include "terrain/tile_mesh.hpp"
+
 namespace globe::terrain {
 namespace {
 
@@ -25,11 +27,11 @@ EdgeHeightHashes edgeHeightHashes(const HeightBlock& block) {
   EdgeHeightHashes hashes{};
   if (!isValidBlockSize(n) || block.heights.size() != static_cast<size_t>(n) * n) return hashes;
   hashes.fill(kFnvOffset);
-  for (uint32_t k = 0; k < n; ++k) {
-    hashes[0] = mix(hashes[0], block.surfaceHeightMetersAt(0, k));      // North
-    hashes[1] = mix(hashes[1], block.surfaceHeightMetersAt(n - 1, k));  // South
-    hashes[2] = mix(hashes[2], block.surfaceHeightMetersAt(k, 0));      // West
-    hashes[3] = mix(hashes[3], block.surfaceHeightMetersAt(k, n - 1));  // East
+  for (uint32_t edge = 0; edge < 4; ++edge) {
+    for (uint32_t k = 0; k < n; ++k) {  // in the skirts' order (tile_mesh.hpp)
+      const uint32_t index = edgeGridIndex(static_cast<TileEdge>(edge), k, n);
+      hashes[edge] = mix(hashes[edge], block.surfaceHeightMetersAt(index / n, index % n));
+    }
   }
   return hashes;
 }

@@ -21,5 +21,4 @@ using EdgeHeightHashes = std::array<uint64_t, 4>;
 
 EdgeHeightHashes edgeHeightHashes(const HeightBlock& block);
 
-
 }  // namespace globe::terrain

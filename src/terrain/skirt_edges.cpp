@@ -33,15 +33,15 @@ SkirtEdgeMask neededSkirtEdges(const geo::TileId& tile,
 }
 
 SkirtEdgeMask mismatchedEdges(const geo::TileId& tile, const EdgeHeightHashes& own,
-                              const std::unordered_map<geo::TileId, EdgeHeightHashes>& drawnEdges) {
+                              const DrawnEdgeHashes& hashesOf) {
   // The neighbour's edge facing each of ours: North↔South, West↔East.
   static constexpr uint32_t kFacing[4] = {1, 0, 3, 2};
   SkirtEdgeMask mask = 0;
   for (uint32_t edge = 0; edge < 4; ++edge) {
     const auto neighbour = sameLevelNeighbour(tile, static_cast<TileEdge>(edge));
     if (!neighbour) continue;
-    const auto found = drawnEdges.find(*neighbour);
-    if (found != drawnEdges.end() && found->second[kFacing[edge]] != own[edge]) {
+    const EdgeHeightHashes* theirs = hashesOf(*neighbour);
+    if (theirs != nullptr && (*theirs)[kFacing[edge]] != own[edge]) {
       mask |= SkirtEdgeMask{1} << edge;
     }
   }

@@ -8,9 +8,9 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
-#include <unordered_map>
 #include <unordered_set>
 
 #include "geo/tile_id.hpp"
@@ -30,10 +30,12 @@ std::optional<geo::TileId> sameLevelNeighbour(const geo::TileId& tile, TileEdge 
 SkirtEdgeMask neededSkirtEdges(const geo::TileId& tile,
                                const std::unordered_set<geo::TileId>& drawn);
 
-// The edges of `tile` whose same-level neighbour is in `drawnEdges` with a different hash for the
-// shared edge than `own` (the tile's EdgeHeightHashes).
+// The edges of `tile` whose same-level neighbour is drawn with a different hash for the shared
+// edge than `own` (the tile's EdgeHeightHashes). hashesOf(neighbour): its hashes, or nullptr
+// when it is not drawn.
+using DrawnEdgeHashes = std::function<const EdgeHeightHashes*(const geo::TileId&)>;
 SkirtEdgeMask mismatchedEdges(const geo::TileId& tile, const EdgeHeightHashes& own,
-                              const std::unordered_map<geo::TileId, EdgeHeightHashes>& drawnEdges);
+                              const DrawnEdgeHashes& hashesOf);
 
 // The edges of `tile` whose neighbour is drawn coarser: the same-level neighbour is not in
 // `drawn` but one of its ancestors is. Lit with its coarse normals there (tile_mesh.hpp), the

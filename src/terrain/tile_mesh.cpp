@@ -186,23 +186,9 @@ TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
   if (mesh.hasSkirts) {
     for (uint32_t edge = 0; edge < 4; ++edge) {
       for (uint32_t k = 0; k < n; ++k) {
-        uint32_t row = k, column = k;
-        switch (static_cast<TileEdge>(edge)) {
-          case TileEdge::North:
-            row = 0;
-            break;
-          case TileEdge::South:
-            row = n - 1;
-            break;
-          case TileEdge::West:
-            column = 0;
-            break;
-          case TileEdge::East:
-            column = n - 1;
-            break;
-        }
-        Vertex skirt = vertices[gridVertexIndex(row, column, n)];
-        skirt.positionEcef = drawnVertexEcefMeters(ellipsoid, grid, row, column,
+        const uint32_t index = edgeGridIndex(static_cast<TileEdge>(edge), k, n);
+        Vertex skirt = vertices[index];
+        skirt.positionEcef = drawnVertexEcefMeters(ellipsoid, grid, index / n, index % n,
                                                    skirt.heightMeters - skirtDepthMeters);
         vertices[skirtVertexIndex(static_cast<TileEdge>(edge), k, n)] = skirt;
       }

@@ -66,6 +66,22 @@ constexpr uint32_t gridVertexIndex(uint32_t row, uint32_t column, uint32_t verti
 constexpr uint32_t skirtVertexIndex(TileEdge edge, uint32_t k, uint32_t verticesPerSide) {
   return verticesPerSide * verticesPerSide + static_cast<uint32_t>(edge) * verticesPerSide + k;
 }
+// The grid vertex skirt vertex (edge, k) hangs from: row 0 or N−1 at column k, or column 0 or
+// N−1 at row k.
+constexpr uint32_t edgeGridIndex(TileEdge edge, uint32_t k, uint32_t verticesPerSide) {
+  const uint32_t last = verticesPerSide - 1;
+  switch (edge) {
+    case TileEdge::North:
+      return gridVertexIndex(0, k, verticesPerSide);
+    case TileEdge::South:
+      return gridVertexIndex(last, k, verticesPerSide);
+    case TileEdge::West:
+      return gridVertexIndex(k, 0, verticesPerSide);
+    case TileEdge::East:
+      return gridVertexIndex(k, last, verticesPerSide);
+  }
+  return 0;
+}
 constexpr uint32_t tileVertexCount(uint32_t verticesPerSide, bool withSkirts) {
   return verticesPerSide * verticesPerSide + (withSkirts ? 4 * verticesPerSide : 0);
 }
