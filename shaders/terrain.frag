@@ -49,6 +49,8 @@ uniform sampler2D u_layer2;
 uniform sampler2D u_layer3;
 #endif
 uniform float u_layerOpacity[GLOBE_LAYERS];
+uniform float u_layerExposure[GLOBE_LAYERS];  // 1: the photo as it is
+uniform float u_layerNight[GLOBE_LAYERS];     // 1: night lights, shown where the Sun has set
 #endif
 #ifdef GLOBE_WATER_MASK
 // Premultiplied (water fraction · a, a): a = 0 where no land polygons decide (outside the mask's
@@ -67,27 +69,31 @@ uniform float u_logDepthScale; // 1 / log2(1 + far)
 out vec4 o_color;
 
 #ifdef GLOBE_LAYERS
-#ifdef GLOBE_LIGHT_IMAGERY
-const float kReliefLift = 2.0;  // how far a slope lit at 1.5× level ground's light lifts (to sqrt)
-#endif
 // "Over" with a premultiplied texel: colour·(1 − a) + rgb, a = alpha · opacity, which is
 // mix(colour, straight rgb, a). Premultiplied so that filtering next to transparent texels does
-// not bleed their (meaningless) colour in.
-// light: level ground's shading times the relief's (1 without --lighting), relief: the relief's.
-vec3 drape(vec3 color, sampler2D layer, int k, float level, float relief) {
+// not bleed their (meaningless) colour in. The photo is exposed first (dark imagery lifted:
+// 1 − (1 − c)^k, terrain/imagery_exposure.hpp), then lit within its own range.
+// level: level ground's light (1 without --lighting), relief: the relief's light.
+// A night layer (u_layerNight) adds its light to `glow` instead and covers nothing.
+vec3 drape(vec3 color, sampler2D layer, int k, float level, float relief, inout vec3 glow) {
   vec4 texel = texture(layer, v_layerUv[k]) * u_layerOpacity[k];
+  if (u_layerNight[k] > 0.5) {
+    glow += texel.rgb;
+    return color;
+  }
+  vec3 straight = clamp(texel.rgb / max(texel.a, 1e-3), 0.0, 1.0);
+  vec3 photo = 1.0 - pow(1.0 - straight, vec3(u_layerExposure[k]));
 #ifdef GLOBE_LIGHT_IMAGERY
-  // Shadow darkens (multiplies); light lifts the colour towards its square root, as a soft-light
-  // blend does, so that sunlit slopes show on dark imagery too (the Blue Marble's forests are
-  // ~0.15: a product would leave their relief nearly black on black).
-  vec3 lit = texel.rgb * level;  // premultiplied, as texel
-  float shade = relief - 1.0;
-  vec3 straight = lit / max(texel.a, 1e-3);
-  vec3 relit = shade < 0.0 ? lit * relief
-                           : lit + min(shade * kReliefLift, 1.0) * (sqrt(straight) - straight) * texel.a;
-  return mix(lit, relit, v_layerLight[k]) + color * (1.0 - texel.a);
+  // Shadowed slopes darken by the relief; lit ones brighten and saturate at the photo's own
+  // colour (its highlights are its own Sun's): level · multiplier <= 1
+  // (terrain::reliefLightMultiplier).
+  float headroom = 1.0 / max(level, 1e-3) - 1.0;
+  float lift = headroom > 0.0 ? 1.0 + headroom * (1.0 - exp(-(relief - 1.0) / headroom)) : 1.0;
+  float multiplier = relief > 1.0 ? lift : max(relief, 0.0);
+  float light = level * mix(1.0, multiplier, v_layerLight[k]);
+  return photo * (light * texel.a) + color * (1.0 - texel.a);
 #else
-  return texel.rgb * level + color * (1.0 - texel.a);
+  return photo * (level * texel.a) + color * (1.0 - texel.a);
 #endif
 }
 #endif
@@ -120,6 +126,7 @@ void main() {
 #if defined(GLOBE_IMAGERY) && !defined(GLOBE_OPAQUE_BASE)
   color *= texture(u_imagery, v_imageryUv).rgb;
 #endif
+  vec3 glow = vec3(0.0);  // night lights' premultiplied light (drape)
 #ifdef GLOBE_LAYERS
 #ifdef GLOBE_LIGHT_IMAGERY
   float level = mix(1.0, v_light.y, u_levelLight);
@@ -128,18 +135,19 @@ void main() {
   float level = 1.0;  // imagery keeps its own (baked-in) shading
   float relief = 1.0;
 #endif
-  color = drape(color, u_layer0, 0, level, relief);
+  color = drape(color, u_layer0, 0, level, relief, glow);
 #if GLOBE_LAYERS > 1
-  color = drape(color, u_layer1, 1, level, relief);
+  color = drape(color, u_layer1, 1, level, relief, glow);
 #endif
 #if GLOBE_LAYERS > 2
-  color = drape(color, u_layer2, 2, level, relief);
+  color = drape(color, u_layer2, 2, level, relief, glow);
 #endif
 #if GLOBE_LAYERS > 3
-  color = drape(color, u_layer3, 3, level, relief);
+  color = drape(color, u_layer3, 3, level, relief, glow);
 #endif
 #endif
-  o_color = vec4(mix(color * v_day, u_fogColor, v_fog), 1.0);
+  // Night lights shine where the day has gone (v_day: 1 by day, the night's floor by night).
+  o_color = vec4(mix(color * v_day + glow * (1.0 - v_day), u_fogColor, v_fog), 1.0);
 #ifndef GLOBE_VERTEX_LOG_DEPTH
   gl_FragDepth = log2(v_logDepth) * u_logDepthScale;
 #endif

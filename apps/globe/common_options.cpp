@@ -10,7 +10,11 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <limits>
+#include <optional>
+#include <tuple>
 
 namespace globe::app {
 
@@ -91,6 +95,15 @@ void addLayerOptions(CLI::App& command, CommonArguments& arguments) {
                      "bottom layer first. A water mask made "
                      "by `globe-tiler water-mask` (at most one) decides land and water where the "
                      "terrain is coarser; its opacity scales that");
+  command.add_option("--night-layer", arguments.nightLayerTexts,
+                     "a night-lights layer (a city-lights image, as --layer): shown only where "
+                     "the Sun has set under --time, as light of its own; counts among the 4 "
+                     "layers");
+  command
+      .add_option("--exposure", arguments.exposure,
+                  "imagery exposure: auto (a dark layer, its median luminance under 0.3, lifted "
+                  "by 1 - (1 - c)^k, k up to 3), off, or k (>= 1) for every layer")
+      ->type_name("auto|off|K");  // checked in applySceneArguments: a bad value exits 2
   command
       .add_option("--overlay", arguments.overlayFiles,
                   "KML, KMZ, GeoJSON or GPX file to show over the terrain: lines and "
@@ -154,40 +167,78 @@ std::optional<CommandContext> makeCommandContext(const CommonArguments& argument
   return context;
 }
 
+namespace {
+
+// --layer's or --night-layer's LAYER[,OPACITY], a named source resolved; said and nullopt if
+// it is not a layer.
+std::optional<scene::LayerOptions> layerArgument(const char* command, const char* option,
+                                                 const CommonArguments& arguments,
+                                                 const std::string& given) {
+  // A named source, with or without ",OPACITY".
+  std::string text = given;
+  const size_t comma = given.rfind(',');
+  for (const std::string& name :
+       {given, comma == std::string::npos ? std::string() : given.substr(0, comma)}) {
+    if (name.empty()) continue;
+    auto resolved = resolveSourceName(arguments, name, services::SourceKind::Imagery);
+    if (!resolved) {
+      std::fprintf(stderr, "globe %s: %s %s\n", command, option, resolved.error().c_str());
+      return std::nullopt;
+    }
+    if (*resolved != name) {
+      text = *resolved + given.substr(name.size());
+      break;
+    }
+  }
+  auto layer = parseLayerArgument(text);
+  if (!layer) {
+    std::fprintf(stderr, "globe %s: %s\n", command, layer.error().c_str());
+    return std::nullopt;
+  }
+  if (const std::string hint = layerGivenAnOverlayHint(layer->directory); !hint.empty()) {
+    std::fprintf(stderr, "globe %s: %s %s: not a layer%s\n", command, option, given.c_str(),
+                 hint.c_str());
+    return std::nullopt;
+  }
+  return *layer;
+}
+
+// --exposure: auto → NaN (chosen per layer), off → 1, a number >= 1 as it is.
+std::optional<float> parseExposure(const std::string& text) {
+  if (text == "auto") return std::numeric_limits<float>::quiet_NaN();
+  if (text == "off") return 1.0f;
+  char* end = nullptr;
+  const float value = std::strtof(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0' || !(value >= 1.0f) || !(value <= 16.0f)) {
+    return std::nullopt;
+  }
+  return value;
+}
+
+}  // namespace
+
 bool applySceneArguments(const char* command, const CommonArguments& arguments,
                          const CommandContext& context, scene::SceneOptions& scene) {
   scene.globeModel = context.globeModel;
   scene.sea = context.sea;
   scene.network = context.network;
   scene.warnings = context.warnings;
-  for (const std::string& given : arguments.layerTexts) {
-    // A named source, with or without ",OPACITY".
-    std::string text = given;
-    const size_t comma = given.rfind(',');
-    for (const std::string& name :
-         {given, comma == std::string::npos ? std::string() : given.substr(0, comma)}) {
-      if (name.empty()) continue;
-      auto resolved = resolveSourceName(arguments, name, services::SourceKind::Imagery);
-      if (!resolved) {
-        std::fprintf(stderr, "globe %s: --layer %s\n", command, resolved.error().c_str());
-        return false;
-      }
-      if (*resolved != name) {
-        text = *resolved + given.substr(name.size());
-        break;
-      }
+  const auto exposure = parseExposure(arguments.exposure);
+  if (!exposure) {
+    std::fprintf(stderr, "globe %s: --exposure must be auto, off or a number >= 1, not '%s'\n",
+                 command, arguments.exposure.c_str());
+    return false;
+  }
+  for (const auto& [texts, option, night] :
+       {std::tuple{&arguments.layerTexts, "--layer", false},
+        std::tuple{&arguments.nightLayerTexts, "--night-layer", true}}) {
+    for (const std::string& given : *texts) {
+      auto layer = layerArgument(command, option, arguments, given);
+      if (!layer) return false;
+      layer->night = night;
+      layer->exposure = *exposure;
+      scene.layers.push_back(*layer);
     }
-    auto layer = parseLayerArgument(text);
-    if (!layer) {
-      std::fprintf(stderr, "globe %s: %s\n", command, layer.error().c_str());
-      return false;
-    }
-    if (const std::string hint = layerGivenAnOverlayHint(layer->directory); !hint.empty()) {
-      std::fprintf(stderr, "globe %s: --layer %s: not a layer%s\n", command, given.c_str(),
-                   hint.c_str());
-      return false;
-    }
-    scene.layers.push_back(*layer);
   }
   for (const std::string& file : arguments.overlayFiles) {
     auto document = overlays::readOverlayFile(file);

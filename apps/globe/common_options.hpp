@@ -26,6 +26,8 @@ struct CommonArguments {
   std::string globeName = "wgs84";
   bool seaFloor = false;
   std::vector<std::string> layerTexts;
+  std::vector<std::string> nightLayerTexts;  // --night-layer
+  std::string exposure = "auto";             // --exposure auto | off | K
   std::vector<std::string> overlayFiles;  // --overlay
   bool overlayHidden = false;             // --overlay-hidden
   std::string lighting = "auto";          // --lighting auto | on | off; bare: on

@@ -94,6 +94,10 @@ int runSnapshotCommand(const SnapshotArguments& arguments, const CommonArguments
     std::printf("terrain under the camera: %s\n",
                 report->terrainData.empty() ? "not known (the source names no files)"
                                             : report->terrainData.c_str());
+    for (size_t k = 0; k < report->layerExposures.size(); ++k) {
+      std::printf("layer %zu exposure: %.2f%s\n", k + 1, report->layerExposures[k],
+                  report->layerExposures[k] > 1.0f ? " (a dark photo lifted: --exposure)" : "");
+    }
   }
   if (report->failures > 0 && !arguments.allowMissing) {
     std::fprintf(stderr,

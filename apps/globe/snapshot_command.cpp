@@ -107,6 +107,9 @@ Result<SnapshotReport> runSnapshot(const SnapshotOptions& options) {
   report.terrainData =
       terrainDataText((*scene)->store().manifest(), pose.position.longitudeDegrees(),
                       pose.position.latitudeDegrees());
+  if (const scene::ImageryLayers* layers = (*scene)->imagery()) {
+    report.layerExposures = layers->exposures();
+  }
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }

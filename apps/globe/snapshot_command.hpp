@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "camera/camera_pose.hpp"
 #include "scene/terrain_scene.hpp"
@@ -32,6 +33,7 @@ struct SnapshotReport {
   uint64_t failures = 0;
   // What the terrain under the camera was made from ("ETOPO20.DEM, 20' (~37 km)"; empty: unknown).
   std::string terrainData;
+  std::vector<float> layerExposures;  // each --layer's exposure as drawn, bottom first
   double seconds = 0;
 };
 

@@ -59,6 +59,7 @@ struct TerrainRenderer::Impl {
     GLint logDepthScale = -1, coarserEdges = -1;
     GLint fogColor = -1, fogDensity = -1, fogMaximum = -1;
     GLint layerTransform = -1, layerOpacity = -1, layerLight = -1, levelLight = -1;
+    GLint layerExposure = -1, layerNight = -1;
     GLint waterMask = -1, waterMaskTransform = -1, waterMaskWeight = -1;
     std::array<GLint, terrain::kMaxDrapeLayers> layerSamplers{-1, -1, -1, -1};
   };
@@ -76,6 +77,8 @@ struct TerrainRenderer::Impl {
     std::array<GLuint, terrain::kMaxDrapeLayers> textures{};
     std::array<glm::vec4, terrain::kMaxDrapeLayers> transforms{};
     std::array<float, terrain::kMaxDrapeLayers> opacities{};
+    std::array<float, terrain::kMaxDrapeLayers> exposures{};
+    std::array<float, terrain::kMaxDrapeLayers> nights{};  // 1: night lights (TileDrape::night)
     // w of mix(1, relief, w) per layer, at the tile's corners (NW, NE, SW, SE)
     std::array<glm::vec4, terrain::kMaxDrapeLayers> lightWeights{};
     std::array<GLuint, terrain::kMaxDrapeLayers> samplers{};
@@ -170,13 +173,17 @@ TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(
     }
     // NaN and negative opacities draw nothing.
     const float opacity = drape.opacity > 0.0f ? std::min(drape.opacity, 1.0f) : 0.0f;
-    const bool opaque = opacity >= 1.0f && imageryTiles.isOpaqueOver(drape.layer, drape.imageryTile,
-                                                                     drape.uvTransform);
+    // Night lights add light where the Sun has set and cover nothing.
+    const bool opaque = !drape.night && opacity >= 1.0f &&
+                        imageryTiles.isOpaqueOver(drape.layer, drape.imageryTile,
+                                                  drape.uvTransform);
     if (opaque) bound.count = 0;
     if (bound.count == 0) bound.opaqueBase = opaque;
     bound.textures[bound.count] = texture;
     bound.transforms[bound.count] = drape.uvTransform;
     bound.opacities[bound.count] = opacity;
+    bound.exposures[bound.count] = std::max(drape.exposure, 1.0f);
+    bound.nights[bound.count] = drape.night ? 1.0f : 0.0f;
     // Per corner from the data's own resolutions; where they are not known, from the drawn
     // imagery tile's texel over this tile's vertex spacing.
     for (int corner = 0; corner < 4; ++corner) {
@@ -288,6 +295,8 @@ Result<const TerrainRenderer::Impl::Program*> TerrainRenderer::Impl::program(
   u.layerOpacity = p.uniformLocation("u_layerOpacity");
   u.layerLight = p.uniformLocation("u_layerLight");
   u.levelLight = p.uniformLocation("u_levelLight");
+  u.layerExposure = p.uniformLocation("u_layerExposure");
+  u.layerNight = p.uniformLocation("u_layerNight");
   u.waterMask = p.uniformLocation("u_waterMask");
   u.waterMaskTransform = p.uniformLocation("u_waterMaskTransform");
   u.waterMaskWeight = p.uniformLocation("u_waterMaskWeight");
@@ -331,6 +340,8 @@ void TerrainRenderer::Impl::bindDrapes(const BoundDrapes& drapes, const Uniforms
     const auto n = static_cast<GLsizei>(drapes.count);
     glUniform4fv(u.layerTransform, n, glm::value_ptr(drapes.transforms[0]));
     glUniform1fv(u.layerOpacity, n, drapes.opacities.data());
+    if (u.layerExposure >= 0) glUniform1fv(u.layerExposure, n, drapes.exposures.data());
+    if (u.layerNight >= 0) glUniform1fv(u.layerNight, n, drapes.nights.data());
     if (u.layerLight >= 0) {
       glUniform4fv(u.layerLight, n, glm::value_ptr(drapes.lightWeights[0]));
     }

@@ -13,6 +13,7 @@
 #include "scene/native_resolution.hpp"
 #include "services/imagery_services.hpp"
 #include "streaming/background_pack_opens.hpp"
+#include "terrain/imagery_exposure.hpp"
 #include "terrain/imagery_level.hpp"
 #include "terrain/water_mask_weight.hpp"
 
@@ -34,6 +35,7 @@ struct ImageryLayers::Layer {
   // Both level-0 tiles opaque in every texel (known after the preload): the layer covers the
   // whole globe opaquely at every level (a footprint's edge would be transparent).
   bool opaqueEverywhere = false;
+  float exposure = 1.0f;  // chosen at the preload (LayerOptions::exposure)
   bool isWaterMask() const { return store->manifest().kind == formats::LayerKind::WaterMask; }
 
   Layer(LayerOptions layerOptions, std::shared_ptr<streaming::ImageryTiles> layerStore,
@@ -163,8 +165,25 @@ std::vector<std::string> ImageryLayers::attributions() const {
   return out;
 }
 
+std::vector<float> ImageryLayers::exposures() const {
+  std::vector<float> out;
+  for (const auto& layer : layers_) out.push_back(layer->exposure);
+  return out;
+}
+
+// The exposure a layer is drawn with: as given, or from its level-0 tiles' median luminance.
+// Night lights, water masks and the program's own tiles (overlays) keep their colours.
+static float chooseExposure(const LayerOptions& options, bool waterMask,
+                            std::span<const uint8_t> levelZeroPixels) {
+  if (options.night || waterMask || options.tiles) return 1.0f;
+  if (std::isfinite(options.exposure)) return std::max(options.exposure, 1.0f);
+  return static_cast<float>(
+      terrain::exposureForMedianLuminance(terrain::medianOpaqueLuminance(levelZeroPixels)));
+}
+
 Result<void> ImageryLayers::preload(Layer& layer, uint32_t index, TileGpu& gpu) {
-  layer.opaqueEverywhere = !layer.isWaterMask();
+  layer.opaqueEverywhere = !layer.isWaterMask() && !layer.options.night;
+  std::vector<uint8_t> levelZeroPixels;
   for (uint32_t x = 0; x < geo::GeographicTilingScheme::tilesX(0); ++x) {
     const geo::TileId root{0, x, 0};
     auto image = layer.source->load(root);
@@ -174,6 +193,7 @@ Result<void> ImageryLayers::preload(Layer& layer, uint32_t index, TileGpu& gpu) 
       continue;
     }
     const std::vector<uint8_t>& pixels = (*image)->pixels;
+    levelZeroPixels.insert(levelZeroPixels.end(), pixels.begin(), pixels.end());
     for (size_t k = 3; k < pixels.size() && layer.opaqueEverywhere; k += 4) {
       layer.opaqueEverywhere = pixels[k] == 255;
     }
@@ -184,6 +204,7 @@ Result<void> ImageryLayers::preload(Layer& layer, uint32_t index, TileGpu& gpu) 
     }
     layer.textureLastUsedFrame[root] = frame_;
   }
+  layer.exposure = chooseExposure(layer.options, layer.isWaterMask(), levelZeroPixels);
   return {};
 }
 
@@ -294,6 +315,8 @@ Result<ImageryFrame> ImageryLayers::update(std::span<const geo::TileId> tiles,
         transform = terrain::edgeSampledTransform(transform, tileSize);
       }
       drape = terrain::TileDrape{index, drawn, transform, layer.options.opacity};
+      drape.exposure = layer.exposure;
+      drape.night = layer.options.night;
       drape.nativeTexelDegrees = layer.nativeTexelAt(tile);
       ++frame.drapes;
     }

@@ -38,6 +38,12 @@ struct LayerOptions {
 
   std::filesystem::path directory;  // made by `globe-tiler imagery`, or a service
   float opacity = 1.0f;             // 0..1
+  // Night lights (a city-lights image): shown only on the night side, as light of its own.
+  bool night = false;
+  // The photo's exposure (terrain/imagery_exposure.hpp): NaN picks it from the layer's median
+  // luminance (dark imagery lifted); 1 leaves the photo as it is. Night and program-made layers
+  // are never exposed.
+  float exposure = std::numeric_limits<float>::quiet_NaN();
   // Tiles made by the program itself (the overlays' draped lines and polygons): used instead of
   // opening `directory`, which then only names the layer.
   std::shared_ptr<streaming::ImageryTiles> tiles;
@@ -71,6 +77,8 @@ class ImageryLayers {
   ImageryLayers& operator=(const ImageryLayers&) = delete;
 
   bool empty() const { return layers_.empty(); }
+  // Each layer's exposure as drawn (known after the first update; 1 before), bottom first.
+  std::vector<float> exposures() const;
   // Each layer's attribution (empty where it gives none), bottom layer first.
   std::vector<std::string> attributions() const;
   size_t size() const { return layers_.size(); }

@@ -23,6 +23,10 @@ struct TileDrape {
   // 0.5).
   glm::vec4 uvTransform{0.0f, 0.0f, 1.0f, 1.0f};
   float opacity = 1.0f;  // multiplies the texel alpha
+  float exposure = 1.0f;  // the photo's exposure curve (imagery_exposure.hpp): 1 none
+  // A night-lights layer: drawn only where the Sun has set (added light, not lit, never covering
+  // the layers below it).
+  bool night = false;
   // The data's own resolutions: the layer's finest source texel where the tile is (its centre),
   // and the terrain's finest source step at the tile's corners (north-west, north-east,
   // south-west, south-east), in degrees. --lighting auto weighs the light by their ratio

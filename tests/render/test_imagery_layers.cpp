@@ -21,6 +21,7 @@
 #include "render/gl_loader.hpp"
 #include "render/imagery_textures.hpp"
 #include "render/read_pixels.hpp"
+#include "terrain/imagery_exposure.hpp"
 #include "terrain/tile_mesh.hpp"
 #include "tests/render/render_test_support.hpp"
 
@@ -451,6 +452,86 @@ TEST_F(ImageryLayers, AutoLightingWeighsTheReliefByTheTexelOverTheSampleSpacing)
   const double level = levelShare(terrain::kGentleReliefWeight);
   EXPECT_NEAR(ramp.fine, level * (1.0 + terrain::kGentleReliefWeight * (relief - 1.0)), 4.0);
   EXPECT_NEAR(ramp.coarse, level * relief, 4.0);
+}
+
+// Imagery as photographed: lit slopes brighten towards the photo's own colour and never past
+// it (its highlights are its own Sun's); shadowed ones darken. A ramp rising 150 m per sample
+// interval westwards faces the eastern Sun; the same ramp mirrored faces away.
+TEST_F(ImageryLayers, LightNeverPushesThePhotoPastItsOwnColours) {
+  constexpr Rgba kSand{210, 180, 120, 255};
+  const geo::TileId sunward{10, 1024, 448};
+  const geo::TileId away{10, 1026, 448};
+  for (const auto& [tile, westwards] : {std::pair{sunward, true}, std::pair{away, false}}) {
+    terrain::HeightBlock block;
+    block.verticesPerSide = 17;
+    block.heights.resize(17 * 17);
+    for (uint32_t i = 0; i < 17 * 17; ++i) {
+      const uint32_t step = westwards ? 16 - i % 17 : i % 17;
+      block.heights[i] = static_cast<int16_t>(kGroundMeters + 150.0 * step);
+    }
+    const double skirt = terrain::recommendedSkirtDepthMeters(tile.level, 17, kWgs84);
+    ASSERT_TRUE(
+        renderer_->uploadTile(tile, terrain::buildTileMesh(tile, block, kWgs84, skirt)).ok());
+    uploadImagery(0, tile, solidImage(kSand));
+  }
+  uploadFlat(kTile);
+  uploadImagery(0, kTile, solidImage(kSand));
+  const auto middleOf = [&](const geo::TileId& tile, double altitudeMeters) {
+    const geo::Cartographic centre = geo::GeographicTilingScheme::tileRectangle(tile).center();
+    const LocalFrame frame = localFrame(geo::radiansToDegrees(centre.longitudeRadians),
+                                        geo::radiansToDegrees(centre.latitudeRadians));
+    const glm::dvec3 sun = glm::normalize(0.5 * frame.up + std::sqrt(0.75) * frame.east);
+    const terrain::RenderView view = viewOnto(tile, altitudeMeters, sun);
+    const glm::ivec2 middle = pixelAt(view, tile, 0.5, 0.5);
+    return drawDraped(view, {tile}, {drapesOf({{0, tile}})}).at(middle.x, middle.y);
+  };
+  TerrainStyle style = renderer_->style();
+  for (const auto mode : {terrain::ImageryLighting::On, terrain::ImageryLighting::Auto}) {
+    style.imageryLighting = mode;
+    renderer_->setStyle(style);
+    const Rgba lit = middleOf(sunward, 40e3), shaded = middleOf(away, 40e3),
+               level = middleOf(kTile, 450e3);
+    SCOPED_TRACE(std::string(terrain::toString(mode)));
+    for (size_t c = 0; c < 3; ++c) {
+      EXPECT_LE(lit[c], kSand[c] + 1) << "channel " << c << ": past the photo's colour";
+      EXPECT_GT(lit[c], level[c] + 2) << "channel " << c << ": the lit slope must show";
+      EXPECT_LT(shaded[c], level[c] - 2) << "channel " << c << ": the shaded slope must show";
+    }
+  }
+}
+
+// A dark photo's exposure lifts it by 1 − (1 − c)^k (terrain/imagery_exposure.hpp), unlit; a
+// night-lights layer adds nothing by day and shines on the night side, covering nothing.
+TEST_F(ImageryLayers, ExposureLiftsDarkPhotosAndNightLightsShineOnlyAtNight) {
+  constexpr Rgba kDark{40, 60, 30, 255};
+  constexpr Rgba kLights{240, 200, 120, 255};
+  uploadFlat(kTile);
+  uploadImagery(0, kTile, solidImage(kDark));
+  uploadImagery(1, kTile, solidImage(kLights));
+  terrain::RenderView view = viewOnto(kTile, 450e3);
+  const glm::ivec2 middle = pixelAt(view, kTile, 0.5, 0.5);
+  terrain::TileDrape photo{0, kTile};
+  photo.exposure = 2.0f;
+  const Rgba exposed = drawDraped(view, {kTile}, {drapesOf({photo})}).at(middle.x, middle.y);
+  for (size_t c = 0; c < 3; ++c) {
+    const double expected = 255.0 * terrain::exposedValue(kDark[c] / 255.0, 2.0);
+    EXPECT_NEAR(exposed[c], expected, 2.0) << "channel " << c;
+  }
+  terrain::TileDrape lights{1, kTile};
+  lights.night = true;
+  const Rgba byDay = drawDraped(view, {kTile}, {drapesOf({photo, lights})}).at(middle.x, middle.y);
+  EXPECT_TRUE(near(byDay, exposed, 1)) << "night lights by day";
+  // The real Sun straight below the tile: deep night there.
+  const geo::Cartographic centre = geo::GeographicTilingScheme::tileRectangle(kTile).center();
+  view.sunDirectionEcef = -geo::geodeticSurfaceNormal(kWgs84, centre);
+  view.sunIsReal = true;
+  const Rgba dark = drawDraped(view, {kTile}, {drapesOf({photo})}).at(middle.x, middle.y);
+  const Rgba lit = drawDraped(view, {kTile}, {drapesOf({photo, lights})}).at(middle.x, middle.y);
+  for (size_t c = 0; c < 3; ++c) {
+    EXPECT_LT(dark[c], exposed[c] / 2) << "channel " << c << ": the night side is dark";
+    EXPECT_GT(lit[c], dark[c] + 0.8 * kLights[c] - 0.8 * dark[c]) << "channel " << c;
+    EXPECT_LE(lit[c], dark[c] + kLights[c] + 1) << "channel " << c;
+  }
 }
 
 TEST_F(ImageryLayers, MissingTexturesAreSkippedAndCounted) {

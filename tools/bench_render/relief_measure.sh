@@ -50,7 +50,9 @@ shot() { "$GLOBE" snapshot "$WORK/pyramid" --camera "$1" -o "$2" "${@:3}" >/dev/
   echo "hill-shaded), and in brackets the ratio of the two. \`--lighting off\` is how imagery was"
   echo "drawn before: its own shading only, which Blue Marble does not have at this scale; \`auto\`"
   echo "(the default) shades each layer by how much coarser its texel is than the terrain's samples"
-  echo "(docs/viewer.md): fully here; \`on\` always fully."
+  echo "(docs/viewer.md): fully here; \`on\` always fully. Lit slopes brighten at most to the"
+  echo "photo's own colour, and the dark Blue Marble is drawn with its automatic exposure"
+  echo "(\`--exposure auto\`, k = 2.42)."
   echo "Made by \`tools/bench_render/relief_measure.sh\` on $(date -u +%Y-%m-%d)."
   echo
   cat "$WORK/table.md"

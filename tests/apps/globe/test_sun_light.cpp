@@ -74,6 +74,19 @@ TEST(SunLight, NightIsDarkAndMorningAndEveningLightOppositeSlopes) {
   EXPECT_GT(night.mean(), 0.0) << "but not nothing: the night's floor";
 }
 
+// A night-lights layer (--night-layer; here the Blue Marble stands in for a city-lights image)
+// shows only where the Sun has set: the same picture at noon, much brighter at midnight.
+TEST(SunLight, NightLightsShineOnlyWhereTheSunHasSet) {
+  const fs::path dir = globe::testing::freshTempDir("sun-night-lights");
+  const std::string lights = "--night-layer " + globe::testing::blueMarbleLayer().string();
+  const Halves noon = snapshotHalves("2024-06-21T12:00+09:00", dir);
+  const Halves noonLit = snapshotHalves("2024-06-21T12:00+09:00", dir, lights);
+  const Halves night = snapshotHalves("2024-06-21T00:00+09:00", dir);
+  const Halves nightLit = snapshotHalves("2024-06-21T00:00+09:00", dir, lights);
+  EXPECT_NEAR(noonLit.mean(), noon.mean(), 0.5) << "night lights by day";
+  EXPECT_GT(nightLit.mean(), night.mean() + 20.0) << "the lights at night";
+}
+
 // Mean luminance (0..255) of a 200×200 view straight down on Zion Canyon from 12 km.
 double zionLuminance(const std::string& time, const std::string& extra, const fs::path& dir) {
   const fs::path out =
@@ -186,6 +199,22 @@ TEST(SnapshotVerbose, SaysTheTerrainsSourceAndSpacingUnderTheCamera) {
   const auto quiet = runGlobe("snapshot " + pyramid + " --camera 2.35,48.86,20000 --size 64x64 -o " +
                               (dir / "quiet.png").string());
   EXPECT_EQ(quiet.output.find("terrain under the camera"), std::string::npos) << quiet.output;
+  // Each layer's exposure: the dark Blue Marble lifted, or left alone with --exposure off.
+  const std::string layer = " --layer " + globe::testing::blueMarbleLayer().string();
+  const auto lifted = runGlobe("snapshot " + pyramid + " --camera 2.35,48.86,20000 --size 64x64 -v" +
+                               layer + " -o " + (dir / "lifted.png").string());
+  ASSERT_EQ(lifted.exitCode, 0) << lifted.output;
+  EXPECT_NE(lifted.output.find("(a dark photo lifted: --exposure)"), std::string::npos)
+      << lifted.output;
+  const auto plain = runGlobe("snapshot " + pyramid + " --camera 2.35,48.86,20000 --size 64x64 -v" +
+                              layer + " --exposure off -o " + (dir / "plain.png").string());
+  EXPECT_NE(plain.output.find("layer 1 exposure: 1.00\n"), std::string::npos) << plain.output;
+  const auto wrong = runGlobe("snapshot " + pyramid + " --camera 2.35,48.86,20000 --size 64x64" +
+                              layer + " --exposure 0.5 -o " + (dir / "wrong.png").string());
+  EXPECT_EQ(wrong.exitCode, 2) << wrong.output;
+  EXPECT_NE(wrong.output.find("--exposure must be auto, off or a number >= 1, not '0.5'"),
+            std::string::npos)
+      << wrong.output;
 }
 
 }  // namespace
