@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geo/ecef.hpp"
 #include "measure/elevation_profile.hpp"
 #include "measure/profile_chart.hpp"
 
@@ -61,6 +62,13 @@ Result<std::optional<ProfileSummary>> ProfilePanel::update(
   image_->setImage(*chart);
   path_ = path;
   sizePixels_ = size;
+  const size_t stride = rows->size() / kGroundPoints + 1;
+  for (size_t i = 0; i < rows->size(); i += stride) {
+    const measure::ProfileRow& row = (*rows)[i];
+    groundEcef_.push_back(geo::cartographicToEcef(
+        ellipsoid, geo::Cartographic::fromDegrees(row.sample.longitudeDegrees,
+                                                  row.sample.latitudeDegrees, row.heightMeters)));
+  }
   const auto [lowest, highest] = std::minmax_element(
       rows->begin(), rows->end(), [](const measure::ProfileRow& a, const measure::ProfileRow& b) {
         return a.heightMeters < b.heightMeters;
@@ -74,14 +82,41 @@ void ProfilePanel::clear() {
   image_->setImage({});
   path_.clear();
   sizePixels_ = {0, 0};
+  groundEcef_.clear();
+}
+
+glm::vec2 profileChartTopLeft(ChartCorner corner, glm::ivec2 chartSizePixels,
+                              int framebufferWidthPixels, int framebufferHeightPixels,
+                              float bottomMarginPixels) {
+  const float top = std::round(static_cast<float>(framebufferHeightPixels - chartSizePixels.y) -
+                               bottomMarginPixels);
+  const float left = corner == ChartCorner::BottomLeft
+                         ? 8.0f
+                         : static_cast<float>(framebufferWidthPixels - chartSizePixels.x - 8);
+  return {left, top};
+}
+
+ChartCorner profileChartCorner(std::span<const glm::dvec2> pathPixels, glm::ivec2 chartSizePixels,
+                               int framebufferWidthPixels, int framebufferHeightPixels,
+                               float bottomMarginPixels) {
+  const auto covered = [&](ChartCorner corner) {
+    const glm::dvec2 low(profileChartTopLeft(corner, chartSizePixels, framebufferWidthPixels,
+                                             framebufferHeightPixels, bottomMarginPixels));
+    const glm::dvec2 high = low + glm::dvec2(chartSizePixels);
+    return std::count_if(pathPixels.begin(), pathPixels.end(), [&](const glm::dvec2& p) {
+      return p.x >= low.x && p.x < high.x && p.y >= low.y && p.y < high.y;
+    });
+  };
+  return covered(ChartCorner::BottomRight) < covered(ChartCorner::BottomLeft)
+             ? ChartCorner::BottomRight
+             : ChartCorner::BottomLeft;
 }
 
 void ProfilePanel::draw(int framebufferWidthPixels, int framebufferHeightPixels,
-                        float bottomMarginPixels) const {
-  const glm::ivec2 size = image_->sizePixels();
-  const float top =
-      std::round(static_cast<float>(framebufferHeightPixels - size.y) - bottomMarginPixels);
-  image_->draw({8.0f, top}, framebufferWidthPixels, framebufferHeightPixels, 0.92f);
+                        float bottomMarginPixels, ChartCorner corner) const {
+  const glm::vec2 topLeft = profileChartTopLeft(corner, image_->sizePixels(), framebufferWidthPixels,
+                                                framebufferHeightPixels, bottomMarginPixels);
+  image_->draw(topLeft, framebufferWidthPixels, framebufferHeightPixels, 0.92f);
 }
 
 }  // namespace globe::app

@@ -1,4 +1,4 @@
-// The elevation profile chart in `globe view`'s bottom-left corner (X, as Google Earth's "Show
+// The elevation profile chart in a bottom corner of `globe view` (X, as Google Earth's "Show
 // elevation profile"): a path's profile over the pyramid's exact surface, drawn by the chart
 // code into an image shown over the frame; remade only when the path or the window's size
 // changes.
@@ -6,9 +6,11 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include "core/result.hpp"
 #include "geo/ellipsoid.hpp"
@@ -32,6 +34,18 @@ glm::ivec2 profileChartSizePixels(int framebufferWidthPixels, int framebufferHei
 // A placemark's first line (a LineString's vertices), or nullopt when it has none.
 std::optional<std::vector<measure::PathPoint>> placemarkLine(const overlays::Placemark& placemark);
 
+// Where the chart goes: the bottom-left corner above the scale bar, or the bottom-right one when
+// fewer of the profiled path's on-screen points (framebuffer pixels, sampled densely along it)
+// fall under it there, so the chart does not hide the path it profiles where a corner is free.
+enum class ChartCorner { BottomLeft, BottomRight };
+ChartCorner profileChartCorner(std::span<const glm::dvec2> pathPixels, glm::ivec2 chartSizePixels,
+                               int framebufferWidthPixels, int framebufferHeightPixels,
+                               float bottomMarginPixels);
+// The chart's top-left corner in framebuffer pixels.
+glm::vec2 profileChartTopLeft(ChartCorner corner, glm::ivec2 chartSizePixels,
+                              int framebufferWidthPixels, int framebufferHeightPixels,
+                              float bottomMarginPixels);
+
 class ProfilePanel {
  public:
   // Needs the GL context current.
@@ -47,15 +61,21 @@ class ProfilePanel {
                                                int framebufferHeightPixels);
   // Forgets the chart (the next update() makes it again).
   void clear();
-  // Over the frame at the bottom left, above the scale bar (bottomMarginPixels).
-  void draw(int framebufferWidthPixels, int framebufferHeightPixels,
-            float bottomMarginPixels) const;
+  // Over the frame in `corner`, above the scale bar's margin (bottomMarginPixels).
+  void draw(int framebufferWidthPixels, int framebufferHeightPixels, float bottomMarginPixels,
+            ChartCorner corner) const;
+  glm::ivec2 sizePixels() const { return sizePixels_; }  // {0, 0} with no chart
+  // The profiled path on the ground (ECEF, at most kGroundPoints of the chart's samples): where
+  // it is on screen decides the chart's corner.
+  static constexpr size_t kGroundPoints = 512;
+  const std::vector<glm::dvec3>& groundPointsEcef() const { return groundEcef_; }
 
  private:
   explicit ProfilePanel(std::unique_ptr<render::ImageOverlay> image) : image_(std::move(image)) {}
   std::unique_ptr<render::ImageOverlay> image_;
   std::vector<measure::PathPoint> path_;  // the chart's
   glm::ivec2 sizePixels_{0, 0};
+  std::vector<glm::dvec3> groundEcef_;
 };
 
 }  // namespace globe::app

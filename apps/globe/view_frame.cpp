@@ -238,6 +238,25 @@ void drawWorld(ViewSession& s, int width, int height) {
   if (s.multisample) s.multisample->resolve();
 }
 
+namespace {
+
+// Where ECEF points are drawn in the last frame (framebuffer pixels); those behind the camera
+// are left out.
+std::vector<glm::dvec2> framebufferPixelsOf(const terrain::RenderView& view,
+                                            const std::vector<glm::dvec3>& pointsEcef) {
+  std::vector<glm::dvec2> pixels;
+  const glm::dmat4 toClip = view.projection * view.viewMatrix;
+  for (const glm::dvec3& point : pointsEcef) {
+    const glm::dvec4 clip = toClip * glm::dvec4(point, 1.0);
+    if (!(clip.w > 0)) continue;
+    pixels.emplace_back((clip.x / clip.w + 1.0) * 0.5 * view.widthPixels,
+                        (1.0 - clip.y / clip.w) * 0.5 * view.heightPixels);
+  }
+  return pixels;
+}
+
+}  // namespace
+
 void drawFrame(ViewSession& s, HudState& hudState, std::vector<std::string> hudKey, bool hudChanged,
                int width, int height) {
   const auto drawStart = ViewClock::now();
@@ -248,8 +267,13 @@ void drawFrame(ViewSession& s, HudState& hudState, std::vector<std::string> hudK
   }
   drawWorld(s, width, height);
   if (s.labels) s.labels->drawPanel(*s.scene, width, height, s.panelPlace);
-  // Above the scale bar at the bottom left.
-  s.profilePanel->draw(width, height, 34.0f * hudScale(width, height));
+  // Above the scale bar, in the bottom corner that hides less of the profiled path.
+  const float chartMargin = 34.0f * hudScale(width, height);
+  s.profilePanel->draw(width, height, chartMargin,
+                       profileChartCorner(framebufferPixelsOf(s.scene->view(),
+                                                              s.profilePanel->groundPointsEcef()),
+                                          s.profilePanel->sizePixels(), width, height,
+                                          chartMargin));
   s.hud->draw(width, height);
   if (s.input.screenshotRequested) {
     s.input.screenshotRequested = false;

@@ -8,6 +8,7 @@
 #include <variant>
 #include <vector>
 
+#include "apps/globe/profile_panel.hpp"
 #include "apps/globe/view_session.hpp"
 #include "render/hud_renderer.hpp"
 #include "render/hud_widgets.hpp"
@@ -88,6 +89,38 @@ TEST(HudLayout, NoElementCoversAnother) {
     }
   }
   EXPECT_EQ(sizes, 8);
+}
+
+// The elevation profile chart goes to the bottom corner that hides less of the path it profiles:
+// a ruler drawn in the bottom left moves it right; one on the right, or none, leaves it left.
+TEST(HudLayout, TheProfileChartDoesNotHideThePathItProfiles) {
+  const int width = 1280, height = 720;
+  const float margin = 34.0f;
+  const glm::ivec2 chart = profileChartSizePixels(width, height);
+  const auto line = [](glm::dvec2 from, glm::dvec2 to) {
+    std::vector<glm::dvec2> points;
+    for (int i = 0; i <= 100; ++i) points.push_back(from + (to - from) * (i / 100.0));
+    return points;
+  };
+  const auto bottomLeft = line({60, 650}, {400, 500});
+  const auto bottomRight = line({900, 650}, {1200, 520});
+  const auto top = line({100, 80}, {1100, 120});
+  EXPECT_EQ(profileChartCorner(bottomLeft, chart, width, height, margin), ChartCorner::BottomRight);
+  EXPECT_EQ(profileChartCorner(bottomRight, chart, width, height, margin), ChartCorner::BottomLeft);
+  EXPECT_EQ(profileChartCorner(top, chart, width, height, margin), ChartCorner::BottomLeft);
+  EXPECT_EQ(profileChartCorner({}, chart, width, height, margin), ChartCorner::BottomLeft);
+  // Across the whole bottom: the corner with fewer of its points.
+  auto across = line({20, 600}, {1260, 600});
+  const auto more = line({700, 640}, {1250, 560});
+  across.insert(across.end(), more.begin(), more.end());
+  EXPECT_EQ(profileChartCorner(across, chart, width, height, margin), ChartCorner::BottomLeft);
+  // The corners sit inside the frame, above the margin, clear of each other.
+  for (const ChartCorner corner : {ChartCorner::BottomLeft, ChartCorner::BottomRight}) {
+    const glm::vec2 topLeft = profileChartTopLeft(corner, chart, width, height, margin);
+    EXPECT_GE(topLeft.x, 0.0f);
+    EXPECT_LE(topLeft.x + static_cast<float>(chart.x), static_cast<float>(width));
+    EXPECT_NEAR(topLeft.y + static_cast<float>(chart.y), height - margin, 1.0f);
+  }
 }
 
 }  // namespace
