@@ -63,6 +63,10 @@ in float v_logDepth;
 in float v_fog;          // terrain.vert: distance fog towards the horizon's colour
 in float v_day;          // terrain.vert: the daylight under the real Sun, 1 otherwise
 uniform vec3 u_fogColor;
+// Aerial perspective under the physical sky (terrain.vert), instead of the fog.
+uniform bool u_aerial;
+in vec3 v_transmittance;
+in vec3 v_inscatter;
 
 uniform float u_logDepthScale; // 1 / log2(1 + far)
 
@@ -147,7 +151,8 @@ void main() {
 #endif
 #endif
   // Night lights shine where the day has gone (v_day: 1 by day, the night's floor by night).
-  o_color = vec4(mix(color * v_day + glow * (1.0 - v_day), u_fogColor, v_fog), 1.0);
+  vec3 lit = color * v_day + glow * (1.0 - v_day);
+  o_color = vec4(u_aerial ? lit * v_transmittance + v_inscatter : mix(lit, u_fogColor, v_fog), 1.0);
 #ifndef GLOBE_VERTEX_LOG_DEPTH
   gl_FragDepth = log2(v_logDepth) * u_logDepthScale;
 #endif

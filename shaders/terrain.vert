@@ -78,6 +78,22 @@ out float v_maskWeight;             // 0: the sea flag decides, 1: the mask (ter
 #endif
 out float v_logDepth;  // 1 + eye distance w
 out float v_fog;       // how much of the fog colour covers the terrain here
+// Aerial perspective under the physical sky (--time; atmosphere/aerial_perspective.hpp): the air
+// between the eye and the vertex lets v_transmittance of its colour through, per channel, and
+// scatters in v_inscatter: the sky's horizon colour in that direction (its image, as the sky
+// pass draws it: azimuth from the Sun's vertical, 0..1 for 0..180°) times what the air takes, lit
+// by the daylight there. Otherwise the fog (v_fog) does.
+uniform bool u_aerial;
+uniform vec3 u_rayleighPerMeter;
+uniform float u_mieExtinctionPerMeter;
+uniform vec2 u_scaleHeightsMeters;  // Rayleigh, Mie
+uniform float u_cameraHeightMeters;
+uniform sampler2D u_hazeSkyView;
+uniform vec3 u_hazeUpEye;          // eye space
+uniform vec3 u_hazeSunAcrossEye;   // eye space; zero: the Sun has no azimuth (zenith or nadir)
+uniform float u_hazeRow;           // the image's row at the horizon
+out vec3 v_transmittance;
+out vec3 v_inscatter;
 
 // Height (m) → colour: lowland greens, tan and browns, greys, then snow.
 const int kStops = 7;
@@ -104,8 +120,41 @@ vec3 seaColor(float heightMeters) {
   return mix(vec3(0.16, 0.36, 0.72), vec3(0.03, 0.10, 0.38), sqrt(depth));
 }
 
+// ∫ exp(−h/H) ds over the straight path from height h0 to h1 (AerialPerspective's closed form).
+float exponentialPath(float h0, float h1, float lengthMeters, float scaleHeight) {
+  h0 = max(h0, 0.0);
+  h1 = max(h1, 0.0);
+  float rise = h1 - h0;
+  if (abs(rise) < 1e-3 * scaleHeight) return lengthMeters * exp(-0.5 * (h0 + h1) / scaleHeight);
+  return lengthMeters * scaleHeight * (exp(-h0 / scaleHeight) - exp(-h1 / scaleHeight)) / rise;
+}
+
+vec3 hazeColor(vec3 directionEye) {
+  vec3 across = directionEye - u_hazeUpEye * dot(directionEye, u_hazeUpEye);
+  float azimuth = 0.5;
+  if (dot(across, across) > 1e-10 && dot(u_hazeSunAcrossEye, u_hazeSunAcrossEye) > 0.5) {
+    azimuth = acos(clamp(dot(normalize(across), u_hazeSunAcrossEye), -1.0, 1.0)) / 3.14159265;
+  }
+  return textureLod(u_hazeSkyView, vec2(azimuth, u_hazeRow), 0.0).rgb;
+}
+
+void aerialPerspective(vec3 eye) {
+  if (!u_aerial) {
+    v_transmittance = vec3(1.0);
+    v_inscatter = vec3(0.0);
+    return;
+  }
+  float lengthMeters = length(eye);
+  float rayleigh = exponentialPath(u_cameraHeightMeters, a_height, lengthMeters,
+                                   u_scaleHeightsMeters.x);
+  float mie = exponentialPath(u_cameraHeightMeters, a_height, lengthMeters, u_scaleHeightsMeters.y);
+  v_transmittance = exp(-(u_rayleighPerMeter * rayleigh + u_mieExtinctionPerMeter * mie));
+  v_inscatter = (1.0 - v_transmittance) * hazeColor(eye / max(lengthMeters, 1e-3)) * v_day;
+}
+
 void main() {
-  gl_Position = u_projection * (u_modelView * vec4(u_tileOrigin + a_offset, 1.0));
+  vec4 eye = u_modelView * vec4(u_tileOrigin + a_offset, 1.0);
+  gl_Position = u_projection * eye;
   v_logDepth = 1.0 + max(gl_Position.w, 0.0);
   float fogDepth = max(gl_Position.w, 0.0) * u_fogDensity;
   v_fog = u_fogMaximum * (1.0 - exp(-fogDepth * fogDepth));
@@ -122,6 +171,7 @@ void main() {
   v_day = u_daylight ? mix(u_daylightBand.x, 1.0,
                            smoothstep(u_daylightBand.y, u_daylightBand.z, dot(up, u_sunDirection)))
                      : 1.0;
+  aerialPerspective(eye.xyz);
   // An edge that faces a coarser neighbour is lit with that level's normals, so the lighting does
   // not step at the level change (terrain/tile_mesh.hpp). uv is exactly 0 or 1 on the edges.
   vec4 onEdge = vec4(a_uv.y == 0.0, a_uv.y == 1.0, a_uv.x == 0.0, a_uv.x == 1.0);

@@ -99,6 +99,11 @@ void SkyPass::draw(const terrain::RenderView& view, const SkyParameters& sky,
   if (depthTest != GL_TRUE) glDisable(GL_DEPTH_TEST);
 }
 
+float SkyPass::horizonRow() const {
+  return static_cast<float>(atmosphere::skyViewRow(std::max(0.0, horizonElevationRadians_),
+                                                   horizonElevationRadians_));
+}
+
 glm::vec3 SkyPass::usePhysicalSky(double heightMeters, double sunZenithCosine) {
   physical_ = true;
   const double height = std::isfinite(heightMeters) ? std::clamp(heightMeters, 0.0, 1e9) : 0.0;

@@ -33,6 +33,10 @@ class SkyPass {
   glm::vec3 usePhysicalSky(double heightMeters, double sunZenithCosine);
   // Back to the model's gradient (no --time).
   void useModelSky() { physical_ = false; }
+  // The physical sky's image (0 under the model's sky) and its horizon's row (0..1): the
+  // terrain's aerial perspective takes the sky's horizon colour in each direction from it.
+  GLuint skyViewTexture() const { return physical_ ? skyViewTexture_.get() : 0; }
+  float horizonRow() const;
 
  private:
   SkyPass() = default;

@@ -23,6 +23,7 @@
 #include "render/shader_directory.hpp"
 #include "render/shader_program.hpp"
 #include "render/sky_model.hpp"
+#include "render/aerial_haze.hpp"
 #include "render/sky_pass.hpp"
 #include "terrain/relief_shading.hpp"
 #include "terrain/skirt_edges.hpp"
@@ -48,6 +49,7 @@ constexpr double kMagnifiedTexelsPerPixel = 0.99;
 
 // Texture units: 0 the global image, 1..kMaxDrapeLayers the layers, then the water mask.
 constexpr GLuint kWaterMaskUnit = 1 + terrain::kMaxDrapeLayers;
+constexpr GLuint kHazeUnit = kWaterMaskUnit + 1;  // the physical sky's image (aerial_haze.hpp)
 
 }  // namespace
 
@@ -60,6 +62,7 @@ struct TerrainRenderer::Impl {
     GLint fogColor = -1, fogDensity = -1, fogMaximum = -1;
     GLint layerTransform = -1, layerOpacity = -1, layerLight = -1, levelLight = -1;
     GLint layerExposure = -1, layerNight = -1;
+    AerialHazeUniforms aerial;
     GLint waterMask = -1, waterMaskTransform = -1, waterMaskWeight = -1;
     std::array<GLint, terrain::kMaxDrapeLayers> layerSamplers{-1, -1, -1, -1};
   };
@@ -295,6 +298,7 @@ Result<const TerrainRenderer::Impl::Program*> TerrainRenderer::Impl::program(
   u.layerOpacity = p.uniformLocation("u_layerOpacity");
   u.layerLight = p.uniformLocation("u_layerLight");
   u.levelLight = p.uniformLocation("u_levelLight");
+  u.aerial = AerialHazeUniforms::locate(p);
   u.layerExposure = p.uniformLocation("u_layerExposure");
   u.layerNight = p.uniformLocation("u_layerNight");
   u.waterMask = p.uniformLocation("u_waterMask");
@@ -588,6 +592,7 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
   glDepthMask(GL_TRUE);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   SkyParameters sky;  // all zero: no fog
+  AerialHaze haze;    // none: the fog
   double globeRadius = 0.0;
   const bool drawSky = style.sky && impl.skyPass();
   if (drawSky) {
@@ -604,6 +609,7 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
       sky = skyUnderSun(sky, sunUp);
       // The physically based sky, and its horizon's colour for the haze over the terrain.
       sky.horizonRgb = impl.sky->usePhysicalSky(height, sunUp);
+      haze = aerialHazeFor(view, *impl.sky, height);
     } else {
       impl.sky->useModelSky();
     }
@@ -675,6 +681,7 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
         glUniform3fv(u.fogColor, 1, glm::value_ptr(sky.horizonRgb));
         glUniform1f(u.fogDensity, sky.fogDensityPerMeter);
         glUniform1f(u.fogMaximum, sky.fogMaximum);
+        setAerialHaze(haze, u.aerial, kHazeUnit);
         glUniform1i(u.hillShading, style.hillShading ? 1 : 0);
         if (u.levelLight >= 0) {
           glUniform1f(u.levelLight,

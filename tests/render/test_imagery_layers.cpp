@@ -136,6 +136,32 @@ class ImageryLayers : public RenderTest {
     return pixel ? glm::ivec2(std::floor(pixel->x), std::floor(pixel->y)) : glm::ivec2(0);
   }
 
+  // Heights rising 150 m per sample interval eastwards, or westwards.
+  void uploadRamp(const geo::TileId& tile, bool westwards = false) {
+    terrain::HeightBlock block;
+    block.verticesPerSide = 17;
+    block.heights.resize(17 * 17);
+    for (uint32_t i = 0; i < 17 * 17; ++i) {
+      const uint32_t step = westwards ? 16 - i % 17 : i % 17;
+      block.heights[i] = static_cast<int16_t>(kGroundMeters + 150.0 * step);
+    }
+    const double skirt = terrain::recommendedSkirtDepthMeters(tile.level, 17, kWgs84);
+    ASSERT_TRUE(
+        renderer_->uploadTile(tile, terrain::buildTileMesh(tile, block, kWgs84, skirt)).ok());
+  }
+  // Straight down on `tile` with the Sun 60° from the zenith in the east, and its middle pixel.
+  struct SunView {
+    terrain::RenderView view;
+    glm::ivec2 middle;
+  };
+  static SunView easternSunView(const geo::TileId& tile, double altitudeMeters) {
+    const geo::Cartographic centre = geo::GeographicTilingScheme::tileRectangle(tile).center();
+    const LocalFrame frame = localFrame(geo::radiansToDegrees(centre.longitudeRadians),
+                                        geo::radiansToDegrees(centre.latitudeRadians));
+    const glm::dvec3 sun = glm::normalize(0.5 * frame.up + std::sqrt(0.75) * frame.east);
+    const terrain::RenderView view = viewOnto(tile, altitudeMeters, sun);
+    return {view, pixelAt(view, tile, 0.5, 0.5)};
+  }
   Image drawDraped(const terrain::RenderView& view, const std::vector<geo::TileId>& tiles,
                    const std::vector<terrain::TileDrapes>& drapes, FrameStats* stats = nullptr) {
     const FrameStats frame = renderer_->draw(view, tiles, drapes);
@@ -390,15 +416,7 @@ TEST_F(ImageryLayers, AutoLightingWeighsTheReliefByTheTexelOverTheSampleSpacing)
     coarse.insert(coarse.end(), kWhite.begin(), kWhite.end());
   const auto drawBoth = [&](const geo::TileId& tile, bool ramp) {
     if (ramp) {
-      terrain::HeightBlock block;
-      block.verticesPerSide = 17;
-      block.heights.resize(17 * 17);
-      for (uint32_t i = 0; i < 17 * 17; ++i) {  // rising 150 m per interval eastwards
-        block.heights[i] = static_cast<int16_t>(kGroundMeters + 150.0 * (i % 17));
-      }
-      const double skirt = terrain::recommendedSkirtDepthMeters(tile.level, 17, kWgs84);
-      ASSERT_TRUE(
-          renderer_->uploadTile(tile, terrain::buildTileMesh(tile, block, kWgs84, skirt)).ok());
+      uploadRamp(tile);
     } else {
       uploadFlat(tile);
     }
@@ -409,12 +427,7 @@ TEST_F(ImageryLayers, AutoLightingWeighsTheReliefByTheTexelOverTheSampleSpacing)
     double on, fine, coarse;
   };
   const auto measure = [&](const geo::TileId& tile, double altitudeMeters) {
-    const geo::Cartographic centre = geo::GeographicTilingScheme::tileRectangle(tile).center();
-    const LocalFrame frame = localFrame(geo::radiansToDegrees(centre.longitudeRadians),
-                                        geo::radiansToDegrees(centre.latitudeRadians));
-    const glm::dvec3 sun = glm::normalize(0.5 * frame.up + std::sqrt(0.75) * frame.east);
-    const terrain::RenderView view = viewOnto(tile, altitudeMeters, sun);
-    const glm::ivec2 middle = pixelAt(view, tile, 0.5, 0.5);
+    const auto [view, middle] = easternSunView(tile, altitudeMeters);
     TerrainStyle style = renderer_->style();
     Lit lit{};
     for (const auto mode : {terrain::ImageryLighting::On, terrain::ImageryLighting::Auto}) {
@@ -462,27 +475,13 @@ TEST_F(ImageryLayers, LightNeverPushesThePhotoPastItsOwnColours) {
   const geo::TileId sunward{10, 1024, 448};
   const geo::TileId away{10, 1026, 448};
   for (const auto& [tile, westwards] : {std::pair{sunward, true}, std::pair{away, false}}) {
-    terrain::HeightBlock block;
-    block.verticesPerSide = 17;
-    block.heights.resize(17 * 17);
-    for (uint32_t i = 0; i < 17 * 17; ++i) {
-      const uint32_t step = westwards ? 16 - i % 17 : i % 17;
-      block.heights[i] = static_cast<int16_t>(kGroundMeters + 150.0 * step);
-    }
-    const double skirt = terrain::recommendedSkirtDepthMeters(tile.level, 17, kWgs84);
-    ASSERT_TRUE(
-        renderer_->uploadTile(tile, terrain::buildTileMesh(tile, block, kWgs84, skirt)).ok());
+    uploadRamp(tile, westwards);
     uploadImagery(0, tile, solidImage(kSand));
   }
   uploadFlat(kTile);
   uploadImagery(0, kTile, solidImage(kSand));
   const auto middleOf = [&](const geo::TileId& tile, double altitudeMeters) {
-    const geo::Cartographic centre = geo::GeographicTilingScheme::tileRectangle(tile).center();
-    const LocalFrame frame = localFrame(geo::radiansToDegrees(centre.longitudeRadians),
-                                        geo::radiansToDegrees(centre.latitudeRadians));
-    const glm::dvec3 sun = glm::normalize(0.5 * frame.up + std::sqrt(0.75) * frame.east);
-    const terrain::RenderView view = viewOnto(tile, altitudeMeters, sun);
-    const glm::ivec2 middle = pixelAt(view, tile, 0.5, 0.5);
+    const auto [view, middle] = easternSunView(tile, altitudeMeters);
     return drawDraped(view, {tile}, {drapesOf({{0, tile}})}).at(middle.x, middle.y);
   };
   TerrainStyle style = renderer_->style();

@@ -3,7 +3,9 @@
 // evening Sun on the west ones; `globe sun` prints what the light is; bad times are refused.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
+#include <map>
 #include <string>
 
 #include "formats/image_io.hpp"
@@ -85,6 +87,44 @@ TEST(SunLight, NightLightsShineOnlyWhereTheSunHasSet) {
   const Halves nightLit = snapshotHalves("2024-06-21T00:00+09:00", dir, lights);
   EXPECT_NEAR(noonLit.mean(), noon.mean(), 0.5) << "night lights by day";
   EXPECT_GT(nightLit.mean(), night.mean() + 20.0) << "the lights at night";
+}
+
+// Mean blue over red of rows [fromRow, toRow) of a snapshot (ground only: the view looks down).
+double blueOverRed(const formats::ImageRgba& image, int fromRow, int toRow) {
+  double blue = 0, red = 0;
+  for (int y = fromRow; y < toRow; ++y) {
+    for (int x = 0; x < image.widthPixels; ++x) {
+      const size_t i = 4 * (static_cast<size_t>(y) * image.widthPixels + static_cast<size_t>(x));
+      red += image.pixels[i];
+      blue += image.pixels[i + 2];
+    }
+  }
+  return blue / std::max(red, 1.0);
+}
+
+// Aerial perspective under the physical sky: ridges 20..40 km away, seen from 1,500 m at noon,
+// take the air's blue (it lets less blue through than red and scatters the sky's colour in),
+// the ground at the camera's feet hardly; the same view with --no-sky has no air.
+TEST(SunLight, DistantRidgesTurnBlueThroughTheAir) {
+  const fs::path dir = globe::testing::freshTempDir("sun-aerial");
+  const std::string view = " --camera 138.45,35.45,1500,120,-12,0 --size 200x120 --no-shadows "
+                           "--time 2024-06-21T12:00+09:00 ";
+  std::map<std::string, formats::ImageRgba> shots;
+  for (const std::string sky : {"", "--no-sky"}) {
+    const fs::path out = dir / ("aerial" + sky + ".png");
+    const auto run = runGlobe("snapshot " + globe::testing::bundledPyramid().string() + view +
+                              sky + " -o " + out.string());
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    auto image = formats::loadImageRgba(out);
+    ASSERT_TRUE(image) << image.error();
+    shots[sky] = std::move(*image);
+  }
+  // Rows 40..50 lie on ridges tens of km away (the horizon is near row 34), 110..120 at ~7 km.
+  const double far = blueOverRed(shots[""], 40, 50) / blueOverRed(shots["--no-sky"], 40, 50);
+  const double near = blueOverRed(shots[""], 110, 120) / blueOverRed(shots["--no-sky"], 110, 120);
+  std::printf("blue/red with the air over without: far %.3f, near %.3f\n", far, near);
+  EXPECT_GT(far, 1.15) << "distant ridges take the air's blue";
+  EXPECT_LT(near, far) << "nearer ground less";
 }
 
 // Mean luminance (0..255) of a 200×200 view straight down on Zion Canyon from 12 km.
