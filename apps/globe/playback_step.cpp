@@ -44,7 +44,8 @@ Result<ScriptedPlayback> openScriptedPlayback(const std::filesystem::path& pyram
   auto scene = scene::TerrainScene::open(pyramid, sceneOptions);
   if (!scene) return Error{scene.error()};
   auto path = toCameraPath(
-      *file, [&](double lon, double lat) { return (*scene)->terrainHeightMeters(lon, lat); });
+      *file, [&](double lon, double lat) { return (*scene)->terrainHeightMeters(lon, lat); },
+      (*scene)->ellipsoid());
   if (!path) return makeError(pathFile.string() + ": " + path.error());
   return ScriptedPlayback{std::move(*scene), std::move(*path)};
 }

@@ -3,10 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include <glm/geometric.hpp>
 
 #include "camera/camera_orientation.hpp"
+#include "camera/look_at.hpp"
 #include "geo/ecef.hpp"
 
 namespace globe::camera {
@@ -194,14 +196,69 @@ double terrainWeight(const CameraPath& path, double timeSeconds) {
 
 }  // namespace
 
+namespace {
+
+// The segment a time falls in: keys k and k + 1 and the time fraction u between them; none
+// before the first key, after the last, or for a non-finite time.
+struct Segment {
+  size_t k = 0;
+  double u = 0;
+  bool inside = false;
+};
+
+Segment segmentAt(const CameraPath& path, double timeSeconds) {
+  const std::vector<CameraKeyframe>& keys = path.keyframes;
+  if (keys.size() < 2 || !(timeSeconds > keys.front().timeSeconds) ||
+      !(timeSeconds < keys.back().timeSeconds)) {
+    return {};
+  }
+  const auto after =
+      std::upper_bound(keys.begin(), keys.end(), timeSeconds,
+                       [](double t, const CameraKeyframe& key) { return t < key.timeSeconds; });
+  const size_t k = static_cast<size_t>(after - keys.begin()) - 1;
+  const double span = keys[k + 1].timeSeconds - keys[k].timeSeconds;
+  return {k, (timeSeconds - keys[k].timeSeconds) / span, true};
+}
+
+// The time the un-eased interpolation is sampled at: the segment's eased fraction (held within
+// the segment: a curve that overshoots stops at its keys).
+double easedTime(const CameraPath& path, double timeSeconds) {
+  const Segment segment = segmentAt(path, timeSeconds);
+  if (!segment.inside) return timeSeconds;
+  const CameraKeyframe& a = path.keyframes[segment.k];
+  if (!a.ease) return timeSeconds;
+  const double progress = std::clamp(easeProgress(*a.ease, segment.u), 0.0, 1.0);
+  return a.timeSeconds + progress * (path.keyframes[segment.k + 1].timeSeconds - a.timeSeconds);
+}
+
+}  // namespace
+
 CameraPose samplePath(const CameraPath& path, double timeSeconds, const geo::Ellipsoid& ellipsoid,
                       const TerrainHeightAt& terrain) {
-  CameraPose pose = sampleStoredHeights(path, timeSeconds, ellipsoid);
-  if (path.keyframes.empty() || !terrain) return pose;
-  const double weight = terrainWeight(path, timeSeconds);
-  if (weight > 0.0) {
-    pose.position.heightMeters +=
-        weight * terrain(pose.position.longitudeRadians, pose.position.latitudeRadians);
+  const double at = easedTime(path, timeSeconds);
+  CameraPose pose = sampleStoredHeights(path, at, ellipsoid);
+  if (path.keyframes.empty()) return pose;
+  if (terrain) {
+    const double weight = terrainWeight(path, at);
+    if (weight > 0.0) {
+      pose.position.heightMeters +=
+          weight * terrain(pose.position.longitudeRadians, pose.position.latitudeRadians);
+    }
+  }
+  // Between two keyframes with targets the camera looks at the point between them.
+  const Segment segment = segmentAt(path, at);
+  if (segment.inside) {
+    const CameraKeyframe& a = path.keyframes[segment.k];
+    const CameraKeyframe& b = path.keyframes[segment.k + 1];
+    if (a.targetEcefMeters && b.targetEcefMeters) {
+      const glm::dvec3 target =
+          *a.targetEcefMeters + segment.u * (*b.targetEcefMeters - *a.targetEcefMeters);
+      pose = lookingAt(ellipsoid, pose, target);
+      // Roll as the keyframes give it (the orientation's own would drift with the turn).
+      const double turn = std::remainder(b.pose.rollRadians - a.pose.rollRadians,
+                                         2.0 * std::numbers::pi);
+      pose.rollRadians = a.pose.rollRadians + segment.u * turn;
+    }
   }
   return pose;
 }

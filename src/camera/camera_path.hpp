@@ -7,7 +7,10 @@
 #include <string_view>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "camera/camera_pose.hpp"
+#include "camera/path_easing.hpp"
 #include "geo/ellipsoid.hpp"
 
 namespace globe::camera {
@@ -34,6 +37,13 @@ struct CameraKeyframe {
   // is flown over, not into).
   bool heightAboveTerrain = false;
   std::optional<double> sunUnixSeconds{};  // the Sun's instant here (camera_path_file.hpp "time")
+  // The segment leaving this keyframe runs by this curve in time (path_easing.hpp): the pose at
+  // t is the un-eased pose at t_k + ease(u)·(t_k+1 − t_k), u the segment's time fraction.
+  std::optional<CubicBezierEase> ease{};
+  // Where the camera looks (ECEF, resolved); the keyframe's pose already looks there. Between
+  // two keyframes that have one, every sampled pose looks at the point between them (at the
+  // segment's eased fraction), roll kept.
+  std::optional<glm::dvec3> targetEcefMeters{};
 };
 
 // The terrain height (m above the ellipsoid) under a longitude and latitude in radians.

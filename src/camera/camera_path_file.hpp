@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "camera/path_easing.hpp"
 #include "core/result.hpp"
 
 namespace globe::camera {
@@ -14,6 +15,14 @@ namespace globe::camera {
 // One keyframe as the file states it: seconds, degrees, metres. heightMeters is above the
 // ellipsoid, or above the terrain under (lon, lat) when heightAboveTerrain (KML relativeToGround
 // and clampToGround, JSON "aboveTerrain": true): the player resolves it against the pyramid.
+// A point the camera looks at ("target"): heading and pitch follow it, roll is kept.
+struct PathTarget {
+  double longitudeDegrees = 0;
+  double latitudeDegrees = 0;
+  double heightMeters = 0;
+  bool heightAboveTerrain = false;  // "aboveTerrain": height above the terrain there
+};
+
 struct PathKeyframe {
   double timeSeconds = 0;
   double longitudeDegrees = 0;
@@ -26,6 +35,12 @@ struct PathKeyframe {
   // "time": the instant the Sun lights the view at (ISO-8601 with its zone in the file; seconds
   // since 1970, UTC, here), interpolated between the keyframes that have one (--time's light).
   std::optional<double> sunUnixSeconds{};
+  // "ease": how the segment leaving this keyframe runs in time (CSS's cubic Bézier; the named
+  // curves linear, in, out, inOut), x1 and x2 in 0..1; none: as the path's interpolation.
+  std::optional<CubicBezierEase> ease{};
+  // "target": the camera looks at it here, and on every frame to the next keyframe that has one
+  // (the point interpolated); the keyframe's heading and pitch are then ignored.
+  std::optional<PathTarget> target{};
 };
 
 // Keyframes with strictly increasing times (at least one); interpolation "linear" or "smooth".
@@ -43,7 +58,10 @@ inline constexpr uint64_t kPathFileMaximumBytes = uint64_t{64} << 20;
 //   {"interpolation": "smooth",            optional: "linear" | "smooth" (default)
 //    "description": "...",                 optional, ignored
 //    "keyframes": [{"t": 0, "lon": 138.73, "lat": 35.36, "height": 5000,
-//                   "heading": 0, "pitch": -20, "roll": 0, "aboveTerrain": false}, ...]}
+//                   "heading": 0, "pitch": -20, "roll": 0, "aboveTerrain": false,
+//                   "time": "2024-06-21T06:30+09:00", "ease": "inOut" | [x1, y1, x2, y2],
+//                   "target": {"lon": 138.73, "lat": 35.36, "height": 0,
+//                              "aboveTerrain": true}}, ...]}
 // t, lon, lat and height are required; heading (0), pitch (-90), roll (0) and aboveTerrain
 // (false) are optional. lon in -180..180, lat in -90..90, pitch in -90..90, height in
 // -11,000..40,000,000 m, every number finite, t strictly increasing. Unknown fields are errors
@@ -62,7 +80,9 @@ Result<CameraPathFile> readCameraPathJson(const std::filesystem::path& path);
 // ignored); each later FlyTo is its gx:duration after the previous one, and a gx:Wait holds the
 // previous keyframe for its duration. Interpolation: "smooth" when every FlyTo's gx:flyToMode is
 // smooth, else "linear" (bounce, KML's default, is played linearly). A FlyTo holding a LookAt
-// instead of a Camera, or a zero time step (an instant jump), is refused with its line.
+// (longitude, latitude, altitude, heading, tilt 0..90, range, altitudeMode) is a keyframe whose
+// camera stands `range` back from the point along heading and tilt and whose target is the
+// point (camera/look_at.hpp). A zero time step (an instant jump) is refused with its line.
 Result<CameraPathFile> readKmlTour(const std::filesystem::path& path);
 
 // By extension: .json → readCameraPathJson, .kml → readKmlTour (case-insensitive).

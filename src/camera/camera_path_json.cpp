@@ -1,6 +1,8 @@
 // The JSON camera path format: nlohmann parses, JsonLocations gives every error its line.
 #include <algorithm>
 #include <array>
+#include <functional>
+#include <tuple>
 #include <nlohmann/json.hpp>
 #include <string_view>
 
@@ -34,7 +36,7 @@ constexpr std::array<NumberField, 7> kNumberFields = {{
     {"roll", &PathKeyframe::rollDegrees, false, -kUnbounded, kUnbounded},
 }};
 constexpr std::string_view kKeyframeFields =
-    "t, lon, lat, height, heading, pitch, roll, aboveTerrain, time";
+    "t, lon, lat, height, heading, pitch, roll, aboveTerrain, time, ease, target";
 
 std::string_view typeName(const json& value) {
   return value.is_number()    ? "a number"
@@ -43,6 +45,75 @@ std::string_view typeName(const json& value) {
          : value.is_null()    ? "null"
          : value.is_array()   ? "an array"
                               : "an object";
+}
+
+using FieldFailure = std::function<Error(const std::string& field, const std::string& what)>;
+
+// "ease": a named curve or [x1, y1, x2, y2] (CSS cubic-bezier, x1 and x2 in 0..1).
+Result<CubicBezierEase> readEase(const json& value, const FieldFailure& fail) {
+  constexpr std::string_view kExpected = "linear, in, out, inOut or [x1, y1, x2, y2]";
+  if (value.is_string()) {
+    const std::string name = value.get<std::string>();
+    if (auto ease = namedEase(name)) return *ease;
+    return fail("ease", "'" + name.substr(0, 40) + "' is not " + std::string(kExpected));
+  }
+  if (!value.is_array() || value.size() != 4 ||
+      !std::all_of(value.begin(), value.end(), [](const json& v) { return v.is_number(); })) {
+    return fail("ease", "expected " + std::string(kExpected) + ", got " +
+                            std::string(typeName(value)));
+  }
+  const std::array<double, 4> n{value[0].get<double>(), value[1].get<double>(),
+                                value[2].get<double>(), value[3].get<double>()};
+  for (size_t i = 0; i < n.size(); ++i) {
+    const bool isX = i % 2 == 0;
+    if (auto problem = detail::checkNumber(detail::formatNumber(n[i]), n[i],
+                                           isX ? 0.0 : -kUnbounded, isX ? 1.0 : kUnbounded)) {
+      return fail("ease[" + std::to_string(i) + "]", *problem);
+    }
+  }
+  return CubicBezierEase{n[0], n[1], n[2], n[3]};
+}
+
+// "target": {"lon", "lat", "height", "aboveTerrain"?}.
+Result<PathTarget> readTarget(const json& value, const FieldFailure& fail) {
+  if (!value.is_object()) {
+    return fail("target", "expected an object {\"lon\", \"lat\", \"height\"}, got " +
+                              std::string(typeName(value)));
+  }
+  PathTarget target;
+  const std::array<std::tuple<const char*, double PathTarget::*, double, double>, 3> fields = {{
+      {"lon", &PathTarget::longitudeDegrees, -180, 180},
+      {"lat", &PathTarget::latitudeDegrees, -90, 90},
+      {"height", &PathTarget::heightMeters, kPathMinimumHeightMeters, kPathMaximumHeightMeters},
+  }};
+  for (const auto& item : value.items()) {
+    const std::string& key = item.key();
+    if (key != "lon" && key != "lat" && key != "height" && key != "aboveTerrain") {
+      return fail("target." + key, "unknown field (a target has lon, lat, height, aboveTerrain)");
+    }
+  }
+  for (const auto& [name, member, minimum, maximum] : fields) {
+    const auto it = value.find(name);
+    if (it == value.end()) return fail("target", std::string("missing field '") + name + "'");
+    if (!it->is_number()) {
+      return fail(std::string("target.") + name,
+                  "expected a number, got " + std::string(typeName(*it)));
+    }
+    const double number = it->get<double>();
+    if (auto problem =
+            detail::checkNumber(detail::formatNumber(number), number, minimum, maximum)) {
+      return fail(std::string("target.") + name, *problem);
+    }
+    target.*member = number;
+  }
+  if (const auto it = value.find("aboveTerrain"); it != value.end()) {
+    if (!it->is_boolean()) {
+      return fail("target.aboveTerrain",
+                  "expected true or false, got " + std::string(typeName(*it)));
+    }
+    target.heightAboveTerrain = it->get<bool>();
+  }
+  return target;
 }
 
 // Reads and checks one keyframe object; `previous` is the keyframe before it, if any.
@@ -58,7 +129,7 @@ Result<PathKeyframe> readKeyframe(const json& object, const std::string& where,
   }
   for (const auto& item : object.items()) {
     const std::string& key = item.key();  // not a structured binding: clang 14 cannot capture one
-    const bool known = key == "aboveTerrain" || key == "time" ||
+    const bool known = key == "aboveTerrain" || key == "time" || key == "ease" || key == "target" ||
                        std::any_of(kNumberFields.begin(), kNumberFields.end(),
                                    [&](const NumberField& field) { return key == field.name; });
     if (!known) {
@@ -95,6 +166,16 @@ Result<PathKeyframe> readKeyframe(const json& object, const std::string& where,
     auto instant = sun::parseUtcTime(it->get<std::string>());
     if (!instant) return fail("time", instant.error());
     keyframe.sunUnixSeconds = *instant;
+  }
+  if (const auto it = object.find("ease"); it != object.end()) {
+    auto ease = readEase(*it, fail);
+    if (!ease) return Error{ease.error()};
+    keyframe.ease = *ease;
+  }
+  if (const auto it = object.find("target"); it != object.end()) {
+    auto target = readTarget(*it, fail);
+    if (!target) return Error{target.error()};
+    keyframe.target = *target;
   }
   if (previous != nullptr) {
     if (auto problem = detail::checkTimeAfter(at.written(where + ".t"), keyframe.timeSeconds,
@@ -176,6 +257,24 @@ Result<CameraPathFile> parsePath(std::string_view text, const std::filesystem::p
   return file;
 }
 
+// ", \"ease\": \"inOut\"" or its four numbers; "" without one.
+std::string easeText(const std::optional<CubicBezierEase>& ease) {
+  if (!ease) return "";
+  if (const std::string_view name = easeName(*ease); !name.empty()) {
+    return ", \"ease\": \"" + std::string(name) + "\"";
+  }
+  return ", \"ease\": [" + detail::formatNumber(ease->x1) + ", " + detail::formatNumber(ease->y1) +
+         ", " + detail::formatNumber(ease->x2) + ", " + detail::formatNumber(ease->y2) + "]";
+}
+
+std::string targetText(const std::optional<PathTarget>& target) {
+  if (!target) return "";
+  return ", \"target\": {\"lon\": " + detail::formatNumber(target->longitudeDegrees) +
+         ", \"lat\": " + detail::formatNumber(target->latitudeDegrees) +
+         ", \"height\": " + detail::formatNumber(target->heightMeters) +
+         (target->heightAboveTerrain ? ", \"aboveTerrain\": true}" : "}");
+}
+
 }  // namespace
 
 Result<CameraPathFile> readCameraPathJson(const std::filesystem::path& path) {
@@ -200,6 +299,7 @@ Result<void> writeCameraPathJson(const std::filesystem::path& path, const Camera
     }
     if (key.heightAboveTerrain) text += ", \"aboveTerrain\": true";
     if (key.sunUnixSeconds) text += ", \"time\": \"" + sun::formatUtcTime(*key.sunUnixSeconds) + "\"";
+    text += easeText(key.ease) + targetText(key.target);
     text += k + 1 < file.keyframes.size() ? "},\n" : "}\n";
   }
   text += "  ]\n}\n";

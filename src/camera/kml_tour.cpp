@@ -1,4 +1,4 @@
-// Google Earth KML tours (gx:Tour → gx:Playlist → gx:FlyTo + Camera, gx:Wait) as path keyframes,
+// Google Earth KML tours (gx:Tour → gx:Playlist → gx:FlyTo + Camera or LookAt, gx:Wait) as path keyframes,
 // parsed with tinyxml2; namespace prefixes are ignored (elements match by local name).
 #include <tinyxml2.h>
 
@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "camera/camera_path_file.hpp"
+#include "camera/look_at.hpp"
+#include "geo/cartographic.hpp"
 #include "camera/path_checks.hpp"
 #include "transport/atomic_file.hpp"
 
@@ -96,19 +98,65 @@ class TourReader {
                                      " s (not a finite number)");
   }
 
-  Result<PathKeyframe> camera(const XMLElement& camera) const {
-    PathKeyframe key;
-    std::string_view mode = "clampToGround";  // KML's default
-    const XMLElement* modeElement = child(camera, "altitudeMode");
+  // An element's altitudeMode (or gx:altitudeMode): absolute, relativeToGround or clampToGround
+  // (KML's default); the sea-floor modes are refused.
+  Result<std::string_view> mode(const XMLElement& view, const std::string& label) const {
+    std::string_view mode = "clampToGround";
+    const XMLElement* modeElement = child(view, "altitudeMode");
     if (modeElement != nullptr) mode = trimmed(modeElement->GetText());
     if (mode == "relativeToSeaFloor" || mode == "clampToSeaFloor") {
-      return fail(*modeElement, "Camera.altitudeMode: " + std::string(mode) +
+      return fail(*modeElement, label + ".altitudeMode: " + std::string(mode) +
                                     " is not supported (use absolute or relativeToGround)");
     }
     if (mode != "absolute" && mode != "relativeToGround" && mode != "clampToGround") {
-      return fail(*modeElement, "Camera.altitudeMode: '" + std::string(mode.substr(0, 40)) +
+      return fail(*modeElement, label + ".altitudeMode: '" + std::string(mode.substr(0, 40)) +
                                     "' is not absolute, relativeToGround or clampToGround");
     }
+    return mode;
+  }
+
+  // A LookAt: the camera `range` back from the point along heading and tilt (0 straight down,
+  // 90 level), looking at it; the point is the keyframe's target. With a mode above the ground
+  // the camera's height is taken above the terrain too, as if the ground under it were the
+  // target's (the target itself is exact).
+  Result<PathKeyframe> lookAt(const XMLElement& lookAt) const {
+    auto altitudeMode = mode(lookAt, "LookAt");
+    if (!altitudeMode) return Error{altitudeMode.error()};
+    const bool clamped = *altitudeMode == "clampToGround";
+    auto lon = number(lookAt, "longitude", "LookAt.longitude", std::nullopt, -180, 180);
+    if (!lon) return Error{lon.error()};
+    auto lat = number(lookAt, "latitude", "LookAt.latitude", std::nullopt, -90, 90);
+    if (!lat) return Error{lat.error()};
+    auto altitude = number(lookAt, "altitude", "LookAt.altitude", 0.0, kPathMinimumHeightMeters,
+                           kPathMaximumHeightMeters);
+    if (!altitude) return Error{altitude.error()};
+    auto heading = number(lookAt, "heading", "LookAt.heading", 0.0, -kUnbounded, kUnbounded);
+    if (!heading) return Error{heading.error()};
+    auto tilt = number(lookAt, "tilt", "LookAt.tilt", 0.0, 0, 90);
+    if (!tilt) return Error{tilt.error()};
+    auto range = number(lookAt, "range", "LookAt.range", std::nullopt, 0, kPathMaximumHeightMeters);
+    if (!range) return Error{range.error()};
+    const PathTarget target{*lon, *lat, clamped ? 0.0 : *altitude, *altitudeMode != "absolute"};
+    const geo::Ellipsoid wgs84 = geo::Ellipsoid::wgs84();
+    const CameraPose pose = cameraOfLookAt(
+        wgs84, geo::Cartographic::fromDegrees(*lon, *lat, target.heightMeters), *heading, *tilt,
+        *range);
+    PathKeyframe key;
+    key.longitudeDegrees = geo::radiansToDegrees(pose.position.longitudeRadians);
+    key.latitudeDegrees = geo::radiansToDegrees(pose.position.latitudeRadians);
+    key.heightMeters = std::min(pose.position.heightMeters, kPathMaximumHeightMeters);
+    key.heightAboveTerrain = target.heightAboveTerrain;
+    key.headingDegrees = geo::radiansToDegrees(pose.headingRadians);
+    key.pitchDegrees = geo::radiansToDegrees(pose.pitchRadians);
+    key.target = target;
+    return key;
+  }
+
+  Result<PathKeyframe> camera(const XMLElement& camera) const {
+    PathKeyframe key;
+    auto altitudeMode = mode(camera, "Camera");
+    if (!altitudeMode) return Error{altitudeMode.error()};
+    const std::string_view mode = *altitudeMode;
     auto lon = number(camera, "longitude", "Camera.longitude", std::nullopt, -180, 180);
     if (!lon) return Error{lon.error()};
     auto lat = number(camera, "latitude", "Camera.latitude", std::nullopt, -90, 90);
@@ -161,13 +209,11 @@ class TourReader {
         continue;
       }
       const XMLElement* cameraElement = child(*e, "Camera");
-      if (cameraElement == nullptr) {
-        const XMLElement* lookAt = child(*e, "LookAt");
-        return fail(lookAt ? *lookAt : *e,
-                    lookAt ? "gx:FlyTo holds a LookAt: only Camera views are supported"
-                           : "gx:FlyTo has no <Camera>");
+      const XMLElement* lookAtElement = child(*e, "LookAt");
+      if (cameraElement == nullptr && lookAtElement == nullptr) {
+        return fail(*e, "gx:FlyTo has no <Camera> or <LookAt>");
       }
-      auto key = camera(*cameraElement);
+      auto key = cameraElement != nullptr ? camera(*cameraElement) : lookAt(*lookAtElement);
       if (!key) return Error{key.error()};
       if (const XMLElement* mode = child(*e, "flyToMode")) {
         const std::string_view text = trimmed(mode->GetText());
@@ -197,7 +243,7 @@ class TourReader {
     }
     if (file.keyframes.empty()) {
       return fail(*playlist,
-                  "gx:Playlist has no gx:FlyTo with a Camera (a path needs at least "
+                  "gx:Playlist has no gx:FlyTo with a Camera or LookAt (a path needs at least "
                   "1 keyframe)");
     }
     file.interpolation = allSmooth ? "smooth" : "linear";

@@ -180,7 +180,7 @@ TEST_F(PathFiles, BadJsonNamesFileLineAndField) {
             "path.json:7: keyframes[2].lon: expected a number, got a string");
   EXPECT_EQ(errorOf("path.json", withThird(R"({"t": 5, "lon": 1, "lat": 0, "heigth": 3})")),
             "path.json:7: keyframes[2].heigth: unknown field (a keyframe has t, lon, lat, "
-            "height, heading, pitch, roll, aboveTerrain, time)");
+            "height, heading, pitch, roll, aboveTerrain, time, ease, target)");
   EXPECT_EQ(errorOf("path.json", withThird("[1, 2]")),
             "path.json:7: keyframes[2]: expected a keyframe object, got an array");
   EXPECT_EQ(
@@ -344,11 +344,11 @@ TEST_F(PathFiles, BadKmlNamesFileLineAndField) {
                                          "<altitudeMode>relativeToSeaFloor</altitudeMode>")),
             "tour.kml:18: Camera.altitudeMode: relativeToSeaFloor is not supported (use absolute "
             "or relativeToGround)");
-  std::string lookAt = kTour;  // the last FlyTo looks at a point instead
+  std::string lookAt = kTour;  // the last FlyTo looks at a point instead, without a range
   lookAt.replace(lookAt.rfind("<Camera>"), 8, "<LookAt>");
   lookAt.replace(lookAt.rfind("</Camera>"), 9, "</LookAt>");
   EXPECT_EQ(errorOf("tour.kml", lookAt),
-            "tour.kml:38: gx:FlyTo holds a LookAt: only Camera views are supported");
+            "tour.kml:38: LookAt.range: missing <range>");
   // tinyxml2 names the line where the element holding the stray end tag starts.
   EXPECT_EQ(errorOf("tour.kml", tourWith("</Camera>", "</Camera></gx:FlyTo>")),
             "tour.kml:7: not valid XML: XML_ERROR_MISMATCHED_ELEMENT (XMLElement "
@@ -357,8 +357,8 @@ TEST_F(PathFiles, BadKmlNamesFileLineAndField) {
             "tour.kml:31: not valid XML: XML_ERROR_PARSING_ATTRIBUTE (XMLElement name=tilt)");
   EXPECT_EQ(errorOf("none.kml", "<kml><Document/></kml>"), "none.kml:1: no <gx:Tour> in the file");
   EXPECT_EQ(errorOf("empty.kml", "<kml>\n<gx:Tour>\n<gx:Playlist>\n</gx:Playlist></gx:Tour></kml>"),
-            "empty.kml:3: gx:Playlist has no gx:FlyTo with a Camera (a path needs at least 1 "
-            "keyframe)");
+            "empty.kml:3: gx:Playlist has no gx:FlyTo with a Camera or LookAt (a path needs at "
+            "least 1 keyframe)");
   EXPECT_EQ(errorOf("deep.kml", std::string(2000, '<')).rfind("deep.kml:1: not valid XML", 0), 0u);
   const std::string nested = "<kml>" + [] {
     std::string s;

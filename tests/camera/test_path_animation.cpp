@@ -1,0 +1,222 @@
+// Animation on camera paths: CSS easing per segment (inOut covers ~0 % of its way at 10 % of its
+// time and half at half; a Bézier matches its own curve), targets held at the frame's centre on
+// every sample, and KML LookAt keyframes; the JSON and KML readers of both.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <string>
+
+#include <unistd.h>
+
+#include <glm/geometric.hpp>
+
+#include "camera/camera_path.hpp"
+#include "camera/camera_path_file.hpp"
+#include "camera/look_at.hpp"
+#include "camera/path_easing.hpp"
+#include "geo/ecef.hpp"
+#include "tests/support/test_constants.hpp"
+
+namespace globe::camera {
+namespace {
+
+using globe::test::kWgs84;
+namespace fs = std::filesystem;
+
+double bezier(double a, double b, double s) {
+  return 3 * (1 - s) * (1 - s) * s * a + 3 * (1 - s) * s * s * b + s * s * s;
+}
+
+TEST(PathEasing, NamedCurvesAreCssAndABezierFollowsItsCurve) {
+  EXPECT_LT(easeProgress(kEaseInOut, 0.1), 0.03) << "inOut: ~0 of its way at 10 % of its time";
+  EXPECT_NEAR(easeProgress(kEaseInOut, 0.5), 0.5, 1e-9);
+  EXPECT_NEAR(easeProgress(kEaseInOut, 0.9), 1.0 - easeProgress(kEaseInOut, 0.1), 1e-9);
+  EXPECT_LT(easeProgress(kEaseIn, 0.5), 0.35);
+  EXPECT_GT(easeProgress(kEaseOut, 0.5), 0.65);
+  for (double x = 0; x <= 1.0; x += 0.05) EXPECT_NEAR(easeProgress(kEaseLinear, x), x, 1e-9);
+  EXPECT_EQ(easeProgress(kEaseInOut, -1.0), 0.0);
+  EXPECT_EQ(easeProgress(kEaseInOut, 2.0), 1.0);
+  EXPECT_EQ(easeProgress(kEaseInOut, std::nan("")), 0.0);
+  // Any curve: the point at parameter s lies on it.
+  for (const CubicBezierEase ease : {CubicBezierEase{0.1, 0.7, 0.9, 0.2},
+                                     CubicBezierEase{0.0, 1.5, 1.0, -0.5},
+                                     CubicBezierEase{1.0, 0.0, 0.0, 1.0}}) {
+    for (double s = 0.01; s < 1.0; s += 0.07) {
+      EXPECT_NEAR(easeProgress(ease, bezier(ease.x1, ease.x2, s)), bezier(ease.y1, ease.y2, s),
+                  1e-9)
+          << ease.x1 << "," << ease.y1 << "," << ease.x2 << "," << ease.y2 << " at " << s;
+    }
+  }
+  EXPECT_EQ(namedEase("inOut"), kEaseInOut);
+  EXPECT_FALSE(namedEase("ease-in-out").has_value());
+  EXPECT_EQ(easeName(kEaseOut), "out");
+  EXPECT_EQ(easeName(CubicBezierEase{0.1, 0.2, 0.3, 0.4}), "");
+}
+
+// A linear path 10 s long along a meridian with the segment eased inOut: the camera's share of
+// the way at 10 % and 50 % of the time.
+TEST(PathEasing, AnEasedSegmentCoversItsWayByTheCurve) {
+  CameraPath path;
+  path.interpolation = PathInterpolation::Linear;
+  path.keyframes.push_back({0.0, CameraPose::fromDegrees(10, 40, 2000, 0, -20, 0)});
+  path.keyframes.push_back({10.0, CameraPose::fromDegrees(10, 41, 2000, 0, -20, 0)});
+  path.keyframes.push_back({20.0, CameraPose::fromDegrees(10, 42, 2000, 0, -20, 0)});
+  path.keyframes[0].ease = kEaseInOut;
+  const auto share = [&](double t, double from) {
+    return geo::radiansToDegrees(samplePath(path, t, kWgs84).position.latitudeRadians) - from;
+  };
+  EXPECT_LT(share(1.0, 40), 0.03);
+  EXPECT_NEAR(share(5.0, 40), 0.5, 1e-6);
+  EXPECT_NEAR(share(9.0, 40), 1.0 - share(1.0, 40), 1e-6);
+  // The next segment has no ease: linear in time.
+  EXPECT_NEAR(share(11.0, 41), 0.1, 1e-6);
+  EXPECT_NEAR(share(10.0, 41), 0.0, 1e-9) << "keys are hit exactly";
+}
+
+// The angle (degrees) between the pose's view and the direction to a point.
+double offCentreDegrees(const CameraPose& pose, const glm::dvec3& targetEcef) {
+  const CameraFrame frame = cameraFrame(kWgs84, pose);
+  const glm::dvec3 to = glm::normalize(targetEcef - frame.positionEcefMeters);
+  return geo::radiansToDegrees(std::acos(std::clamp(glm::dot(frame.forward, to), -1.0, 1.0)));
+}
+
+TEST(PathTarget, TheTargetStaysAtTheFrameCentreAndTheRollIsKept) {
+  const glm::dvec3 summit =
+      geo::cartographicToEcef(kWgs84, geo::Cartographic::fromDegrees(138.7274, 35.3606, 3776));
+  const glm::dvec3 lake =
+      geo::cartographicToEcef(kWgs84, geo::Cartographic::fromDegrees(138.76, 35.49, 1000));
+  for (const PathInterpolation interpolation :
+       {PathInterpolation::Linear, PathInterpolation::Smooth}) {
+    CameraPath path;
+    path.interpolation = interpolation;
+    const auto keyAt = [&](double t, CameraPose pose, const glm::dvec3& target) {
+      CameraKeyframe key{t, lookingAt(kWgs84, pose, target)};
+      key.targetEcefMeters = target;
+      path.keyframes.push_back(key);
+    };
+    keyAt(0, CameraPose::fromDegrees(138.60, 35.20, 6000, 0, 0, 7), summit);
+    keyAt(8, CameraPose::fromDegrees(138.90, 35.30, 4000, 0, 0, 7), summit);
+    keyAt(16, CameraPose::fromDegrees(138.85, 35.60, 3000, 0, 0, -5), lake);
+    path.keyframes[1].ease = kEaseInOut;
+    double worst = 0;
+    for (double t = 0; t <= 16.0; t += 0.1) {
+      const CameraPose pose = samplePath(path, t, kWgs84);
+      const double u = t <= 8 ? 0.0 : easeProgress(kEaseInOut, (t - 8) / 8);
+      worst = std::max(worst, offCentreDegrees(pose, summit + u * (lake - summit)));
+    }
+    EXPECT_LT(worst, 1e-4) << toString(interpolation);
+    // Roll: the keyframes' own, interpolated (7° to 7°, then 7° to −5° by the eased fraction).
+    EXPECT_NEAR(geo::radiansToDegrees(samplePath(path, 4, kWgs84).rollRadians), 7, 1e-9);
+    EXPECT_NEAR(geo::radiansToDegrees(samplePath(path, 12, kWgs84).rollRadians), 1, 1e-9);
+  }
+}
+
+// A fresh directory for this process and name (removed first).
+fs::path freshTempDir(const std::string& name) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("globe_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+fs::path writeFile(const fs::path& dir, const std::string& name, const std::string& text) {
+  const fs::path file = dir / name;
+  std::ofstream(file) << text;
+  return file;
+}
+
+TEST(PathTarget, JsonReadsEaseAndTargetsWritesThemBackAndNamesMistakes) {
+  const fs::path dir = freshTempDir("path-animation-json");
+  const fs::path good = writeFile(dir, "good.json", R"({"interpolation": "linear", "keyframes": [
+    {"t": 0, "lon": 138.6, "lat": 35.2, "height": 6000, "ease": "inOut",
+     "target": {"lon": 138.7274, "lat": 35.3606, "height": 0, "aboveTerrain": true}},
+    {"t": 5, "lon": 138.9, "lat": 35.3, "height": 4000, "ease": [0.1, 0.7, 0.9, 0.2]},
+    {"t": 9, "lon": 138.8, "lat": 35.5, "height": 3000}]})");
+  auto file = readCameraPath(good);
+  ASSERT_TRUE(file) << file.error();
+  EXPECT_EQ(file->keyframes[0].ease, kEaseInOut);
+  EXPECT_EQ(file->keyframes[1].ease, (CubicBezierEase{0.1, 0.7, 0.9, 0.2}));
+  EXPECT_FALSE(file->keyframes[2].ease.has_value());
+  ASSERT_TRUE(file->keyframes[0].target.has_value());
+  EXPECT_EQ(file->keyframes[0].target->longitudeDegrees, 138.7274);
+  EXPECT_TRUE(file->keyframes[0].target->heightAboveTerrain);
+  const fs::path copy = dir / "copy.json";
+  ASSERT_TRUE(writeCameraPathJson(copy, *file));
+  auto again = readCameraPath(copy);
+  ASSERT_TRUE(again) << again.error();
+  EXPECT_EQ(again->keyframes[1].ease, file->keyframes[1].ease);
+  EXPECT_EQ(again->keyframes[0].target->latitudeDegrees, 35.3606);
+  EXPECT_TRUE(again->keyframes[0].target->heightAboveTerrain);
+
+  const std::pair<const char*, const char*> mistakes[] = {
+      {R"("ease": "bounce")", "keyframes[0].ease: 'bounce' is not linear, in, out, inOut"},
+      {R"("ease": [1.5, 0, 0.5, 1])", "keyframes[0].ease[0]: 1.5 is outside 0..1"},
+      {R"("ease": [0.1, 0.2])", "keyframes[0].ease: expected linear, in, out, inOut or"},
+      {R"("target": {"lon": 138, "height": 0})", "keyframes[0].target: missing field 'lat'"},
+      {R"("target": {"lon": 138, "lat": 95, "height": 0})", "keyframes[0].target.lat: 95 is outside"},
+      {R"("target": {"lon": 1, "lat": 2, "height": 0, "alt": 3})", "keyframes[0].target.alt: unknown field"},
+  };
+  for (const auto& [field, expected] : mistakes) {
+    const fs::path bad = writeFile(dir, "bad.json",
+                                   std::string(R"({"keyframes": [{"t": 0, "lon": 1, "lat": 2, )"
+                                               R"("height": 3, )") + field + "}]}");
+    auto read = readCameraPath(bad);
+    ASSERT_FALSE(read) << field;
+    EXPECT_NE(read.error().find(expected), std::string::npos) << read.error();
+  }
+}
+
+TEST(PathTarget, KmlLookAtsBecomeCamerasLookingAtTheirPoints) {
+  const fs::path dir = freshTempDir("path-animation-kml");
+  const fs::path tour = writeFile(dir, "tour.kml", R"(<?xml version="1.0" encoding="UTF-8"?>
+<kml xmlns="http://www.opengis.net/kml/2.2" xmlns:gx="http://www.google.com/kml/ext/2.2">
+<gx:Tour><gx:Playlist>
+  <gx:FlyTo><gx:duration>1</gx:duration><gx:flyToMode>smooth</gx:flyToMode>
+    <LookAt><longitude>138.7274</longitude><latitude>35.3606</latitude><altitude>3776</altitude>
+      <heading>30</heading><tilt>60</tilt><range>12000</range>
+      <altitudeMode>absolute</altitudeMode></LookAt></gx:FlyTo>
+  <gx:FlyTo><gx:duration>6</gx:duration><gx:flyToMode>smooth</gx:flyToMode>
+    <LookAt><longitude>138.7274</longitude><latitude>35.3606</latitude><altitude>3776</altitude>
+      <heading>120</heading><tilt>70</tilt><range>9000</range>
+      <altitudeMode>absolute</altitudeMode></LookAt></gx:FlyTo>
+  <gx:FlyTo><gx:duration>4</gx:duration>
+    <LookAt><longitude>138.75</longitude><latitude>35.40</latitude>
+      <heading>0</heading><tilt>0</tilt><range>5000</range></LookAt></gx:FlyTo>
+</gx:Playlist></gx:Tour></kml>)");
+  auto file = readCameraPath(tour);
+  ASSERT_TRUE(file) << file.error();
+  ASSERT_EQ(file->keyframes.size(), 3u);
+  const glm::dvec3 summit =
+      geo::cartographicToEcef(kWgs84, geo::Cartographic::fromDegrees(138.7274, 35.3606, 3776));
+  for (size_t k = 0; k < 2; ++k) {
+    const PathKeyframe& key = file->keyframes[k];
+    ASSERT_TRUE(key.target.has_value());
+    const CameraPose pose =
+        CameraPose::fromDegrees(key.longitudeDegrees, key.latitudeDegrees, key.heightMeters,
+                                key.headingDegrees, key.pitchDegrees, key.rollDegrees);
+    EXPECT_NEAR(glm::length(geo::cartographicToEcef(kWgs84, pose.position) - summit),
+                k == 0 ? 12000 : 9000, 1e-3)
+        << "range";
+    EXPECT_LT(offCentreDegrees(pose, summit), 1e-4);
+    // The LookAt's heading and tilt are the point's; the camera's own horizon, 9..12 km away,
+    // is tilted from it by the Earth's curvature (~0.1°).
+    EXPECT_NEAR(key.headingDegrees, k == 0 ? 30 : 120, 0.1);
+    EXPECT_NEAR(key.pitchDegrees, k == 0 ? -30 : -20, 0.15);
+  }
+  // Straight down from 5 km over a point on the ground (clampToGround: above the terrain).
+  const PathKeyframe& last = file->keyframes[2];
+  EXPECT_NEAR(last.latitudeDegrees, 35.40, 1e-9);
+  EXPECT_NEAR(last.heightMeters, 5000, 1e-3);
+  EXPECT_TRUE(last.heightAboveTerrain);
+  EXPECT_NEAR(last.pitchDegrees, -90, 1e-6);
+  EXPECT_EQ(file->keyframes[1].timeSeconds, 6);
+  EXPECT_EQ(file->interpolation, "linear") << "the last FlyTo bounces (KML's default)";
+}
+
+}  // namespace
+}  // namespace globe::camera
