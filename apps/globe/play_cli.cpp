@@ -5,6 +5,7 @@
 #include <string>
 
 #include "apps/globe/camera_argument.hpp"
+#include "apps/globe/camera_track.hpp"
 #include "apps/globe/play_command.hpp"
 #include "apps/globe/subcommands.hpp"
 
@@ -17,6 +18,7 @@ struct PlayArguments {
   std::string out;
   std::string size = "1280x720";
   std::string video;
+  std::string exportCamera;
   std::string fps = "30";  // as text: checked and named by parseNumberArgument
   bool noFrames = false;
   bool noGlide = false;
@@ -47,6 +49,13 @@ int runPlayCommand(const PlayArguments& arguments, const CommonArguments& common
   options.realTime = arguments.realTime;
   options.morphFrames = arguments.morphFrames;
   if (!arguments.video.empty()) options.video = arguments.video;
+  if (!arguments.exportCamera.empty()) {
+    if (auto checked = checkCameraTrackPath(arguments.exportCamera); !checked) {
+      std::fprintf(stderr, "globe play: %s\n", checked.error().c_str());
+      return 2;
+    }
+    options.exportCamera = arguments.exportCamera;
+  }
   if (!applySceneArguments("play", common, context, options.scene)) return 2;
   auto report = runPlay(options);
   if (!report) {
@@ -93,6 +102,12 @@ Subcommand addPlayCommand(CLI::App& app, CommonArguments& common) {
       ->check(CLI::Range(0u, 1000u))
       ->capture_default_str();
   play->add_option("--video", arguments->video, "encode the frames into this MP4 with ffmpeg");
+  play->add_option("--export-camera", arguments->exportCamera,
+                   "write the rendered camera of every frame: .json (geodetic, ECEF and a "
+                   "quaternion), .csv (the same), or .jsx (an After Effects script: a keyed "
+                   "two-node camera and nulls for the path's targets, in a local east-north-up "
+                   "frame)")
+      ->type_name("FILE");
   play->add_flag("--allow-missing", arguments->allowMissing,
                  "exit 0 even when tiles failed to load (drawn coarser; each named on stderr)");
   addGlobeOption(*play, common);

@@ -2,6 +2,8 @@
 // drawn array → complete view for the corrected pose) → draw → frame, log row.
 #include "apps/globe/play_command.hpp"
 
+#include "apps/globe/camera_track.hpp"
+
 #include <unistd.h>
 
 #include <chrono>
@@ -245,6 +247,7 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
     outputs += "frames: " + (framesDir / "00000.png").string() + " ... " + last + "\n";
   }
   if (options.video) outputs += "video: " + options.video->string() + "\n";
+  if (options.exportCamera) outputs += "camera: " + options.exportCamera->string() + "\n";
   char wall[96];
   std::snprintf(wall, sizeof wall, "wall time: %.1f s\n", millisecondsSince(runStart) / 1000.0);
   report.summaryText = header + formatSummary(report.summary, records) + wall + outputs;
@@ -253,6 +256,18 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
                                                        {"summary.txt", report.summaryText}};
   for (const auto& [name, text] : texts) {
     if (auto written = transport::writeFileAtomically(options.outputDir / name, text); !written) {
+      return Error{written.error()};
+    }
+  }
+  if (options.exportCamera) {
+    CameraTrackSettings track{fps, width, height,
+                              geo::radiansToDegrees(options.scene.fovYRadians), {}};
+    for (const camera::CameraKeyframe& key : path.keyframes) {
+      if (key.targetEcefMeters) track.targetsEcefMeters.push_back(*key.targetEcefMeters);
+    }
+    auto text = formatCameraTrack(*options.exportCamera, records, track, scene.ellipsoid());
+    if (!text) return Error{text.error()};
+    if (auto written = transport::writeFileAtomically(*options.exportCamera, *text); !written) {
       return Error{written.error()};
     }
   }

@@ -26,6 +26,8 @@ struct PlayOptions {
   bool realTime = false;
   uint32_t morphFrames = 8;  // with realTime: SceneOptions::morphFrames (0: tiles pop in at once)
   std::optional<std::filesystem::path> video;  // encode the frames with ffmpeg
+  // --export-camera: the rendered camera of every frame (apps/globe/camera_track.hpp).
+  std::optional<std::filesystem::path> exportCamera;
   scene::SceneOptions scene;
   int timeoutSeconds = 300;  // for each frame's view to complete
 };

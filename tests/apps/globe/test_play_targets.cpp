@@ -11,7 +11,11 @@
 #include <string>
 #include <tuple>
 
+#include <sys/wait.h>
+
 #include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <nlohmann/json.hpp>
 
 #include "camera/camera_pose.hpp"
 #include "geo/ecef.hpp"
@@ -47,22 +51,35 @@ double worstOffCentre(const fs::path& log, size_t& frames) {
   return worst;
 }
 
-int play(const fs::path& path, const fs::path& out) {
+int play(const fs::path& path, const fs::path& out, const std::string& extra = "") {
   const std::string command = std::string(GLOBE_EXE) + " play " +
                               globe::testing::bundledPyramid().string() + " " + path.string() +
-                              " --no-frames --fps 5 --size 96x54 --out " + out.string() +
-                              " > " + (out.string() + ".txt") + " 2>&1";
-  return std::system(command.c_str());
+                              " --no-frames --fps 5 --size 96x54 --out " + out.string() + " " +
+                              extra + " > " + (out.string() + ".txt") + " 2>&1";
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string readText(const fs::path& file) {
+  std::stringstream text;
+  text << std::ifstream(file).rdbuf();
+  return text.str();
+}
+
+const std::string kSummit = R"("target": {"lon": 138.7274, "lat": 35.3606, "height": 3776})";
+
+fs::path writeTargetPath(const fs::path& dir) {
+  const fs::path json = dir / "targets.json";
+  std::ofstream(json) << R"({"keyframes": [
+    {"t": 0, "lon": 138.62, "lat": 35.30, "height": 6000, "ease": "inOut", )" << kSummit << R"(},
+    {"t": 6, "lon": 138.80, "lat": 35.28, "height": 5500, "roll": 4, )" << kSummit << R"(},
+    {"t": 12, "lon": 138.80, "lat": 35.44, "height": 5000, )" << kSummit << "}]}";
+  return json;
 }
 
 TEST(PlayTargets, TheTargetStaysAtTheFrameCentreOnEveryFrame) {
   const fs::path dir = globe::testing::freshTempDir("play-targets");
-  const std::string summit = R"("target": {"lon": 138.7274, "lat": 35.3606, "height": 3776})";
-  const fs::path json = dir / "targets.json";
-  std::ofstream(json) << R"({"keyframes": [
-    {"t": 0, "lon": 138.62, "lat": 35.30, "height": 6000, "ease": "inOut", )" << summit << R"(},
-    {"t": 6, "lon": 138.80, "lat": 35.28, "height": 5500, "roll": 4, )" << summit << R"(},
-    {"t": 12, "lon": 138.80, "lat": 35.44, "height": 5000, )" << summit << "}]}";
+  const fs::path json = writeTargetPath(dir);
   ASSERT_EQ(play(json, dir / "json"), 0);
   size_t frames = 0;
   EXPECT_LT(worstOffCentre(dir / "json" / "log.csv", frames), 0.3);
@@ -85,6 +102,89 @@ TEST(PlayTargets, TheTargetStaysAtTheFrameCentreOnEveryFrame) {
   ASSERT_EQ(play(kml, dir / "kml"), 0);
   EXPECT_LT(worstOffCentre(dir / "kml" / "log.csv", frames), 0.3);
   EXPECT_EQ(frames, 51u);
+}
+
+// --export-camera: the JSON track is the logged camera (geodetic as the log, ECEF and the
+// quaternion consistent with it), the CSV has a row a frame, and the After Effects script runs
+// (under node, with a stand-in for AE's objects that counts what it is asked) and keys its camera
+// on every frame.
+TEST(PlayTargets, TheExportedCameraIsTheCameraDrawn) {
+  const fs::path dir = globe::testing::freshTempDir("play-export");
+  const fs::path path = writeTargetPath(dir);
+  ASSERT_EQ(play(path, dir / "j", "--export-camera " + (dir / "cam.json").string()), 0);
+  const auto rows = readLog(dir / "j" / "log.csv");
+  const auto track = nlohmann::json::parse(readText(dir / "cam.json"));
+  ASSERT_EQ(track["frames"].size(), rows.size());
+  EXPECT_EQ(rows.size(), 61u);
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const auto& f = track["frames"][i];
+    for (const auto& [field, column, tolerance] :
+         {std::tuple{"lon", "lon_deg", 1e-7}, std::tuple{"lat", "lat_deg", 1e-7},
+          std::tuple{"height", "height_m", 1e-3}, std::tuple{"heading", "heading_deg", 1e-3},
+          std::tuple{"pitch", "pitch_deg", 1e-3}, std::tuple{"roll", "roll_deg", 1e-3}}) {
+      EXPECT_NEAR(f[field].get<double>(), number(rows[i], column), tolerance)
+          << field << " at frame " << i;
+    }
+    const glm::dvec3 ecef(f["ecef"][0].get<double>(), f["ecef"][1].get<double>(),
+                          f["ecef"][2].get<double>());
+    const glm::dvec3 expected = geo::cartographicToEcef(
+        kWgs84, geo::Cartographic::fromDegrees(f["lon"].get<double>(), f["lat"].get<double>(),
+                                               f["height"].get<double>()));
+    EXPECT_LT(glm::length(ecef - expected), 1e-6);
+    const glm::dquat q(f["quaternion"][0].get<double>(), f["quaternion"][1].get<double>(),
+                       f["quaternion"][2].get<double>(), f["quaternion"][3].get<double>());
+    const camera::CameraFrame frame = camera::cameraFrame(
+        kWgs84, camera::CameraPose::fromDegrees(f["lon"].get<double>(), f["lat"].get<double>(),
+                                                f["height"].get<double>(), f["heading"].get<double>(),
+                                                f["pitch"].get<double>(), f["roll"].get<double>()));
+    EXPECT_GT(glm::dot(q * glm::dvec3(0, 0, -1), frame.forward), 1.0 - 1e-9) << i;
+    EXPECT_GT(glm::dot(q * glm::dvec3(0, 1, 0), frame.up), 1.0 - 1e-9) << i;
+    EXPECT_EQ(f["fovDeg"].get<double>(), 45.0);
+  }
+
+  ASSERT_EQ(play(path, dir / "c", "--export-camera " + (dir / "cam.csv").string()), 0);
+  const std::string csv = readText(dir / "cam.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 62);  // the header and a row a frame
+
+  ASSERT_EQ(play(path, dir / "x", "--export-camera " + (dir / "cam.jsx").string()), 0);
+  ASSERT_EQ(std::system("command -v node > /dev/null 2>&1"), 0)
+      << "node (installed for the web tests by tools/web/install.sh)";
+  const fs::path runner = dir / "run-jsx.js";
+  std::ofstream(runner) << R"(
+const fs = require("fs");
+const counts = {};
+function property(name) {
+  return { property: (n) => property(n),
+           setValue: () => { counts[name + ".set"] = (counts[name + ".set"] || 0) + 1; },
+           setValueAtTime: (t, v) => {
+             if (!isFinite(t) || (Array.isArray(v) && !v.every(isFinite))) throw new Error(name);
+             counts[name] = (counts[name] || 0) + 1; } };
+}
+function layer() { return { property: (n) => property(n) }; }
+globalThis.AutoOrientType = { CAMERA_OR_POINT_OF_INTEREST: 1 };
+globalThis.app = { project: { items: { addComp: () => ({
+  layers: { addCamera: () => layer(),
+            addNull: () => { counts.nulls = (counts.nulls || 0) + 1; return layer(); } },
+  openInViewer: () => {} }) } } };
+eval(fs.readFileSync(process.argv[2], "utf8"));
+console.log(JSON.stringify(counts));
+)";
+  const fs::path counts = dir / "counts.json";
+  ASSERT_EQ(std::system(("node " + runner.string() + " " + (dir / "cam.jsx").string() + " > " +
+                         counts.string() + " 2>&1")
+                            .c_str()),
+            0)
+      << readText(counts);
+  const auto counted = nlohmann::json::parse(readText(counts));
+  EXPECT_EQ(counted["ADBE Position"].get<int>(), 61);
+  EXPECT_EQ(counted["ADBE Anchor Point"].get<int>(), 61) << "the point of interest";
+  EXPECT_EQ(counted["ADBE Rotate Z"].get<int>(), 61);
+  EXPECT_EQ(counted["nulls"].get<int>(), 4) << "the origin and the three keyframes' targets";
+
+  const int wrong = play(path, dir / "w", "--export-camera " + (dir / "cam.txt").string());
+  EXPECT_EQ(wrong, 2);
+  EXPECT_NE(readText(dir / "w.txt").find("--export-camera writes .json, .csv or .jsx, not '.txt'"),
+            std::string::npos);
 }
 
 }  // namespace
