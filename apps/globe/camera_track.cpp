@@ -24,7 +24,7 @@ std::string extensionOf(const std::filesystem::path& file) {
 }
 
 struct TrackFrame {
-  double t, lon, lat, height, heading, pitch, roll;
+  double t, lon, lat, height, heading, pitch, roll, fovYDegrees;
   glm::dvec3 ecef, forward, up;
   glm::dquat orientation;  // camera axes (x right, y up, z back) to ECEF
 };
@@ -41,6 +41,7 @@ TrackFrame trackFrame(const FrameRecord& record, const geo::Ellipsoid& ellipsoid
           heading,
           geo::radiansToDegrees(pose.pitchRadians),
           geo::radiansToDegrees(pose.rollRadians),
+          record.fovYDegrees,
           frame.positionEcefMeters,
           frame.forward,
           frame.up,
@@ -62,21 +63,21 @@ std::string jsonTrack(const std::vector<TrackFrame>& frames, const CameraTrackSe
         "  {\"t\": %.17g, \"lon\": %.17g, \"lat\": %.17g, \"height\": %.17g, \"heading\": %.17g, "
         "\"pitch\": %.17g, \"roll\": %.17g, \"fovDeg\": %.17g, \"ecef\": [%.17g, %.17g, %.17g], "
         "\"quaternion\": [%.17g, %.17g, %.17g, %.17g]}%s\n",
-        f.t, f.lon, f.lat, f.height, f.heading, f.pitch, f.roll, s.fovYDegrees, f.ecef.x,
+        f.t, f.lon, f.lat, f.height, f.heading, f.pitch, f.roll, f.fovYDegrees, f.ecef.x,
         f.ecef.y, f.ecef.z, f.orientation.w, f.orientation.x, f.orientation.y, f.orientation.z,
         i + 1 < frames.size() ? "," : "");
   }
   return text + "]}\n";
 }
 
-std::string csvTrack(const std::vector<TrackFrame>& frames, const CameraTrackSettings& s) {
+std::string csvTrack(const std::vector<TrackFrame>& frames) {
   std::string text =
       "frame,t,lon,lat,height,heading,pitch,roll,fov_deg,ecef_x,ecef_y,ecef_z,qw,qx,qy,qz\n";
   for (size_t i = 0; i < frames.size(); ++i) {
     const TrackFrame& f = frames[i];
     text += format("%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,"
                    "%.17g,%.17g,%.17g,%.17g\n",
-                   i, f.t, f.lon, f.lat, f.height, f.heading, f.pitch, f.roll, s.fovYDegrees,
+                   i, f.t, f.lon, f.lat, f.height, f.heading, f.pitch, f.roll, f.fovYDegrees,
                    f.ecef.x, f.ecef.y, f.ecef.z, f.orientation.w, f.orientation.x,
                    f.orientation.y, f.orientation.z);
   }
@@ -104,8 +105,6 @@ std::string vector3(const glm::dvec3& v) { return format("[%.9g, %.9g, %.9g]", v
 std::string jsxTrack(const std::vector<FrameRecord>& records, const std::vector<TrackFrame>& frames,
                      const CameraTrackSettings& s, const geo::Ellipsoid& ellipsoid) {
   const AfterEffectsFrame toAe = afterEffectsFrame(records.front(), ellipsoid);
-  const double fovY = s.fovYDegrees * 3.14159265358979323846 / 180.0;
-  const double zoom = 0.5 * s.heightPixels / std::tan(0.5 * fovY);
   const double seconds = static_cast<double>(frames.size()) / s.framesPerSecond;
   std::string text =
       "// globe play --export-camera: the rendered camera for After Effects (File > Scripts >\n"
@@ -117,24 +116,26 @@ std::string jsxTrack(const std::vector<FrameRecord>& records, const std::vector<
                  s.framesPerSecond);
   text += "  var camera = comp.layers.addCamera(\"globe camera\", [0, 0]);\n"
           "  camera.autoOrient = AutoOrientType.CAMERA_OR_POINT_OF_INTEREST;\n";
-  text += format("  camera.property(\"ADBE Camera Options Group\").property(\"ADBE Camera Zoom\")"
-                 ".setValue(%.9g);\n", zoom);
+  text += "  var zoom = camera.property(\"ADBE Camera Options Group\").property(\"ADBE Camera Zoom\");\n";
   text += "  var position = camera.property(\"ADBE Transform Group\").property(\"ADBE Position\");\n"
           "  var interest = camera.property(\"ADBE Transform Group\").property(\"ADBE Anchor Point\");\n"
           "  var roll = camera.property(\"ADBE Transform Group\").property(\"ADBE Rotate Z\");\n"
           "  var frames = [\n";
   for (size_t i = 0; i < frames.size(); ++i) {
     const TrackFrame& f = frames[i];
-    // The point of interest 1 km ahead along the view.
-    text += "    [" + format("%.9g", static_cast<double>(i) / s.framesPerSecond) + ", " + vector3(toAe(f.ecef)) + ", " +
-            vector3(toAe(f.ecef + 1000.0 * f.forward)) + ", " + format("%.9g", f.roll) + "]" +
-            (i + 1 < frames.size() ? ",\n" : "\n");
+    // The point of interest 1 km ahead along the view; AE's zoom is the focal length in pixels.
+    const double zoom =
+        0.5 * s.heightPixels / std::tan(0.5 * f.fovYDegrees * 3.14159265358979323846 / 180.0);
+    text += "    [" + format("%.9g", static_cast<double>(i) / s.framesPerSecond) + ", " +
+            vector3(toAe(f.ecef)) + ", " + vector3(toAe(f.ecef + 1000.0 * f.forward)) + ", " +
+            format("%.9g, %.9g", f.roll, zoom) + "]" + (i + 1 < frames.size() ? ",\n" : "\n");
   }
   text += "  ];\n"
           "  for (var i = 0; i < frames.length; i++) {\n"
           "    position.setValueAtTime(frames[i][0], frames[i][1]);\n"
           "    interest.setValueAtTime(frames[i][0], frames[i][2]);\n"
           "    roll.setValueAtTime(frames[i][0], frames[i][3]);\n"
+          "    zoom.setValueAtTime(frames[i][0], frames[i][4]);\n"
           "  }\n"
           "  var nulls = [[\"origin\", [0, 0, 0]]";
   for (size_t k = 0; k < s.targetsEcefMeters.size(); ++k) {
@@ -171,7 +172,7 @@ Result<std::string> formatCameraTrack(const std::filesystem::path& file,
   for (const FrameRecord& record : records) frames.push_back(trackFrame(record, ellipsoid));
   const std::string extension = extensionOf(file);
   if (extension == ".json") return jsonTrack(frames, settings);
-  if (extension == ".csv") return csvTrack(frames, settings);
+  if (extension == ".csv") return csvTrack(frames);
   return jsxTrack(records, frames, settings, ellipsoid);
 }
 

@@ -5,8 +5,8 @@
 //          the quaternion rotating camera axes (x right, y up, z back: OpenGL's) into ECEF;
 //   .csv   the same fields, one row a frame;
 //   .jsx   an Adobe After Effects script: a composition at the frames' size and rate with a
-//          two-node camera (position and point of interest keyed on every frame, Z rotation the
-//          roll, zoom from the vertical field of view) and a null for each path target and for
+//          two-node camera (position, point of interest, Z rotation (the roll) and zoom (from
+//          the vertical field of view drawn) keyed on every frame) and a null for each path target and for
 //          the origin, in a local frame: east-north-up at the ground under the first frame's
 //          camera, in metres, as AE's axes (x east, y down, z north).
 #pragma once
@@ -26,7 +26,6 @@ namespace globe::app {
 struct CameraTrackSettings {
   double framesPerSecond = 30;
   int widthPixels = 1280, heightPixels = 720;
-  double fovYDegrees = 45;
   std::vector<glm::dvec3> targetsEcefMeters;  // the path's targets (nulls in the .jsx)
 };
 

@@ -66,8 +66,10 @@ Result<camera::CameraPath> toCameraPath(const camera::CameraPathFile& file,
       pose.headingRadians = looking.headingRadians;
       pose.pitchRadians = looking.pitchRadians;
     }
+    std::optional<double> fov;
+    if (key.fovDegrees) fov = geo::degreesToRadians(*key.fovDegrees);
     path.keyframes.push_back(
-        {key.timeSeconds, pose, key.heightAboveTerrain, key.sunUnixSeconds, key.ease, target});
+        {key.timeSeconds, pose, key.heightAboveTerrain, key.sunUnixSeconds, key.ease, target, fov});
   }
   return path;
 }

@@ -260,8 +260,7 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
     }
   }
   if (options.exportCamera) {
-    CameraTrackSettings track{fps, width, height,
-                              geo::radiansToDegrees(options.scene.fovYRadians), {}};
+    CameraTrackSettings track{fps, width, height, {}};
     for (const camera::CameraKeyframe& key : path.keyframes) {
       if (key.targetEcefMeters) track.targetsEcefMeters.push_back(*key.targetEcefMeters);
     }

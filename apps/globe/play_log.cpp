@@ -64,14 +64,15 @@ std::string formatPlayLog(const std::vector<FrameRecord>& frames) {
   std::string text =
       "frame,time_s,lon_deg,lat_deg,height_m,terrain_height_m,clearance_m,collided,response,"
       "tiles_drawn,terrain_source,heading_deg,pitch_deg,roll_deg,scripted_height_m,near_clearance_"
-      "m,lift_m,vertical_jolt_m,new_ground_lift_m\n";
+      "m,lift_m,vertical_jolt_m,new_ground_lift_m,fov_deg\n";
   const std::vector<double> jolts = verticalJoltMeters(frames);
   char line[512];
   for (size_t i = 0; i < frames.size(); ++i) {
     const FrameRecord& r = frames[i];
     std::snprintf(
         line, sizeof line,
-        "%d,%.4f,%.7f,%.7f,%.3f,%.3f,%.3f,%d,%s,%zu,%s,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f\n",
+        "%d,%.4f,%.7f,%.7f,%.3f,%.3f,%.3f,%d,%s,%zu,%s,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,"
+        "%.4f\n",
         r.frame, printable(r.timeSeconds, 1e4), printable(r.pose.position.longitudeDegrees(), 1e7),
         printable(r.pose.position.latitudeDegrees(), 1e7),
         printable(r.pose.position.heightMeters, 1e3), printable(r.terrainHeightMeters, 1e3),
@@ -83,7 +84,8 @@ std::string formatPlayLog(const std::vector<FrameRecord>& frames) {
         printable(signedAngleDegrees(r.pose.rollRadians), 1e3),
         printable(r.scriptedHeightMeters, 1e3), printable(r.nearClearanceMeters, 1e3),
         printable(r.pose.position.heightMeters - r.scriptedHeightMeters, 1e3),
-        printable(jolts[i], 1e3), printable(r.newGroundLiftMeters, 1e3));
+        printable(jolts[i], 1e3), printable(r.newGroundLiftMeters, 1e3),
+        printable(r.fovYDegrees, 1e4));
     text += line;
   }
   return text;

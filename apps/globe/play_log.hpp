@@ -45,12 +45,13 @@ struct FrameRecord {
   size_t missingTiles = 0;  // tiles the frame's view wanted whose load failed (drawn coarser)
   size_t tilesDrawn = 0;
   uint64_t imageryTextureBytes = 0;  // imagery textures on the GPU after the frame's draw
+  double fovYDegrees = 0;            // the vertical field of view drawn
   FrameTimings timings;
 };
 
 // frame,time_s,lon_deg,lat_deg,height_m,terrain_height_m,clearance_m,collided,response,
 // tiles_drawn,terrain_source,heading_deg,pitch_deg,roll_deg,scripted_height_m,near_clearance_m,
-// lift_m,vertical_jolt_m,new_ground_lift_m (terrain_source: drawn | nadir | finest; lift_m =
+// lift_m,vertical_jolt_m,new_ground_lift_m,fov_deg (terrain_source: drawn | nadir | finest; lift_m =
 // height_m - scripted_height_m; vertical_jolt_m: verticalJoltMeters; new_ground_lift_m:
 // FrameRecord::newGroundLiftMeters)
 std::string formatPlayLog(const std::vector<FrameRecord>& frames);

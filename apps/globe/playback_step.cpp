@@ -71,12 +71,8 @@ PlaybackStep::PlaybackStep(scene::TerrainScene& scene, scene::TileGpu& gpu,
   if (const auto sunTime = camera::sampleSunTime(path, path.startSeconds())) {
     scene.setSunTime(sunTime);
   }
-  const double fovY = scene.options().fovYRadians;
-  controller_.setNearPlane(
-      {camera::projectionForHeight(0, controller_.settings().clearance.eyeMeters, fovY, 1,
-                                   scene.ellipsoid())
-           .nearMeters,
-       fovY, static_cast<double>(widthPixels) / std::max(heightPixels, 1)});
+  if (const auto fovY = camera::sampleFovY(path, path.startSeconds())) scene.setFovY(*fovY);
+  setNearPlane();
 }
 
 Result<void> PlaybackStep::start(FrameTimings& timings) {
@@ -138,6 +134,11 @@ Result<FrameRecord> PlaybackStep::frame(int frameIndex, double timeSeconds, doub
   record.timeSeconds = timeSeconds;
   // Keyframes with a "time" move the Sun through the flight (else --time's, or none, stays).
   if (const auto sunTime = camera::sampleSunTime(path_, timeSeconds)) scene_.setSunTime(sunTime);
+  // Keyframes with a "fov" zoom: the view and the controller's near plane take it.
+  if (const auto fovY = camera::sampleFovY(path_, timeSeconds)) {
+    scene_.setFovY(*fovY);
+    setNearPlane();
+  }
   const camera::CameraPose scripted =
       camera::samplePath(path_, timeSeconds, ellipsoid, terrainOf(scene_));
   record.scriptedHeightMeters = scripted.position.heightMeters;
@@ -179,9 +180,20 @@ Result<FrameRecord> PlaybackStep::frame(int frameIndex, double timeSeconds, doub
   return finishRecord(std::move(record));
 }
 
+void PlaybackStep::setNearPlane() {
+  const double fovY = scene_.options().fovYRadians;
+  controller_.setNearPlane(
+      {camera::projectionForHeight(0, controller_.settings().clearance.eyeMeters, fovY, 1,
+                                   scene_.ellipsoid())
+           .nearMeters,
+       fovY, static_cast<double>(widthPixels_) / std::max(heightPixels_, 1)});
+}
+
 Result<FrameRecord> PlaybackStep::finishRecord(FrameRecord record) {
   const geo::Ellipsoid& ellipsoid = scene_.ellipsoid();
   record.pose = controller_.pose();
+  // The field of view drawn: from the view's own projection (y scale = 1 / tan(fov / 2)).
+  record.fovYDegrees = geo::radiansToDegrees(2.0 * std::atan(1.0 / scene_.view().projection[1][1]));
   record.missingTiles = missingTiles_;
   const auto surfaceHeight = collision::exactSurfaceHeight(scene_.renderingTileArray(), ellipsoid,
                                                            record.pose.position.longitudeRadians,

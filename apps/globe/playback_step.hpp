@@ -67,6 +67,8 @@ class PlaybackStep {
   void collide(double dtSeconds, FrameRecord& record, bool newView = false);
   // The pose, the surface under it and the clearances, into the record.
   Result<FrameRecord> finishRecord(FrameRecord record);
+  // The controller's near plane for the scene's field of view (which a path's "fov" changes).
+  void setNearPlane();
   // Where the script takes the camera over the glide's look-ahead (camera/terrain_glide.hpp).
   std::vector<camera::GlidePoint> scriptAhead(double timeSeconds) const;
 

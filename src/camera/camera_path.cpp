@@ -263,18 +263,33 @@ CameraPose samplePath(const CameraPath& path, double timeSeconds, const geo::Ell
   return pose;
 }
 
-std::optional<double> sampleSunTime(const CameraPath& path, double timeSeconds) {
+namespace {
+
+// A keyframe value that only some keyframes have, linear in time between those that do; the
+// first's before it and the last's after it.
+std::optional<double> sampleSparse(const CameraPath& path, double timeSeconds,
+                                   std::optional<double> CameraKeyframe::*member) {
   const CameraKeyframe* before = nullptr;
   for (const CameraKeyframe& key : path.keyframes) {
-    if (!key.sunUnixSeconds) continue;
+    if (!(key.*member)) continue;
     if (!(key.timeSeconds < timeSeconds)) {
-      if (before == nullptr) return key.sunUnixSeconds;  // at or before the first
+      if (before == nullptr) return key.*member;  // at or before the first
       const double f = (timeSeconds - before->timeSeconds) / (key.timeSeconds - before->timeSeconds);
-      return *before->sunUnixSeconds + f * (*key.sunUnixSeconds - *before->sunUnixSeconds);
+      return *(before->*member) + f * (*(key.*member) - *(before->*member));
     }
     before = &key;
   }
-  return before != nullptr ? before->sunUnixSeconds : std::nullopt;
+  return before != nullptr ? before->*member : std::nullopt;
+}
+
+}  // namespace
+
+std::optional<double> sampleFovY(const CameraPath& path, double timeSeconds) {
+  return sampleSparse(path, easedTime(path, timeSeconds), &CameraKeyframe::fovYRadians);
+}
+
+std::optional<double> sampleSunTime(const CameraPath& path, double timeSeconds) {
+  return sampleSparse(path, timeSeconds, &CameraKeyframe::sunUnixSeconds);
 }
 
 }  // namespace globe::camera

@@ -44,6 +44,7 @@ struct CameraKeyframe {
   // two keyframes that have one, every sampled pose looks at the point between them (at the
   // segment's eased fraction), roll kept.
   std::optional<glm::dvec3> targetEcefMeters{};
+  std::optional<double> fovYRadians{};  // the vertical field of view here ("fov")
 };
 
 // The terrain height (m above the ellipsoid) under a longitude and latitude in radians.
@@ -74,5 +75,10 @@ CameraPose samplePath(const CameraPath& path, double timeSeconds, const geo::Ell
 // a minute of flight if the keyframes say so), the first one's before it and the last one's
 // after it; nullopt when no keyframe has one.
 std::optional<double> sampleSunTime(const CameraPath& path, double timeSeconds);
+
+// The vertical field of view at a path time: linear between the keyframes that have one, by the
+// segment's eased share where it is eased; the first one's before it, the last one's after it;
+// nullopt when no keyframe has one.
+std::optional<double> sampleFovY(const CameraPath& path, double timeSeconds);
 
 }  // namespace globe::camera

@@ -41,6 +41,9 @@ struct PathKeyframe {
   // "target": the camera looks at it here, and on every frame to the next keyframe that has one
   // (the point interpolated); the keyframe's heading and pitch are then ignored.
   std::optional<PathTarget> target{};
+  // "fov": the vertical field of view here (degrees, 1..170), interpolated between the keyframes
+  // that have one by the segment's eased share; none anywhere: the program's (45°).
+  std::optional<double> fovDegrees{};
 };
 
 // Keyframes with strictly increasing times (at least one); interpolation "linear" or "smooth".
@@ -60,6 +63,7 @@ inline constexpr uint64_t kPathFileMaximumBytes = uint64_t{64} << 20;
 //    "keyframes": [{"t": 0, "lon": 138.73, "lat": 35.36, "height": 5000,
 //                   "heading": 0, "pitch": -20, "roll": 0, "aboveTerrain": false,
 //                   "time": "2024-06-21T06:30+09:00", "ease": "inOut" | [x1, y1, x2, y2],
+//                   "fov": 30,
 //                   "target": {"lon": 138.73, "lat": 35.36, "height": 0,
 //                              "aboveTerrain": true}}, ...]}
 // t, lon, lat and height are required; heading (0), pitch (-90), roll (0) and aboveTerrain

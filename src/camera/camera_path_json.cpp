@@ -36,7 +36,7 @@ constexpr std::array<NumberField, 7> kNumberFields = {{
     {"roll", &PathKeyframe::rollDegrees, false, -kUnbounded, kUnbounded},
 }};
 constexpr std::string_view kKeyframeFields =
-    "t, lon, lat, height, heading, pitch, roll, aboveTerrain, time, ease, target";
+    "t, lon, lat, height, heading, pitch, roll, aboveTerrain, time, ease, target, fov";
 
 std::string_view typeName(const json& value) {
   return value.is_number()    ? "a number"
@@ -130,6 +130,7 @@ Result<PathKeyframe> readKeyframe(const json& object, const std::string& where,
   for (const auto& item : object.items()) {
     const std::string& key = item.key();  // not a structured binding: clang 14 cannot capture one
     const bool known = key == "aboveTerrain" || key == "time" || key == "ease" || key == "target" ||
+                       key == "fov" ||
                        std::any_of(kNumberFields.begin(), kNumberFields.end(),
                                    [&](const NumberField& field) { return key == field.name; });
     if (!known) {
@@ -171,6 +172,16 @@ Result<PathKeyframe> readKeyframe(const json& object, const std::string& where,
     auto ease = readEase(*it, fail);
     if (!ease) return Error{ease.error()};
     keyframe.ease = *ease;
+  }
+  if (const auto it = object.find("fov"); it != object.end()) {
+    if (!it->is_number()) {
+      return fail("fov", "expected a number (degrees), got " + std::string(typeName(*it)));
+    }
+    const double fov = it->get<double>();
+    if (auto problem = detail::checkNumber(at.written(where + ".fov"), fov, 1, 170)) {
+      return fail("fov", *problem);
+    }
+    keyframe.fovDegrees = fov;
   }
   if (const auto it = object.find("target"); it != object.end()) {
     auto target = readTarget(*it, fail);
@@ -300,6 +311,7 @@ Result<void> writeCameraPathJson(const std::filesystem::path& path, const Camera
     if (key.heightAboveTerrain) text += ", \"aboveTerrain\": true";
     if (key.sunUnixSeconds) text += ", \"time\": \"" + sun::formatUtcTime(*key.sunUnixSeconds) + "\"";
     text += easeText(key.ease) + targetText(key.target);
+    if (key.fovDegrees) text += ", \"fov\": " + detail::formatNumber(*key.fovDegrees);
     text += k + 1 < file.keyframes.size() ? "},\n" : "}\n";
   }
   text += "  ]\n}\n";

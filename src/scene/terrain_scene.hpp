@@ -129,6 +129,8 @@ class TerrainScene {
   // The Sun's instant for the frames from now on (a camera path's keyframe times, the window's
   // time keys); nullopt: the light that follows the camera.
   void setSunTime(std::optional<double> unixSeconds) { options_.sunTimeUnixSeconds = unixSeconds; }
+  // The vertical field of view of the next update's view (a path's "fov").
+  void setFovY(double radians) { options_.fovYRadians = radians; }
   // The overlays' visible points (scene/overlay_points.hpp), in file order.
   std::span<const PointMark> pointMarks() const { return pointMarks_; }
   // Shows these overlays instead of the options' (files opened in the window): their draped

@@ -130,18 +130,38 @@ fs::path writeFile(const fs::path& dir, const std::string& name, const std::stri
   return file;
 }
 
+TEST(PathFov, TheFieldOfViewIsInterpolatedBetweenTheKeyframesThatHaveOne) {
+  CameraPath path;
+  path.interpolation = PathInterpolation::Linear;
+  for (const double t : {0.0, 4.0, 8.0, 12.0}) {
+    path.keyframes.push_back({t, CameraPose::fromDegrees(10, 40 + t / 10, 2000, 0, -20, 0)});
+  }
+  EXPECT_FALSE(sampleFovY(path, 3).has_value()) << "none anywhere: the program's";
+  path.keyframes[1].fovYRadians = 1.0;
+  path.keyframes[3].fovYRadians = 0.5;
+  path.keyframes[1].ease = kEaseInOut;
+  EXPECT_EQ(sampleFovY(path, 0), 1.0) << "the first one's before it";
+  EXPECT_EQ(sampleFovY(path, 4), 1.0);
+  EXPECT_NEAR(*sampleFovY(path, 6), 0.875, 1e-12) << "half of the eased first half";
+  EXPECT_NEAR(*sampleFovY(path, 5), 1.0 - 0.25 * easeProgress(kEaseInOut, 0.25), 1e-12);
+  EXPECT_NEAR(*sampleFovY(path, 10), 0.625, 1e-12);
+  EXPECT_EQ(sampleFovY(path, 20), 0.5);
+}
+
 TEST(PathTarget, JsonReadsEaseAndTargetsWritesThemBackAndNamesMistakes) {
   const fs::path dir = freshTempDir("path-animation-json");
   const fs::path good = writeFile(dir, "good.json", R"({"interpolation": "linear", "keyframes": [
     {"t": 0, "lon": 138.6, "lat": 35.2, "height": 6000, "ease": "inOut",
      "target": {"lon": 138.7274, "lat": 35.3606, "height": 0, "aboveTerrain": true}},
     {"t": 5, "lon": 138.9, "lat": 35.3, "height": 4000, "ease": [0.1, 0.7, 0.9, 0.2]},
-    {"t": 9, "lon": 138.8, "lat": 35.5, "height": 3000}]})");
+    {"t": 9, "lon": 138.8, "lat": 35.5, "height": 3000, "fov": 30}]})");
   auto file = readCameraPath(good);
   ASSERT_TRUE(file) << file.error();
   EXPECT_EQ(file->keyframes[0].ease, kEaseInOut);
   EXPECT_EQ(file->keyframes[1].ease, (CubicBezierEase{0.1, 0.7, 0.9, 0.2}));
   EXPECT_FALSE(file->keyframes[2].ease.has_value());
+  EXPECT_EQ(file->keyframes[2].fovDegrees, 30.0);
+  EXPECT_FALSE(file->keyframes[0].fovDegrees.has_value());
   ASSERT_TRUE(file->keyframes[0].target.has_value());
   EXPECT_EQ(file->keyframes[0].target->longitudeDegrees, 138.7274);
   EXPECT_TRUE(file->keyframes[0].target->heightAboveTerrain);
@@ -152,6 +172,7 @@ TEST(PathTarget, JsonReadsEaseAndTargetsWritesThemBackAndNamesMistakes) {
   EXPECT_EQ(again->keyframes[1].ease, file->keyframes[1].ease);
   EXPECT_EQ(again->keyframes[0].target->latitudeDegrees, 35.3606);
   EXPECT_TRUE(again->keyframes[0].target->heightAboveTerrain);
+  EXPECT_EQ(again->keyframes[2].fovDegrees, 30.0);
 
   const std::pair<const char*, const char*> mistakes[] = {
       {R"("ease": "bounce")", "keyframes[0].ease: 'bounce' is not linear, in, out, inOut"},
@@ -160,6 +181,8 @@ TEST(PathTarget, JsonReadsEaseAndTargetsWritesThemBackAndNamesMistakes) {
       {R"("target": {"lon": 138, "height": 0})", "keyframes[0].target: missing field 'lat'"},
       {R"("target": {"lon": 138, "lat": 95, "height": 0})", "keyframes[0].target.lat: 95 is outside"},
       {R"("target": {"lon": 1, "lat": 2, "height": 0, "alt": 3})", "keyframes[0].target.alt: unknown field"},
+      {R"("fov": 0)", "keyframes[0].fov: 0 is outside 1..170"},
+      {R"("fov": "wide")", "keyframes[0].fov: expected a number (degrees), got a string"},
   };
   for (const auto& [field, expected] : mistakes) {
     const fs::path bad = writeFile(dir, "bad.json",

@@ -180,7 +180,7 @@ TEST_F(PathFiles, BadJsonNamesFileLineAndField) {
             "path.json:7: keyframes[2].lon: expected a number, got a string");
   EXPECT_EQ(errorOf("path.json", withThird(R"({"t": 5, "lon": 1, "lat": 0, "heigth": 3})")),
             "path.json:7: keyframes[2].heigth: unknown field (a keyframe has t, lon, lat, "
-            "height, heading, pitch, roll, aboveTerrain, time, ease, target)");
+            "height, heading, pitch, roll, aboveTerrain, time, ease, target, fov)");
   EXPECT_EQ(errorOf("path.json", withThird("[1, 2]")),
             "path.json:7: keyframes[2]: expected a keyframe object, got an array");
   EXPECT_EQ(

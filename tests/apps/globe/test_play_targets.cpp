@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "camera/camera_pose.hpp"
+#include "camera/path_easing.hpp"
 #include "geo/ecef.hpp"
 #include "tests/apps/globe/play_log_rows.hpp"
 #include "tests/support/build_paths.hpp"
@@ -71,9 +72,10 @@ const std::string kSummit = R"("target": {"lon": 138.7274, "lat": 35.3606, "heig
 fs::path writeTargetPath(const fs::path& dir) {
   const fs::path json = dir / "targets.json";
   std::ofstream(json) << R"({"keyframes": [
-    {"t": 0, "lon": 138.62, "lat": 35.30, "height": 6000, "ease": "inOut", )" << kSummit << R"(},
+    {"t": 0, "lon": 138.62, "lat": 35.30, "height": 6000, "ease": "inOut", "fov": 60, )"
+                      << kSummit << R"(},
     {"t": 6, "lon": 138.80, "lat": 35.28, "height": 5500, "roll": 4, )" << kSummit << R"(},
-    {"t": 12, "lon": 138.80, "lat": 35.44, "height": 5000, )" << kSummit << "}]}";
+    {"t": 12, "lon": 138.80, "lat": 35.44, "height": 5000, "fov": 30, )" << kSummit << "}]}";
   return json;
 }
 
@@ -84,6 +86,13 @@ TEST(PlayTargets, TheTargetStaysAtTheFrameCentreOnEveryFrame) {
   size_t frames = 0;
   EXPECT_LT(worstOffCentre(dir / "json" / "log.csv", frames), 0.3);
   EXPECT_EQ(frames, 61u);
+  // The field of view drawn (from the view's projection): 60° to 30° over the path's eased time
+  // (the first segment eased inOut, the second not).
+  for (const auto& row : readLog(dir / "json" / "log.csv")) {
+    const double t = number(row, "time_s");
+    const double eased = t <= 6 ? 6 * camera::easeProgress(camera::kEaseInOut, t / 6) : t;
+    EXPECT_NEAR(number(row, "fov_deg"), 60 - 30 * eased / 12, 1e-3) << "t " << t;
+  }
 
   const fs::path kml = dir / "tour.kml";
   std::ofstream(kml) << R"(<?xml version="1.0" encoding="UTF-8"?>
@@ -139,7 +148,7 @@ TEST(PlayTargets, TheExportedCameraIsTheCameraDrawn) {
                                                 f["pitch"].get<double>(), f["roll"].get<double>()));
     EXPECT_GT(glm::dot(q * glm::dvec3(0, 0, -1), frame.forward), 1.0 - 1e-9) << i;
     EXPECT_GT(glm::dot(q * glm::dvec3(0, 1, 0), frame.up), 1.0 - 1e-9) << i;
-    EXPECT_EQ(f["fovDeg"].get<double>(), 45.0);
+    EXPECT_NEAR(f["fovDeg"].get<double>(), number(rows[i], "fov_deg"), 1e-4);
   }
 
   ASSERT_EQ(play(path, dir / "c", "--export-camera " + (dir / "cam.csv").string()), 0);
@@ -179,6 +188,7 @@ console.log(JSON.stringify(counts));
   EXPECT_EQ(counted["ADBE Position"].get<int>(), 61);
   EXPECT_EQ(counted["ADBE Anchor Point"].get<int>(), 61) << "the point of interest";
   EXPECT_EQ(counted["ADBE Rotate Z"].get<int>(), 61);
+  EXPECT_EQ(counted["ADBE Camera Zoom"].get<int>(), 61) << "the zoom follows the path's fov";
   EXPECT_EQ(counted["nulls"].get<int>(), 4) << "the origin and the three keyframes' targets";
 
   const int wrong = play(path, dir / "w", "--export-camera " + (dir / "cam.txt").string());
