@@ -35,6 +35,7 @@ Result<camera::CameraPath> toCameraPath(const camera::CameraPathFile& file,
   }
   camera::CameraPath path;
   path.interpolation = *interpolation;
+  path.logarithmicAltitude = file.logarithmicAltitude;
   for (size_t k = 0; k < file.keyframes.size(); ++k) {
     const camera::PathKeyframe& key = file.keyframes[k];
     camera::CameraPose pose =

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include <glm/geometric.hpp>
 
@@ -128,6 +129,22 @@ std::string_view toString(PathInterpolation interpolation) {
 
 namespace {
 
+// A logarithmic-altitude step: the height at u (geometric between two heights above 0 m) and
+// the share of the ground covered by then, the height's share of its change (u where the heights
+// are equal). None where a height is not above 0 m: the segment is interpolated as it is.
+struct LogarithmicStep {
+  double heightMeters;
+  double groundShare;
+};
+
+std::optional<LogarithmicStep> logarithmicStep(double fromMeters, double toMeters, double u) {
+  if (!(fromMeters > 0.0) || !(toMeters > 0.0)) return std::nullopt;
+  const double height = fromMeters * std::pow(toMeters / fromMeters, u);
+  const double change = toMeters - fromMeters;
+  const double share = std::abs(change) > 1e-9 * fromMeters ? (height - fromMeters) / change : u;
+  return LogarithmicStep{height, share};
+}
+
 // The pose with the keyframes' heights as stored (above the terrain for some).
 CameraPose sampleStoredHeights(const CameraPath& path, double timeSeconds,
                                const geo::Ellipsoid& ellipsoid) {
@@ -144,11 +161,14 @@ CameraPose sampleStoredHeights(const CameraPath& path, double timeSeconds,
   const Key a = keyAt(path, k, ellipsoid), b = keyAt(path, k + 1, ellipsoid);
   const double h = b.timeSeconds - a.timeSeconds;
   const double u = (timeSeconds - a.timeSeconds) / h;
+  const std::optional<LogarithmicStep> logarithmic =
+      path.logarithmicAltitude ? logarithmicStep(a.heightMeters, b.heightMeters, u) : std::nullopt;
+  const double along = logarithmic ? logarithmic->groundShare : u;
   glm::dvec3 up;
   double heightMeters;
   glm::dquat orientation;
   if (path.interpolation == PathInterpolation::Linear) {
-    up = slerpDirection(a.up, b.up, u);
+    up = slerpDirection(a.up, b.up, along);
     heightMeters = a.heightMeters + u * (b.heightMeters - a.heightMeters);
     orientation =
         a.orientation * expRotation(u * logRotation(glm::conjugate(a.orientation) * b.orientation));
@@ -169,12 +189,13 @@ CameraPose sampleStoredHeights(const CameraPath& path, double timeSeconds,
       climbB = monotoneSlope(a.heightMeters, b.heightMeters, n.heightMeters, h, hn);
       spinB = angularVelocity(a.orientation, b.orientation, n.orientation, h, hn);
     }
-    const glm::dvec3 curve = hermite(a.up, b.up, upVelocityA * h, upVelocityB * h, u);
+    const glm::dvec3 curve = hermite(a.up, b.up, upVelocityA * h, upVelocityB * h, along);
     const double length = glm::length(curve);
-    up = length > 1e-9 ? curve / length : slerpDirection(a.up, b.up, u);
+    up = length > 1e-9 ? curve / length : slerpDirection(a.up, b.up, along);
     heightMeters = hermite(a.heightMeters, b.heightMeters, climbA * h, climbB * h, u);
     orientation = quaternionHermite(a.orientation, b.orientation, spinA * h, spinB * h, u);
   }
+  if (logarithmic) heightMeters = logarithmic->heightMeters;
   return poseFromOrientation(ellipsoid, positionFromUp(up, heightMeters), orientation);
 }
 

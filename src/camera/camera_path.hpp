@@ -55,6 +55,11 @@ using TerrainHeightAt = std::function<double(double, double)>;
 struct CameraPath {
   std::vector<CameraKeyframe> keyframes;
   PathInterpolation interpolation = PathInterpolation::Smooth;
+  // Logarithmic altitude ("altitude": "logarithmic"): within a segment whose keys are both above
+  // 0 m the height goes geometrically (the same ratio every frame: a dive from space slows as it
+  // nears the ground) and the position along the ground by the height's share of its change, so
+  // the ground moves evenly on screen (its speed over the height stays the same).
+  bool logarithmicAltitude = false;
 
   double startSeconds() const { return keyframes.empty() ? 0 : keyframes.front().timeSeconds; }
   double endSeconds() const { return keyframes.empty() ? 0 : keyframes.back().timeSeconds; }

@@ -50,6 +50,7 @@ struct PathKeyframe {
 struct CameraPathFile {
   std::vector<PathKeyframe> keyframes;
   std::string interpolation = "smooth";
+  bool logarithmicAltitude = false;  // "altitude": "logarithmic" (camera_path.hpp)
 };
 
 // The ranges every reader checks (and the messages quote).
@@ -59,6 +60,7 @@ inline constexpr uint64_t kPathFileMaximumBytes = uint64_t{64} << 20;
 
 // The JSON format (docs/playback.md):
 //   {"interpolation": "smooth",            optional: "linear" | "smooth" (default)
+//    "altitude": "linear",                 optional: "linear" (default) | "logarithmic"
 //    "description": "...",                 optional, ignored
 //    "keyframes": [{"t": 0, "lon": 138.73, "lat": 35.36, "height": 5000,
 //                   "heading": 0, "pitch": -20, "roll": 0, "aboveTerrain": false,

@@ -235,8 +235,11 @@ Result<CameraPathFile> parsePath(std::string_view text, const std::filesystem::p
   }
   for (const auto& [key, value] : document.items()) {
     (void)value;
-    if (key != "keyframes" && key != "interpolation" && key != "description") {
-      return fail(key, "unknown field (the top level has keyframes, interpolation, description)");
+    if (key != "keyframes" && key != "interpolation" && key != "description" &&
+        key != "altitude") {
+      return fail(key,
+                  "unknown field (the top level has keyframes, interpolation, altitude, "
+                  "description)");
     }
   }
   CameraPathFile file;
@@ -250,6 +253,13 @@ Result<CameraPathFile> parsePath(std::string_view text, const std::filesystem::p
       return fail("interpolation",
                   at.written("interpolation") + " is not \"linear\" or \"smooth\"");
     }
+  }
+  if (const auto it = document.find("altitude"); it != document.end()) {
+    if (!it->is_string() || (*it != "linear" && *it != "logarithmic")) {
+      return fail("altitude", (it->is_string() ? at.written("altitude") : std::string(typeName(*it))) +
+                                  " is not \"linear\" or \"logarithmic\"");
+    }
+    file.logarithmicAltitude = *it == "logarithmic";
   }
   const auto keyframes = document.find("keyframes");
   if (keyframes == document.end()) {
@@ -299,8 +309,9 @@ Result<void> writeCameraPathJson(const std::filesystem::path& path, const Camera
   if (auto problem = detail::firstProblem(file)) {
     return makeError(path.string() + ": not written: " + *problem);
   }
-  std::string text =
-      "{\n  \"interpolation\": \"" + file.interpolation + "\",\n  \"keyframes\": [\n";
+  std::string text = "{\n  \"interpolation\": \"" + file.interpolation + "\",\n" +
+                     (file.logarithmicAltitude ? "  \"altitude\": \"logarithmic\",\n" : "") +
+                     "  \"keyframes\": [\n";
   for (size_t k = 0; k < file.keyframes.size(); ++k) {
     const PathKeyframe& key = file.keyframes[k];
     text += "    {";

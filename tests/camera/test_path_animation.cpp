@@ -130,6 +130,47 @@ fs::path writeFile(const fs::path& dir, const std::string& name, const std::stri
   return file;
 }
 
+// A dive from 20,000 km to 1 km in 10 s, 50 frames: with logarithmic altitude the height falls
+// by the same ratio every frame, and the ground passes by the same share of the height (it moves
+// evenly on screen); linear altitude spends most of the frames in space.
+TEST(PathAltitude, ALogarithmicDiveKeepsItsRatioAndItsScreenSpeed) {
+  for (const PathInterpolation interpolation :
+       {PathInterpolation::Linear, PathInterpolation::Smooth}) {
+    CameraPath path;
+    path.interpolation = interpolation;
+    path.logarithmicAltitude = true;
+    path.keyframes.push_back({0.0, CameraPose::fromDegrees(120, 10, 2e7, 0, -90, 0)});
+    path.keyframes.push_back({10.0, CameraPose::fromDegrees(139, 35, 1000, 0, -90, 0)});
+    const double expectedRatio = std::pow(1000.0 / 2e7, 1.0 / 50);
+    double firstShare = 0;
+    for (int i = 0; i < 50; ++i) {
+      const CameraPose a = samplePath(path, i * 0.2, kWgs84);
+      const CameraPose b = samplePath(path, (i + 1) * 0.2, kWgs84);
+      EXPECT_NEAR(b.position.heightMeters / a.position.heightMeters, expectedRatio, 1e-9)
+          << toString(interpolation) << " frame " << i;
+      // The ground passed over the height's change: the same every frame.
+      const auto ground = [](const CameraPose& pose) {
+        geo::Cartographic surface = pose.position;
+        surface.heightMeters = 0;
+        return geo::cartographicToEcef(kWgs84, surface);
+      };
+      const double share = glm::length(ground(b) - ground(a)) /
+                           (a.position.heightMeters - b.position.heightMeters);
+      if (i == 0) firstShare = share;
+      if (interpolation == PathInterpolation::Linear) {
+        EXPECT_NEAR(share / firstShare, 1.0, 0.02) << "frame " << i;
+      }
+    }
+  }
+  // Heights at or below 0 m: the segment as it is (linear).
+  CameraPath sea;
+  sea.interpolation = PathInterpolation::Linear;
+  sea.logarithmicAltitude = true;
+  sea.keyframes.push_back({0.0, CameraPose::fromDegrees(0, 0, 0, 0, -90, 0)});
+  sea.keyframes.push_back({10.0, CameraPose::fromDegrees(0, 1, 1000, 0, -90, 0)});
+  EXPECT_NEAR(samplePath(sea, 5, kWgs84).position.heightMeters, 500, 1e-9);
+}
+
 TEST(PathFov, TheFieldOfViewIsInterpolatedBetweenTheKeyframesThatHaveOne) {
   CameraPath path;
   path.interpolation = PathInterpolation::Linear;
@@ -150,7 +191,8 @@ TEST(PathFov, TheFieldOfViewIsInterpolatedBetweenTheKeyframesThatHaveOne) {
 
 TEST(PathTarget, JsonReadsEaseAndTargetsWritesThemBackAndNamesMistakes) {
   const fs::path dir = freshTempDir("path-animation-json");
-  const fs::path good = writeFile(dir, "good.json", R"({"interpolation": "linear", "keyframes": [
+  const fs::path good = writeFile(dir, "good.json", R"({"interpolation": "linear",
+    "altitude": "logarithmic", "keyframes": [
     {"t": 0, "lon": 138.6, "lat": 35.2, "height": 6000, "ease": "inOut",
      "target": {"lon": 138.7274, "lat": 35.3606, "height": 0, "aboveTerrain": true}},
     {"t": 5, "lon": 138.9, "lat": 35.3, "height": 4000, "ease": [0.1, 0.7, 0.9, 0.2]},
@@ -162,6 +204,7 @@ TEST(PathTarget, JsonReadsEaseAndTargetsWritesThemBackAndNamesMistakes) {
   EXPECT_FALSE(file->keyframes[2].ease.has_value());
   EXPECT_EQ(file->keyframes[2].fovDegrees, 30.0);
   EXPECT_FALSE(file->keyframes[0].fovDegrees.has_value());
+  EXPECT_TRUE(file->logarithmicAltitude);
   ASSERT_TRUE(file->keyframes[0].target.has_value());
   EXPECT_EQ(file->keyframes[0].target->longitudeDegrees, 138.7274);
   EXPECT_TRUE(file->keyframes[0].target->heightAboveTerrain);
@@ -173,6 +216,7 @@ TEST(PathTarget, JsonReadsEaseAndTargetsWritesThemBackAndNamesMistakes) {
   EXPECT_EQ(again->keyframes[0].target->latitudeDegrees, 35.3606);
   EXPECT_TRUE(again->keyframes[0].target->heightAboveTerrain);
   EXPECT_EQ(again->keyframes[2].fovDegrees, 30.0);
+  EXPECT_TRUE(again->logarithmicAltitude);
 
   const std::pair<const char*, const char*> mistakes[] = {
       {R"("ease": "bounce")", "keyframes[0].ease: 'bounce' is not linear, in, out, inOut"},

@@ -205,7 +205,7 @@ TEST_F(PathFiles, BadJsonNamesFileLineAndField) {
             "array.json:1: expected an object {\"keyframes\": [...]}, got an array");
   EXPECT_EQ(errorOf("top.json", "{\"keyframes\": [], \n\"speed\": 3}"),
             "top.json:2: speed: unknown field (the top level has keyframes, interpolation, "
-            "description)");
+            "altitude, description)");
   EXPECT_EQ(errorOf("path.txt", "{}"),
             "path.txt: unknown camera path format '.txt' (expected a .json path or a .kml tour)");
   EXPECT_NE(errorOf("missing.json", "").find("(no error)"), 0u);
