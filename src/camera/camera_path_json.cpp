@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "camera/camera_path_file.hpp"
+#include "camera/camera_path_shots.hpp"
 #include "camera/json_locations.hpp"
 #include "camera/path_checks.hpp"
 #include "sun/utc_time.hpp"
@@ -236,10 +237,10 @@ Result<CameraPathFile> parsePath(std::string_view text, const std::filesystem::p
   for (const auto& [key, value] : document.items()) {
     (void)value;
     if (key != "keyframes" && key != "interpolation" && key != "description" &&
-        key != "altitude") {
+        key != "altitude" && key != "orbit" && key != "flyTo") {
       return fail(key,
                   "unknown field (the top level has keyframes, interpolation, altitude, "
-                  "description)");
+                  "description, or a shot: orbit, flyTo)");
     }
   }
   CameraPathFile file;
@@ -261,9 +262,24 @@ Result<CameraPathFile> parsePath(std::string_view text, const std::filesystem::p
     }
     file.logarithmicAltitude = *it == "logarithmic";
   }
+  const int given = static_cast<int>(document.contains("keyframes")) +
+                    static_cast<int>(document.contains("orbit")) +
+                    static_cast<int>(document.contains("flyTo"));
+  if (given > 1) {
+    return makeError(detail::fileLine(path, at.line("")) +
+                     "give one of keyframes, orbit or flyTo, not several");
+  }
+  auto shot = detail::readShot(document, fail);
+  if (!shot) return Error{shot.error()};
+  if (*shot) {
+    file.keyframes = std::move(**shot);
+    if (!document.contains("interpolation")) file.interpolation = "smooth";
+    return file;
+  }
   const auto keyframes = document.find("keyframes");
   if (keyframes == document.end()) {
-    return makeError(detail::fileLine(path, at.line("")) + "missing field 'keyframes'");
+    return makeError(detail::fileLine(path, at.line("")) +
+                     "missing field 'keyframes' (or a shot: orbit, flyTo)");
   }
   if (!keyframes->is_array()) {
     return fail("keyframes", "expected an array, got " + std::string(typeName(*keyframes)));

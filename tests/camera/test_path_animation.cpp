@@ -285,5 +285,63 @@ TEST(PathTarget, KmlLookAtsBecomeCamerasLookingAtTheirPoints) {
   EXPECT_EQ(file->interpolation, "linear") << "the last FlyTo bounces (KML's default)";
 }
 
+// The shots: an orbit is a keyframe per 10° on its circle, each looking at the centre; a flyTo
+// is Google Earth's arc from one pose to the other, rising over a long way.
+TEST(PathShots, AnOrbitCirclesItsPointAndAFlyToArcsBetweenItsPoses) {
+  const fs::path dir = freshTempDir("path-shots");
+  auto orbit = readCameraPath(writeFile(dir, "orbit.json", R"({"orbit": {
+    "lon": 138.7274, "lat": 35.3606, "height": 3776, "radius": 8000, "altitude": 1500,
+    "degrees": -270, "duration": 27, "startBearing": 90, "fov": 40}})"));
+  ASSERT_TRUE(orbit) << orbit.error();
+  ASSERT_EQ(orbit->keyframes.size(), 28u);
+  EXPECT_EQ(orbit->interpolation, "smooth");
+  const glm::dvec3 summit =
+      geo::cartographicToEcef(kWgs84, geo::Cartographic::fromDegrees(138.7274, 35.3606, 3776));
+  const glm::dvec3 up = geo::geodeticSurfaceNormal(kWgs84, geo::Cartographic::fromDegrees(138.7274, 35.3606, 0));
+  for (size_t k = 0; k < orbit->keyframes.size(); ++k) {
+    const PathKeyframe& key = orbit->keyframes[k];
+    EXPECT_NEAR(key.timeSeconds, k, 1e-9);
+    EXPECT_EQ(key.heightMeters, 3776 + 1500);
+    ASSERT_TRUE(key.target.has_value());
+    EXPECT_EQ(key.target->latitudeDegrees, 35.3606);
+    EXPECT_EQ(key.fovDegrees, 40.0);
+    const glm::dvec3 at = geo::cartographicToEcef(
+        kWgs84, geo::Cartographic::fromDegrees(key.longitudeDegrees, key.latitudeDegrees, 3776));
+    const glm::dvec3 off = at - summit;
+    EXPECT_NEAR(glm::length(off - up * glm::dot(off, up)), 8000, 5) << k;
+  }
+  // Starting east of the point (bearing 90) and turning anticlockwise: north of it after 90°.
+  EXPECT_GT(orbit->keyframes.front().longitudeDegrees, 138.7274 + 0.05);
+  EXPECT_GT(orbit->keyframes[9].latitudeDegrees, 35.3606 + 0.05);
+
+  auto flight = readCameraPath(writeFile(dir, "fly.json", R"({"flyTo": {
+    "from": {"lon": 138.73, "lat": 35.36, "height": 9000, "heading": 0, "pitch": -30},
+    "to": {"lon": -112.95, "lat": 37.25, "height": 4000, "heading": 90, "pitch": -20},
+    "duration": 20}})"));
+  ASSERT_TRUE(flight) << flight.error();
+  ASSERT_EQ(flight->keyframes.size(), 81u);
+  EXPECT_NEAR(flight->keyframes.front().longitudeDegrees, 138.73, 1e-9);
+  EXPECT_NEAR(flight->keyframes.back().longitudeDegrees, -112.95, 1e-9);
+  EXPECT_NEAR(flight->keyframes.back().headingDegrees, 90, 1e-9);
+  double highest = 0;
+  for (const PathKeyframe& key : flight->keyframes) highest = std::max(highest, key.heightMeters);
+  EXPECT_GT(highest, 1e6) << "a hop over the Pacific";
+
+  const std::pair<const char*, const char*> mistakes[] = {
+      {R"({"orbit": {"lon": 1, "lat": 2, "altitude": 3, "duration": 4}})",
+       "orbit: missing field 'radius'"},
+      {R"({"orbit": {"lon": 1, "lat": 2, "radius": 0, "altitude": 3, "duration": 4}})",
+       "orbit.radius: 0 is outside 1..10000000"},
+      {R"({"flyTo": {"from": {"lon": 1, "lat": 2, "height": 3}, "duration": 4}})",
+       "flyTo: missing field 'to'"},
+      {R"({"flyTo": {"duration": 4}, "orbit": {}})", "give one of keyframes, orbit or flyTo"},
+  };
+  for (const auto& [text, expected] : mistakes) {
+    auto read = readCameraPath(writeFile(dir, "bad.json", text));
+    ASSERT_FALSE(read) << text;
+    EXPECT_NE(read.error().find(expected), std::string::npos) << read.error();
+  }
+}
+
 }  // namespace
 }  // namespace globe::camera

@@ -200,12 +200,12 @@ TEST_F(PathFiles, BadJsonNamesFileLineAndField) {
   EXPECT_EQ(errorOf("empty.json", "{\n  \"keyframes\": []\n}\n"),
             "empty.json:2: keyframes: empty: a path needs at least 1 keyframe");
   EXPECT_EQ(errorOf("none.json", "{\"interpolation\": \"linear\"}"),
-            "none.json:1: missing field 'keyframes'");
+            "none.json:1: missing field 'keyframes' (or a shot: orbit, flyTo)");
   EXPECT_EQ(errorOf("array.json", "[]"),
             "array.json:1: expected an object {\"keyframes\": [...]}, got an array");
   EXPECT_EQ(errorOf("top.json", "{\"keyframes\": [], \n\"speed\": 3}"),
             "top.json:2: speed: unknown field (the top level has keyframes, interpolation, "
-            "altitude, description)");
+            "altitude, description, or a shot: orbit, flyTo)");
   EXPECT_EQ(errorOf("path.txt", "{}"),
             "path.txt: unknown camera path format '.txt' (expected a .json path or a .kml tour)");
   EXPECT_NE(errorOf("missing.json", "").find("(no error)"), 0u);

@@ -113,6 +113,30 @@ TEST(PlayTargets, TheTargetStaysAtTheFrameCentreOnEveryFrame) {
   EXPECT_EQ(frames, 51u);
 }
 
+// An orbit shot around the summit: every frame looks at it and stays on the circle.
+TEST(PlayTargets, AnOrbitShotCirclesAndWatchesItsPoint) {
+  const fs::path dir = globe::testing::freshTempDir("play-orbit");
+  const fs::path json = dir / "orbit.json";
+  std::ofstream(json) << R"({"orbit": {"lon": 138.7274, "lat": 35.3606, "height": 3776,
+    "radius": 9000, "altitude": 2500, "degrees": 360, "duration": 12}})";
+  ASSERT_EQ(play(json, dir / "o"), 0);
+  size_t frames = 0;
+  EXPECT_LT(worstOffCentre(dir / "o" / "log.csv", frames), 0.3);
+  EXPECT_EQ(frames, 61u);
+  const glm::dvec3 summit =
+      geo::cartographicToEcef(kWgs84, geo::Cartographic::fromDegrees(138.7274, 35.3606, 3776));
+  const glm::dvec3 up =
+      geo::geodeticSurfaceNormal(kWgs84, geo::Cartographic::fromDegrees(138.7274, 35.3606, 0));
+  for (const auto& row : readLog(dir / "o" / "log.csv")) {
+    const glm::dvec3 at = geo::cartographicToEcef(
+        kWgs84, geo::Cartographic::fromDegrees(number(row, "lon_deg"), number(row, "lat_deg"),
+                                               number(row, "height_m")));
+    const glm::dvec3 off = at - summit;
+    EXPECT_NEAR(glm::length(off - up * glm::dot(off, up)), 9000, 90) << row.at("frame");
+    EXPECT_NEAR(number(row, "height_m"), 6276, 1) << row.at("frame");
+  }
+}
+
 // --export-camera: the JSON track is the logged camera (geodetic as the log, ECEF and the
 // quaternion consistent with it), the CSV has a row a frame, and the After Effects script runs
 // (under node, with a stand-in for AE's objects that counts what it is asked) and keys its camera
