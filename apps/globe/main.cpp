@@ -31,7 +31,8 @@ int runGlobeCommandLine(const std::vector<std::string>& arguments) {
   const std::vector<Subcommand> subcommands = {
       addInfoCommand(app, common),    addSnapshotCommand(app, common),
       addQueryCommand(app, common),   addViewCommand(app, common),
-      addPlayCommand(app, common),    addSourcesCommand(app, common),
+      addPlayCommand(app, common),    addPathCommand(app, common),
+      addSourcesCommand(app, common),
       addSearchCommand(app, common),  addProfileCommand(app, common),
       addSunCommand(app, common),     addViewsCommand(app, common),
       addRegressCommand(app, common), addSnapshotWorkerCommand(app)};

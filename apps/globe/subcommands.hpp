@@ -22,6 +22,7 @@ Subcommand addSnapshotCommand(CLI::App& app, CommonArguments& common);
 Subcommand addQueryCommand(CLI::App& app, CommonArguments& common);
 Subcommand addViewCommand(CLI::App& app, CommonArguments& common);
 Subcommand addPlayCommand(CLI::App& app, CommonArguments& common);
+Subcommand addPathCommand(CLI::App& app, CommonArguments& common);
 Subcommand addSourcesCommand(CLI::App& app, CommonArguments& common);
 Subcommand addSearchCommand(CLI::App& app, CommonArguments& common);
 Subcommand addProfileCommand(CLI::App& app, CommonArguments& common);
