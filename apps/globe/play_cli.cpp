@@ -2,12 +2,14 @@
 // summary it prints.
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "apps/globe/camera_argument.hpp"
 #include "apps/globe/camera_track.hpp"
 #include "apps/globe/play_command.hpp"
 #include "apps/globe/subcommands.hpp"
+#include "apps/globe/video_encoder.hpp"
 
 namespace globe::app {
 namespace {
@@ -19,6 +21,10 @@ struct PlayArguments {
   std::string size = "1280x720";
   std::string video;
   std::string exportCamera;
+  std::string codec = "h264";
+  std::optional<int> crf;
+  bool resume = false;
+  bool progress = false;
   std::string fps = "30";  // as text: checked and named by parseNumberArgument
   bool noFrames = false;
   bool noGlide = false;
@@ -49,6 +55,19 @@ int runPlayCommand(const PlayArguments& arguments, const CommonArguments& common
   options.realTime = arguments.realTime;
   options.morphFrames = arguments.morphFrames;
   if (!arguments.video.empty()) options.video = arguments.video;
+  const auto codec = parseVideoCodec(arguments.codec);
+  if (!codec) {
+    std::fprintf(stderr, "globe play: --codec must be h264, h265 or prores, not '%s'\n",
+                 arguments.codec.c_str());
+    return 2;
+  }
+  if (arguments.crf && *codec == VideoCodec::ProRes) {
+    std::fprintf(stderr, "globe play: --crf is for h264 and h265 (ProRes 422 HQ has no crf)\n");
+    return 2;
+  }
+  options.videoSettings = {*codec, arguments.crf.value_or(18)};
+  options.resume = arguments.resume;
+  options.progress = arguments.progress;
   if (!arguments.exportCamera.empty()) {
     if (auto checked = checkCameraTrackPath(arguments.exportCamera); !checked) {
       std::fprintf(stderr, "globe play: %s\n", checked.error().c_str());
@@ -102,6 +121,18 @@ Subcommand addPlayCommand(CLI::App& app, CommonArguments& common) {
       ->check(CLI::Range(0u, 1000u))
       ->capture_default_str();
   play->add_option("--video", arguments->video, "encode the frames into this MP4 with ffmpeg");
+  play->add_option("--codec", arguments->codec,
+                   "--video's codec: h264 (MP4, default), h265 (MP4) or prores (ProRes 422 HQ, "
+                   "10-bit, in a QuickTime container whatever the name)");
+  play->add_option("--crf", arguments->crf,
+                   "--video's quality for h264 and h265: 0 (lossless) .. 51, default 18")
+      ->check(CLI::Range(0, 51));
+  play->add_flag("--resume", arguments->resume,
+                 "keep the frames an interrupted run left in DIR/.frames-partial and render only "
+                 "the rest (the path is replayed from its start: the same frames and log as an "
+                 "uninterrupted run)");
+  play->add_flag("--progress", arguments->progress,
+                 "show the frames done and the time left on stderr");
   play->add_option("--export-camera", arguments->exportCamera,
                    "write the rendered camera of every frame: .json (geodetic, ECEF and a "
                    "quaternion), .csv (the same), or .jsx (an After Effects script: a keyed "

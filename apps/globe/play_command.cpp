@@ -33,23 +33,30 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr long kMaximumFrames = 10'000'000;
 
-// A directory removed on scope exit unless kept: frames of a run that fails never remain.
-class PartialDirectory {
- public:
-  explicit PartialDirectory(std::filesystem::path path) : path_(std::move(path)) {}
-  ~PartialDirectory() {
-    std::error_code ignored;
-    if (!kept_) std::filesystem::remove_all(path_, ignored);
-  }
-  PartialDirectory(const PartialDirectory&) = delete;
-  PartialDirectory& operator=(const PartialDirectory&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-  void keep() { kept_ = true; }
+// Where frames are written until the run completes (then renamed to DIR/frames): a killed or
+// failed run leaves them there for --resume; a run without it starts afresh.
+constexpr const char* kPartialFrames = ".frames-partial";
 
- private:
-  std::filesystem::path path_;
-  bool kept_ = false;
-};
+Result<void> preparePartialFrames(const std::filesystem::path& partial, bool resume) {
+  std::error_code error;
+  if (!resume) std::filesystem::remove_all(partial, error);
+  std::filesystem::create_directories(partial, error);
+  if (error) return makeError("cannot create " + partial.string() + ": " + error.message());
+  return {};
+}
+
+// "frame 120/841 (14 %), 12.3 s, about 61 s left" on stderr: in place on a terminal, else a line
+// every 5 % (logs stay short).
+void printProgress(int done, int total, double elapsedSeconds) {
+  const bool terminal = ::isatty(STDERR_FILENO) != 0;
+  const int step = std::max(1, total / 20);
+  if (!terminal && done % step != 0 && done != total) return;
+  const double left = done > 0 ? elapsedSeconds * (total - done) / done : 0.0;
+  std::fprintf(stderr, "%sframe %d/%d (%d %%), %.1f s, about %.0f s left%s", terminal ? "\r" : "",
+               done, total, 100 * done / std::max(total, 1), elapsedSeconds, left,
+               terminal && done < total ? "" : "\n");
+  std::fflush(stderr);
+}
 
 Result<void> prepareOutputDirectory(const std::filesystem::path& dir) {
   std::error_code error;
@@ -140,13 +147,11 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
     return Error{prepared.error()};
   }
   const std::filesystem::path framesDir = options.outputDir / "frames";
-  PartialDirectory partial(options.outputDir / (".frames-partial-" + std::to_string(::getpid())));
+  const std::filesystem::path partial = options.outputDir / kPartialFrames;
   if (options.writeFrames) {
-    std::error_code error;
-    std::filesystem::remove_all(partial.path(), error);
-    std::filesystem::create_directories(partial.path(), error);
-    if (error)
-      return makeError("cannot create " + partial.path().string() + ": " + error.message());
+    if (auto prepared = preparePartialFrames(partial, options.resume); !prepared) {
+      return Error{prepared.error()};
+    }
   }
 
   auto surface = openSurface(options);
@@ -171,6 +176,7 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
 
   PlayReport report;
   std::vector<FrameRecord> records;
+  int resumedFrames = 0;  // frames --resume found written
   for (int i = 0; i < frames; ++i) {
     if (options.realTime) {
       std::this_thread::sleep_until(loopStart + std::chrono::duration_cast<Clock::duration>(
@@ -190,23 +196,28 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
     if (*target) (*target)->resolve();
     record.tilesDrawn = stats.tilesDrawn;
     record.imageryTextureBytes = stats.imageryBytesResident;
+    char name[32];
+    std::snprintf(name, sizeof name, "%05d.png", i);
+    // A frame an interrupted run wrote (atomically: complete) is kept as it is.
+    const bool kept = options.writeFrames && options.resume &&
+                      std::filesystem::is_regular_file(partial / name);
+    resumedFrames += kept ? 1 : 0;
     std::vector<uint8_t> pixels;
-    if (options.writeFrames) {
+    if (options.writeFrames && !kept) {
       pixels = render::readPixelsRgba(width, height);
     } else {
       render::finishGl();
     }
     record.timings.drawMs = millisecondsSince(drawStart);
-    if (options.writeFrames) {
+    if (options.writeFrames && !kept) {
       const auto writeStart = Clock::now();
-      char name[32];
-      std::snprintf(name, sizeof name, "%05d.png", i);
-      if (auto written = formats::writePngAtomically(partial.path() / name, pixels, width, height);
+      if (auto written = formats::writePngAtomically(partial / name, pixels, width, height);
           !written) {
         return Error{written.error()};
       }
       record.timings.writeMs = millisecondsSince(writeStart);
     }
+    if (options.progress) printProgress(i + 1, frames, millisecondsSince(loopStart) / 1000.0);
     if (surface->window) {
       surface->window->swapBuffers();
       surface->window->pollEvents();
@@ -224,11 +235,10 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
   std::filesystem::remove_all(framesDir, error);
   if (error) return makeError("cannot replace " + framesDir.string() + ": " + error.message());
   if (options.writeFrames) {
-    std::filesystem::rename(partial.path(), framesDir, error);
+    std::filesystem::rename(partial, framesDir, error);
     if (error)
       return makeError("cannot rename the frames to " + framesDir.string() + ": " +
                        error.message());
-    partial.keep();
   }
   report.summary = summarize(records);
   for (const FrameRecord& record : records) report.failures += record.missingTiles > 0 ? 1 : 0;
@@ -248,6 +258,10 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
   }
   if (options.video) outputs += "video: " + options.video->string() + "\n";
   if (options.exportCamera) outputs += "camera: " + options.exportCamera->string() + "\n";
+  if (options.resume) {
+    outputs += "resumed: " + std::to_string(resumedFrames) + " frame(s) kept from " +
+               (options.outputDir / kPartialFrames).string() + "\n";
+  }
   char wall[96];
   std::snprintf(wall, sizeof wall, "wall time: %.1f s\n", millisecondsSince(runStart) / 1000.0);
   report.summaryText = header + formatSummary(report.summary, records) + wall + outputs;
@@ -271,7 +285,8 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
     }
   }
   if (options.video) {
-    if (auto encoded = encodeVideo(*ffmpeg, framesDir, fps, *options.video); !encoded) {
+    if (auto encoded = encodeVideo(*ffmpeg, framesDir, fps, *options.video, options.videoSettings);
+        !encoded) {
       return Error{encoded.error()};
     }
   }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "apps/globe/play_log.hpp"
+#include "apps/globe/video_encoder.hpp"
 #include "scene/terrain_scene.hpp"
 
 namespace globe::app {
@@ -26,6 +27,12 @@ struct PlayOptions {
   bool realTime = false;
   uint32_t morphFrames = 8;  // with realTime: SceneOptions::morphFrames (0: tiles pop in at once)
   std::optional<std::filesystem::path> video;  // encode the frames with ffmpeg
+  VideoSettings videoSettings;                  // --codec, --crf
+  // --resume: frames a killed or failed run left in DIR/.frames-partial are kept (not read back
+  // or written again); the path is played from its start all the same, so the camera, the log and
+  // the new frames are those of an uninterrupted run.
+  bool resume = false;
+  bool progress = false;  // --progress: a line on stderr as frames are done, with the time left
   // --export-camera: the rendered camera of every frame (apps/globe/camera_track.hpp).
   std::optional<std::filesystem::path> exportCamera;
   scene::SceneOptions scene;

@@ -33,27 +33,44 @@ std::optional<std::filesystem::path> findExecutable(const std::string& name) {
   }
 }
 
+std::optional<VideoCodec> parseVideoCodec(std::string_view text) {
+  if (text == "h264") return VideoCodec::H264;
+  if (text == "h265") return VideoCodec::H265;
+  if (text == "prores") return VideoCodec::ProRes;
+  return std::nullopt;
+}
+
+std::vector<std::string> videoCodecArguments(const VideoSettings& settings) {
+  const std::string crf = std::to_string(settings.crf);
+  switch (settings.codec) {
+    case VideoCodec::H265:
+      return {"-c:v", "libx265", "-crf", crf, "-tag:v", "hvc1", "-pix_fmt", "yuv420p", "-f", "mp4"};
+    case VideoCodec::ProRes:
+      return {"-c:v", "prores_ks", "-profile:v", "3", "-pix_fmt", "yuv422p10le", "-f", "mov"};
+    case VideoCodec::H264:
+      break;
+  }
+  return {"-c:v", "libx264", "-crf", crf, "-pix_fmt", "yuv420p", "-f", "mp4"};
+}
+
 Result<void> encodeVideo(const std::filesystem::path& ffmpeg,
                          const std::filesystem::path& framesDir, double framesPerSecond,
-                         const std::filesystem::path& output) {
+                         const std::filesystem::path& output, const VideoSettings& settings) {
   const std::filesystem::path temp = output.string() + ".tmp-" + std::to_string(::getpid());
   char rate[32];
   std::snprintf(rate, sizeof rate, "%.9g", framesPerSecond);
-  const std::vector<std::string> arguments = {ffmpeg.string(),
-                                              "-y",
-                                              "-loglevel",
-                                              "error",
-                                              "-framerate",
-                                              rate,
-                                              "-i",
-                                              (framesDir / "%05d.png").string(),
-                                              "-vf",
-                                              "pad=ceil(iw/2)*2:ceil(ih/2)*2",
-                                              "-pix_fmt",
-                                              "yuv420p",
-                                              "-f",
-                                              "mp4",
-                                              temp.string()};
+  std::vector<std::string> arguments = {ffmpeg.string(),
+                                        "-y",
+                                        "-loglevel",
+                                        "error",
+                                        "-framerate",
+                                        rate,
+                                        "-i",
+                                        (framesDir / "%05d.png").string(),
+                                        "-vf",
+                                        "pad=ceil(iw/2)*2:ceil(ih/2)*2"};
+  for (std::string& argument : videoCodecArguments(settings)) arguments.push_back(argument);
+  arguments.push_back(temp.string());
   std::vector<char*> argv;
   for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
   argv.push_back(nullptr);
