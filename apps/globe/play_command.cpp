@@ -42,6 +42,10 @@ Result<void> preparePartialFrames(const std::filesystem::path& partial, bool res
   if (!resume) std::filesystem::remove_all(partial, error);
   std::filesystem::create_directories(partial, error);
   if (error) return makeError("cannot create " + partial.string() + ": " + error.message());
+  // A frame being written when the run was killed is a temporary file: not a frame, removed.
+  for (const auto& entry : std::filesystem::directory_iterator(partial, error)) {
+    if (entry.path().extension() != ".png") std::filesystem::remove(entry.path(), error);
+  }
   return {};
 }
 

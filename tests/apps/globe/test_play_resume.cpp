@@ -45,7 +45,10 @@ TEST(PlayResume, AResumedRunGivesTheFramesAndLogOfAnUninterruptedOne) {
   const fs::path partial = dir / "cut" / ".frames-partial";
   size_t left = 0;
   if (fs::is_directory(partial)) {
-    for (const auto& entry : fs::directory_iterator(partial)) left += entry.is_regular_file();
+    // Frames only: one being written when the run was killed is a temporary file.
+    for (const auto& entry : fs::directory_iterator(partial)) {
+      left += entry.path().extension() == ".png";
+    }
   }
   // A simulated cut as well, so some frames are always kept whatever the machine's speed.
   fs::create_directories(dir / "copy" / ".frames-partial");
@@ -69,6 +72,12 @@ TEST(PlayResume, AResumedRunGivesTheFramesAndLogOfAnUninterruptedOne) {
           << run << " " << entry.path().filename();
     }
     EXPECT_EQ(frames, 169u);
+    size_t written = 0;
+    for (const auto& entry : fs::directory_iterator(dir / run / "frames")) {
+      written += 1;
+      EXPECT_EQ(entry.path().extension(), ".png") << entry.path();
+    }
+    EXPECT_EQ(written, 169u) << "no stray files among the frames";
     EXPECT_FALSE(fs::exists(partial)) << "renamed to frames/ once complete";
   }
   std::printf("the killed run had left %zu frames\n", left);
