@@ -84,8 +84,9 @@ Result<CameraPathFile> readCameraPathJson(const std::filesystem::path& path);
 // controller then keeps it at its eye clearance); the sea-floor modes are refused. Time: the
 // first FlyTo is at t = 0 (its gx:duration is Google Earth's flight from wherever it was, and is
 // ignored); each later FlyTo is its gx:duration after the previous one, and a gx:Wait holds the
-// previous keyframe for its duration. Interpolation: "smooth" when every FlyTo's gx:flyToMode is
-// smooth, else "linear" (bounce, KML's default, is played linearly). A FlyTo holding a LookAt
+// previous keyframe for its duration. Interpolation: smooth; a FlyTo with gx:flyToMode bounce
+// (KML's default) stops at its view and arcs over a long way (path_generators.hpp
+// withBounceArcs), a smooth one runs through it. A FlyTo holding a LookAt
 // (longitude, latitude, altitude, heading, tilt 0..90, range, altitudeMode) is a keyframe whose
 // camera stands `range` back from the point along heading and tilt and whose target is the
 // point (camera/look_at.hpp). A zero time step (an instant jump) is refused with its line.

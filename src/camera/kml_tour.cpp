@@ -12,6 +12,7 @@
 
 #include "camera/camera_path_file.hpp"
 #include "camera/look_at.hpp"
+#include "camera/path_generators.hpp"
 #include "geo/cartographic.hpp"
 #include "camera/path_checks.hpp"
 #include "transport/atomic_file.hpp"
@@ -190,7 +191,7 @@ class TourReader {
     const XMLElement* playlist = child(*tour, "Playlist");
     if (playlist == nullptr) return fail(*tour, "gx:Tour has no <gx:Playlist>");
     CameraPathFile file;
-    bool allSmooth = true;
+    std::vector<bool> bounceInto;  // per keyframe: reached by a bounce FlyTo
     double pendingSeconds = 0;  // durations since the last keyframe
     for (const XMLElement* e = playlist->FirstChildElement(); e; e = e->NextSiblingElement()) {
       const std::string_view name = localName(*e);
@@ -215,15 +216,14 @@ class TourReader {
       }
       auto key = cameraElement != nullptr ? camera(*cameraElement) : lookAt(*lookAtElement);
       if (!key) return Error{key.error()};
+      bool bounce = true;  // KML's default
       if (const XMLElement* mode = child(*e, "flyToMode")) {
         const std::string_view text = trimmed(mode->GetText());
         if (text != "smooth" && text != "bounce") {
           return fail(*mode, "gx:flyToMode: '" + std::string(text.substr(0, 40)) +
                                  "' is not smooth or bounce");
         }
-        allSmooth = allSmooth && text == "smooth";
-      } else {
-        allSmooth = false;  // bounce is KML's default
+        bounce = text == "bounce";
       }
       if (file.keyframes.empty()) {
         key->timeSeconds = 0;  // the first FlyTo's duration is Google Earth's approach to it
@@ -240,13 +240,18 @@ class TourReader {
       }
       pendingSeconds = 0;
       file.keyframes.push_back(*key);
+      bounceInto.resize(file.keyframes.size(), false);
+      bounceInto.back() = bounce;
     }
     if (file.keyframes.empty()) {
       return fail(*playlist,
                   "gx:Playlist has no gx:FlyTo with a Camera or LookAt (a path needs at least "
                   "1 keyframe)");
     }
-    file.interpolation = allSmooth ? "smooth" : "linear";
+    // Smooth FlyTos run through their views without stopping (one spline); bounce ones stop at
+    // each view and arc over long ways (path_generators.hpp).
+    file.interpolation = "smooth";
+    file.keyframes = withBounceArcs(file.keyframes, bounceInto);
     return file;
   }
 

@@ -65,4 +65,36 @@ std::vector<PathKeyframe> flyToKeyframes(const FlyToShot& shot) {
   return keys;
 }
 
+std::vector<PathKeyframe> withBounceArcs(const std::vector<PathKeyframe>& keys,
+                                         const std::vector<bool>& bounceInto) {
+  const geo::Ellipsoid wgs84 = geo::Ellipsoid::wgs84();
+  std::vector<PathKeyframe> out;
+  for (size_t k = 0; k < keys.size(); ++k) {
+    if (k == 0 || k >= bounceInto.size() || !bounceInto[k]) {
+      out.push_back(keys[k]);
+      continue;
+    }
+    const PathKeyframe& a = keys[k - 1];
+    const PathKeyframe& b = keys[k];
+    const auto poseOf = [](const PathKeyframe& key) {
+      return CameraPose::fromDegrees(key.longitudeDegrees, key.latitudeDegrees, key.heightMeters,
+                                     key.headingDegrees, key.pitchDegrees, key.rollDegrees);
+    };
+    const double span = b.timeSeconds - a.timeSeconds;
+    const CameraPose apex = FlyToAnimation(wgs84, poseOf(a), poseOf(b), span).poseAt(0.5 * span);
+    const bool hops = apex.position.heightMeters > std::max(a.heightMeters, b.heightMeters) + 1.0;
+    if (hops && a.heightAboveTerrain == b.heightAboveTerrain) {
+      out.back().ease = kEaseIn;
+      PathKeyframe middle = keyframeOf(a.timeSeconds + 0.5 * span, apex);
+      middle.heightAboveTerrain = a.heightAboveTerrain;
+      middle.ease = kEaseOut;
+      out.push_back(middle);
+    } else {
+      out.back().ease = kEaseInOut;
+    }
+    out.push_back(b);
+  }
+  return out;
+}
+
 }  // namespace globe::camera

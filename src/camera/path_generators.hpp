@@ -30,4 +30,12 @@ struct FlyToShot {
 // The animation sampled 4 times a second (at least 16 keyframes, at most 4,000).
 std::vector<PathKeyframe> flyToKeyframes(const FlyToShot& shot);
 
+// Google Earth's bounce fly-to mode (KML gx:flyToMode bounce, the default): the segment into
+// each keyframe flagged in bounceInto starts and ends at rest (ease inOut), and one long enough
+// for the fly-to to hop (its ground distance over twice the higher end) gets a keyframe at its
+// middle, at the hop's height, easing in before it and out after it. Keyframes whose heights
+// are not both of one kind (above the terrain or not) only ease.
+std::vector<PathKeyframe> withBounceArcs(const std::vector<PathKeyframe>& keys,
+                                         const std::vector<bool>& bounceInto);
+
 }  // namespace globe::camera

@@ -276,13 +276,46 @@ TEST(PathTarget, KmlLookAtsBecomeCamerasLookingAtTheirPoints) {
     EXPECT_NEAR(key.pitchDegrees, k == 0 ? -30 : -20, 0.15);
   }
   // Straight down from 5 km over a point on the ground (clampToGround: above the terrain).
-  const PathKeyframe& last = file->keyframes[2];
+  const PathKeyframe& last = file->keyframes.back();
   EXPECT_NEAR(last.latitudeDegrees, 35.40, 1e-9);
   EXPECT_NEAR(last.heightMeters, 5000, 1e-3);
   EXPECT_TRUE(last.heightAboveTerrain);
   EXPECT_NEAR(last.pitchDegrees, -90, 1e-6);
   EXPECT_EQ(file->keyframes[1].timeSeconds, 6);
-  EXPECT_EQ(file->interpolation, "linear") << "the last FlyTo bounces (KML's default)";
+  // The last FlyTo bounces (KML's default): it stops there, easing in and out (no arc between
+  // a camera above the ellipsoid and one above the terrain).
+  EXPECT_EQ(file->interpolation, "smooth");
+  ASSERT_EQ(file->keyframes.size(), 3u);
+  EXPECT_FALSE(file->keyframes[0].ease.has_value()) << "the smooth FlyTos run through";
+  EXPECT_EQ(file->keyframes[1].ease, kEaseInOut);
+}
+
+// KML's bounce fly-to from Fuji to Rainier (7,700 km) arcs up to the fly-to's hop at the middle
+// and starts and stops at rest; the same tour flown smooth goes straight through.
+TEST(PathShots, ABounceFlyToArcsOverALongWayAndSmoothDoesNot) {
+  const fs::path dir = freshTempDir("path-bounce");
+  const auto tour = [&](const char* mode) {
+    std::string text = R"(<kml xmlns:gx="http://www.google.com/kml/ext/2.2"><gx:Tour><gx:Playlist>
+      <gx:FlyTo><Camera><longitude>138.73</longitude><latitude>35.36</latitude>
+        <altitude>20000</altitude><altitudeMode>absolute</altitudeMode></Camera></gx:FlyTo>
+      <gx:FlyTo><gx:duration>30</gx:duration><gx:flyToMode>)";
+    text += mode;
+    text += R"(</gx:flyToMode><Camera><longitude>-121.76</longitude><latitude>46.85</latitude>
+        <altitude>15000</altitude><altitudeMode>absolute</altitudeMode></Camera></gx:FlyTo>
+      </gx:Playlist></gx:Tour></kml>)";
+    return readCameraPath(writeFile(dir, std::string(mode) + ".kml", text));
+  };
+  auto bounce = tour("bounce");
+  ASSERT_TRUE(bounce) << bounce.error();
+  ASSERT_EQ(bounce->keyframes.size(), 3u);
+  EXPECT_EQ(bounce->keyframes[1].timeSeconds, 15);
+  EXPECT_GT(bounce->keyframes[1].heightMeters, 3e6) << "half the way's length up";
+  EXPECT_EQ(bounce->keyframes[0].ease, kEaseIn);
+  EXPECT_EQ(bounce->keyframes[1].ease, kEaseOut);
+  auto smooth = tour("smooth");
+  ASSERT_TRUE(smooth) << smooth.error();
+  ASSERT_EQ(smooth->keyframes.size(), 2u);
+  EXPECT_FALSE(smooth->keyframes[0].ease.has_value());
 }
 
 // The shots: an orbit is a keyframe per 10° on its circle, each looking at the centre; a flyTo

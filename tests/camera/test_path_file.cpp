@@ -279,7 +279,9 @@ constexpr const char* kTour = R"(<?xml version="1.0" encoding="UTF-8"?>
 TEST_F(PathFiles, ReadsKmlTours) {
   auto file = readCameraPath(write("tour.kml", kTour));
   ASSERT_TRUE(file) << file.error();
-  ASSERT_EQ(file->keyframes.size(), 4u);  // three FlyTos and the Wait's hold
+  // Three FlyTos, the Wait's hold and the last FlyTo's bounce: 5.5 km of ground from 300 m, so
+  // it arcs (a keyframe at the hop between them).
+  ASSERT_EQ(file->keyframes.size(), 5u);
   const auto& k = file->keyframes;
   EXPECT_EQ(k[0].timeSeconds, 0);  // the first FlyTo's duration is Google Earth's approach
   EXPECT_EQ(k[0].longitudeDegrees, 138.70);
@@ -295,17 +297,25 @@ TEST_F(PathFiles, ReadsKmlTours) {
   EXPECT_EQ(k[2].headingDegrees, -40);
   EXPECT_EQ(k[2].pitchDegrees, -5);
   EXPECT_EQ(k[2].rollDegrees, 2);
-  EXPECT_EQ(k[3].timeSeconds, 6.5);
-  EXPECT_EQ(k[3].heightMeters, 0);  // clampToGround, KML's default: on the terrain
+  EXPECT_EQ(k[3].timeSeconds, 5.5);  // the bounce's apex, eased in before and out after
+  EXPECT_GT(k[3].heightMeters, 2000);
   EXPECT_TRUE(k[3].heightAboveTerrain);
-  EXPECT_EQ(k[3].pitchDegrees, -90);         // tilt 0
-  EXPECT_EQ(file->interpolation, "linear");  // the last FlyTo bounces (the default)
+  EXPECT_EQ(k[2].ease, kEaseIn);
+  EXPECT_EQ(k[3].ease, kEaseOut);
+  EXPECT_FALSE(k[1].ease.has_value()) << "the smooth FlyTo does not stop";
+  EXPECT_EQ(k[4].timeSeconds, 6.5);
+  EXPECT_EQ(k[4].heightMeters, 0);  // clampToGround, KML's default: on the terrain
+  EXPECT_TRUE(k[4].heightAboveTerrain);
+  EXPECT_EQ(k[4].pitchDegrees, -90);  // tilt 0
+  EXPECT_EQ(file->interpolation, "smooth");
   std::string smooth = kTour;
   smooth.replace(smooth.find("<gx:duration>2</gx:duration>"), 28,
                  "<gx:duration>2</gx:duration><gx:flyToMode>smooth</gx:flyToMode>");
   auto allSmooth = readKmlTour(write("smooth.kml", smooth));
   ASSERT_TRUE(allSmooth) << allSmooth.error();
   EXPECT_EQ(allSmooth->interpolation, "smooth");
+  ASSERT_EQ(allSmooth->keyframes.size(), 4u) << "smooth: through the views, no arc";
+  for (const PathKeyframe& key : allSmooth->keyframes) EXPECT_FALSE(key.ease.has_value());
 }
 
 // kTour with `from` (first occurrence) replaced by `to`.
