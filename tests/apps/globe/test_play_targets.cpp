@@ -113,6 +113,25 @@ TEST(PlayTargets, TheTargetStaysAtTheFrameCentreOnEveryFrame) {
   EXPECT_EQ(frames, 51u);
 }
 
+// A target path whose middle keyframe lies inside Fuji is lifted as every path is: the camera
+// never goes under the drawn surface, and the log says where the response moved it.
+TEST(PlayTargets, ATargetPathIntoTheMountainIsLifted) {
+  const fs::path dir = globe::testing::freshTempDir("play-target-lift");
+  const fs::path json = dir / "into.json";
+  const std::string lake = R"("target": {"lon": 138.76, "lat": 35.49, "height": 1000})";
+  std::ofstream(json) << R"({"keyframes": [
+    {"t": 0, "lon": 138.70, "lat": 35.30, "height": 4000, )" << lake << R"(},
+    {"t": 4, "lon": 138.7274, "lat": 35.3500, "height": 2500, )" << lake << R"(},
+    {"t": 8, "lon": 138.75, "lat": 35.40, "height": 4000, )" << lake << "}]}";
+  ASSERT_EQ(play(json, dir / "lift"), 0);
+  double lifted = 0;
+  for (const auto& row : readLog(dir / "lift" / "log.csv")) {
+    EXPECT_GE(number(row, "clearance_m"), 0.0) << row.at("frame");
+    lifted = std::max(lifted, number(row, "lift_m"));
+  }
+  EXPECT_GT(lifted, 100.0) << "the keyframe 2,500 m up Fuji's 3,000 m flank was lifted";
+}
+
 // An orbit shot around the summit: every frame looks at it and stays on the circle.
 TEST(PlayTargets, AnOrbitShotCirclesAndWatchesItsPoint) {
   const fs::path dir = globe::testing::freshTempDir("play-orbit");
