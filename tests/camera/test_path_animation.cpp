@@ -333,7 +333,7 @@ TEST(PathShots, AnOrbitCirclesItsPointAndAFlyToArcsBetweenItsPoses) {
   const glm::dvec3 up = geo::geodeticSurfaceNormal(kWgs84, geo::Cartographic::fromDegrees(138.7274, 35.3606, 0));
   for (size_t k = 0; k < orbit->keyframes.size(); ++k) {
     const PathKeyframe& key = orbit->keyframes[k];
-    EXPECT_NEAR(key.timeSeconds, k, 1e-9);
+    EXPECT_NEAR(key.timeSeconds, static_cast<double>(k), 1e-9);
     EXPECT_EQ(key.heightMeters, 3776 + 1500);
     ASSERT_TRUE(key.target.has_value());
     EXPECT_EQ(key.target->latitudeDegrees, 35.3606);
