@@ -6,7 +6,10 @@
 #include <string>
 #include <thread>
 
+#include <unistd.h>
+
 #include "apps/globe-tiler/commands.hpp"
+#include "apps/globe-tiler/export_progress.hpp"
 #include "geo/ellipsoid.hpp"
 #include "publish/heightmap_export.hpp"
 #include "publish/quantized_mesh_export.hpp"
@@ -25,7 +28,7 @@ struct ExportSettings {
   geo::Ellipsoid ellipsoid = geo::Ellipsoid::wgs84();
   publish::ElevationTileFormat tiles = publish::ElevationTileFormat::Png;
   double meshErrorFraction = 1.0;
-  unsigned threads = 1;
+  publish::ExportWork work;
 };
 using Exporter = Result<publish::ExportReport> (*)(streaming::TerrainSource& store,
                                                    const std::string& out,
@@ -39,19 +42,19 @@ constexpr TreeFormat kTreeFormats[] = {
     {"quantized-mesh", false,
      [](streaming::TerrainSource& store, const std::string& out, const ExportSettings& s) {
        return publish::exportQuantizedMesh(store, s.region, out, s.ellipsoid, s.meshErrorFraction,
-                                           s.threads);
+                                           s.work);
      }},
     {"heightmap", false,
      [](streaming::TerrainSource& store, const std::string& out, const ExportSettings& s) {
-       return publish::exportHeightmap(store, s.region, out, s.ellipsoid);
+       return publish::exportHeightmap(store, s.region, out, s.ellipsoid, s.work);
      }},
     {"terrarium", true,
      [](streaming::TerrainSource& store, const std::string& out, const ExportSettings& s) {
-       return publish::exportTerrarium(store, s.region, out, s.ellipsoid, s.tiles);
+       return publish::exportTerrarium(store, s.region, out, s.ellipsoid, s.tiles, s.work);
      }},
     {"terrain-rgb", true,
      [](streaming::TerrainSource& store, const std::string& out, const ExportSettings& s) {
-       return publish::exportTerrainRgb(store, s.region, out, s.ellipsoid, s.tiles);
+       return publish::exportTerrainRgb(store, s.region, out, s.ellipsoid, s.tiles, s.work);
      }},
 };
 
@@ -71,7 +74,7 @@ std::vector<std::string> treeFormatNames() {
 // globe-tiler export --format F -o DIR PYRAMID: a tile tree for web viewers.
 int exportTree(const std::string& format, const std::string& out, const std::string& pyramid,
                const std::string& levels, const std::string& bounds, bool webp,
-               double meshErrorFraction, unsigned threads) {
+               double meshErrorFraction, unsigned threads, bool quiet) {
   publish::ExportRegion region;
   if (!levels.empty() && !publish::parseExportLevels(levels, region)) {
     std::fprintf(stderr, "globe-tiler export: --levels must be A-B or A, not '%s'\n",
@@ -96,8 +99,10 @@ int exportTree(const std::string& format, const std::string& out, const std::str
   settings.tiles =
       webp ? publish::ElevationTileFormat::WebpLossless : publish::ElevationTileFormat::Png;
   settings.meshErrorFraction = meshErrorFraction;
-  settings.threads = threads;
+  ExportProgressPrinter progress(format, threads, quiet, ::isatty(STDERR_FILENO) != 0);
+  settings.work = {threads, progress.sink()};
   auto report = treeFormatNamed(format)->run(**store, out, settings);
+  progress.finish();
   if (!report) {
     std::fprintf(stderr, "globe-tiler export: %s\n", report.error().c_str());
     return 1;
@@ -137,9 +142,12 @@ int runExportCommand(int argc, char** argv) {
                  "the surface; 0 keeps the whole 65×65 grid, the surface exactly (default 1)")
       ->check(CLI::Range(0.0, 16.0));
   app.add_option("-j,--threads", threads,
-                 "quantized-mesh: worker threads making tiles (default: every core)")
+                 "worker threads making tiles (default: every core; the same bytes as one)")
       ->check(CLI::Range(1U, 1024U));
   app.add_option("-o,--output", out, "the tree's directory (with --format)");
+  bool quiet = false;
+  app.add_flag("-q,--quiet", quiet,
+               "with --format: say nothing until the end (no tile count, expected time or bar)");
   app.add_option(
       "--levels", levels,
       "A-B: pyramid levels (quantized-mesh, heightmap) or Web-Mercator zooms (terrarium, "
@@ -162,7 +170,8 @@ int runExportCommand(int argc, char** argv) {
                    format.c_str());
       return 2;
     }
-    return exportTree(format, out, positional[0], levels, bounds, webp, meshErrorFraction, threads);
+    return exportTree(format, out, positional[0], levels, bounds, webp, meshErrorFraction, threads,
+                      quiet);
   }
   if (webp) {
     std::fprintf(stderr, "globe-tiler export: --webp needs --format terrarium or terrain-rgb\n");

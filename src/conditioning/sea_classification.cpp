@@ -76,6 +76,43 @@ std::vector<size_t> onBorder(const DemGrid& grid, const std::vector<uint8_t>& in
   return seeds;
 }
 
+// The no-data samples outside the footprint: each 8-connected no-data region reaching the border
+// that meets it along a long stretch or covers much of the grid (kOutsideBorderFraction,
+// kOutsideAreaFraction); a region the edge only cuts through is a hole like any other.
+std::vector<uint8_t> outsideFootprint(const DemGrid& grid, const std::vector<uint8_t>& noData) {
+  const size_t count = grid.samples.size();
+  const auto cols = static_cast<size_t>(grid.cols);
+  const double longStretch =
+      kOutsideBorderFraction * static_cast<double>(std::min(grid.rows, grid.cols));
+  const double largeArea = kOutsideAreaFraction * static_cast<double>(count);
+  auto onEdge = [&](size_t i) {
+    const auto row = static_cast<int64_t>(i / cols), column = static_cast<int64_t>(i % cols);
+    return row == 0 || row == grid.rows - 1 ||
+           (!grid.wrapsLongitude && (column == 0 || column == grid.cols - 1));
+  };
+  std::vector<uint8_t> outside(count, 0), seen(count, 0);
+  for (size_t seed : onBorder(grid, noData)) {
+    if (seen[seed] != 0) continue;
+    std::vector<size_t> region{seed};
+    seen[seed] = 1;
+    size_t contact = 0;
+    for (size_t k = 0; k < region.size(); ++k) {
+      contact += onEdge(region[k]) ? 1 : 0;
+      forEachOfEight(grid, static_cast<int64_t>(region[k] / cols),
+                     static_cast<int64_t>(region[k] % cols), [&](int64_t r, int64_t c) {
+                       const size_t j = grid.index(r, c);
+                       if (noData[j] != 0 && seen[j] == 0) seen[j] = 1, region.push_back(j);
+                     });
+    }
+    if (static_cast<double>(contact) < longStretch &&
+        static_cast<double>(region.size()) < largeArea) {
+      continue;
+    }
+    for (size_t i : region) outside[i] = 1;
+  }
+  return outside;
+}
+
 }  // namespace
 
 SeaClassification classifySea(const DemGrid& grid, const CoarserSources* coarser,
@@ -84,8 +121,8 @@ SeaClassification classifySea(const DemGrid& grid, const CoarserSources* coarser
   const size_t count = grid.samples.size();
   result.classes.assign(count, SampleClass::Land);
 
-  // Outside the footprint: no data reaching the border through no data, where a coarser source
-  // covers it (without one there is nothing to show through: a void).
+  // Outside the footprint: no data reaching the border through no data along a long stretch,
+  // where a coarser source covers it (without one there is nothing to show through: a void).
   std::vector<uint8_t> noData(count, 0);
   for (size_t i = 0; i < count; ++i) {
     if (grid.samples[i] == terrain::kNoDataHeight) {
@@ -95,7 +132,7 @@ SeaClassification classifySea(const DemGrid& grid, const CoarserSources* coarser
   }
   const std::vector<uint8_t> reachesBorder = coarser == nullptr
                                                  ? std::vector<uint8_t>(count, 0)
-                                                 : reach(grid, noData, onBorder(grid, noData));
+                                                 : outsideFootprint(grid, noData);
 
   // Water the coarser sources say is there (no data under coarser water, and the footprint's
   // outside where it is water) and measured samples at or below 0 m that may be sea.

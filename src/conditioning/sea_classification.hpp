@@ -9,10 +9,12 @@
 //  - every no-data sample of a source whose no data is an explicit water code (GTOPO30's ocean
 //    mask: the product has no voids, its -9999 is the ocean).
 // Otherwise no data is never sea by connectivity alone. No data reaching the grid's border through
-// no data (reprojection wedges, a blanked half, the corners of a clipped image) lies outside the
-// source's footprint: where a coarser source covers it, that source shows through there (Outside).
-// Other no-data samples are voids (holes in the data, filled); other measured samples are land,
-// below sea level included.
+// no data along a long stretch of it, or covering much of the grid (reprojection wedges, a blanked
+// half, the corners of a clipped image), lies outside the source's footprint: where a coarser
+// source covers it, that source shows through there (Outside). A region meeting the border only
+// briefly is a hole the grid's edge happens to cut (SRTM's voids cross its 1° tiles' edges) and
+// is treated as any hole. Other no-data samples are voids (holes in the data, filled); other
+// measured samples are land, below sea level included.
 #pragma once
 
 #include <cstdint>
@@ -25,6 +27,10 @@ namespace globe::conditioning {
 
 inline constexpr double kSeaBasinMinimumAreaKm2 = 10000.0;
 inline constexpr double kSeaBasinMinimumDepthMeters = -200.0;
+// A no-data region reaching the border is outside the footprint when it meets the border along
+// at least this fraction of the grid's shorter side, or covers at least this fraction of the grid.
+inline constexpr double kOutsideBorderFraction = 0.25;
+inline constexpr double kOutsideAreaFraction = 0.25;
 
 enum class SampleClass : uint8_t { Land, Sea, Void, Outside };
 

@@ -28,6 +28,16 @@ struct ExportRegion {
   double westDegrees = -180, southDegrees = -90, eastDegrees = 180, northDegrees = 90;
 };
 
+// Hears (tiles done, tiles in the run) as a run goes, from one thread at a time; the program
+// prints it.
+using ExportProgress = std::function<void(uint64_t tilesDone, uint64_t tilesTotal)>;
+
+// How a run is carried out: on how many threads (the same bytes on any number), heard by whom.
+struct ExportWork {
+  unsigned threads = 1;
+  ExportProgress progress;
+};
+
 // "A-B" or "A" into the region's levels (or zooms); false when the text is neither.
 bool parseExportLevels(const std::string& text, ExportRegion& region);
 // "W,S,E,N" in degrees (W < E, S < N, within the world) into the region; false otherwise.

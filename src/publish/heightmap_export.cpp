@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <memory>
 #include <numbers>
 #include <set>
 #include <string>
@@ -13,6 +14,7 @@
 #include "geo/tiling_scheme.hpp"
 #include "surface/pyramid_surface.hpp"
 #include "publish/terrain_layer_writer.hpp"
+#include "publish/tile_workers.hpp"
 #include "terrain/block_grid.hpp"
 #include "transport/atomic_file.hpp"
 
@@ -113,7 +115,7 @@ Result<void> fixChildMask(const std::filesystem::path& outDir, const geo::TileId
 
 Result<ExportReport> exportTree(streaming::TerrainSource& source, const ExportRegion& region,
                                 const std::filesystem::path& outDir,
-                                const geo::Ellipsoid& ellipsoid) {
+                                const geo::Ellipsoid& ellipsoid, const ExportWork& work) {
   const formats::PyramidManifest& manifest = source.manifest();
   // A tile's grid holds the pyramid's level `extra` deeper (17-vertex blocks: 2 levels), so the
   // tree stops that much sooner (as the quantized-mesh tree).
@@ -121,49 +123,72 @@ Result<ExportReport> exportTree(streaming::TerrainSource& source, const ExportRe
   while ((manifest.verticesPerSide - 1) << extra < kSide - 1) ++extra;
   const uint32_t deepest = manifest.maxLevel() > extra ? manifest.maxLevel() - extra : 0;
   const uint32_t last = std::min(region.maxLevel, deepest);
-  // The run's tiles of the present pyramid, level by level; each level's known before the
-  // level above is written, so that a tile's child mask names its children.
-  const auto runTilesOf = [&](uint32_t level) -> Result<std::set<geo::TileId>> {
-    std::set<geo::TileId> tiles;
-    if (level > last) return tiles;
+  // The run's tiles of the present pyramid, every level's known before any is written, so that
+  // a tile's child mask names its children and the progress its total.
+  std::vector<std::vector<geo::TileId>> runTiles;
+  uint64_t total = 0;
+  for (uint32_t level = region.minLevel; level <= last + 1; ++level) {
+    std::vector<geo::TileId>& tiles = runTiles.emplace_back();
+    if (level > last) break;
     for (const geo::TileId& tile : candidateTiles(manifest, level, region)) {
       auto summary = source.summary(tile);
       if (!summary) return Error{summary.error()};
-      if (*summary) tiles.insert(tile);
+      if (*summary) tiles.push_back(tile);
     }
-    return tiles;
-  };
-  surface::PyramidSurface surface(source, ellipsoid);
+    total += tiles.size();
+  }
+  std::vector<std::unique_ptr<surface::PyramidSurface>> surfaces;
+  for (unsigned w = 0; w < std::max(1U, work.threads); ++w) {
+    surfaces.push_back(std::make_unique<surface::PyramidSurface>(source, ellipsoid));
+  }
   ExportReport report;
-  auto current = runTilesOf(region.minLevel);
-  if (!current) return Error{current.error()};
+  uint64_t doneBefore = 0;
   std::set<geo::TileId> writtenAbove;  // the tiles this run wrote one level up
   for (uint32_t level = region.minLevel; level <= last; ++level) {
-    auto below = runTilesOf(level + 1);
-    if (!below) return Error{below.error()};
-    std::set<geo::TileId> written, parents;
-    for (const geo::TileId& tile : *current) {
-      const uint64_t before = report.tilesWritten;
-      auto done = writeTileOnce(
-          terrainTilePath(outDir, tile),
-          [&] {
-            return makeTile(surface, tile, tile.level + extra, childMask(outDir, tile, *below));
-          },
-          report);
-      if (!done) return Error{done.error()};
-      if (report.tilesWritten > before) written.insert(tile);
-      if (level > 0 && !writtenAbove.contains(tile.parent())) parents.insert(tile.parent());
-    }
+    const std::vector<geo::TileId>& current = runTiles[level - region.minLevel];
+    const std::set<geo::TileId> below(runTiles[level + 1 - region.minLevel].begin(),
+                                      runTiles[level + 1 - region.minLevel].end());
+    std::vector<uint8_t> wrote(current.size(), 0);
+    auto levelReport = runTileJobs(
+        current.size(), work.threads,
+        [&](unsigned worker, size_t i, ExportReport& counts) -> Result<void> {
+          const geo::TileId& tile = current[i];
+          const uint64_t before = counts.tilesWritten;
+          auto done = writeTileOnce(
+              terrainTilePath(outDir, tile),
+              [&] {
+                return makeTile(*surfaces[worker], tile, tile.level + extra,
+                                childMask(outDir, tile, below));
+              },
+              counts);
+          if (done && counts.tilesWritten > before) wrote[i] = 1;
+          return done;
+        },
+        [&](uint64_t done, uint64_t) {
+          if (work.progress) work.progress(doneBefore + done, total);
+        });
+    if (!levelReport) return Error{levelReport.error()};
+    doneBefore += current.size();
+    report.tilesWritten += levelReport->tilesWritten;
+    report.tilesKept += levelReport->tilesKept;
+    report.bytesWritten += levelReport->bytesWritten;
     // Parents this run did not write (kept from an earlier run, or above its levels) learn of
     // their children: runs over other regions or levels add to a tree.
+    std::set<geo::TileId> written, parents;
+    for (size_t i = 0; i < current.size(); ++i) {
+      if (wrote[i] != 0) written.insert(current[i]);
+      if (level > 0 && !writtenAbove.contains(current[i].parent())) {
+        parents.insert(current[i].parent());
+      }
+    }
+    const std::set<geo::TileId> currentSet(current.begin(), current.end());
     for (const geo::TileId& parent : parents) {
       if (!onDisk(outDir, parent)) continue;
-      if (auto fixed = fixChildMask(outDir, parent, *current); !fixed) {
+      if (auto fixed = fixChildMask(outDir, parent, currentSet); !fixed) {
         return Error{fixed.error()};
       }
     }
     writtenAbove = std::move(written);
-    current = std::move(below);
   }
   // layer.json last and always rewritten: it lists what this and earlier runs wrote.
   if (auto done = writeTerrainLayerJson(
@@ -179,8 +204,8 @@ Result<ExportReport> exportTree(streaming::TerrainSource& source, const ExportRe
 
 Result<ExportReport> exportHeightmap(streaming::TerrainSource& source, const ExportRegion& region,
                                      const std::filesystem::path& outDir,
-                                     const geo::Ellipsoid& ellipsoid) {
-  return heightmap_tiles::exportTree(source, region, outDir, ellipsoid);
+                                     const geo::Ellipsoid& ellipsoid, const ExportWork& work) {
+  return heightmap_tiles::exportTree(source, region, outDir, ellipsoid, work);
 }
 
 }  // namespace globe::publish

@@ -18,6 +18,7 @@ namespace globe::publish {
 
 Result<ExportReport> exportHeightmap(streaming::TerrainSource& source, const ExportRegion& region,
                                      const std::filesystem::path& outDir,
-                                     const geo::Ellipsoid& ellipsoid);
+                                     const geo::Ellipsoid& ellipsoid,
+                                     const ExportWork& work = {});
 
 }  // namespace globe::publish

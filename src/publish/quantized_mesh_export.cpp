@@ -1,14 +1,11 @@
 #include "publish/quantized_mesh_export.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <mutex>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <numbers>
-#include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "compression/deflate_bytes.hpp"
@@ -16,6 +13,7 @@
 #include "publish/block_mesh.hpp"
 #include "surface/pyramid_surface.hpp"
 #include "publish/terrain_layer_writer.hpp"
+#include "publish/tile_workers.hpp"
 #include "publish/tile_grid.hpp"
 #include "publish/tin_simplifier.hpp"
 #include "terrain/block_grid.hpp"
@@ -126,7 +124,7 @@ Result<ExportReport> exportQuantizedMesh(streaming::TerrainSource& source,
                                          const ExportRegion& region,
                                          const std::filesystem::path& outDir,
                                          const geo::Ellipsoid& ellipsoid, double errorFraction,
-                                         unsigned threads) {
+                                         const ExportWork& work) {
   const formats::PyramidManifest& manifest = source.manifest();
   // A tile's grid holds the pyramid's level `extra` deeper (17-vertex blocks: 2 levels), so the
   // tree stops that much sooner.
@@ -135,8 +133,8 @@ Result<ExportReport> exportQuantizedMesh(streaming::TerrainSource& source,
   const auto sampleLevel = [&](uint32_t level) { return level + extra; };
   const uint32_t deepest = manifest.maxLevel() > extra ? manifest.maxLevel() - extra : 0;
   const uint32_t last = std::min(region.maxLevel, deepest);
-  // The present tiles first (their packs' indexes), then the tiles made by `threads` workers,
-  // each with its own surface (it caches blocks); a tile is the same whoever makes it.
+  // The present tiles first (their packs' indexes), then the tiles made by the workers, each
+  // with its own surface (it caches blocks).
   std::vector<geo::TileId> tiles;
   for (uint32_t level = region.minLevel; level <= last; ++level) {
     for (const geo::TileId& tile : candidateTiles(manifest, level, region)) {
@@ -145,42 +143,24 @@ Result<ExportReport> exportQuantizedMesh(streaming::TerrainSource& source,
       if (*summary) tiles.push_back(tile);
     }
   }
-  const unsigned workers =
-      std::max(1U, std::min<unsigned>(threads, static_cast<unsigned>(tiles.size())));
-  std::vector<ExportReport> reports(workers);
-  std::atomic<size_t> next{0};
-  std::mutex failureMutex;
-  std::optional<std::string> failure;
-  const auto work = [&](unsigned worker) {
-    surface::PyramidSurface surface(source, ellipsoid);
-    for (size_t i = next++; i < tiles.size(); i = next++) {
-      const geo::TileId& tile = tiles[i];
-      auto written = writeTileOnce(
-          terrainTilePath(outDir, tile),
-          [&]() -> Result<std::vector<std::byte>> {
-            return makeTile(surface, source, tile, sampleLevel(tile.level), last, errorFraction,
-                            ellipsoid);
-          },
-          reports[worker]);
-      if (!written) {
-        const std::lock_guard lock(failureMutex);
-        if (!failure) failure = written.error();
-        next = tiles.size();  // the others stop after their tile
-        return;
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (unsigned worker = 1; worker < workers; ++worker) pool.emplace_back(work, worker);
-  work(0);
-  for (std::thread& thread : pool) thread.join();
-  if (failure) return makeError(*failure);
-  ExportReport report;
-  for (const ExportReport& r : reports) {
-    report.tilesWritten += r.tilesWritten;
-    report.tilesKept += r.tilesKept;
-    report.bytesWritten += r.bytesWritten;
+  std::vector<std::unique_ptr<surface::PyramidSurface>> surfaces;
+  for (unsigned w = 0; w < tileWorkerCount(tiles.size(), work.threads); ++w) {
+    surfaces.push_back(std::make_unique<surface::PyramidSurface>(source, ellipsoid));
   }
+  auto report = runTileJobs(
+      tiles.size(), work.threads,
+      [&](unsigned worker, size_t i, ExportReport& counts) {
+        const geo::TileId& tile = tiles[i];
+        return writeTileOnce(
+            terrainTilePath(outDir, tile),
+            [&]() -> Result<std::vector<std::byte>> {
+              return makeTile(*surfaces[worker], source, tile, sampleLevel(tile.level), last,
+                              errorFraction, ellipsoid);
+            },
+            counts);
+      },
+      work.progress);
+  if (!report) return Error{report.error()};
   // layer.json last and always rewritten: it lists what this and earlier runs wrote.
   if (auto written = writeTerrainLayerJson(outDir, "quantized-mesh-1.0",
                                            treeVersion(manifest, kExporterRevision), source,
@@ -188,7 +168,7 @@ Result<ExportReport> exportQuantizedMesh(streaming::TerrainSource& source,
       !written) {
     return Error{written.error()};
   }
-  return report;
+  return *report;
 }
 
 }  // namespace globe::publish

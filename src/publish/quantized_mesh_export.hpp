@@ -23,6 +23,7 @@ Result<ExportReport> exportQuantizedMesh(streaming::TerrainSource& source,
                                          const ExportRegion& region,
                                          const std::filesystem::path& outDir,
                                          const geo::Ellipsoid& ellipsoid,
-                                         double errorFraction = 1.0, unsigned threads = 1);
+                                         double errorFraction = 1.0,
+                                         const ExportWork& work = {});
 
 }  // namespace globe::publish

@@ -3,19 +3,24 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <numbers>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "formats/image_io.hpp"
 #include "formats/webp_lossless.hpp"
-#include "surface/pyramid_surface.hpp"
 #include "geo/web_mercator.hpp"
+#include "publish/terrain_layer_writer.hpp"
+#include "publish/tile_workers.hpp"
+#include "surface/pyramid_surface.hpp"
 
 namespace globe::publish {
 namespace {
 
 constexpr uint32_t kTileSize = geo::kWebMercatorTileSizePixels;
+constexpr uint32_t kDeepestZoom = 22;
 
 // The pyramid level whose vertex spacing (180° / 2^L / (N−1)) is no wider than a pixel at the
 // equator (360° / 2^z / 256).
@@ -50,64 +55,109 @@ namespace {
 
 using PixelEncoding = std::array<uint8_t, 3> (*)(double heightMeters);
 
+struct ElevationTile {
+  uint32_t zoom = 0, x = 0, y = 0, level = 0;  // level: the pyramid level its pixels sample
+  auto operator<=>(const ElevationTile&) const = default;
+};
+
+// The zoom's tiles over the pyramid's tiles of the level it samples, within the region. Where
+// the pyramid has no tile that fine a client draws the zoom above (MapLibre's terrain reads a
+// tile's parent where it has none), so a sparse pyramid makes a sparse tree, not the world at
+// every zoom; past the pyramid's finest level nothing.
+Result<std::set<ElevationTile>> zoomTiles(streaming::TerrainSource& source,
+                                         const ExportRegion& region, uint32_t zoom,
+                                         uint32_t level) {
+  // Shrunk a little so that a tile's shared edge does not pull in the neighbour beyond it.
+  constexpr double kInsetDegrees = 1e-9;
+  std::set<ElevationTile> tiles;
+  const double tileDegrees = 180.0 / std::ldexp(1.0, static_cast<int>(level));
+  for (const geo::TileId& tile : candidateTiles(source.manifest(), level, region)) {
+    auto summary = source.summary(tile);
+    if (!summary) return Error{summary.error()};
+    if (!*summary) continue;
+    const double west = std::max(region.westDegrees, -180.0 + tile.x * tileDegrees);
+    const double east = std::min(region.eastDegrees, -180.0 + (tile.x + 1) * tileDegrees);
+    const double north = std::min(
+        {region.northDegrees, 90.0 - tile.y * tileDegrees, geo::kWebMercatorMaxLatitudeDegrees});
+    const double south = std::max({region.southDegrees, 90.0 - (tile.y + 1) * tileDegrees,
+                                   -geo::kWebMercatorMaxLatitudeDegrees});
+    if (!(east - west > 2 * kInsetDegrees && north - south > 2 * kInsetDegrees)) continue;
+    const geo::WebMercatorTileRange range =
+        geo::webMercatorTilesOf(west + kInsetDegrees, south + kInsetDegrees,
+                                east - kInsetDegrees, north - kInsetDegrees, zoom);
+    for (uint32_t y = range.firstY; y <= range.lastY; ++y) {
+      for (uint32_t x = range.firstX; x <= range.lastX; ++x) tiles.insert({zoom, x, y, level});
+    }
+  }
+  return tiles;
+}
+
+// The tile's pixels, each the exact surface at its centre from the tile's level.
+Result<std::vector<std::byte>> makeElevationTile(surface::PyramidSurface& surface,
+                                                 const ElevationTile& t, PixelEncoding encode,
+                                                 bool webp) {
+  const double tiles = std::ldexp(1.0, static_cast<int>(t.zoom));
+  formats::ImageRgba image{static_cast<int>(kTileSize), static_cast<int>(kTileSize),
+                           std::vector<uint8_t>(kTileSize * kTileSize * 4, 255)};
+  for (uint32_t r = 0; r < kTileSize; ++r) {
+    const double lat = geo::webMercatorLatitudeRadiansOfRow(t.y + (r + 0.5) / kTileSize, t.zoom);
+    for (uint32_t c = 0; c < kTileSize; ++c) {
+      const double lon = ((t.x + (c + 0.5) / kTileSize) / tiles * 360 - 180) * std::numbers::pi / 180;
+      auto h = surface.heightMeters(lon, lat, t.level);
+      if (!h) return Error{h.error()};
+      const auto pixel = encode(*h);
+      std::copy(pixel.begin(), pixel.end(), &image.pixels[(r * kTileSize + c) * 4]);
+    }
+  }
+  return webp ? formats::encodeWebpLossless(image) : formats::encodePng(image);
+}
+
 Result<ExportReport> exportElevationPngs(streaming::TerrainSource& source,
                                          const ExportRegion& region,
                                          const std::filesystem::path& outDir,
                                          const geo::Ellipsoid& ellipsoid, PixelEncoding encode,
-                                         ElevationTileFormat format) {
+                                         ElevationTileFormat format, const ExportWork& work) {
   const bool webp = format == ElevationTileFormat::WebpLossless;
-  surface::PyramidSurface surface(source, ellipsoid);
-  ExportReport report;
-  const uint32_t lastZoom = std::min(region.maxLevel, 22U);
-  for (uint32_t zoom = region.minLevel; zoom <= lastZoom; ++zoom) {
-    const double tiles = std::ldexp(1.0, static_cast<int>(zoom));
-    const geo::WebMercatorTileRange range = geo::webMercatorTilesOf(
-        region.westDegrees, region.southDegrees, region.eastDegrees, region.northDegrees, zoom);
-    const uint32_t x0 = range.firstX, x1 = range.lastX, y0 = range.firstY, y1 = range.lastY;
-    const uint32_t level = levelForZoom(zoom, source.manifest().verticesPerSide);
-    for (uint32_t y = y0; y <= y1; ++y) {
-      for (uint32_t x = x0; x <= x1; ++x) {
-        const std::filesystem::path path = outDir / std::to_string(zoom) / std::to_string(x) /
-                                           (std::to_string(y) + (webp ? ".webp" : ".png"));
-        auto written = writeTileOnce(
-            path,
-            [&]() -> Result<std::vector<std::byte>> {
-              formats::ImageRgba image{static_cast<int>(kTileSize), static_cast<int>(kTileSize),
-                                       std::vector<uint8_t>(kTileSize * kTileSize * 4, 255)};
-              for (uint32_t r = 0; r < kTileSize; ++r) {
-                const double lat =
-                    geo::webMercatorLatitudeRadiansOfRow(y + (r + 0.5) / kTileSize, zoom);
-                for (uint32_t c = 0; c < kTileSize; ++c) {
-                  const double lon =
-                      ((x + (c + 0.5) / kTileSize) / tiles * 360 - 180) * std::numbers::pi / 180;
-                  auto h = surface.heightMeters(lon, lat, level);
-                  if (!h) return Error{h.error()};
-                  const auto pixel = encode(*h);
-                  std::copy(pixel.begin(), pixel.end(), &image.pixels[(r * kTileSize + c) * 4]);
-                }
-              }
-              return webp ? formats::encodeWebpLossless(image) : formats::encodePng(image);
-            },
-            report);
-        if (!written) return Error{written.error()};
-      }
-    }
+  const uint32_t verticesPerSide = source.manifest().verticesPerSide;
+  std::vector<ElevationTile> tiles;
+  for (uint32_t zoom = region.minLevel; zoom <= std::min(region.maxLevel, kDeepestZoom); ++zoom) {
+    const uint32_t level = levelForZoom(zoom, verticesPerSide);
+    if (level > source.manifest().maxLevel()) break;  // pixels finer than the data
+    auto found = zoomTiles(source, region, zoom, level);
+    if (!found) return Error{found.error()};
+    tiles.insert(tiles.end(), found->begin(), found->end());
   }
-  return report;
+  std::vector<std::unique_ptr<surface::PyramidSurface>> surfaces;
+  for (unsigned w = 0; w < tileWorkerCount(tiles.size(), work.threads); ++w) {
+    surfaces.push_back(std::make_unique<surface::PyramidSurface>(source, ellipsoid));
+  }
+  return runTileJobs(
+      tiles.size(), work.threads,
+      [&](unsigned worker, size_t i, ExportReport& counts) {
+        const ElevationTile& t = tiles[i];
+        const std::filesystem::path path = outDir / std::to_string(t.zoom) /
+                                           std::to_string(t.x) /
+                                           (std::to_string(t.y) + (webp ? ".webp" : ".png"));
+        return writeTileOnce(
+            path, [&] { return makeElevationTile(*surfaces[worker], t, encode, webp); }, counts);
+      },
+      work.progress);
 }
 
 }  // namespace
 
 Result<ExportReport> exportTerrarium(streaming::TerrainSource& source, const ExportRegion& region,
                                      const std::filesystem::path& outDir,
-                                     const geo::Ellipsoid& ellipsoid, ElevationTileFormat format) {
-  return exportElevationPngs(source, region, outDir, ellipsoid, terrariumPixel, format);
+                                     const geo::Ellipsoid& ellipsoid, ElevationTileFormat format,
+                                     const ExportWork& work) {
+  return exportElevationPngs(source, region, outDir, ellipsoid, terrariumPixel, format, work);
 }
 
 Result<ExportReport> exportTerrainRgb(streaming::TerrainSource& source, const ExportRegion& region,
                                       const std::filesystem::path& outDir,
-                                      const geo::Ellipsoid& ellipsoid, ElevationTileFormat format) {
-  return exportElevationPngs(source, region, outDir, ellipsoid, terrainRgbPixel, format);
+                                      const geo::Ellipsoid& ellipsoid, ElevationTileFormat format,
+                                      const ExportWork& work) {
+  return exportElevationPngs(source, region, outDir, ellipsoid, terrainRgbPixel, format, work);
 }
 
 }  // namespace globe::publish

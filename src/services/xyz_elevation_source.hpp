@@ -1,7 +1,9 @@
 // Web-Mercator elevation tiles encoded in PNG colours (Terrarium: the open AWS Terrain Tiles;
 // Mapbox Terrain-RGB) as a terrain source: each block's vertices and apron are sampled
 // bilinearly from the Mercator tiles of about the block's resolution as it loads, so the
-// geographic blocks carry the service's heights without a Mercator distortion.
+// geographic blocks carry the service's heights without a Mercator distortion. The tree goes on
+// past the finest zoom until its vertices are finer than the pixels north-south too (deeper
+// towards the poles), so the drawn surface follows the pixels, cliffs included.
 #pragma once
 
 #include <memory>

@@ -9,30 +9,31 @@
 
 namespace globe::surface {
 
-Result<std::shared_ptr<const terrain::HeightBlock>> PyramidSurface::block(const geo::TileId& tile) {
+Result<const PyramidSurface::Loaded*> PyramidSurface::block(const geo::TileId& tile) {
   if (auto it = cache_.find(tile); it != cache_.end()) {
     recency_.splice(recency_.begin(), recency_, it->second.place);
-    return it->second.block;
+    return &it->second.loaded;
   }
-  std::shared_ptr<const terrain::HeightBlock> loaded;
+  Loaded loaded;
   auto summary = source_.summary(tile);
   if (!summary) return Error{summary.error()};
   if (*summary) {
     auto read = source_.loadBlock(tile);
     if (!read) return Error{read.error()};
-    loaded = std::make_shared<const terrain::HeightBlock>(std::move(*read));
+    loaded.block = std::make_shared<const terrain::HeightBlock>(std::move(*read));
+    loaded.arrayTile = terrain::makeArrayTile(tile, *loaded.block);
   }
   if (cache_.size() >= kCachedBlocks) {
     cache_.erase(recency_.back());
     recency_.pop_back();
   }
   recency_.push_front(tile);
-  cache_.emplace(tile, Cached{loaded, recency_.begin()});
-  return loaded;
+  return &cache_.emplace(tile, Cached{std::move(loaded), recency_.begin()}).first->second.loaded;
 }
 
-Result<PyramidSurface::Finest> PyramidSurface::finest(double longitudeRadians,
-                                                      double latitudeRadians, uint32_t maxLevel) {
+Result<const PyramidSurface::Loaded*> PyramidSurface::finest(double longitudeRadians,
+                                                             double latitudeRadians,
+                                                             uint32_t maxLevel) {
   const uint32_t deepest = std::min(maxLevel, source_.manifest().maxLevel());
   for (uint32_t level = deepest + 1; level-- > 0;) {
     const auto tile =
@@ -40,9 +41,9 @@ Result<PyramidSurface::Finest> PyramidSurface::finest(double longitudeRadians,
     if (!tile) return makeError("invalid position");
     auto found = block(*tile);
     if (!found) return Error{found.error()};
-    if (*found) return Finest{*tile, *found};
+    if ((*found)->block) return *found;
   }
-  return Finest{};
+  return static_cast<const Loaded*>(nullptr);
 }
 
 Result<double> PyramidSurface::heightMeters(double longitudeRadians, double latitudeRadians,
@@ -50,9 +51,8 @@ Result<double> PyramidSurface::heightMeters(double longitudeRadians, double lati
   const double lon = geo::wrapLongitudeRadians(longitudeRadians);
   auto found = finest(lon, latitudeRadians, maxLevel);
   if (!found) return Error{found.error()};
-  if (!found->block) return 0.0;
-  const terrain::ArrayTile arrayTile = terrain::makeArrayTile(found->tile, *found->block);
-  return collision::exactTileSurfaceHeight(arrayTile, ellipsoid_, lon, latitudeRadians)
+  if (*found == nullptr) return 0.0;
+  return collision::exactTileSurfaceHeight((*found)->arrayTile, ellipsoid_, lon, latitudeRadians)
       .heightMeters;
 }
 
@@ -61,16 +61,17 @@ Result<bool> PyramidSurface::isWater(double longitudeRadians, double latitudeRad
   const double lon = geo::wrapLongitudeRadians(longitudeRadians);
   auto found = finest(lon, latitudeRadians, maxLevel);
   if (!found) return Error{found.error()};
-  if (!found->block) return false;
-  const auto rect = geo::GeographicTilingScheme::tileRectangle(found->tile);
-  const uint32_t n = found->block->verticesPerSide;
+  if (*found == nullptr) return false;
+  const terrain::HeightBlock& block = *(*found)->block;
+  const auto rect = geo::GeographicTilingScheme::tileRectangle((*found)->arrayTile.id);
+  const uint32_t n = block.verticesPerSide;
   const auto nearest = [&](double fraction) {
     return static_cast<size_t>(std::clamp(std::lround(fraction * (n - 1)), 0L, long{n} - 1));
   };
   const size_t column = nearest((lon - rect.westRadians) / (rect.eastRadians - rect.westRadians));
   const size_t row =
       nearest((rect.northRadians - latitudeRadians) / (rect.northRadians - rect.southRadians));
-  return terrain::isWater(found->block->heights[row * n + column]);
+  return terrain::isWater(block.heights[row * n + column]);
 }
 
 }  // namespace globe::surface

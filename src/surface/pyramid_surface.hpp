@@ -16,6 +16,7 @@
 #include "geo/tile_id.hpp"
 #include "streaming/terrain_source.hpp"
 #include "terrain/height_block.hpp"
+#include "terrain/rendering_tile_array.hpp"
 
 namespace globe::surface {
 
@@ -38,20 +39,21 @@ class PyramidSurface {
 
  private:
   static constexpr size_t kCachedBlocks = 512;
-  // The tile's block, or null where the pyramid has no such tile.
-  Result<std::shared_ptr<const terrain::HeightBlock>> block(const geo::TileId& tile);
-  // The finest tile of level <= maxLevel under the point and its block (null: none there).
-  struct Finest {
-    geo::TileId tile;
-    std::shared_ptr<const terrain::HeightBlock> block;
+  // A tile's block as the collision code reads it (its rectangle and highest vertex worked out
+  // once when it loads, not at every point: an export asks for 65,536 points a tile).
+  struct Loaded {
+    std::shared_ptr<const terrain::HeightBlock> block;  // null: the pyramid has no such tile
+    terrain::ArrayTile arrayTile{};
   };
-  Result<Finest> finest(double longitudeRadians, double latitudeRadians, uint32_t maxLevel);
+  Result<const Loaded*> block(const geo::TileId& tile);
+  // The finest tile of level <= maxLevel under the point (null: none there).
+  Result<const Loaded*> finest(double longitudeRadians, double latitudeRadians, uint32_t maxLevel);
 
   streaming::TerrainSource& source_;
   geo::Ellipsoid ellipsoid_;
   std::list<geo::TileId> recency_;  // most recent first
   struct Cached {
-    std::shared_ptr<const terrain::HeightBlock> block;
+    Loaded loaded;
     std::list<geo::TileId>::iterator place;
   };
   std::unordered_map<geo::TileId, Cached> cache_;

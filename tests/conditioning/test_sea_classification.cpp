@@ -36,25 +36,48 @@ TEST(SeaClassification, WithoutACoarserSourceNoDataIsAVoidNeverSea) {
 }
 
 TEST(SeaClassification, NoDataReachingTheBorderIsOutsideTheFootprintWhereACoarserSourceCovers) {
-  // A no-data gash from the border into a mountain, and an enclosed hole; the coarser grid says
-  // 800 m everywhere: the gash shows the coarser source, the hole is a void, nothing is sea.
+  // A blanked wedge along the north edge (a reprojection's corner) and an enclosed hole; the
+  // coarser grid says 800 m everywhere: the wedge shows the coarser source, the hole is a void.
   const DemGrid grid = makeGrid(30, 30, [](int64_t r, int64_t c) -> int16_t {
-    if (r == 15 && c < 20) return kNoData;
-    if (r == 5 && c == 5) return kNoData;
+    if (r < 3 && c < 24 - 8 * r) return kNoData;
+    if (r == 15 && c == 15) return kNoData;
     return 900;
   });
   const DemGrid coarse = flatCoarse(800);
   const GridCoarserSources coarser({&coarse});
   const SeaClassification result = classifySea(grid, &coarser);
   EXPECT_EQ(result.seaSamples, 0U);
-  EXPECT_EQ(result.outsideSamples, 20U);
+  EXPECT_EQ(result.outsideSamples, 24U + 16U + 8U);
   EXPECT_EQ(result.voidSamples, 1U);
-  EXPECT_EQ(result.classes[grid.index(15, 19)], SampleClass::Outside);
-  EXPECT_EQ(result.classes[grid.index(5, 5)], SampleClass::Void);
-  // Without a coarser source the same gash is a void too: never sea by connectivity.
+  EXPECT_EQ(result.classes[grid.index(2, 7)], SampleClass::Outside);
+  EXPECT_EQ(result.classes[grid.index(15, 15)], SampleClass::Void);
+  // Without a coarser source the same wedge is a void too: never sea by connectivity.
   const SeaClassification alone = classifySea(grid, nullptr);
   EXPECT_EQ(alone.seaSamples, 0U);
-  EXPECT_EQ(alone.voidSamples, 21U);
+  EXPECT_EQ(alone.voidSamples, 49U);
+}
+
+TEST(SeaClassification, AHoleTheGridsEdgeCutsIsAVoidNotOutside) {
+  // A gash one sample wide from the west edge into a mountain, and a hole the south edge cuts
+  // through (four samples of 30 on the edge): holes in the data, filled, not the footprint's
+  // outside. Over coarser water the same gash is that water.
+  const DemGrid grid = makeGrid(30, 30, [](int64_t r, int64_t c) -> int16_t {
+    if (r == 15 && c < 20) return kNoData;
+    if (r >= 26 && c >= 10 && c < 14) return kNoData;
+    return 900;
+  });
+  const DemGrid land = flatCoarse(800);
+  const GridCoarserSources overLand({&land});
+  const SeaClassification result = classifySea(grid, &overLand);
+  EXPECT_EQ(result.outsideSamples, 0U);
+  EXPECT_EQ(result.voidSamples, 20U + 16U);
+  EXPECT_EQ(result.classes[grid.index(15, 0)], SampleClass::Void);
+  EXPECT_EQ(result.classes[grid.index(29, 12)], SampleClass::Void);
+  const DemGrid water = flatCoarse(terrain::encodeWater(-30));
+  const GridCoarserSources overWater({&water});
+  const SeaClassification sea = classifySea(grid, &overWater);
+  EXPECT_EQ(sea.voidSamples, 0U);
+  EXPECT_EQ(sea.classes[grid.index(15, 0)], SampleClass::Sea);
 }
 
 TEST(SeaClassification, NoDataReachingTheBorderIsOutsideOverCoarserLandAndWaterAlike) {

@@ -1,7 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
+#include "conditioning/condition.hpp"
 #include "conditioning/grid_coarser_sources.hpp"
 #include "conditioning/void_fill.hpp"
 #include "dem_test_grids.hpp"
@@ -163,6 +165,45 @@ TEST(VoidFill, LargeVoidsFollowTheCoarserSourceShiftedToMeetTheBorder) {
   }
   EXPECT_LE(worstDelta, 2.0);
   EXPECT_GT(worstInterpolated, 20.0);
+}
+
+TEST(VoidFill, AVoidBesideASummitCutByTheGridsEdgeMeetsItsRim) {
+  // A summit (4,563 m, falling 25 m a sample) near the east edge, a void beside it that the edge
+  // cuts (as SRTM's voids cross its tiles' edges), and a coarser source far below the peaks (the
+  // 20′ base at 3,000 m). The void is filled as a hole: the coarser surface bent to the void's
+  // rim, every filled sample within the range of the valid samples within 20 of it, never the
+  // coarser surface showing through unbent.
+  const DemGrid coarse = makeGrid(
+      30, 30, [](int64_t, int64_t) { return int16_t{3000}; }, 0.05, 9.8, 45.2);
+  const GridCoarserSources coarser({&coarse});
+  DemGrid grid = makeGrid(100, 100, [](int64_t r, int64_t c) {
+    const double d = std::hypot(static_cast<double>(r - 50), static_cast<double>(c - 80));
+    return static_cast<int16_t>(std::lround(4563.0 - 25.0 * d));
+  });
+  const DemGrid truth = grid;
+  const auto isVoid = disc(grid, 50, 96, 12);
+  size_t voidSamples = 0;
+  for (size_t i = 0; i < isVoid.size(); ++i) {
+    if (isVoid[i]) grid.samples[i] = terrain::kNoDataHeight, ++voidSamples;
+  }
+  const ConditionStats stats = conditionGrid(grid, &coarser, {});
+  EXPECT_EQ(stats.outsideSamples, 0U);
+  EXPECT_EQ(stats.voidSamples, voidSamples);
+  EXPECT_EQ(stats.fill.fromCoarserSamples, voidSamples);
+  for (int64_t r = 0; r < 100; ++r) {
+    for (int64_t c = 0; c < 100; ++c) {
+      if (!isVoid[grid.index(r, c)]) continue;
+      double low = 1e9, high = -1e9;
+      for (int64_t rr = std::max<int64_t>(0, r - 20); rr <= std::min<int64_t>(99, r + 20); ++rr) {
+        for (int64_t cc = std::max<int64_t>(0, c - 20); cc <= std::min<int64_t>(99, c + 20); ++cc) {
+          if (isVoid[grid.index(rr, cc)]) continue;
+          low = std::min(low, double(truth.at(rr, cc))), high = std::max(high, double(truth.at(rr, cc)));
+        }
+      }
+      ASSERT_GE(grid.at(r, c), low - 1) << r << "," << c;
+      ASSERT_LE(grid.at(r, c), high + 1) << r << "," << c;
+    }
+  }
 }
 
 TEST(VoidFill, AVoidWithNoBorderTakesTheCoarserSourceOrStays) {

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <optional>
@@ -506,6 +507,56 @@ TEST(ExportTrees, TerrainRgbPixelsAreTheExactSurfaceAtTheirCentres) {
   EXPECT_EQ(terrainRgbPixel(-20000.0), (std::array<uint8_t, 3>{0, 0, 0}));   // clamped
   EXPECT_EQ(terrainRgbPixel(3776.04), (std::array<uint8_t, 3>{2, 26, 32}));  // 137760
 }
+
+// Every file under `dir` (relative path -> bytes).
+std::map<std::string, std::string> treeFiles(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+    if (!entry.is_regular_file()) continue;
+    std::ifstream in(entry.path(), std::ios::binary);
+    files[fs::relative(entry.path(), dir).string()] = {std::istreambuf_iterator<char>(in), {}};
+  }
+  return files;
+}
+
+TEST(ExportTrees, AWholePyramidsElevationTreeStopsWithItsDataAndIsTheSameOnAnyThreadCount) {
+  // No --levels, no --bounds: the world's zooms only as deep as the pyramid's data there (the
+  // 20′ world to zoom 3, Fuji's and Britain's 3″ and 30″ deeper), the deepest the zoom of the
+  // pyramid's finest level; it says what it will do.
+  const fs::path dir = globe::testing::freshTempDir("export-whole");
+  const std::string pyramid = globe::testing::bundledPyramid().string();
+  const Exit whole = runCommand(tiler() + "--format terrarium -j 2 -o " + (dir / "w").string() +
+                                " " + pyramid);
+  ASSERT_EQ(whole.exitCode, 0) << whole.output;
+  EXPECT_NE(whole.output.find("terrarium tiles to make on 2 threads"), std::string::npos)
+      << whole.output;
+  const auto files = treeFiles(dir / "w");
+  std::map<int, size_t> perZoom;
+  for (const auto& [name, bytes] : files) ++perZoom[std::stoi(name.substr(0, name.find('/')))];
+  ASSERT_FALSE(perZoom.empty());
+  EXPECT_EQ(perZoom.begin()->first, 0);
+  EXPECT_EQ(perZoom.rbegin()->first, 11);  // level 14 (Fuji's 3″) = zoom 11 with 17 vertices
+  EXPECT_EQ(perZoom[0], 1U);
+  EXPECT_EQ(perZoom[3], 64U);  // the whole world at level 6, the 20′ grid's finest
+  EXPECT_LT(perZoom[4], 40U);  // then only where finer data lies
+  EXPECT_LT(files.size(), 400U);
+
+  // One thread and two write the same bytes (heightmap's child masks read the level below as
+  // the workers write).
+  const std::string region = " --bounds 138.7,35.3,138.8,35.4 ";
+  for (const std::string format : {"terrarium", "heightmap"}) {
+    for (const char* j : {"1", "2"}) {
+      const Exit r = runCommand(tiler() + "--format " + format + " -q -j " + j + region + "-o " +
+                                (dir / (format + j) / "t").string() + " " + pyramid);
+      ASSERT_EQ(r.exitCode, 0) << r.output;
+      EXPECT_EQ(r.output.find("to make"), std::string::npos) << "-q says nothing until the end";
+    }
+    const auto oneThread = treeFiles(dir / (format + "1") / "t");
+    EXPECT_GT(oneThread.size(), 10U) << format;
+    EXPECT_TRUE(oneThread == treeFiles(dir / (format + "2") / "t")) << format;
+  }
+}
+
 
 TEST(ExportTrees, BadArgumentsAreClearErrors) {
   const std::string pyramid = globe::testing::bundledPyramid().string();

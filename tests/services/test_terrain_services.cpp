@@ -295,7 +295,9 @@ TEST(TerrainServices, TerrainRgbOverYushanAndTerrariumMatchAnIndependentDecoder)
   const auto top = query(taiwan, summit, site.dir / "cache");
   ASSERT_EQ(top.size(), 1u);
   EXPECT_NEAR(top[0].heightMeters, 3945, 15);
-  EXPECT_EQ(top[0].level, 14);
+  // z13's pixels are level 14's vertex step east-west, 0.92 of it north-south at 23.5°: level 15
+  // is as fine as the pixels there, and the tree goes one finer.
+  EXPECT_EQ(top[0].level, 16);
 
   struct Case {
     std::string service, folder, encoding;
@@ -332,14 +334,80 @@ TEST(TerrainServices, TerrainRgbOverYushanAndTerrariumMatchAnIndependentDecoder)
                                   reference("xyz_elevation_reference.py", arguments, vertices));
     EXPECT_EQ(v.count, 100u);
     EXPECT_LT(v.max, 0.01) << v.worst;
-    // Between them, two interpolations of the same pixels: close where the ground is smooth.
+    // Between them, two interpolations of the same pixels, the vertices a level finer than the
+    // pixels: close everywhere.
     const fs::path anywhere =
         writePoints(site.dir, "a.txt", randomPoints(c.west, c.south, c.east, c.north, 200, 6));
     const Differences a = compare(query(c.service, anywhere, site.dir / "cache"),
                                   reference("xyz_elevation_reference.py", arguments, anywhere));
     EXPECT_EQ(a.count, 200u);
-    EXPECT_LT(a.median, 3.0) << a.worst;
+    EXPECT_LT(a.median, 0.2) << a.worst;  // measured 0.003-0.053 m (0.17-1.7 m a pixel wide)
+    EXPECT_LT(a.max, 8.0) << a.worst;     // 0.7-4.7 m (3.5-59 m)
+    std::printf("[ %s z%u ] anywhere: median %.3f m, 95th %.3f m, max %.3f m\n",
+                c.encoding.c_str(), c.zoom, a.median, a.p95, a.max);
   }
+}
+
+// The points between the most different neighbouring pixels of a Terrarium tile (the Grand
+// Canyon's walls, up to 80 m between pixels), a quarter and halfway between their centres.
+std::vector<Point> cliffPoints(const fs::path& png, uint32_t z, uint32_t x, uint32_t y,
+                               size_t count) {
+  auto image = globe::formats::loadImageRgba(png);
+  EXPECT_TRUE(image) << image.error();
+  if (!image) return {};
+  const int size = image->widthPixels;
+  auto height = [&](int column, int row) {  // Terrarium's published formula
+    const uint8_t* p = &image->pixels[(static_cast<size_t>(row) * size + column) * 4];
+    return p[0] * 256.0 + p[1] + p[2] / 256.0 - 32768.0;
+  };
+  struct Step {
+    double meters;
+    int column, row, dc, dr;
+  };
+  std::vector<Step> steps;
+  for (int row = 1; row + 2 < size; ++row) {
+    for (int column = 1; column + 2 < size; ++column) {
+      steps.push_back(
+          Step{std::fabs(height(column + 1, row) - height(column, row)), column, row, 1, 0});
+      steps.push_back(
+          Step{std::fabs(height(column, row + 1) - height(column, row)), column, row, 0, 1});
+    }
+  }
+  std::partial_sort(steps.begin(), steps.begin() + static_cast<long>(count), steps.end(),
+                    [](const Step& a, const Step& b) { return a.meters > b.meters; });
+  const double n = std::ldexp(1.0, static_cast<int>(z));
+  std::vector<Point> points;
+  for (size_t k = 0; k < count; ++k) {
+    const Step& s = steps[k];
+    const double f = k % 2 == 0 ? 0.5 : 0.25;
+    const double px = x + (s.column + 0.5 + f * s.dc) / size;
+    const double py = y + (s.row + 0.5 + f * s.dr) / size;
+    const double mercator = M_PI * (1 - 2 * py / n);
+    points.push_back({px / n * 360 - 180, std::atan(std::sinh(mercator)) * 180 / M_PI});
+  }
+  return points;
+}
+
+TEST(TerrainServices, TerrariumIsReadToItsPixelsAtCliffs) {
+  Site site;
+  auto server = NginxServer::start({site.root, ""});
+  ASSERT_TRUE(server);
+  const fs::path tile = site.root / "terrarium/12/759/1608.png";
+  ASSERT_TRUE(fs::exists(tile));
+  const fs::path points =
+      writePoints(site.dir, "cliffs.txt", cliffPoints(tile, 12, 759, 1608, 200));
+  const std::string service =
+      "terrarium:" + server->url("/terrarium/{z}/{x}/{y}.png") + "?minzoom=12&maxzoom=12";
+  const Differences d =
+      compare(query(service, points, site.dir / "cache"),
+              reference("xyz_elevation_reference.py",
+                        (site.root / "terrarium").string() + " terrarium 12", points));
+  std::printf("[ terrarium z12 cliffs ] median %.3f m, 95th %.3f m, max %.3f m (%s)\n", d.median,
+              d.p95, d.max, d.worst.c_str());
+  EXPECT_EQ(d.count, 200u);
+  // Measured 1.9 m and 3.7 m; with vertices a pixel wide at the equator 14.2 m and 19.3 m.
+  EXPECT_LT(d.p95, 2.5) << d.worst;
+  EXPECT_LT(d.max, 5.0) << d.worst;
 }
 
 // Cesium's heightmap-1.0 through a layer.json: the two Dutch z16 tiles (one raw, its northern

@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# Tiles per second of `globe-tiler export`, per format and thread count, on the same pyramid and
+# region: the bundled pyramid (tools/bench/tile_bundled.sh) over Fuji's 1° square, every level
+# the pyramid holds there (quantized-mesh and heightmap: levels; terrarium and terrain-rgb: the
+# Web-Mercator zooms down to the pyramid's finest level). Each run into an empty directory;
+# medians of RUNS runs in one run of this script, so the ratios compare like with like. Also
+# checks that -j 2 writes the same bytes as -j 1. Writes docs/performance/export-rates.md.
+#
+#   tools/bench/export_rates.sh BUILD_DIR [RUNS]
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+BUILD=${1:?build directory}
+RUNS=${2:-3}
+cmake --build "$BUILD" -j"$(nproc)" --target globe-tiler >/dev/null
+TILER=$(realpath "$BUILD/apps/globe-tiler/globe-tiler")
+WORK=$(mktemp -d /tmp/globe-export-rates.XXXXXX)
+trap 'rm -rf "$WORK"' EXIT
+"$TILER" -q -o "$WORK/pyramid" data/dem/ETOPO20.DEM data/dem/E138N35_FUJI.DEM >/dev/null
+BOUNDS=138,35,139,36
+FORMATS=(quantized-mesh heightmap terrarium terrain-rgb)
+median() { sort -n | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
+run() {  # format threads dir -> "seconds tiles"
+  rm -rf "$3"; mkdir -p "$(dirname "$3")"
+  local s=$EPOCHREALTIME
+  "$TILER" export -q --format "$1" -j "$2" --bounds "$BOUNDS" -o "$3" "$WORK/pyramid" >"$WORK/out"
+  local tiles
+  tiles=$(sed -n 's/.*: \([0-9]*\) .* tiles written.*/\1/p' "$WORK/out")
+  awk -v a="$s" -v b="$EPOCHREALTIME" -v t="$tiles" 'BEGIN {printf "%.3f %d\n", b - a, t}'
+}
+declare -A TILES SECS
+for _ in $(seq "$RUNS"); do
+  for f in "${FORMATS[@]}"; do
+    for j in 1 2; do
+      read -r s t < <(run "$f" "$j" "$WORK/j$j/$f")
+      echo "$s" >>"$WORK/t-$f-$j"
+      TILES[$f]=$t
+    done
+  done
+done
+same=yes
+for f in "${FORMATS[@]}"; do
+  diff -r -q "$WORK/j1/$f" "$WORK/j2/$f" >/dev/null || same=no
+  for j in 1 2; do SECS[$f-$j]=$(median <"$WORK/t-$f-$j"); done
+done
+QM1=$(awk -v t="${TILES[quantized-mesh]}" -v s="${SECS[quantized-mesh-1]}" 'BEGIN {print t / s}')
+OUT_MD=${OUT_MD:-docs/performance/export-rates.md}
+{
+  echo "# globe-tiler export: tiles per second"
+  echo
+  echo "The bundled ETOPO20 + Fuji pyramid over Fuji's 1° square ($BOUNDS), every level the"
+  echo "pyramid holds there; each run writes a whole tree into an empty directory (wall time of"
+  echo "the process, reading the pyramid included). Medians of $RUNS runs in one run of"
+  echo "\`tools/bench/export_rates.sh\` ($(date -u +%Y-%m-%d), $(nproc) cores,"
+  echo "$(git describe --always --dirty)). -j 2 wrote the same bytes as -j 1: $same."
+  echo
+  echo "| format | tiles | -j 1 s | -j 1 tiles/s | -j 2 s | -j 2 tiles/s | -j 1 vs quantized-mesh -j 1 |"
+  echo "|---|---|---|---|---|---|---|"
+  for f in "${FORMATS[@]}"; do
+    awk -v f="$f" -v t="${TILES[$f]}" -v a="${SECS[$f-1]}" -v b="${SECS[$f-2]}" -v q="$QM1" \
+      'BEGIN {printf "| %s | %d | %.2f | %.0f | %.2f | %.0f | %.2f× |\n", f, t, a, t / a, b, t / b, t / a / q}'
+  done
+} >"$OUT_MD"
+cat "$OUT_MD"
+[ "$same" = yes ]
