@@ -34,10 +34,8 @@ void ExportProgressPrinter::report(uint64_t done, uint64_t total) {
        seconds >= kEstimateSeconds)) {
     estimated_ = true;
     const double expected = seconds * static_cast<double>(total) / static_cast<double>(done);
-    std::fprintf(stderr,
-                 "globe-tiler export: expected %s in all (%llu tiles in %.1f s so far)\n",
-                 formatDuration(expected).c_str(), static_cast<unsigned long long>(done),
-                 seconds);
+    std::fprintf(stderr, "globe-tiler export: expected %s in all (%llu tiles in %.1f s so far)\n",
+                 formatDuration(expected).c_str(), static_cast<unsigned long long>(done), seconds);
   }
   bar_.report({done, total, format_, false});
 }

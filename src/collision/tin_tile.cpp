@@ -66,7 +66,8 @@ void TinTile::prepareTriangles() {
 }
 
 void TinTile::buildCells() {
-  const double wanted = std::ceil(std::sqrt(static_cast<double>(triangleCount()) / kTrianglesPerCell));
+  const double wanted =
+      std::ceil(std::sqrt(static_cast<double>(triangleCount()) / kTrianglesPerCell));
   cells_ = static_cast<uint32_t>(std::clamp(wanted, 1.0, double{kMaxCellsPerSide}));
   const double n = cells_;
   // Each triangle in every cell its bounding box meets, widened a hair so a point on a cell
@@ -92,7 +93,8 @@ void TinTile::buildCells() {
   for (size_t i = 1; i < counts.size(); ++i) counts[i] += counts[i - 1];
   cellStart_ = counts;
   cellTriangles_.resize(counts.back());
-  for (uint32_t t = 0; t < count; ++t) forEachCell(t, [&](uint32_t cell) { cellTriangles_[counts[cell]++] = t; });
+  for (uint32_t t = 0; t < count; ++t)
+    forEachCell(t, [&](uint32_t cell) { cellTriangles_[counts[cell]++] = t; });
 }
 
 bool TinTile::tryTriangle(uint32_t t, double u, double v, TinHeight& out) const {

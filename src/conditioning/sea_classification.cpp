@@ -130,9 +130,8 @@ SeaClassification classifySea(const DemGrid& grid, const CoarserSources* coarser
       ++result.noDataSamples;
     }
   }
-  const std::vector<uint8_t> reachesBorder = coarser == nullptr
-                                                 ? std::vector<uint8_t>(count, 0)
-                                                 : outsideFootprint(grid, noData);
+  const std::vector<uint8_t> reachesBorder =
+      coarser == nullptr ? std::vector<uint8_t>(count, 0) : outsideFootprint(grid, noData);
 
   // Water the coarser sources say is there (no data under coarser water, and the footprint's
   // outside where it is water) and measured samples at or below 0 m that may be sea.

@@ -12,9 +12,9 @@
 #include "compression/gzip_bytes.hpp"
 #include "formats/quantized_mesh.hpp"
 #include "geo/tiling_scheme.hpp"
-#include "surface/pyramid_surface.hpp"
 #include "publish/terrain_layer_writer.hpp"
 #include "publish/tile_workers.hpp"
+#include "surface/pyramid_surface.hpp"
 #include "terrain/block_grid.hpp"
 #include "transport/atomic_file.hpp"
 

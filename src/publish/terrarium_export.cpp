@@ -65,8 +65,8 @@ struct ElevationTile {
 // tile's parent where it has none), so a sparse pyramid makes a sparse tree, not the world at
 // every zoom; past the pyramid's finest level nothing.
 Result<std::set<ElevationTile>> zoomTiles(streaming::TerrainSource& source,
-                                         const ExportRegion& region, uint32_t zoom,
-                                         uint32_t level) {
+                                          const ExportRegion& region, uint32_t zoom,
+                                          uint32_t level) {
   // Shrunk a little so that a tile's shared edge does not pull in the neighbour beyond it.
   constexpr double kInsetDegrees = 1e-9;
   std::set<ElevationTile> tiles;
@@ -83,8 +83,8 @@ Result<std::set<ElevationTile>> zoomTiles(streaming::TerrainSource& source,
                                    -geo::kWebMercatorMaxLatitudeDegrees});
     if (!(east - west > 2 * kInsetDegrees && north - south > 2 * kInsetDegrees)) continue;
     const geo::WebMercatorTileRange range =
-        geo::webMercatorTilesOf(west + kInsetDegrees, south + kInsetDegrees,
-                                east - kInsetDegrees, north - kInsetDegrees, zoom);
+        geo::webMercatorTilesOf(west + kInsetDegrees, south + kInsetDegrees, east - kInsetDegrees,
+                                north - kInsetDegrees, zoom);
     for (uint32_t y = range.firstY; y <= range.lastY; ++y) {
       for (uint32_t x = range.firstX; x <= range.lastX; ++x) tiles.insert({zoom, x, y, level});
     }
@@ -102,7 +102,8 @@ Result<std::vector<std::byte>> makeElevationTile(surface::PyramidSurface& surfac
   for (uint32_t r = 0; r < kTileSize; ++r) {
     const double lat = geo::webMercatorLatitudeRadiansOfRow(t.y + (r + 0.5) / kTileSize, t.zoom);
     for (uint32_t c = 0; c < kTileSize; ++c) {
-      const double lon = ((t.x + (c + 0.5) / kTileSize) / tiles * 360 - 180) * std::numbers::pi / 180;
+      const double lon =
+          ((t.x + (c + 0.5) / kTileSize) / tiles * 360 - 180) * std::numbers::pi / 180;
       auto h = surface.heightMeters(lon, lat, t.level);
       if (!h) return Error{h.error()};
       const auto pixel = encode(*h);
@@ -135,8 +136,7 @@ Result<ExportReport> exportElevationPngs(streaming::TerrainSource& source,
       tiles.size(), work.threads,
       [&](unsigned worker, size_t i, ExportReport& counts) {
         const ElevationTile& t = tiles[i];
-        const std::filesystem::path path = outDir / std::to_string(t.zoom) /
-                                           std::to_string(t.x) /
+        const std::filesystem::path path = outDir / std::to_string(t.zoom) / std::to_string(t.x) /
                                            (std::to_string(t.y) + (webp ? ".webp" : ".png"));
         return writeTileOnce(
             path, [&] { return makeElevationTile(*surfaces[worker], t, encode, webp); }, counts);

@@ -36,9 +36,9 @@ constexpr uint32_t kOversampleLevels = 1;
 // The levels past the equator's that a tile at these latitudes (radians) needs for its vertex
 // step to be no wider than the finest pixels' north-south size there.
 uint32_t polewardLevels(double southRadians, double northRadians) {
-  const double nearestEquator =
-      southRadians <= 0 && northRadians >= 0 ? 0.0
-                                             : std::min(std::fabs(southRadians), std::fabs(northRadians));
+  const double nearestEquator = southRadians <= 0 && northRadians >= 0
+                                    ? 0.0
+                                    : std::min(std::fabs(southRadians), std::fabs(northRadians));
   const double levels = std::log2(1 / std::cos(nearestEquator));
   return static_cast<uint32_t>(std::clamp(std::ceil(levels - 1e-9), 0.0, double{kPolewardLevels}));
 }

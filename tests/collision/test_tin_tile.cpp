@@ -77,9 +77,9 @@ Truth bruteForce(const Loaded& t, double u, double v) {
 TEST(TinTile, QotcdIsThePapersRuleAndNeverBelowTheSurfaceOnRealTins) {
   const geo::GlobeRectangle rect = geo::GlobeRectangle::fromDegrees(4.2, 52.0, 4.21, 52.01);
   size_t checked = 0, interior = 0;
-  for (const char* file : {"denhaag-ahn-octnormals/15/33550/25865.terrain",
-                           "denhaag-ahn-octnormals/15/33562/25866.terrain",
-                           "texel-ahn4/15/33634/26050.terrain"}) {
+  for (const char* file :
+       {"denhaag-ahn-octnormals/15/33550/25865.terrain",
+        "denhaag-ahn-octnormals/15/33562/25866.terrain", "texel-ahn4/15/33634/26050.terrain"}) {
     SCOPED_TRACE(file);
     if (!fs::exists(kInterop / file)) {
       ADD_FAILURE() << "missing " << file;

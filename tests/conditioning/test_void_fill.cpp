@@ -197,7 +197,8 @@ TEST(VoidFill, AVoidBesideASummitCutByTheGridsEdgeMeetsItsRim) {
       for (int64_t rr = std::max<int64_t>(0, r - 20); rr <= std::min<int64_t>(99, r + 20); ++rr) {
         for (int64_t cc = std::max<int64_t>(0, c - 20); cc <= std::min<int64_t>(99, c + 20); ++cc) {
           if (isVoid[grid.index(rr, cc)]) continue;
-          low = std::min(low, double(truth.at(rr, cc))), high = std::max(high, double(truth.at(rr, cc)));
+          low = std::min(low, double(truth.at(rr, cc))),
+          high = std::max(high, double(truth.at(rr, cc)));
         }
       }
       ASSERT_GE(grid.at(r, c), low - 1) << r << "," << c;

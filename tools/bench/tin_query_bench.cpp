@@ -18,9 +18,9 @@
 #include "collision/tin_tile.hpp"
 #include "compression/gzip_bytes.hpp"
 #include "formats/quantized_mesh.hpp"
-#include "tests/support/build_paths.hpp"
 #include "geo/tiling_scheme.hpp"
 #include "terrain/rendering_tile_array.hpp"
+#include "tests/support/build_paths.hpp"
 
 namespace {
 
@@ -45,44 +45,45 @@ struct Fixture {
 };
 
 Fixture makeFixture(const Source& source) {
-    Fixture made;
-    const geo::TileId kTile = source.tile;
-    const std::filesystem::path path = std::filesystem::path(GLOBE_SOURCE_DIR) /
-        "tests/data/interop/quantized-mesh" / source.path;
-    std::ifstream in(path, std::ios::binary);
-    const std::vector<char> raw{std::istreambuf_iterator<char>(in), {}};
-    auto inflated = compression::gunzipIfNeeded(std::as_bytes(std::span(raw.data(), raw.size())),
-                                                path.string(), size_t{64} << 20);
-    auto mesh = formats::decodeQuantizedMesh(*inflated, path.string());
-    if (!mesh) std::abort();
-    std::vector<collision::TinVertex> vertices;
-    for (size_t i = 0; i < mesh->vertexCount(); ++i) {
-      vertices.push_back({mesh->u[i] / 32767.0, mesh->v[i] / 32767.0, mesh->heightMeters[i]});
+  Fixture made;
+  const geo::TileId kTile = source.tile;
+  const std::filesystem::path path =
+      std::filesystem::path(GLOBE_SOURCE_DIR) / "tests/data/interop/quantized-mesh" / source.path;
+  std::ifstream in(path, std::ios::binary);
+  const std::vector<char> raw{std::istreambuf_iterator<char>(in), {}};
+  auto inflated = compression::gunzipIfNeeded(std::as_bytes(std::span(raw.data(), raw.size())),
+                                              path.string(), size_t{64} << 20);
+  auto mesh = formats::decodeQuantizedMesh(*inflated, path.string());
+  if (!mesh) std::abort();
+  std::vector<collision::TinVertex> vertices;
+  for (size_t i = 0; i < mesh->vertexCount(); ++i) {
+    vertices.push_back({mesh->u[i] / 32767.0, mesh->v[i] / 32767.0, mesh->heightMeters[i]});
+  }
+  const geo::GlobeRectangle rect = geo::GeographicTilingScheme::tileRectangle(kTile);
+  auto tin = collision::TinTile::build(rect, std::move(vertices), mesh->triangles, path.string());
+  if (!tin) std::abort();
+  made.tin = std::make_unique<collision::TinTile>(std::move(*tin));
+  made.triangles = made.tin->triangleCount();
+  constexpr uint32_t kSide = 65;
+  made.block = std::make_unique<terrain::HeightBlock>();
+  made.block->verticesPerSide = kSide;
+  for (uint32_t row = 0; row < kSide; ++row) {
+    for (uint32_t column = 0; column < kSide; ++column) {
+      const double lon = rect.westRadians + column * (rect.eastRadians - rect.westRadians) / 64;
+      const double lat = rect.northRadians - row * (rect.northRadians - rect.southRadians) / 64;
+      const auto h = made.tin->heightAt(lon, lat);
+      made.block->heights.push_back(static_cast<int16_t>(std::lround(h.exactMeters)));
     }
-    const geo::GlobeRectangle rect = geo::GeographicTilingScheme::tileRectangle(kTile);
-    auto tin = collision::TinTile::build(rect, std::move(vertices), mesh->triangles, path.string());
-    if (!tin) std::abort();
-    made.tin = std::make_unique<collision::TinTile>(std::move(*tin));
-    made.triangles = made.tin->triangleCount();
-    constexpr uint32_t kSide = 65;
-    made.block = std::make_unique<terrain::HeightBlock>();
-    made.block->verticesPerSide = kSide;
-    for (uint32_t row = 0; row < kSide; ++row) {
-      for (uint32_t column = 0; column < kSide; ++column) {
-        const double lon = rect.westRadians + column * (rect.eastRadians - rect.westRadians) / 64;
-        const double lat = rect.northRadians - row * (rect.northRadians - rect.southRadians) / 64;
-        const auto h = made.tin->heightAt(lon, lat);
-        made.block->heights.push_back(static_cast<int16_t>(std::lround(h.exactMeters)));
-      }
-    }
-    made.grid = terrain::makeArrayTile(kTile, *made.block);
-    std::mt19937 random(11);
-    std::uniform_real_distribution<double> u(0, 1);
-    for (int i = 0; i < 4096; ++i) {
-      made.points.emplace_back(rect.westRadians + u(random) * (rect.eastRadians - rect.westRadians),
-                               rect.southRadians + u(random) * (rect.northRadians - rect.southRadians));
-    }
-    return made;
+  }
+  made.grid = terrain::makeArrayTile(kTile, *made.block);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int i = 0; i < 4096; ++i) {
+    made.points.emplace_back(
+        rect.westRadians + u(random) * (rect.eastRadians - rect.westRadians),
+        rect.southRadians + u(random) * (rect.northRadians - rect.southRadians));
+  }
+  return made;
 }
 
 const Fixture& fixture(int64_t index) {
