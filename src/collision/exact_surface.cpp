@@ -13,6 +13,7 @@
 #include "geo/ecef.hpp"
 #include "terrain/block_grid.hpp"
 #include "terrain/tile_mesh.hpp"
+#include "terrain/tin_tile.hpp"
 
 namespace globe::collision {
 namespace {
@@ -215,15 +216,49 @@ SurfaceSample poleSurface(const terrain::HeightBlock& block, const GridLocation&
   return {highest, SurfaceTriangle::Pole, at.poleRow == 0 ? 0 : cells - 1, 0};
 }
 
+// A TIN tile's drawn triangle under the nadir (terrain/tin_tile.hpp finds it in O(1)) and its
+// plane's height along the normal. Its vertices are where the mesh draws them, so the height is
+// the drawn surface's (as the grid's); a triangle (nearly) parallel to the normal gives its
+// highest vertex. nullopt when no triangle lies under the point.
+std::optional<SurfaceSample> tinSurfaceAlongNormal(const ArrayTile& tile,
+                                                   const geo::Ellipsoid& ellipsoid,
+                                                   double longitudeRadians,
+                                                   double latitudeRadians,
+                                                   const glm::dvec3& surface,
+                                                   const glm::dvec3& normal) {
+  const terrain::TinTile& tin = *tile.block->tin;
+  const terrain::TinHeight at = tin.heightAt(longitudeRadians, latitudeRadians);
+  if (!at.found) return std::nullopt;
+  std::array<glm::dvec3, 3> p{};
+  for (size_t k = 0; k < 3; ++k) {
+    p[k] = tin.vertexEcefMeters(ellipsoid, tin.triangles()[3 * at.triangle + k]) - surface;
+  }
+  const glm::dvec3 planeNormal = glm::cross(p[1] - p[0], p[2] - p[0]);
+  const double lengthSquared = glm::dot(planeNormal, planeNormal);
+  const double along = glm::dot(planeNormal, normal);
+  if (!(lengthSquared > 0.0) ||
+      !(along * along > kMinimumNormalCosine * kMinimumNormalCosine * lengthSquared)) {
+    return SurfaceSample{at.conservativeMeters, SurfaceTriangle::Tin, at.triangle, 0};
+  }
+  return SurfaceSample{glm::dot(planeNormal, p[0]) / along, SurfaceTriangle::Tin, at.triangle, 0};
+}
+
 }  // namespace
 
 SurfaceSample exactTileSurfaceHeight(const ArrayTile& tile, const geo::Ellipsoid& ellipsoid,
                                      double longitudeRadians, double latitudeRadians) {
   if (!hasReadableBlock(tile)) return {};
-  const GridLocation at = locateInGrid(tile, longitudeRadians, latitudeRadians);
-  if (at.atPole) return poleSurface(*tile.block, at);
   // One set of sines and cosines for both (bit for bit cartographicToEcef's and
   // geodeticSurfaceNormal's).
+  if (tile.block->tin) {
+    const SurfacePoint nadir = surfacePointAndNormal(ellipsoid, longitudeRadians, latitudeRadians);
+    if (auto hit = tinSurfaceAlongNormal(tile, ellipsoid, longitudeRadians, latitudeRadians,
+                                         nadir.pointEcefMeters, nadir.normal)) {
+      return *hit;
+    }
+  }
+  const GridLocation at = locateInGrid(tile, longitudeRadians, latitudeRadians);
+  if (at.atPole) return poleSurface(*tile.block, at);
   const SurfacePoint nadir = surfacePointAndNormal(ellipsoid, longitudeRadians, latitudeRadians);
   return surfaceAlongNormal(tile, ellipsoid, at, nadir.pointEcefMeters, nadir.normal);
 }
@@ -258,12 +293,17 @@ ExactSurfaceResult exactSurfaceTest(const RenderingTileArray& array,
       makeQueryPoint(camera.longitudeRadians, camera.latitudeRadians);
   const ArrayTile* tile = point ? array.lookupIndexed(*point).tile : nullptr;
   if (tile != nullptr && hasReadableBlock(*tile)) {
+    const glm::dvec3 nadir = cameraEcefMeters - camera.heightMeters * frame->normal;
+    std::optional<SurfaceSample> tin;
+    if (tile->block->tin) {
+      tin = tinSurfaceAlongNormal(*tile, ellipsoid, point->longitudeRadians,
+                                  point->latitudeRadians, nadir, frame->normal);
+    }
     const GridLocation at = locateInGrid(*tile, point->longitudeRadians, point->latitudeRadians);
     const SurfaceSample sample =
-        at.atPole ? poleSurface(*tile->block, at)
-                  : surfaceAlongNormal(*tile, ellipsoid, at,
-                                       cameraEcefMeters - camera.heightMeters * frame->normal,
-                                       frame->normal);
+        tin         ? *tin
+        : at.atPole ? poleSurface(*tile->block, at)
+                    : surfaceAlongNormal(*tile, ellipsoid, at, nadir, frame->normal);
     result.found = true;
     result.surfaceHeightMeters = sample.heightMeters;
     result.tile = tile->id;

@@ -20,6 +20,7 @@ enum class SurfaceTriangle {
   NorthEast,    // {(i,j), (i+1,j+1), (i,j+1)} of quad (i, j)
   Pole,         // on a pole row: the highest of its vertices (all on the polar axis)
   QuadMaximum,  // both triangles of the quad degenerate: the highest of its four vertices
+  Tin,          // a TIN tile's triangle (quadRow holds its index)
 };
 
 struct SurfaceSample {
@@ -46,6 +47,8 @@ struct SurfaceSample {
 //   border triangle's plane is extended (the ray falls between this tile and its neighbour).
 // - A degenerate triangle (zero area, or a plane within ~1e-6 rad of containing n), such as the
 //   collapsed half of a pole quad, is replaced by the other half of its quad.
+// - A TIN tile (the block's `tin`): its triangle under the point (terrain/tin_tile.hpp), the plane
+//   of its vertices as the mesh draws them.
 // The point must be contained in the tile (canonical longitude, tile_containment.hpp). A tile
 // without a readable block (hasReadableBlock) gives {0, None}.
 SurfaceSample exactTileSurfaceHeight(const ArrayTile& tile, const geo::Ellipsoid& ellipsoid,

@@ -2,6 +2,8 @@
 // Detection 5.1.5) in eye-relative coordinates, so nothing is lost to the ~6.4e6 m translation.
 #include "collision/lateral_clearance.hpp"
 
+#include "terrain/tin_tile.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -96,6 +98,31 @@ std::optional<NearestTriangle> nearestDrawnTriangle(const RenderingTileArray& ar
     const double east = std::min(nearLongitude(lon, centre) + dLon, r.eastRadians);
     const double s = std::max(south, r.southRadians), n = std::min(north, r.northRadians);
     if (!(west <= east && s <= n)) continue;
+    const auto consider = [&](const std::array<glm::dvec3, 3>& t) {
+      ++nearest.trianglesTested;
+      const glm::dvec3 closest = closestToOrigin(t[0], t[1], t[2]);
+      const double distance = glm::length(closest);
+      if (!(distance < nearest.distanceMeters)) return;
+      nearest.distanceMeters = distance;
+      nearest.awayEcef = distance > 0 ? -closest / distance : glm::dvec3(0.0);
+      found = true;
+    };
+    if (tile->block->tin) {  // its own triangles near the footprint (terrain/tin_tile.hpp)
+      const terrain::TinTile& tin = *tile->block->tin;
+      const double width = r.eastRadians - r.westRadians, height = r.northRadians - r.southRadians;
+      tin.forEachTriangleNear((west - r.westRadians) / width, (s - r.southRadians) / height,
+                              (east - r.westRadians) / width, (n - r.southRadians) / height,
+                              [&](uint32_t t) {
+                                std::array<glm::dvec3, 3> p{};
+                                for (size_t k = 0; k < 3; ++k) {
+                                  p[k] = tin.vertexEcefMeters(ellipsoid,
+                                                              tin.triangles()[3 * t + k]) -
+                                         eyeEcefMeters;
+                                }
+                                consider(p);
+                              });
+      continue;
+    }
     const GridLocation northWest = locateInGrid(*tile, west, n);
     const GridLocation southEast = locateInGrid(*tile, east, s);
     const terrain::HeightBlock& block = *tile->block;
@@ -115,16 +142,8 @@ std::optional<NearestTriangle> nearestDrawnTriangle(const RenderingTileArray& ar
         // (i+1,j+1)} and NE {(i,j), (i+1,j+1), (i,j+1)}.
         const glm::dvec3 nw = vertex(i, j), sw = vertex(i + 1, j), se = vertex(i + 1, j + 1),
                          ne = vertex(i, j + 1);
-        for (const std::array<glm::dvec3, 3>& t :
-             {std::array<glm::dvec3, 3>{nw, sw, se}, std::array<glm::dvec3, 3>{nw, se, ne}}) {
-          ++nearest.trianglesTested;
-          const glm::dvec3 closest = closestToOrigin(t[0], t[1], t[2]);
-          const double distance = glm::length(closest);
-          if (!(distance < nearest.distanceMeters)) continue;
-          nearest.distanceMeters = distance;
-          nearest.awayEcef = distance > 0 ? -closest / distance : glm::dvec3(0.0);
-          found = true;
-        }
+        consider({nw, sw, se});
+        consider({nw, se, ne});
       }
     }
   }

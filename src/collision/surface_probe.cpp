@@ -1,6 +1,8 @@
 // QOTCD broad phase, exact (or QOTCD) narrow phase, triangle normals and vertex spacing.
 #include "collision/surface_probe.hpp"
 
+#include "terrain/tin_tile.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -77,6 +79,21 @@ glm::dvec3 surfaceNormalAt(const RenderingTileArray& array, const geo::Ellipsoid
   if (tile == nullptr) return up;
   const SurfaceSample sample =
       exactTileSurfaceHeight(*tile, ellipsoid, point->longitudeRadians, point->latitudeRadians);
+  auto facingUp = [&up](const std::array<glm::dvec3, 3>& p) {
+    const glm::dvec3 normal = glm::cross(p[1] - p[0], p[2] - p[0]);
+    const double length = glm::length(normal);
+    if (!(length > 0.0) || !std::isfinite(length)) return up;
+    const glm::dvec3 unit = normal / length;
+    return glm::dot(unit, up) < 0.0 ? -unit : unit;
+  };
+  if (sample.triangle == SurfaceTriangle::Tin) {
+    const terrain::TinTile& tin = *tile->block->tin;
+    std::array<glm::dvec3, 3> p{};
+    for (size_t k = 0; k < 3; ++k) {
+      p[k] = tin.vertexEcefMeters(ellipsoid, tin.triangles()[3 * sample.quadRow + k]);
+    }
+    return facingUp(p);
+  }
   if (sample.triangle != SurfaceTriangle::SouthWest &&
       sample.triangle != SurfaceTriangle::NorthEast) {
     return up;
@@ -94,11 +111,7 @@ glm::dvec3 surfaceNormalAt(const RenderingTileArray& array, const geo::Ellipsoid
     p[k] = terrain::tileVertexEcefMeters(ellipsoid, grid, row, column,
                                          tile->block->surfaceHeightMetersAt(row, column));
   }
-  const glm::dvec3 normal = glm::cross(p[1] - p[0], p[2] - p[0]);
-  const double length = glm::length(normal);
-  if (!(length > 0.0) || !std::isfinite(length)) return up;
-  const glm::dvec3 unit = normal / length;
-  return glm::dot(unit, up) < 0.0 ? -unit : unit;
+  return facingUp(p);
 }
 
 double vertexSpacingMeters(const ArrayTile& tile, const geo::Ellipsoid& ellipsoid) {

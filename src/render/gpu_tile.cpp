@@ -68,7 +68,17 @@ GpuTile uploadGpuTile(const geo::TileId& tile, const terrain::TileMesh& mesh, GL
   floatAttribute(kAttributeSea, 1, terrain::kTileVertexSeaOffset);
   floatAttribute(kAttributeUv, 2, terrain::kTileVertexUvOffset);
   floatAttribute(kAttributeCoarseNormal, 3, terrain::kTileVertexCoarseNormalOffset);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer);  // recorded in the vertex array
+  if (!mesh.indices.empty()) {
+    gpu.indexBuffer = makeGlBuffer();
+    gpu.indexCount = static_cast<uint32_t>(mesh.indices.size());
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.indexBuffer.get());  // recorded in the vertex array
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+                 static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(uint32_t)),
+                 mesh.indices.data(), GL_STATIC_DRAW);
+    gpu.vertexBytes += mesh.indices.size() * sizeof(uint32_t);
+  } else {
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer);  // recorded in the vertex array
+  }
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   return gpu;
@@ -76,7 +86,7 @@ GpuTile uploadGpuTile(const geo::TileId& tile, const terrain::TileMesh& mesh, GL
 
 bool setGpuTileSunlight(GpuTile& gpu, std::span<const float> gridVisibility) {
   const uint32_t n = gpu.verticesPerSide;
-  if (gridVisibility.size() != static_cast<size_t>(n) * n) return false;
+  if (gridVisibility.size() != static_cast<size_t>(n) * n || gpu.indexCount > 0) return false;
   std::vector<float> values(terrain::tileVertexCount(n, gpu.hasSkirts), 1.0f);
   std::copy(gridVisibility.begin(), gridVisibility.end(), values.begin());
   for (uint32_t edge = 0; gpu.hasSkirts && edge < 4; ++edge) {

@@ -40,14 +40,19 @@ struct GpuTile {
   GlObject sunlightBuffer;  // one float a vertex (setGpuTileSunlight); none: attribute 6 is 1
   uint32_t verticesPerSide = 0;
   bool hasSkirts = false;
+  // A TIN tile's own triangles (terrain/tin_mesh.hpp), skirts included, drawn whole; none (0
+  // indices): the grid's shared buffer.
+  GlObject indexBuffer;
+  uint32_t indexCount = 0;
 };
 
-// Uploads the mesh's vertices (GL_STATIC_DRAW) and binds `indexBuffer` into the vertex array.
+// Uploads the mesh's vertices (GL_STATIC_DRAW) and binds `indexBuffer` into the vertex array, or
+// the mesh's own indices (a TIN tile's) uploaded beside them.
 GpuTile uploadGpuTile(const geo::TileId& tile, const terrain::TileMesh& mesh, GLuint indexBuffer);
 
 // Uploads the Sun's visibility at each grid vertex (row-major N×N, collision/sun_visibility.hpp)
 // as attribute kAttributeSunlight, skirt vertices taking their edge vertex's; false when the
-// count is not N².
+// count is not N² or the tile is a TIN (its vertices are not the grid's: no shadows on it).
 bool setGpuTileSunlight(GpuTile& gpu, std::span<const float> gridVisibility);
 
 }  // namespace globe::render

@@ -423,7 +423,15 @@ Result<void> TerrainRenderer::uploadTile(const geo::TileId& tile, const terrain:
   const size_t expected =
       size_t{terrain::tileVertexCount(options.verticesPerSide, options.skirts)} *
       terrain::kTileVertexFloats;
-  if (mesh.vertices.size() != expected) {
+  const size_t vertexCount = mesh.vertices.size() / terrain::kTileVertexFloats;
+  const bool ownIndices =
+      !mesh.indices.empty() && std::all_of(mesh.indices.begin(), mesh.indices.end(),
+                                           [&](uint32_t k) { return k < vertexCount; });
+  if (!mesh.indices.empty() && !ownIndices) {
+    return makeError("terrain renderer: " + geo::tileName(tile) + ": a TIN index past its " +
+                     std::to_string(vertexCount) + " vertices");
+  }
+  if (!ownIndices && mesh.vertices.size() != expected) {
     return makeError("terrain renderer: " + geo::tileName(tile) + ": mesh has " +
                      std::to_string(mesh.vertices.size()) + " floats, expected " +
                      std::to_string(expected));
@@ -714,6 +722,14 @@ FrameStats TerrainRenderer::draw(const terrain::RenderView& view,
                   coarser(terrain::TileEdge::East));
       if (currentLayers > 0 || currentMask) impl.bindDrapes(item.drapes, u);
       glBindVertexArray(gpu.vertexArray.get());
+      if (gpu.indexCount > 0) {  // a TIN: its own triangles and skirts
+        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(gpu.indexCount), GL_UNSIGNED_INT,
+                       nullptr);
+        stats.triangles += gpu.indexCount / 3;
+        ++stats.drawCalls;
+        ++stats.tilesDrawn;
+        continue;
+      }
       // The grid and only the skirts this tile needs (terrain/skirt_edges.hpp), in one call.
       std::array<terrain::IndexRange, 3> ranges;
       const uint32_t rangeCount =

@@ -77,7 +77,8 @@ TileMorphs::Choice TileMorphs::blockFor(const geo::TileId& tile,
   std::optional<Choice> choice;
   if (auto it = morphs_.find(tile); it != morphs_.end()) {
     choice = advance(tile, it->second, loaded, drawn);
-  } else if (frames_ > 1 && nearCamera && !previous_.contains(tile)) {
+  } else if (frames_ > 1 && nearCamera && !previous_.contains(tile) && !loaded->tin) {
+    // (A TIN tile is drawn as its producer made it: its triangles are not its parent's grid.)
     if (auto from = previousSurface(tile); from && from->heights.size() == loaded->heights.size()) {
       choice = advance(tile, morphs_[tile] = Morph{std::move(from), 0, frame_}, loaded, drawn);
     }

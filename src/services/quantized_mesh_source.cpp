@@ -30,6 +30,29 @@ bool covers(const std::vector<formats::TileRange>& ranges, uint32_t x, uint32_t 
   return false;
 }
 
+// The tile's TIN as the producer made it, its triangle index built here on the loader's thread.
+Result<std::shared_ptr<const terrain::TinTile>> tinOf(const formats::QuantizedMesh& mesh,
+                                                      const geo::TileId& tile,
+                                                      const std::string& url) {
+  std::vector<terrain::TinVertex> vertices(mesh.vertexCount());
+  constexpr double q = formats::kQuantizedMax;
+  for (size_t i = 0; i < vertices.size(); ++i) {
+    vertices[i] = {mesh.u[i] / q, mesh.v[i] / q, mesh.heightMeters[i]};
+  }
+  auto built = terrain::TinTile::build(geo::GeographicTilingScheme::tileRectangle(tile),
+                                       std::move(vertices), mesh.triangles, url);
+  if (!built) return Error{built.error()};
+  if (mesh.normals.size() == mesh.vertexCount()) {
+    std::vector<glm::vec3> normals(mesh.normals.size());
+    for (size_t i = 0; i < normals.size(); ++i) {
+      normals[i] = glm::vec3(mesh.normals[i][0], mesh.normals[i][1], mesh.normals[i][2]);
+    }
+    built->setNormals(std::move(normals));
+  }
+  return std::shared_ptr<const terrain::TinTile>(
+      std::make_shared<terrain::TinTile>(std::move(*built)));
+}
+
 class QuantizedMeshSource final : public ServiceTerrainSource {
  public:
   QuantizedMeshSource(const ServiceDescription& d, terrain::SeaSurface sea,
@@ -94,7 +117,11 @@ class QuantizedMeshSource final : public ServiceTerrainSource {
                        "Web Mercator?)");
     }
     if (!mesh->metadataJson.empty()) takeAvailability(tile, mesh->metadataJson);
-    return std::optional<ServiceSamples>(sampleTin(*mesh));
+    ServiceSamples samples = sampleTin(*mesh);
+    auto tin = tinOf(*mesh, tile, url);
+    if (!tin) return Error{tin.error()};
+    samples.tin = std::move(*tin);
+    return std::optional<ServiceSamples>(std::move(samples));
   }
 
  private:

@@ -167,6 +167,7 @@ Result<terrain::HeightBlock> ServiceTerrainSource::loadBlock(const geo::TileId& 
   }
   if (samples) {
     block = assemble(*samples);
+    block.tin = samples->tin;
   } else {
     std::optional<terrain::HeightBlock> parent;
     if (tile.level > 0) {

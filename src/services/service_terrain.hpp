@@ -21,6 +21,7 @@
 #include "geo/ellipsoid.hpp"
 #include "services/recent_items.hpp"
 #include "streaming/terrain_source.hpp"
+#include "terrain/tin_tile.hpp"
 
 namespace globe::services {
 
@@ -35,6 +36,9 @@ struct ServiceSamples {
   std::vector<double> heightMeters;
   std::vector<uint8_t> water;      // 1 where water (sea at 0 m over heightMeters), or empty
   std::vector<glm::vec3> normals;  // the block's N² vertices (ECEF, unit), or empty
+  // The tile's own triangles when the service gives a TIN (quantized-mesh): the block draws
+  // and collides with them (terrain/height_block.hpp).
+  std::shared_ptr<const terrain::TinTile> tin;
   static size_t side() { return kServiceVerticesPerSide + 2 * terrain::kApronWidth; }
   static size_t count() { return side() * side(); }
 };

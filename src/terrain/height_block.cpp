@@ -1,5 +1,7 @@
 #include "terrain/height_block.hpp"
 
+#include "terrain/tin_tile.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -28,6 +30,15 @@ HeightRange surfaceHeightRange(const HeightBlock& block) {
   for (double meters : block.exactSurfaceMeters) {
     range.minimumMeters = std::min(range.minimumMeters, static_cast<int16_t>(std::floor(meters)));
     range.maximumMeters = std::max(range.maximumMeters, static_cast<int16_t>(std::ceil(meters)));
+  }
+  if (block.tin) {  // the drawn surface: its vertices, widened to whole metres
+    auto clamp16 = [](double m) {
+      return static_cast<int16_t>(std::clamp(m, double{INT16_MIN}, double{INT16_MAX}));
+    };
+    range.minimumMeters =
+        std::min(range.minimumMeters, clamp16(std::floor(block.tin->minimumHeightMeters())));
+    range.maximumMeters =
+        std::max(range.maximumMeters, clamp16(std::ceil(block.tin->maximumHeightMeters())));
   }
   if (block.heights.empty()) range = HeightRange{};
   return range;

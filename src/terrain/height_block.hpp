@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -87,6 +88,8 @@ constexpr size_t apronIndex(int row, int column, uint32_t verticesPerSide) {
   return static_cast<size_t>(2 * w * span + n * w + row * w + column - n);
 }
 
+class TinTile;  // tin_tile.hpp
+
 // Vertex (row, column): row 0 is the north edge, column 0 the west edge.
 struct HeightBlock {
   uint32_t verticesPerSide = 0;
@@ -106,6 +109,13 @@ struct HeightBlock {
   std::vector<glm::vec3> shadingNormals{};
   std::vector<float> colorMeters{};
   std::vector<float> waterFraction{};
+  // A tile its source gives as a TIN (quantized-mesh): its triangles as the producer simplified
+  // them, with their triangle index. Then the TIN is the surface: the mesh draws its triangles
+  // (tile_mesh.hpp) and collision reads them (collision/qotcd_height.hpp, exact_surface.hpp);
+  // the grid above holds the TIN sampled at its vertices, for what needs a grid (children made
+  // from this tile, normals at its edges, sunlight). Built where the tile loads; shared, never
+  // changed.
+  std::shared_ptr<const TinTile> tin{};
 
   int16_t at(uint32_t row, uint32_t column) const {
     return heights[static_cast<size_t>(row) * verticesPerSide + column];

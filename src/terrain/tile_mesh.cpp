@@ -8,6 +8,8 @@
 #include <glm/geometric.hpp>
 
 #include "geo/ecef.hpp"
+#include "terrain/mesh_vertex.hpp"
+#include "terrain/tin_mesh.hpp"
 
 namespace globe::terrain {
 namespace {
@@ -30,15 +32,7 @@ glm::dvec3 ellipsoidNormal(const geo::Ellipsoid& ellipsoid, double longitudeDegr
       ellipsoid, geo::Cartographic::fromDegrees(longitudeDegrees, latitudeDegrees, 0.0));
 }
 
-struct Vertex {
-  glm::dvec3 positionEcef;
-  glm::dvec3 normal;
-  glm::dvec3 coarseNormal;   // the next coarser level's normal here (edge vertices; else normal)
-  double heightMeters;       // where the vertex is drawn: the block's surface height
-  double colorHeightMeters;  // what its colour shows: the land height, or the sea floor
-  float sea;
-  float u, v;
-};
+using Vertex = MeshVertex;
 
 }  // namespace
 
@@ -83,6 +77,7 @@ glm::dvec3 drawnVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGri
 
 TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
                        const geo::Ellipsoid& ellipsoid, double skirtDepthMeters) {
+  if (block.tin) return buildTinMesh(tile, block, ellipsoid, skirtDepthMeters);
   const uint32_t n = block.verticesPerSide;
   TileMesh mesh;
   mesh.verticesPerSide = n;
@@ -195,6 +190,11 @@ TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
     }
   }
 
+  packMeshVertices(vertices, tile.level, mesh);
+  return mesh;
+}
+
+void packMeshVertices(const std::vector<MeshVertex>& vertices, uint32_t level, TileMesh& mesh) {
   glm::dvec3 lo(std::numeric_limits<double>::max());
   glm::dvec3 hi(std::numeric_limits<double>::lowest());
   for (const Vertex& vertex : vertices) {
@@ -202,7 +202,7 @@ TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
     hi = glm::max(hi, vertex.positionEcef);
   }
   // On the quantum too: the float offsets are then exact (tile_mesh.hpp).
-  mesh.centerEcefMeters = quantizedEcefMeters(0.5 * (lo + hi), originQuantumMeters(tile.level));
+  mesh.centerEcefMeters = quantizedEcefMeters(0.5 * (lo + hi), originQuantumMeters(level));
 
   mesh.vertices.reserve(vertices.size() * kTileVertexFloats);
   for (const Vertex& vertex : vertices) {
@@ -215,7 +215,6 @@ TileMesh buildTileMesh(const geo::TileId& tile, const HeightBlock& block,
     mesh.vertices.push_back(vertex.v);
     for (int c = 0; c < 3; ++c) mesh.vertices.push_back(static_cast<float>(vertex.coarseNormal[c]));
   }
-  return mesh;
 }
 
 double recommendedSkirtDepthMeters(uint32_t level, uint32_t verticesPerSide,

@@ -92,6 +92,9 @@ struct TileMesh {
   uint32_t verticesPerSide = 0;
   bool hasSkirts = false;
   EdgeHeightHashes edgeHeightHashes{};  // of the block (edge_heights.hpp): where a skirt is needed
+  // A TIN tile's own triangles (tin_mesh.hpp), skirts included and always drawn; empty for a
+  // grid, which draws the shared buildGridIndices.
+  std::vector<uint32_t> indices;
 
   uint32_t vertexCount() const {
     return static_cast<uint32_t>(vertices.size() / kTileVertexFloats);
@@ -116,7 +119,7 @@ glm::dvec3 levelVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGri
 glm::dvec3 drawnVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGrid& grid,
                                  uint32_t row, uint32_t column, double heightMeters);
 
-// Builds the mesh of `tile` from its block. A block whose size is not 2^k+1 or whose height array
+// Builds the mesh of `tile` from its block (a block with a TIN: buildTinMesh, tin_mesh.hpp). A block whose size is not 2^k+1 or whose height array
 // does not hold N² samples gives an empty mesh (no vertices).
 // - Positions: drawnVertexEcefMeters of block.surfaceHeightMetersAt (water at 0 m, or at its sea
 //   floor when block.sea is SeaSurface::SeaFloor: what collision reads too), minus the double

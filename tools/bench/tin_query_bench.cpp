@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "collision/qotcd_height.hpp"
-#include "collision/tin_tile.hpp"
+#include "terrain/tin_tile.hpp"
 #include "compression/gzip_bytes.hpp"
 #include "formats/quantized_mesh.hpp"
 #include "geo/tiling_scheme.hpp"
@@ -37,7 +37,7 @@ const Source kSources[] = {
 };
 
 struct Fixture {
-  std::unique_ptr<collision::TinTile> tin;
+  std::unique_ptr<terrain::TinTile> tin;
   std::unique_ptr<terrain::HeightBlock> block;  // where the grid tile points (never moves)
   terrain::ArrayTile grid;
   std::vector<std::pair<double, double>> points;  // radians
@@ -55,14 +55,14 @@ Fixture makeFixture(const Source& source) {
                                               path.string(), size_t{64} << 20);
   auto mesh = formats::decodeQuantizedMesh(*inflated, path.string());
   if (!mesh) std::abort();
-  std::vector<collision::TinVertex> vertices;
+  std::vector<terrain::TinVertex> vertices;
   for (size_t i = 0; i < mesh->vertexCount(); ++i) {
     vertices.push_back({mesh->u[i] / 32767.0, mesh->v[i] / 32767.0, mesh->heightMeters[i]});
   }
   const geo::GlobeRectangle rect = geo::GeographicTilingScheme::tileRectangle(kTile);
-  auto tin = collision::TinTile::build(rect, std::move(vertices), mesh->triangles, path.string());
+  auto tin = terrain::TinTile::build(rect, std::move(vertices), mesh->triangles, path.string());
   if (!tin) std::abort();
-  made.tin = std::make_unique<collision::TinTile>(std::move(*tin));
+  made.tin = std::make_unique<terrain::TinTile>(std::move(*tin));
   made.triangles = made.tin->triangleCount();
   constexpr uint32_t kSide = 65;
   made.block = std::make_unique<terrain::HeightBlock>();

@@ -7,13 +7,17 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "core/result.hpp"
+#include "geo/ellipsoid.hpp"
 #include "geo/globe_rectangle.hpp"
 
-namespace globe::collision {
+namespace globe::terrain {
 
 // A vertex across its tile: u from the west edge (0) to the east (1), v from the south (0) to
 // the north (1), as quantized-mesh writes them (its 0..32767 divided by 32767).
@@ -43,6 +47,23 @@ class TinTile {
   const geo::GlobeRectangle& rectangle() const { return rectangle_; }
   size_t triangleCount() const { return triangles_.size() / 3; }
   uint32_t cellsPerSide() const { return cells_; }
+  const std::vector<TinVertex>& vertices() const { return vertices_; }
+  const std::vector<uint32_t>& triangles() const { return triangles_; }
+  double maximumHeightMeters() const { return maximumHeightMeters_; }
+  double minimumHeightMeters() const { return minimumHeightMeters_; }
+  // Unit ECEF normals the producer gave per vertex (quantized-mesh's oct-encoded normals), or
+  // empty: the mesh then derives them from its triangles.
+  const std::vector<glm::vec3>& normals() const { return normals_; }
+  // Sets them: false (and none kept) unless there is one per vertex.
+  bool setNormals(std::vector<glm::vec3> normals);
+  // Where the mesh draws vertex k (before its level's rounding, tile_mesh.hpp) and collision
+  // takes it: (west + u·width, south + v·height) at its height, the edges' u and v of 0 and 1
+  // exactly on the tile's bounds.
+  glm::dvec3 vertexEcefMeters(const geo::Ellipsoid& ellipsoid, uint32_t k) const;
+  // Each triangle meeting the box [u0, u1] x [v0, v1] (tile fractions) once, perhaps with
+  // others near it, from the cell grid.
+  void forEachTriangleNear(double u0, double v0, double u1, double v1,
+                           const std::function<void(uint32_t)>& visit) const;
 
  private:
   TinTile() = default;
@@ -62,10 +83,12 @@ class TinTile {
   double uPerRadian_ = 1, vPerRadian_ = 1;
   std::vector<TinVertex> vertices_;
   std::vector<uint32_t> triangles_;
+  std::vector<glm::vec3> normals_;
+  double maximumHeightMeters_ = 0, minimumHeightMeters_ = 0;
   std::vector<Prepared> prepared_;
   uint32_t cells_ = 1;
   // The triangles meeting each cell (row-major from the south-west), as offsets into one list.
   std::vector<uint32_t> cellStart_, cellTriangles_;
 };
 
-}  // namespace globe::collision
+}  // namespace globe::terrain

@@ -1,10 +1,12 @@
-#include "collision/tin_tile.hpp"
+#include "terrain/tin_tile.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-namespace globe::collision {
+#include "geo/ecef.hpp"
+
+namespace globe::terrain {
 namespace {
 
 // A barycentric weight this small puts the point on the opposite edge: that vertex does not
@@ -40,6 +42,11 @@ Result<TinTile> TinTile::build(const geo::GlobeRectangle& rectangle,
   tile.uPerRadian_ = 1.0 / (rectangle.eastRadians - rectangle.westRadians);
   tile.vPerRadian_ = 1.0 / (rectangle.northRadians - rectangle.southRadians);
   tile.vertices_ = std::move(vertices);
+  tile.maximumHeightMeters_ = -INFINITY, tile.minimumHeightMeters_ = INFINITY;
+  for (const TinVertex& p : tile.vertices_) {
+    tile.maximumHeightMeters_ = std::max(tile.maximumHeightMeters_, p.heightMeters);
+    tile.minimumHeightMeters_ = std::min(tile.minimumHeightMeters_, p.heightMeters);
+  }
   tile.triangles_ = std::move(triangles);
   tile.prepareTriangles();
   tile.buildCells();
@@ -131,4 +138,41 @@ TinHeight TinTile::heightAt(double longitudeRadians, double latitudeRadians) con
   return result;
 }
 
-}  // namespace globe::collision
+glm::dvec3 TinTile::vertexEcefMeters(const geo::Ellipsoid& ellipsoid, uint32_t k) const {
+  const TinVertex& p = vertices_[k];
+  const geo::GlobeRectangle& r = rectangle_;
+  auto between = [](double low, double high, double f) {
+    return f <= 0 ? low : f >= 1 ? high : low + f * (high - low);
+  };
+  return geo::cartographicToEcef(ellipsoid, {between(r.westRadians, r.eastRadians, p.u),
+                                             between(r.southRadians, r.northRadians, p.v),
+                                             p.heightMeters});
+}
+
+bool TinTile::setNormals(std::vector<glm::vec3> normals) {
+  if (normals.size() != vertices_.size()) return false;
+  normals_ = std::move(normals);
+  return true;
+}
+
+void TinTile::forEachTriangleNear(double u0, double v0, double u1, double v1,
+                                  const std::function<void(uint32_t)>& visit) const {
+  const auto last = static_cast<int>(cells_) - 1;
+  auto cellOf = [&](double f) {
+    return std::min(std::max(static_cast<int>(std::floor(f * cells_)), 0), last);
+  };
+  const int c0 = cellOf(u0), c1 = cellOf(u1), r0 = cellOf(v0), r1 = cellOf(v1);
+  std::vector<uint8_t> seen(triangleCount(), 0);
+  for (int row = r0; row <= r1; ++row) {
+    for (int column = c0; column <= c1; ++column) {
+      const size_t cell = static_cast<size_t>(row) * cells_ + static_cast<size_t>(column);
+      for (uint32_t k = cellStart_[cell], end = cellStart_[cell + 1]; k < end; ++k) {
+        const uint32_t t = cellTriangles_[k];
+        if (seen[t] == 0) visit(t);
+        seen[t] = 1;
+      }
+    }
+  }
+}
+
+}  // namespace globe::terrain

@@ -1,4 +1,4 @@
-// QOTCD on TIN tiles (collision/tin_tile.hpp) over real quantized-mesh tiles: at many points the
+// QOTCD on TIN tiles (terrain/tin_tile.hpp) over real quantized-mesh tiles: at many points the
 // conservative height is the paper's rule (the highest vertex of the triangle under the point,
 // found by testing every triangle) and never below the exact height (the triangle's plane).
 #include <gtest/gtest.h>
@@ -11,12 +11,12 @@
 #include <random>
 #include <vector>
 
-#include "collision/tin_tile.hpp"
+#include "terrain/tin_tile.hpp"
 #include "compression/gzip_bytes.hpp"
 #include "formats/quantized_mesh.hpp"
 #include "tests/support/build_paths.hpp"
 
-namespace globe::collision {
+namespace globe::terrain {
 namespace {
 
 namespace fs = std::filesystem;
@@ -145,4 +145,4 @@ TEST(TinTile, BadTinsAreClearErrors) {
 }
 
 }  // namespace
-}  // namespace globe::collision
+}  // namespace globe::terrain
