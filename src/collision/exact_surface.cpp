@@ -222,8 +222,7 @@ SurfaceSample poleSurface(const terrain::HeightBlock& block, const GridLocation&
 // highest vertex. nullopt when no triangle lies under the point.
 std::optional<SurfaceSample> tinSurfaceAlongNormal(const ArrayTile& tile,
                                                    const geo::Ellipsoid& ellipsoid,
-                                                   double longitudeRadians,
-                                                   double latitudeRadians,
+                                                   double longitudeRadians, double latitudeRadians,
                                                    const glm::dvec3& surface,
                                                    const glm::dvec3& normal) {
   const terrain::TinTile& tin = *tile.block->tin;
@@ -296,8 +295,8 @@ ExactSurfaceResult exactSurfaceTest(const RenderingTileArray& array,
     const glm::dvec3 nadir = cameraEcefMeters - camera.heightMeters * frame->normal;
     std::optional<SurfaceSample> tin;
     if (tile->block->tin) {
-      tin = tinSurfaceAlongNormal(*tile, ellipsoid, point->longitudeRadians,
-                                  point->latitudeRadians, nadir, frame->normal);
+      tin = tinSurfaceAlongNormal(*tile, ellipsoid, point->longitudeRadians, point->latitudeRadians,
+                                  nadir, frame->normal);
     }
     const GridLocation at = locateInGrid(*tile, point->longitudeRadians, point->latitudeRadians);
     const SurfaceSample sample =

@@ -2,8 +2,6 @@
 // Detection 5.1.5) in eye-relative coordinates, so nothing is lost to the ~6.4e6 m translation.
 #include "collision/lateral_clearance.hpp"
 
-#include "terrain/tin_tile.hpp"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -19,6 +17,7 @@
 #include "geo/tiling_scheme.hpp"
 #include "terrain/block_grid.hpp"
 #include "terrain/tile_mesh.hpp"
+#include "terrain/tin_tile.hpp"
 
 namespace globe::collision {
 namespace {
@@ -110,17 +109,15 @@ std::optional<NearestTriangle> nearestDrawnTriangle(const RenderingTileArray& ar
     if (tile->block->tin) {  // its own triangles near the footprint (terrain/tin_tile.hpp)
       const terrain::TinTile& tin = *tile->block->tin;
       const double width = r.eastRadians - r.westRadians, height = r.northRadians - r.southRadians;
-      tin.forEachTriangleNear((west - r.westRadians) / width, (s - r.southRadians) / height,
-                              (east - r.westRadians) / width, (n - r.southRadians) / height,
-                              [&](uint32_t t) {
-                                std::array<glm::dvec3, 3> p{};
-                                for (size_t k = 0; k < 3; ++k) {
-                                  p[k] = tin.vertexEcefMeters(ellipsoid,
-                                                              tin.triangles()[3 * t + k]) -
-                                         eyeEcefMeters;
-                                }
-                                consider(p);
-                              });
+      tin.forEachTriangleNear(
+          (west - r.westRadians) / width, (s - r.southRadians) / height,
+          (east - r.westRadians) / width, (n - r.southRadians) / height, [&](uint32_t t) {
+            std::array<glm::dvec3, 3> p{};
+            for (size_t k = 0; k < 3; ++k) {
+              p[k] = tin.vertexEcefMeters(ellipsoid, tin.triangles()[3 * t + k]) - eyeEcefMeters;
+            }
+            consider(p);
+          });
       continue;
     }
     const GridLocation northWest = locateInGrid(*tile, west, n);

@@ -1,8 +1,6 @@
 // QOTCD broad phase, exact (or QOTCD) narrow phase, triangle normals and vertex spacing.
 #include "collision/surface_probe.hpp"
 
-#include "terrain/tin_tile.hpp"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -16,6 +14,7 @@
 #include "geo/ecef.hpp"
 #include "terrain/block_grid.hpp"
 #include "terrain/tile_mesh.hpp"
+#include "terrain/tin_tile.hpp"
 
 namespace globe::collision {
 namespace {

@@ -17,13 +17,13 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "geo/ecef.hpp"
+#include "render/aerial_haze.hpp"
 #include "render/gl_object.hpp"
 #include "render/gpu_tile.hpp"
 #include "render/imagery_textures.hpp"
 #include "render/shader_directory.hpp"
 #include "render/shader_program.hpp"
 #include "render/sky_model.hpp"
-#include "render/aerial_haze.hpp"
 #include "render/sky_pass.hpp"
 #include "terrain/relief_shading.hpp"
 #include "terrain/skirt_edges.hpp"
@@ -177,9 +177,9 @@ TerrainRenderer::Impl::BoundDrapes TerrainRenderer::Impl::resolveDrapes(
     // NaN and negative opacities draw nothing.
     const float opacity = drape.opacity > 0.0f ? std::min(drape.opacity, 1.0f) : 0.0f;
     // Night lights add light where the Sun has set and cover nothing.
-    const bool opaque = !drape.night && opacity >= 1.0f &&
-                        imageryTiles.isOpaqueOver(drape.layer, drape.imageryTile,
-                                                  drape.uvTransform);
+    const bool opaque =
+        !drape.night && opacity >= 1.0f &&
+        imageryTiles.isOpaqueOver(drape.layer, drape.imageryTile, drape.uvTransform);
     if (opaque) bound.count = 0;
     if (bound.count == 0) bound.opaqueBase = opaque;
     bound.textures[bound.count] = texture;

@@ -1,9 +1,9 @@
 #include "terrain/height_block.hpp"
 
-#include "terrain/tin_tile.hpp"
-
 #include <algorithm>
 #include <cmath>
+
+#include "terrain/tin_tile.hpp"
 
 namespace globe::terrain {
 

@@ -32,8 +32,8 @@ std::vector<glm::dvec3> derivedNormals(const TinTile& tin, const std::vector<Mes
   }
   for (size_t k = 0; k < sum.size(); ++k) {
     const double length = glm::length(sum[k]);
-    sum[k] = length > 0 && std::isfinite(length) ? sum[k] / length
-                                                 : upAt(ellipsoid, v[k].positionEcef);
+    sum[k] =
+        length > 0 && std::isfinite(length) ? sum[k] / length : upAt(ellipsoid, v[k].positionEcef);
   }
   return sum;
 }
@@ -46,7 +46,8 @@ void appendSurfaceTriangles(const TinTile& tin, std::vector<uint32_t>& indices) 
     const TinVertex &a = p[t[k]], &b = p[t[k + 1]], &c = p[t[k + 2]];
     const double area = (b.u - a.u) * (c.v - a.v) - (c.u - a.u) * (b.v - a.v);
     if (area == 0) continue;
-    indices.insert(indices.end(), {t[k], area > 0 ? t[k + 1] : t[k + 2], area > 0 ? t[k + 2] : t[k + 1]});
+    indices.insert(indices.end(),
+                   {t[k], area > 0 ? t[k + 1] : t[k + 2], area > 0 ? t[k + 2] : t[k + 1]});
   }
 }
 
@@ -62,9 +63,8 @@ std::vector<std::vector<uint32_t>> edgeVertices(const TinTile& tin) {
   }
   for (size_t e = 0; e < 4; ++e) {
     const bool alongV = e < 2;
-    std::sort(edges[e].begin(), edges[e].end(), [&](uint32_t a, uint32_t b) {
-      return alongV ? p[a].v < p[b].v : p[a].u < p[b].u;
-    });
+    std::sort(edges[e].begin(), edges[e].end(),
+              [&](uint32_t a, uint32_t b) { return alongV ? p[a].v < p[b].v : p[a].u < p[b].u; });
   }
   return edges;
 }

@@ -144,9 +144,9 @@ glm::dvec3 TinTile::vertexEcefMeters(const geo::Ellipsoid& ellipsoid, uint32_t k
   auto between = [](double low, double high, double f) {
     return f <= 0 ? low : f >= 1 ? high : low + f * (high - low);
   };
-  return geo::cartographicToEcef(ellipsoid, {between(r.westRadians, r.eastRadians, p.u),
-                                             between(r.southRadians, r.northRadians, p.v),
-                                             p.heightMeters});
+  return geo::cartographicToEcef(ellipsoid,
+                                 {between(r.westRadians, r.eastRadians, p.u),
+                                  between(r.southRadians, r.northRadians, p.v), p.heightMeters});
 }
 
 bool TinTile::setNormals(std::vector<glm::vec3> normals) {

@@ -71,9 +71,9 @@ std::unique_ptr<Tree> openTree(double errorFraction, const std::string& name) {
   tree->dir = exportTree(errorFraction, name);
   transport::NetworkSettings settings;
   settings.useCache = false;
-  auto source = openTerrainSource("quantized-mesh:" + tree->dir.string(),
-                                  terrain::SeaSurface::Water,
-                                  std::make_shared<transport::Network>(settings));
+  auto source =
+      openTerrainSource("quantized-mesh:" + tree->dir.string(), terrain::SeaSurface::Water,
+                        std::make_shared<transport::Network>(settings));
   EXPECT_TRUE(source) << source.error();
   tree->source = std::move(*source);
   const uint32_t level = tree->level = tree->source->manifest().maxLevel();
@@ -120,9 +120,9 @@ fs::path tileFile(const fs::path& dir, const geo::TileId& tile) {
 glm::dvec3 vertexEcef(const terrain::TinTile& tin, uint32_t k) {
   const terrain::TinVertex& p = tin.vertices()[k];
   const geo::GlobeRectangle& r = tin.rectangle();
-  return geo::cartographicToEcef(kWgs84, {r.westRadians + p.u * (r.eastRadians - r.westRadians),
-                                          r.southRadians + p.v * (r.northRadians - r.southRadians),
-                                          p.heightMeters});
+  return geo::cartographicToEcef(
+      kWgs84, {r.westRadians + p.u * (r.eastRadians - r.westRadians),
+               r.southRadians + p.v * (r.northRadians - r.southRadians), p.heightMeters});
 }
 
 // The drawn surface under (lon, lat), by brute force: the normal line through the ellipsoid
@@ -235,9 +235,9 @@ TEST(TinTerrain, QotcdOnTinIsThePapersRuleAndNeverBelowTheDrawnSurface) {
 double lowestClearance(const camera::CameraPose& pose, const camera::NearPlane& nearPlane,
                        const terrain::RenderingTileArray& array) {
   const camera::CameraFrame frame = camera::cameraFrame(kWgs84, pose);
-  double lowest = pose.position.heightMeters -
-                  bruteForceDrawnHeight(array, pose.position.longitudeRadians,
-                                        pose.position.latitudeRadians);
+  double lowest =
+      pose.position.heightMeters -
+      bruteForceDrawnHeight(array, pose.position.longitudeRadians, pose.position.latitudeRadians);
   for (const glm::dvec3& offset : camera::nearPlaneCornerOffsets(frame, nearPlane)) {
     const auto p = geo::ecefToCartographic(kWgs84, frame.positionEcefMeters + offset);
     if (!p) return -INFINITY;
@@ -262,7 +262,8 @@ TEST(TinTerrain, FlightsIntoTheSummitOverTinTerrainStayAboveItEveryFrame) {
         const glm::dvec3 centre = geo::cartographicToEcef(kWgs84, summit);
         const camera::EastNorthUp enu = camera::eastNorthUp(kWgs84, summit);
         geo::Cartographic start = *geo::ecefToCartographic(
-            kWgs84, centre + 2000.0 * (std::sin(bearing) * enu.east + std::cos(bearing) * enu.north));
+            kWgs84,
+            centre + 2000.0 * (std::sin(bearing) * enu.east + std::cos(bearing) * enu.north));
         start.heightMeters =
             bruteForceDrawnHeight(tree.array, start.longitudeRadians, start.latitudeRadians) +
             (pitchDegrees == 0.0 ? 3.0 : 300.0);
@@ -275,7 +276,8 @@ TEST(TinTerrain, FlightsIntoTheSummitOverTinTerrainStayAboveItEveryFrame) {
         for (int frame = 0; frame < 60; ++frame) {
           const camera::CollisionState& state =
               controller.update(globe::test::kDt, tree.array, kWgs84);
-          const double clearance = lowestClearance(controller.pose(), settings.nearPlane, tree.array);
+          const double clearance =
+              lowestClearance(controller.pose(), settings.nearPlane, tree.array);
           ++frames;
           below += !(clearance >= 0.0);
           collided += state.collided;

@@ -61,8 +61,8 @@ atmosphere, no imagery; globe draws its hypsometric colours under its sky.
   `timing.csv` after the first frame. **Triangles / tiles**: what `globe snapshot` of the view
   prints ("N tiles drawn, T triangles").
 * **globe, same tree** reads the quantized-mesh tree from the same nginx (`quantized-mesh:URL`);
-  it samples each tile onto a 65-vertex block (docs/performance/tile-formats.md), so it draws
-  full grids however simplified the tree's TINs are. **globe, its pyramid**: the pyramid the
+  it draws each tile's own TIN with skirts under every edge vertex (docs/tile-services.md), as
+  CesiumJS does. **globe, its pyramid**: the pyramid the
   tree was exported from, in globe's own format, for reference.
 """
 open("docs/performance/web-clients.md", "w").write(text)
