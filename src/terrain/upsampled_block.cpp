@@ -10,6 +10,7 @@
 #include "geo/ecef.hpp"
 #include "terrain/block_grid.hpp"
 #include "terrain/tile_mesh.hpp"
+#include "terrain/tin_clip.hpp"
 
 namespace globe::terrain {
 namespace {
@@ -124,6 +125,8 @@ HeightBlock upsampleBlock(const HeightBlock& parent, const geo::TileId& child,
   HeightBlock block;
   block.verticesPerSide = n;
   block.sea = parent.sea;
+  // A TIN parent's child is its TIN's quadrant: the surface drawn and collided (tin_clip.hpp).
+  if (parent.tin) block.tin = childTin(*parent.tin, child);
   const ParentSurface surface(parent, child.parent(), ellipsoid);
   const BlockGrid grid{child, n};
   const auto half = static_cast<int>(n - 1);  // a child spans half the parent: N-1 half cells

@@ -26,6 +26,7 @@ namespace globe::terrain {
 //   (north-west), so neighbours agree;
 // - shadingNormals, colorMeters and waterFraction shade it as the parent's triangles shade that
 //   ground: the parent mesh's vertex values, the mean of the two ends along an edge.
+// - a parent with a TIN gives its child the TIN's quadrant (tin_clip.hpp), which it then draws.
 // The parent's block size must be valid (isValidBlockSize) and its samples complete.
 HeightBlock upsampleBlock(const HeightBlock& parent, const geo::TileId& child,
                           const geo::Ellipsoid& ellipsoid);

@@ -11,9 +11,11 @@
 #include <random>
 #include <vector>
 
-#include "terrain/tin_tile.hpp"
 #include "compression/gzip_bytes.hpp"
 #include "formats/quantized_mesh.hpp"
+#include "geo/tiling_scheme.hpp"
+#include "terrain/tin_clip.hpp"
+#include "terrain/tin_tile.hpp"
 #include "tests/support/build_paths.hpp"
 
 namespace globe::terrain {
@@ -130,6 +132,33 @@ TEST(TinTile, OnAnEdgeTheHigherOfItsTwoVertices) {
   EXPECT_DOUBLE_EQ(tile->heightAt(0.75, 0.25).conservativeMeters, 50.0);
   EXPECT_DOUBLE_EQ(tile->heightAt(0.25, 0.75).conservativeMeters, 90.0);
   EXPECT_FALSE(tile->heightAt(1.5, 0.5).found);  // outside the tile
+}
+
+// A missing child drawn from a TIN parent is the parent's TIN clipped to its quadrant: at random
+// points of each of the four children the same surface as the parent's, every point covered, and
+// far fewer triangles than a 65x65 grid.
+TEST(TinTile, AChildsTinIsItsParentsQuadrant) {
+  const geo::TileId parentId{15, 33550, 32767 - 25865};
+  const Loaded loaded = loadTile(kInterop / "denhaag-ahn-octnormals/15/33550/25865.terrain");
+  auto parent = TinTile::build(geo::GeographicTilingScheme::tileRectangle(parentId),
+                               loaded.vertices, loaded.triangles, "parent");
+  ASSERT_TRUE(parent) << parent.error();
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (const geo::TileId& id : parentId.children()) {
+    const auto child = childTin(*parent, id);
+    ASSERT_TRUE(child) << geo::tileName(id);
+    EXPECT_LT(child->triangleCount(), parent->triangleCount() + 64);
+    const geo::GlobeRectangle r = geo::GeographicTilingScheme::tileRectangle(id);
+    for (int i = 0; i < 500; ++i) {
+      const double lon = r.westRadians + unit(random) * (r.eastRadians - r.westRadians);
+      const double lat = r.southRadians + unit(random) * (r.northRadians - r.southRadians);
+      const TinHeight mine = child->heightAt(lon, lat), theirs = parent->heightAt(lon, lat);
+      ASSERT_TRUE(mine.found && theirs.found);
+      EXPECT_NEAR(mine.exactMeters, theirs.exactMeters, 1e-6);
+      EXPECT_LE(mine.conservativeMeters, theirs.conservativeMeters + 1e-6);  // never above H
+    }
+  }
 }
 
 TEST(TinTile, BadTinsAreClearErrors) {
