@@ -119,8 +119,9 @@ glm::dvec3 levelVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGri
 glm::dvec3 drawnVertexEcefMeters(const geo::Ellipsoid& ellipsoid, const BlockGrid& grid,
                                  uint32_t row, uint32_t column, double heightMeters);
 
-// Builds the mesh of `tile` from its block (a block with a TIN: buildTinMesh, tin_mesh.hpp). A block whose size is not 2^k+1 or whose height array
-// does not hold N² samples gives an empty mesh (no vertices).
+// Builds the mesh of `tile` from its block (a block with a TIN: buildTinMesh, tin_mesh.hpp). A
+// block whose size is not 2^k+1 or whose height array does not hold N² samples gives an empty
+// mesh (no vertices).
 // - Positions: drawnVertexEcefMeters of block.surfaceHeightMetersAt (water at 0 m, or at its sea
 //   floor when block.sea is SeaSurface::SeaFloor: what collision reads too), minus the double
 //   centre, stored as float. Shared edge vertices of neighbouring tiles are therefore bit-identical

@@ -15,11 +15,11 @@
 #include <vector>
 
 #include "collision/qotcd_height.hpp"
-#include "terrain/tin_tile.hpp"
 #include "compression/gzip_bytes.hpp"
 #include "formats/quantized_mesh.hpp"
 #include "geo/tiling_scheme.hpp"
 #include "terrain/rendering_tile_array.hpp"
+#include "terrain/tin_tile.hpp"
 #include "tests/support/build_paths.hpp"
 
 namespace {
