@@ -1,4 +1,4 @@
-// globe-bench-tin-query: one QOTCD height query on a TIN tile (collision/tin_tile.hpp: the cell
+// globe-bench-tin-query: one QOTCD height query on a TIN tile (terrain/tin_tile.hpp: the cell
 // grid, the triangle under the point, its highest vertex) against the same query on a 65x65 grid
 // tile (collision/qotcd_height.hpp, the paper's RSG case), both over the same real quantized-mesh
 // tile (two of the Hague's AHN z15 tiles; the grid sampled from its surface) at the same 4,096
