@@ -228,10 +228,7 @@ std::optional<SurfaceSample> tinSurfaceAlongNormal(const ArrayTile& tile,
   const terrain::TinTile& tin = *tile.block->tin;
   const terrain::TinHeight at = tin.heightAt(longitudeRadians, latitudeRadians);
   if (!at.found) return std::nullopt;
-  std::array<glm::dvec3, 3> p{};
-  for (size_t k = 0; k < 3; ++k) {
-    p[k] = tin.vertexEcefMeters(ellipsoid, tin.triangles()[3 * at.triangle + k]) - surface;
-  }
+  const std::array<glm::dvec3, 3> p = tin.triangleEcefMeters(ellipsoid, at.triangle, surface);
   const glm::dvec3 planeNormal = glm::cross(p[1] - p[0], p[2] - p[0]);
   const double lengthSquared = glm::dot(planeNormal, planeNormal);
   const double along = glm::dot(planeNormal, normal);
@@ -242,6 +239,22 @@ std::optional<SurfaceSample> tinSurfaceAlongNormal(const ArrayTile& tile,
   return SurfaceSample{glm::dot(planeNormal, p[0]) / along, SurfaceTriangle::Tin, at.triangle, 0};
 }
 
+// The drawn surface along the normal through the nadir point `surface`: a TIN tile's triangle,
+// else (or where its TIN leaves the point open) the grid's.
+SurfaceSample surfaceAt(const ArrayTile& tile, const geo::Ellipsoid& ellipsoid,
+                        double longitudeRadians, double latitudeRadians, const glm::dvec3& surface,
+                        const glm::dvec3& normal) {
+  if (tile.block->tin) {
+    if (auto hit = tinSurfaceAlongNormal(tile, ellipsoid, longitudeRadians, latitudeRadians,
+                                         surface, normal)) {
+      return *hit;
+    }
+  }
+  const GridLocation at = locateInGrid(tile, longitudeRadians, latitudeRadians);
+  if (at.atPole) return poleSurface(*tile.block, at);
+  return surfaceAlongNormal(tile, ellipsoid, at, surface, normal);
+}
+
 }  // namespace
 
 SurfaceSample exactTileSurfaceHeight(const ArrayTile& tile, const geo::Ellipsoid& ellipsoid,
@@ -249,17 +262,9 @@ SurfaceSample exactTileSurfaceHeight(const ArrayTile& tile, const geo::Ellipsoid
   if (!hasReadableBlock(tile)) return {};
   // One set of sines and cosines for both (bit for bit cartographicToEcef's and
   // geodeticSurfaceNormal's).
-  if (tile.block->tin) {
-    const SurfacePoint nadir = surfacePointAndNormal(ellipsoid, longitudeRadians, latitudeRadians);
-    if (auto hit = tinSurfaceAlongNormal(tile, ellipsoid, longitudeRadians, latitudeRadians,
-                                         nadir.pointEcefMeters, nadir.normal)) {
-      return *hit;
-    }
-  }
-  const GridLocation at = locateInGrid(tile, longitudeRadians, latitudeRadians);
-  if (at.atPole) return poleSurface(*tile.block, at);
   const SurfacePoint nadir = surfacePointAndNormal(ellipsoid, longitudeRadians, latitudeRadians);
-  return surfaceAlongNormal(tile, ellipsoid, at, nadir.pointEcefMeters, nadir.normal);
+  return surfaceAt(tile, ellipsoid, longitudeRadians, latitudeRadians, nadir.pointEcefMeters,
+                   nadir.normal);
 }
 
 std::optional<ExactSurfaceSample> exactSurfaceHeight(const RenderingTileArray& array,
@@ -292,17 +297,9 @@ ExactSurfaceResult exactSurfaceTest(const RenderingTileArray& array,
       makeQueryPoint(camera.longitudeRadians, camera.latitudeRadians);
   const ArrayTile* tile = point ? array.lookupIndexed(*point).tile : nullptr;
   if (tile != nullptr && hasReadableBlock(*tile)) {
-    const glm::dvec3 nadir = cameraEcefMeters - camera.heightMeters * frame->normal;
-    std::optional<SurfaceSample> tin;
-    if (tile->block->tin) {
-      tin = tinSurfaceAlongNormal(*tile, ellipsoid, point->longitudeRadians, point->latitudeRadians,
-                                  nadir, frame->normal);
-    }
-    const GridLocation at = locateInGrid(*tile, point->longitudeRadians, point->latitudeRadians);
     const SurfaceSample sample =
-        tin         ? *tin
-        : at.atPole ? poleSurface(*tile->block, at)
-                    : surfaceAlongNormal(*tile, ellipsoid, at, nadir, frame->normal);
+        surfaceAt(*tile, ellipsoid, point->longitudeRadians, point->latitudeRadians,
+                  cameraEcefMeters - camera.heightMeters * frame->normal, frame->normal);
     result.found = true;
     result.surfaceHeightMeters = sample.heightMeters;
     result.tile = tile->id;

@@ -111,13 +111,8 @@ std::optional<NearestTriangle> nearestDrawnTriangle(const RenderingTileArray& ar
       const double width = r.eastRadians - r.westRadians, height = r.northRadians - r.southRadians;
       tin.forEachTriangleNear(
           (west - r.westRadians) / width, (s - r.southRadians) / height,
-          (east - r.westRadians) / width, (n - r.southRadians) / height, [&](uint32_t t) {
-            std::array<glm::dvec3, 3> p{};
-            for (size_t k = 0; k < 3; ++k) {
-              p[k] = tin.vertexEcefMeters(ellipsoid, tin.triangles()[3 * t + k]) - eyeEcefMeters;
-            }
-            consider(p);
-          });
+          (east - r.westRadians) / width, (n - r.southRadians) / height,
+          [&](uint32_t t) { consider(tin.triangleEcefMeters(ellipsoid, t, eyeEcefMeters)); });
       continue;
     }
     const GridLocation northWest = locateInGrid(*tile, west, n);

@@ -86,12 +86,7 @@ glm::dvec3 surfaceNormalAt(const RenderingTileArray& array, const geo::Ellipsoid
     return glm::dot(unit, up) < 0.0 ? -unit : unit;
   };
   if (sample.triangle == SurfaceTriangle::Tin) {
-    const terrain::TinTile& tin = *tile->block->tin;
-    std::array<glm::dvec3, 3> p{};
-    for (size_t k = 0; k < 3; ++k) {
-      p[k] = tin.vertexEcefMeters(ellipsoid, tin.triangles()[3 * sample.quadRow + k]);
-    }
-    return facingUp(p);
+    return facingUp(tile->block->tin->triangleEcefMeters(ellipsoid, sample.quadRow));
   }
   if (sample.triangle != SurfaceTriangle::SouthWest &&
       sample.triangle != SurfaceTriangle::NorthEast) {

@@ -66,8 +66,8 @@ std::shared_ptr<const TinTile> childTin(const TinTile& parent, const geo::TileId
     for (const TinVertex& q : polygon) ids.push_back(vertexOf(q));
     for (size_t f = 1; f + 1 < ids.size(); ++f) {  // a fan: the clipped polygon is convex
       const TinVertex &a = vertices[ids[0]], &b = vertices[ids[f]], &c = vertices[ids[f + 1]];
-      const double area = (b.u - a.u) * (c.v - a.v) - (c.u - a.u) * (b.v - a.v);
-      if (std::abs(area) > 1e-14) triangles.insert(triangles.end(), {ids[0], ids[f], ids[f + 1]});
+      if (std::abs(twiceSignedArea(a, b, c)) > 1e-14)
+        triangles.insert(triangles.end(), {ids[0], ids[f], ids[f + 1]});
     }
   }
   if (triangles.empty()) return nullptr;

@@ -44,7 +44,7 @@ void appendSurfaceTriangles(const TinTile& tin, std::vector<uint32_t>& indices) 
   const std::vector<uint32_t>& t = tin.triangles();
   for (size_t k = 0; k + 2 < t.size(); k += 3) {
     const TinVertex &a = p[t[k]], &b = p[t[k + 1]], &c = p[t[k + 2]];
-    const double area = (b.u - a.u) * (c.v - a.v) - (c.u - a.u) * (b.v - a.v);
+    const double area = twiceSignedArea(a, b, c);
     if (area == 0) continue;
     indices.insert(indices.end(),
                    {t[k], area > 0 ? t[k + 1] : t[k + 2], area > 0 ? t[k + 2] : t[k + 1]});
@@ -96,10 +96,11 @@ TileMesh buildTinMesh(const geo::TileId& tile, const HeightBlock& block,
     v.u = static_cast<float>(p.u);
     v.v = static_cast<float>(1.0 - p.v);
   }
-  const std::vector<glm::dvec3> normals = derivedNormals(tin, vertices, ellipsoid);
+  const std::vector<glm::dvec3> derived =
+      tin.normals().empty() ? derivedNormals(tin, vertices, ellipsoid) : std::vector<glm::dvec3>{};
   for (uint32_t k = 0; k < vertices.size(); ++k) {
     vertices[k].normal =
-        tin.normals().empty() ? normals[k] : glm::dvec3(glm::normalize(tin.normals()[k]));
+        derived.empty() ? glm::dvec3(glm::normalize(tin.normals()[k])) : derived[k];
     vertices[k].coarseNormal = vertices[k].normal;
   }
   appendSurfaceTriangles(tin, mesh.indices);

@@ -59,7 +59,7 @@ void TinTile::prepareTriangles() {
     const TinVertex& a = vertices_[triangles_[k]];
     const TinVertex& b = vertices_[triangles_[k + 1]];
     const TinVertex& c = vertices_[triangles_[k + 2]];
-    const double area = (b.u - a.u) * (c.v - a.v) - (c.u - a.u) * (b.v - a.v);
+    const double area = twiceSignedArea(a, b, c);
     // A degenerate triangle holds no point (its weight a is -1 everywhere): its neighbours hold
     // the points along it.
     Prepared p{-1, 0, 0, 0, 0, 0, 0, 0, 0};
@@ -147,6 +147,13 @@ glm::dvec3 TinTile::vertexEcefMeters(const geo::Ellipsoid& ellipsoid, uint32_t k
   return geo::cartographicToEcef(ellipsoid,
                                  {between(r.westRadians, r.eastRadians, p.u),
                                   between(r.southRadians, r.northRadians, p.v), p.heightMeters});
+}
+
+std::array<glm::dvec3, 3> TinTile::triangleEcefMeters(const geo::Ellipsoid& ellipsoid, uint32_t t,
+                                                      const glm::dvec3& origin) const {
+  return {vertexEcefMeters(ellipsoid, triangles_[3 * t]) - origin,
+          vertexEcefMeters(ellipsoid, triangles_[3 * t + 1]) - origin,
+          vertexEcefMeters(ellipsoid, triangles_[3 * t + 2]) - origin};
 }
 
 bool TinTile::setNormals(std::vector<glm::vec3> normals) {

@@ -6,6 +6,7 @@
 // two vertices and a point on a vertex that vertex.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -25,6 +26,12 @@ struct TinVertex {
   double u = 0, v = 0;
   double heightMeters = 0;
 };
+
+// Twice the signed area of triangle abc in (u, v): positive counter-clockwise seen from above
+// (u east, v north), 0 for a degenerate one.
+inline double twiceSignedArea(const TinVertex& a, const TinVertex& b, const TinVertex& c) {
+  return (b.u - a.u) * (c.v - a.v) - (c.u - a.u) * (b.v - a.v);
+}
 
 struct TinHeight {
   bool found = false;               // false: no triangle covers the point (outside the tile)
@@ -60,6 +67,9 @@ class TinTile {
   // takes it: (west + u·width, south + v·height) at its height, the edges' u and v of 0 and 1
   // exactly on the tile's bounds.
   glm::dvec3 vertexEcefMeters(const geo::Ellipsoid& ellipsoid, uint32_t k) const;
+  // Triangle t's three vertices so, less `origin` (the differences keep their precision).
+  std::array<glm::dvec3, 3> triangleEcefMeters(const geo::Ellipsoid& ellipsoid, uint32_t t,
+                                               const glm::dvec3& origin = glm::dvec3(0.0)) const;
   // Each triangle meeting the box [u0, u1] x [v0, v1] (tile fractions) once, perhaps with
   // others near it, from the cell grid.
   void forEachTriangleNear(double u0, double v0, double u1, double v1,

@@ -10,8 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <memory>
 #include <numbers>
 #include <random>
@@ -22,7 +20,6 @@
 #include "camera/camera_controller.hpp"
 #include "camera/camera_motion.hpp"
 #include "collision/qotcd_height.hpp"
-#include "compression/gzip_bytes.hpp"
 #include "formats/quantized_mesh.hpp"
 #include "geo/ecef.hpp"
 #include "geo/tiling_scheme.hpp"
@@ -32,6 +29,7 @@
 #include "terrain/rendering_tile_array.hpp"
 #include "terrain/tile_mesh.hpp"
 #include "terrain/tin_tile.hpp"
+#include "tests/support/quantized_mesh_file.hpp"
 #include "tests/support/test_constants.hpp"
 #include "tests/support/tiler_test_fixture.hpp"
 
@@ -100,14 +98,9 @@ const Tree& simplified() {
 }
 
 formats::QuantizedMesh decodeFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  const std::vector<char> raw{std::istreambuf_iterator<char>(in), {}};
-  auto inflated = compression::gunzipIfNeeded(std::as_bytes(std::span(raw.data(), raw.size())),
-                                              path.string(), size_t{64} << 20);
-  EXPECT_TRUE(inflated) << inflated.error();
-  auto mesh = formats::decodeQuantizedMesh(*inflated, path.string());
+  auto mesh = globe::testing::readQuantizedMeshFile(path);
   EXPECT_TRUE(mesh) << mesh.error();
-  return std::move(*mesh);
+  return mesh ? std::move(*mesh) : formats::QuantizedMesh{};
 }
 
 fs::path tileFile(const fs::path& dir, const geo::TileId& tile) {

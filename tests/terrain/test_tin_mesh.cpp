@@ -5,20 +5,18 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <memory>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
-#include "compression/gzip_bytes.hpp"
 #include "formats/quantized_mesh.hpp"
 #include "geo/ecef.hpp"
 #include "geo/tiling_scheme.hpp"
 #include "terrain/tile_mesh.hpp"
 #include "terrain/tin_tile.hpp"
 #include "tests/support/build_paths.hpp"
+#include "tests/support/quantized_mesh_file.hpp"
 
 namespace globe::terrain {
 namespace {
@@ -26,19 +24,10 @@ namespace {
 namespace fs = std::filesystem;
 
 HeightBlock tinBlock(const geo::TileId& id, const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  const std::vector<char> raw{std::istreambuf_iterator<char>(in), {}};
-  auto inflated = compression::gunzipIfNeeded(std::as_bytes(std::span(raw.data(), raw.size())),
-                                              path.string(), size_t{64} << 20);
-  EXPECT_TRUE(inflated) << inflated.error();
-  auto mesh = formats::decodeQuantizedMesh(*inflated, path.string());
+  auto mesh = globe::testing::readQuantizedMeshFile(path);
   EXPECT_TRUE(mesh) << mesh.error();
-  std::vector<TinVertex> vertices;
-  for (size_t i = 0; i < mesh->vertexCount(); ++i) {
-    vertices.push_back({mesh->u[i] / 32767.0, mesh->v[i] / 32767.0, mesh->heightMeters[i]});
-  }
-  auto tin = TinTile::build(geo::GeographicTilingScheme::tileRectangle(id), vertices,
-                            mesh->triangles, path.string());
+  auto tin = TinTile::build(geo::GeographicTilingScheme::tileRectangle(id),
+                            globe::testing::tinVertices(*mesh), mesh->triangles, path.string());
   EXPECT_TRUE(tin) << tin.error();
   HeightBlock block;
   block.verticesPerSide = 65;

@@ -6,17 +6,15 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <random>
 #include <vector>
 
-#include "compression/gzip_bytes.hpp"
 #include "formats/quantized_mesh.hpp"
 #include "geo/tiling_scheme.hpp"
 #include "terrain/tin_clip.hpp"
 #include "terrain/tin_tile.hpp"
 #include "tests/support/build_paths.hpp"
+#include "tests/support/quantized_mesh_file.hpp"
 
 namespace globe::terrain {
 namespace {
@@ -30,19 +28,10 @@ struct Loaded {
 };
 
 Loaded loadTile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  const std::vector<char> raw{std::istreambuf_iterator<char>(in), {}};
-  const auto bytes = std::as_bytes(std::span(raw.data(), raw.size()));
-  auto inflated = compression::gunzipIfNeeded(bytes, path.string(), size_t{64} << 20);
-  EXPECT_TRUE(inflated) << inflated.error();
-  auto mesh = formats::decodeQuantizedMesh(*inflated, path.string());
+  auto mesh = globe::testing::readQuantizedMeshFile(path);
   EXPECT_TRUE(mesh) << mesh.error();
-  Loaded tile;
-  for (size_t i = 0; i < mesh->vertexCount(); ++i) {
-    tile.vertices.push_back({mesh->u[i] / 32767.0, mesh->v[i] / 32767.0, mesh->heightMeters[i]});
-  }
-  tile.triangles = mesh->triangles;
-  return tile;
+  if (!mesh) return {};
+  return {globe::testing::tinVertices(*mesh), mesh->triangles};
 }
 
 // The paper's rule by brute force: every triangle holding (u, v), its plane and highest vertex

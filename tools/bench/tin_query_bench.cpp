@@ -8,19 +8,16 @@
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <memory>
 #include <random>
 #include <vector>
 
 #include "collision/qotcd_height.hpp"
-#include "compression/gzip_bytes.hpp"
-#include "formats/quantized_mesh.hpp"
 #include "geo/tiling_scheme.hpp"
 #include "terrain/rendering_tile_array.hpp"
 #include "terrain/tin_tile.hpp"
 #include "tests/support/build_paths.hpp"
+#include "tests/support/quantized_mesh_file.hpp"
 
 namespace {
 
@@ -49,18 +46,11 @@ Fixture makeFixture(const Source& source) {
   const geo::TileId kTile = source.tile;
   const std::filesystem::path path =
       std::filesystem::path(GLOBE_SOURCE_DIR) / "tests/data/interop/quantized-mesh" / source.path;
-  std::ifstream in(path, std::ios::binary);
-  const std::vector<char> raw{std::istreambuf_iterator<char>(in), {}};
-  auto inflated = compression::gunzipIfNeeded(std::as_bytes(std::span(raw.data(), raw.size())),
-                                              path.string(), size_t{64} << 20);
-  auto mesh = formats::decodeQuantizedMesh(*inflated, path.string());
+  auto mesh = testing::readQuantizedMeshFile(path);
   if (!mesh) std::abort();
-  std::vector<terrain::TinVertex> vertices;
-  for (size_t i = 0; i < mesh->vertexCount(); ++i) {
-    vertices.push_back({mesh->u[i] / 32767.0, mesh->v[i] / 32767.0, mesh->heightMeters[i]});
-  }
   const geo::GlobeRectangle rect = geo::GeographicTilingScheme::tileRectangle(kTile);
-  auto tin = terrain::TinTile::build(rect, std::move(vertices), mesh->triangles, path.string());
+  auto tin =
+      terrain::TinTile::build(rect, testing::tinVertices(*mesh), mesh->triangles, path.string());
   if (!tin) std::abort();
   made.tin = std::make_unique<terrain::TinTile>(std::move(*tin));
   made.triangles = made.tin->triangleCount();
