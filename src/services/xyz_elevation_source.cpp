@@ -10,6 +10,7 @@
 #include "formats/image_io.hpp"
 #include "geo/tiling_scheme.hpp"
 #include "geo/web_mercator.hpp"
+#include "services/pixel_tin.hpp"
 #include "services/recent_items.hpp"
 #include "services/tile_matrix.hpp"
 #include "services/tin_sampling.hpp"
@@ -32,6 +33,11 @@ constexpr uint32_t kPolewardLevels = 4;
 // 95th percentile 14.2 m off with vertices a pixel wide at the equator, 3.4 m as fine as the
 // pixels at their latitude, 1.9 m one level finer; TerrainServices.TerrariumIsReadToItsPixels).
 constexpr uint32_t kOversampleLevels = 1;
+// The finest zoom's blocks are drawn as the TIN of their pixels (pixel_tin.hpp), within this
+// of the pixels' bilinear surface, where their window holds at most this many pixels (a
+// block of the equator's level at 60° reads 66×131; deeper levels there fewer).
+constexpr double kPixelTinToleranceMeters = 0.25;
+constexpr int64_t kMaxTinPixels = 4 * 65 * 65;
 
 // The levels past the equator's that a tile at these latitudes (radians) needs for its vertex
 // step to be no wider than the finest pixels' north-south size there.
@@ -53,6 +59,7 @@ struct DecodedTile {
   uint32_t size = 0;
   std::vector<float> heightMeters;
 };
+using TileMap = std::map<MercatorTile, std::shared_ptr<const DecodedTile>>;
 
 class XyzElevationSource final : public ServiceTerrainSource {
  public:
@@ -102,7 +109,7 @@ class XyzElevationSource final : public ServiceTerrainSource {
     ServiceSamples s;
     s.heightMeters.resize(ServiceSamples::count());
     s.water.assign(ServiceSamples::count(), 0);
-    std::map<MercatorTile, std::shared_ptr<const DecodedTile>> tiles;
+    TileMap tiles;
     bool anyData = false;
     size_t k = 0;
     for (int row = -w; row < n + w; ++row) {
@@ -130,6 +137,9 @@ class XyzElevationSource final : public ServiceTerrainSource {
         s.water[i] = 1;
       }
     }
+    auto tin = pixelTin(tile, z, tiles);
+    if (!tin) return Error{tin.error()};
+    s.tin = std::move(*tin);
     return std::optional<ServiceSamples>(std::move(s));
   }
 
@@ -155,35 +165,39 @@ class XyzElevationSource final : public ServiceTerrainSource {
     return expandTileUrl(pattern_, {t.z, t.x, t.y, "", subdomains_});
   }
 
+  // Global pixel (column across ±180° wrapped, row clamped at the poles) of zoom z: nullopt
+  // where its tile is missing, NaN where it is transparent.
+  Result<std::optional<double>> pixel(uint32_t z, int64_t column, int64_t row, TileMap& tiles) {
+    const auto worldPixels = (int64_t{1} << z) * tileSize_;
+    column = ((column % worldPixels) + worldPixels) % worldPixels;
+    row = std::clamp<int64_t>(row, 0, worldPixels - 1);
+    const MercatorTile t{z, static_cast<uint32_t>(column / tileSize_),
+                         static_cast<uint32_t>(row / tileSize_)};
+    auto decoded = tile(t, tiles);
+    if (!decoded) return Error{decoded.error()};
+    if (!*decoded) return std::optional<double>();
+    const DecodedTile& d = **decoded;
+    // A tile of another size than declared is sampled at its own scale.
+    const auto c = static_cast<uint32_t>((column % tileSize_) * d.size / tileSize_);
+    const auto r = static_cast<uint32_t>((row % tileSize_) * d.size / tileSize_);
+    return std::optional<double>(d.heightMeters[static_cast<size_t>(r) * d.size + c]);
+  }
+
   // Bilinear between pixel centres at (px, py) in tile units; NaN where a tile is missing,
   // +inf where every pixel around is transparent.
-  Result<double> sample(uint32_t z, double px, double py,
-                        std::map<MercatorTile, std::shared_ptr<const DecodedTile>>& tiles) {
-    const uint32_t count = 1u << z;
-    const double size = tileSize_;
-    const double gx = px * size - 0.5, gy = py * size - 0.5;  // global pixel coordinates
+  Result<double> sample(uint32_t z, double px, double py, TileMap& tiles) {
+    const double gx = px * tileSize_ - 0.5, gy = py * tileSize_ - 0.5;  // global pixels
     const double fx = std::floor(gx), fy = std::floor(gy);
     const double tx = gx - fx, ty = gy - fy;
     double total = 0, weights = 0;
     for (int dy = 0; dy < 2; ++dy) {
       for (int dx = 0; dx < 2; ++dx) {
+        auto h = pixel(z, static_cast<int64_t>(fx) + dx, static_cast<int64_t>(fy) + dy, tiles);
+        if (!h) return Error{h.error()};
+        if (!*h) return std::numeric_limits<double>::quiet_NaN();  // a missing tile
+        if (std::isnan(**h)) continue;
         const double weight = (dx ? tx : 1 - tx) * (dy ? ty : 1 - ty);
-        const auto worldPixels = static_cast<int64_t>(count) * tileSize_;
-        int64_t gxi = static_cast<int64_t>(fx) + dx;
-        gxi = ((gxi % worldPixels) + worldPixels) % worldPixels;  // across ±180°
-        const int64_t gyi = std::clamp<int64_t>(static_cast<int64_t>(fy) + dy, 0, worldPixels - 1);
-        const MercatorTile t{z, static_cast<uint32_t>(gxi / tileSize_),
-                             static_cast<uint32_t>(gyi / tileSize_)};
-        auto decoded = tile(t, tiles);
-        if (!decoded) return Error{decoded.error()};
-        if (!*decoded) return std::numeric_limits<double>::quiet_NaN();  // a missing tile
-        const DecodedTile& d = **decoded;
-        // A tile of another size than declared is sampled at its own scale.
-        const auto col = static_cast<uint32_t>((gxi % tileSize_) * d.size / tileSize_);
-        const auto row = static_cast<uint32_t>((gyi % tileSize_) * d.size / tileSize_);
-        const float h = d.heightMeters[static_cast<size_t>(row) * d.size + col];
-        if (std::isnan(h)) continue;
-        total += weight * h;
+        total += weight * **h;
         weights += weight;
       }
     }
@@ -192,8 +206,45 @@ class XyzElevationSource final : public ServiceTerrainSource {
     return total / weights;
   }
 
-  Result<std::shared_ptr<const DecodedTile>> tile(
-      const MercatorTile& t, std::map<MercatorTile, std::shared_ptr<const DecodedTile>>& local) {
+  // The surface a pixel shows, as the grid's samples take it: water (transparent, or at or
+  // below the sea level) at its surface (0 m, or its floor with SeaFloor).
+  double surfaceOf(double pixel) const {
+    if (std::isnan(pixel)) return 0;
+    if (pixel > seaLevelMeters_) return pixel;
+    return sea() == terrain::SeaSurface::Water ? 0 : std::min(pixel, 0.0);
+  }
+
+  // The block as the TIN of its pixels' surface (pixel_tin.hpp) within the Mercator band, at
+  // the finest zoom, where not too many pixels and none of their tiles missing; else null (the
+  // grid, which at the data's edge goes down to the parent's surface).
+  Result<std::shared_ptr<const terrain::TinTile>> pixelTin(const geo::TileId& tile, uint32_t z,
+                                                           TileMap& tiles) {
+    const auto rect = geo::GeographicTilingScheme::tileRectangle(tile);
+    const double limit = kWebMercatorMaxLatitudeDegrees * std::numbers::pi / 180;
+    if (z != maxZoom_ || rect.northRadians > limit || rect.southRadians < -limit) {
+      return std::shared_ptr<const terrain::TinTile>();
+    }
+    PixelWindow window;
+    window.worldPixels = std::ldexp(static_cast<double>(tileSize_), static_cast<int>(z));
+    const PixelRange range = pixelRangeOf(rect, window.worldPixels);
+    window.firstColumn = range.firstColumn;
+    window.firstRow = range.firstRow;
+    window.columns = range.lastColumn - range.firstColumn + 1;
+    window.rows = range.lastRow - range.firstRow + 1;
+    if (window.columns * window.rows > kMaxTinPixels)
+      return std::shared_ptr<const terrain::TinTile>();
+    for (int64_t row = range.firstRow; row <= range.lastRow; ++row) {
+      for (int64_t column = range.firstColumn; column <= range.lastColumn; ++column) {
+        auto h = pixel(z, column, row, tiles);
+        if (!h) return Error{h.error()};
+        if (!*h) return std::shared_ptr<const terrain::TinTile>();  // the data's edge
+        window.heightMeters.push_back(surfaceOf(**h));
+      }
+    }
+    return buildPixelTin(rect, window, kPixelTinToleranceMeters, location(tile));
+  }
+
+  Result<std::shared_ptr<const DecodedTile>> tile(const MercatorTile& t, TileMap& local) {
     if (auto it = local.find(t); it != local.end()) return it->second;
     std::optional<std::shared_ptr<const DecodedTile>> kept = recent_.find(t);
     std::shared_ptr<const DecodedTile> decoded = kept ? *kept : nullptr;
