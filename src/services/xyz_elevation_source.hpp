@@ -1,9 +1,11 @@
 // Web-Mercator elevation tiles encoded in PNG colours (Terrarium: the open AWS Terrain Tiles;
 // Mapbox Terrain-RGB) as a terrain source: each block's vertices and apron are sampled
 // bilinearly from the Mercator tiles of about the block's resolution as it loads, so the
-// geographic blocks carry the service's heights without a Mercator distortion. The tree goes on
+// geographic blocks carry the service's heights without a Mercator distortion. The finest
+// zoom's blocks also carry the TIN of their pixels (pixel_tin.hpp), which they are drawn and
+// collided as: the pixels' bilinear surface within 0.25 m, cliffs included. The tree goes on
 // past the finest zoom until its vertices are finer than the pixels north-south too (deeper
-// towards the poles), so the drawn surface follows the pixels, cliffs included.
+// towards the poles), so the grids where no TIN is made (the data's edge) follow them closely.
 #pragma once
 
 #include <memory>
