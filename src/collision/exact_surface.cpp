@@ -18,10 +18,6 @@
 namespace globe::collision {
 namespace {
 
-// Planes within ~1e-6 rad of containing the normal are treated as degenerate.
-constexpr double kMinimumNormalCosine = 1e-6;
-// A hit this far outside a triangle (in barycentric terms) still counts as inside.
-constexpr double kBarycentricTolerance = 1e-9;
 constexpr int kMaximumSteps = 4;
 
 struct Triangle {

@@ -14,6 +14,12 @@
 
 namespace globe::collision {
 
+// A triangle whose plane is within this cosine of containing the normal is degenerate...
+inline constexpr double kMinimumNormalCosine = 1e-6;
+// ...and a meeting point this far outside a triangle (in barycentric terms) still inside it:
+// surface samplers that repeat the plane step for speed (surface/lattice_heights.cpp) use these.
+inline constexpr double kBarycentricTolerance = 1e-9;
+
 enum class SurfaceTriangle {
   None,         // no surface (no tile, invalid input)
   SouthWest,    // {(i,j), (i+1,j), (i+1,j+1)} of quad (i, j)

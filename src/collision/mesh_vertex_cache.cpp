@@ -5,6 +5,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <vector>
 
 #include "geo/cartographic.hpp"
 
@@ -27,21 +28,34 @@ struct ColumnTrig {
 
 size_t slotOf(uint64_t key) { return (key * 0x9E3779B97F4A7C15ULL) >> 58; }  // 6 bits
 
+void fillRowTrig(RowTrig& row, const geo::Ellipsoid& ellipsoid, double latitudeDegrees) {
+  const double a = ellipsoid.semiMajorAxisMeters, b = ellipsoid.semiMinorAxisMeters;
+  const double latitude = geo::degreesToRadians(latitudeDegrees);
+  row.key = std::bit_cast<uint64_t>(latitudeDegrees);
+  row.a = a;
+  row.b = b;
+  row.sinLat = std::sin(latitude);
+  row.cosLat = std::cos(latitude);
+  row.n = a / std::sqrt(1.0 - ellipsoid.eccentricitySquared() * row.sinLat * row.sinLat);
+  row.nPolar = row.n * (b / a) * (b / a);
+  row.valid = true;
+}
+
+void fillColumnTrig(ColumnTrig& column, double longitudeDegrees) {
+  const double longitude = geo::degreesToRadians(longitudeDegrees);
+  column.key = std::bit_cast<uint64_t>(longitudeDegrees);
+  column.cosLon = std::cos(longitude);
+  column.sinLon = std::sin(longitude);
+  column.valid = true;
+}
+
 const RowTrig& rowTrig(const geo::Ellipsoid& ellipsoid, double latitudeDegrees) {
   thread_local std::array<RowTrig, kSlots> rows;
   const uint64_t key = std::bit_cast<uint64_t>(latitudeDegrees);
   const double a = ellipsoid.semiMajorAxisMeters, b = ellipsoid.semiMinorAxisMeters;
   RowTrig& slot = rows[slotOf(key)];
   if (slot.valid && slot.key == key && slot.a == a && slot.b == b) return slot;
-  const double latitude = geo::degreesToRadians(latitudeDegrees);
-  slot.key = key;
-  slot.a = a;
-  slot.b = b;
-  slot.sinLat = std::sin(latitude);
-  slot.cosLat = std::cos(latitude);
-  slot.n = a / std::sqrt(1.0 - ellipsoid.eccentricitySquared() * slot.sinLat * slot.sinLat);
-  slot.nPolar = slot.n * (b / a) * (b / a);
-  slot.valid = true;
+  fillRowTrig(slot, ellipsoid, latitudeDegrees);
   return slot;
 }
 
@@ -50,12 +64,17 @@ const ColumnTrig& columnTrig(double longitudeDegrees) {
   const uint64_t key = std::bit_cast<uint64_t>(longitudeDegrees);
   ColumnTrig& slot = columns[slotOf(key)];
   if (slot.valid && slot.key == key) return slot;
-  const double longitude = geo::degreesToRadians(longitudeDegrees);
-  slot.key = key;
-  slot.cosLon = std::cos(longitude);
-  slot.sinLon = std::sin(longitude);
-  slot.valid = true;
+  fillColumnTrig(slot, longitudeDegrees);
   return slot;
+}
+
+// terrain::tileVertexEcefMeters' formula on its row's and column's terms.
+glm::dvec3 vertexOf(const RowTrig& r, const ColumnTrig& c, double latitudeDegrees,
+                    double heightMeters) {
+  const double z = (r.nPolar + heightMeters) * r.sinLat;
+  if (std::abs(latitudeDegrees) == 90.0) return {0.0, 0.0, z};  // on the polar axis
+  const double rho = (r.n + heightMeters) * r.cosLat;
+  return {rho * c.cosLon, rho * c.sinLon, z};
 }
 
 }  // namespace
@@ -65,11 +84,32 @@ glm::dvec3 cachedTileVertexEcefMeters(const geo::Ellipsoid& ellipsoid,
                                       double heightMeters) {
   const double latitudeDegrees = grid.latitudeDegrees(row);
   const RowTrig& r = rowTrig(ellipsoid, latitudeDegrees);
-  const double z = (r.nPolar + heightMeters) * r.sinLat;
-  if (std::abs(latitudeDegrees) == 90.0) return {0.0, 0.0, z};  // on the polar axis
-  const ColumnTrig& c = columnTrig(grid.longitudeDegrees(column));
-  const double rho = (r.n + heightMeters) * r.cosLat;
-  return {rho * c.cosLon, rho * c.sinLon, z};
+  const ColumnTrig pole{};  // a pole's vertex has no longitude
+  const ColumnTrig& c =
+      std::abs(latitudeDegrees) == 90.0 ? pole : columnTrig(grid.longitudeDegrees(column));
+  return vertexOf(r, c, latitudeDegrees, heightMeters);
+}
+
+std::vector<glm::dvec3> blockVertexEcefMeters(const geo::Ellipsoid& ellipsoid,
+                                              const terrain::BlockGrid& grid,
+                                              const terrain::HeightBlock& block) {
+  const uint32_t n = grid.verticesPerSide;
+  std::vector<ColumnTrig> columns(n);
+  for (uint32_t column = 0; column < n; ++column) {
+    fillColumnTrig(columns[column], grid.longitudeDegrees(column));
+  }
+  std::vector<glm::dvec3> vertices;
+  vertices.reserve(size_t{n} * n);
+  RowTrig r;
+  for (uint32_t row = 0; row < n; ++row) {
+    const double latitudeDegrees = grid.latitudeDegrees(row);
+    fillRowTrig(r, ellipsoid, latitudeDegrees);
+    for (uint32_t column = 0; column < n; ++column) {
+      vertices.push_back(
+          vertexOf(r, columns[column], latitudeDegrees, block.surfaceHeightMetersAt(row, column)));
+    }
+  }
+  return vertices;
 }
 
 SurfacePoint surfacePointAndNormal(const geo::Ellipsoid& ellipsoid, double longitudeRadians,

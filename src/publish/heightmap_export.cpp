@@ -14,6 +14,7 @@
 #include "geo/tiling_scheme.hpp"
 #include "publish/terrain_layer_writer.hpp"
 #include "publish/tile_workers.hpp"
+#include "surface/lattice_heights.hpp"
 #include "surface/pyramid_surface.hpp"
 #include "terrain/block_grid.hpp"
 #include "transport/atomic_file.hpp"
@@ -77,16 +78,15 @@ Result<std::vector<std::byte>> makeTile(surface::PyramidSurface& surface, const 
   formats::HeightmapTile made;
   made.childMask = children;
   const terrain::BlockGrid grid{tile, kSide};
-  made.heightMeters.reserve(size_t{kSide} * kSide);
-  for (uint32_t row = 0; row < kSide; ++row) {
-    const double lat = grid.latitudeDegrees(row) * kRadiansPerDegree;
-    for (uint32_t column = 0; column < kSide; ++column) {
-      auto h =
-          surface.heightMeters(grid.longitudeDegrees(column) * kRadiansPerDegree, lat, sampleLevel);
-      if (!h) return Error{h.error()};
-      made.heightMeters.push_back(*h);
-    }
+  std::array<double, kSide> longitudes{}, latitudes{};
+  for (uint32_t i = 0; i < kSide; ++i) {
+    longitudes[i] = grid.longitudeDegrees(i) * kRadiansPerDegree;
+    latitudes[i] = grid.latitudeDegrees(i) * kRadiansPerDegree;
   }
+  // The posts make a lattice: the exact surface at each, computed per block, not per post.
+  auto heights = surface::latticeHeightsMeters(surface, longitudes, latitudes, sampleLevel);
+  if (!heights) return Error{heights.error()};
+  made.heightMeters = std::move(*heights);
   auto water = waterMask(surface, tile, sampleLevel);
   if (!water) return Error{water.error()};
   made.waterMask = std::move(*water);

@@ -10,10 +10,12 @@
 #include <vector>
 
 #include "formats/image_io.hpp"
+#include "formats/png_encoder.hpp"
 #include "formats/webp_lossless.hpp"
 #include "geo/web_mercator.hpp"
 #include "publish/terrain_layer_writer.hpp"
 #include "publish/tile_workers.hpp"
+#include "surface/lattice_heights.hpp"
 #include "surface/pyramid_surface.hpp"
 
 namespace globe::publish {
@@ -92,25 +94,33 @@ Result<std::set<ElevationTile>> zoomTiles(streaming::TerrainSource& source,
   return tiles;
 }
 
-// The tile's pixels, each the exact surface at its centre from the tile's level.
+// A Terrarium pixel's low byte is 1/256 m, noise to deflate: the Up filter on every row and
+// deflate level 1 write tiles within 1 % of the size of the adaptive filters at level 6 (119 KB
+// against 118 on Fuji) in a third of the time.
+constexpr formats::PngEncoding kPngEncoding{1, false};
+
+// The tile's pixels, each the exact surface at its centre from the tile's level: RGB (a PNG
+// without alpha, every pixel being opaque), RGBA for WebP's encoder.
 Result<std::vector<std::byte>> makeElevationTile(surface::PyramidSurface& surface,
                                                  const ElevationTile& t, PixelEncoding encode,
                                                  bool webp) {
   const double tiles = std::ldexp(1.0, static_cast<int>(t.zoom));
-  formats::ImageRgba image{static_cast<int>(kTileSize), static_cast<int>(kTileSize),
-                           std::vector<uint8_t>(kTileSize * kTileSize * 4, 255)};
-  for (uint32_t r = 0; r < kTileSize; ++r) {
-    const double lat = geo::webMercatorLatitudeRadiansOfRow(t.y + (r + 0.5) / kTileSize, t.zoom);
-    for (uint32_t c = 0; c < kTileSize; ++c) {
-      const double lon =
-          ((t.x + (c + 0.5) / kTileSize) / tiles * 360 - 180) * std::numbers::pi / 180;
-      auto h = surface.heightMeters(lon, lat, t.level);
-      if (!h) return Error{h.error()};
-      const auto pixel = encode(*h);
-      std::copy(pixel.begin(), pixel.end(), &image.pixels[(r * kTileSize + c) * 4]);
-    }
+  std::array<double, kTileSize> longitudes{}, latitudes{};
+  for (uint32_t i = 0; i < kTileSize; ++i) {
+    latitudes[i] = geo::webMercatorLatitudeRadiansOfRow(t.y + (i + 0.5) / kTileSize, t.zoom);
+    longitudes[i] = ((t.x + (i + 0.5) / kTileSize) / tiles * 360 - 180) * std::numbers::pi / 180;
   }
-  return webp ? formats::encodeWebpLossless(image) : formats::encodePng(image);
+  auto heights = surface::latticeHeightsMeters(surface, longitudes, latitudes, t.level);
+  if (!heights) return Error{heights.error()};
+  const size_t channels = webp ? 4 : 3;
+  std::vector<uint8_t> pixels(heights->size() * channels, 255);
+  for (size_t i = 0; i < heights->size(); ++i) {
+    const auto pixel = encode((*heights)[i]);
+    std::copy(pixel.begin(), pixel.end(), &pixels[i * channels]);
+  }
+  constexpr int kSide = static_cast<int>(kTileSize);
+  if (!webp) return formats::encodePngRgb(pixels, kSide, kSide, kPngEncoding);
+  return formats::encodeWebpLossless(formats::ImageRgba{kSide, kSide, std::move(pixels)});
 }
 
 Result<ExportReport> exportElevationPngs(streaming::TerrainSource& source,

@@ -34,8 +34,7 @@ Result<const PyramidSurface::Loaded*> PyramidSurface::block(const geo::TileId& t
 Result<const PyramidSurface::Loaded*> PyramidSurface::finest(double longitudeRadians,
                                                              double latitudeRadians,
                                                              uint32_t maxLevel) {
-  const uint32_t deepest = std::min(maxLevel, source_.manifest().maxLevel());
-  for (uint32_t level = deepest + 1; level-- > 0;) {
+  for (uint32_t level = deepestLevel(maxLevel) + 1; level-- > 0;) {
     const auto tile =
         geo::GeographicTilingScheme::positionToTile(longitudeRadians, latitudeRadians, level);
     if (!tile) return makeError("invalid position");
@@ -44,6 +43,19 @@ Result<const PyramidSurface::Loaded*> PyramidSurface::finest(double longitudeRad
     if ((*found)->block) return *found;
   }
   return static_cast<const Loaded*>(nullptr);
+}
+
+uint32_t PyramidSurface::deepestLevel(uint32_t maxLevel) const {
+  return std::min(maxLevel, source_.manifest().maxLevel());
+}
+
+Result<PyramidSurface::Loaded> PyramidSurface::finestTile(double longitudeRadians,
+                                                          double latitudeRadians,
+                                                          uint32_t maxLevel) {
+  auto found = finest(geo::wrapLongitudeRadians(longitudeRadians), latitudeRadians, maxLevel);
+  if (!found) return Error{found.error()};
+  if (*found == nullptr) return Loaded{};
+  return **found;
 }
 
 Result<double> PyramidSurface::heightMeters(double longitudeRadians, double latitudeRadians,

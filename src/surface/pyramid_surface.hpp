@@ -37,14 +37,23 @@ class PyramidSurface {
   Result<bool> isWater(double longitudeRadians, double latitudeRadians,
                        uint32_t maxLevel = kFinestLevel);
 
- private:
-  static constexpr size_t kCachedBlocks = 512;
   // A tile's block as the collision code reads it (its rectangle and highest vertex worked out
   // once when it loads, not at every point: an export asks for 65,536 points a tile).
   struct Loaded {
     std::shared_ptr<const terrain::HeightBlock> block;  // null: the pyramid has no such tile
     terrain::ArrayTile arrayTile{};
   };
+  // The tile heightMeters samples at the point (block null where the pyramid has none), for
+  // callers that sample many points of one tile (lattice_heights.hpp); the copy keeps the block
+  // alive after the cache drops it.
+  Result<Loaded> finestTile(double longitudeRadians, double latitudeRadians,
+                            uint32_t maxLevel = kFinestLevel);
+  // The level heightMeters starts its search at: maxLevel, or the pyramid's finest if coarser.
+  uint32_t deepestLevel(uint32_t maxLevel) const;
+  const geo::Ellipsoid& ellipsoid() const { return ellipsoid_; }
+
+ private:
+  static constexpr size_t kCachedBlocks = 512;
   Result<const Loaded*> block(const geo::TileId& tile);
   // The finest tile of level <= maxLevel under the point (null: none there).
   Result<const Loaded*> finest(double longitudeRadians, double latitudeRadians, uint32_t maxLevel);

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <random>
+#include <vector>
 
 #include "collision/mesh_vertex_cache.hpp"
 #include "geo/ecef.hpp"
@@ -49,6 +50,31 @@ TEST(MeshVertexCache, VerticesAreTheMeshsBitForBit) {
     }
   }
   EXPECT_GT(poles, 100);
+}
+
+// A whole block's vertices at once (the lattice sampler's): the mesh's, pole rows included.
+TEST(MeshVertexCache, BlockVerticesAreTheMeshsBitForBit) {
+  std::mt19937_64 rng(11);
+  for (const geo::TileId tile : {geo::TileId{14, 29124, 3260}, geo::TileId{3, 0, 0},
+                                 geo::TileId{5, 63, 31}, geo::TileId{0, 1, 0}}) {
+    terrain::HeightBlock block;
+    block.verticesPerSide = 17;
+    for (int i = 0; i < 17 * 17; ++i) {
+      block.heights.push_back(static_cast<int16_t>(static_cast<int>(rng() % 9000) - 1000));
+    }
+    block.heights[5] = terrain::kNoDataHeight;  // water: 0 m
+    const terrain::BlockGrid grid{tile, 17};
+    const auto ellipsoid = geo::Ellipsoid::wgs84();
+    const std::vector<glm::dvec3> vertices = blockVertexEcefMeters(ellipsoid, grid, block);
+    ASSERT_EQ(vertices.size(), size_t{17 * 17});
+    for (uint32_t row = 0; row < 17; ++row) {
+      for (uint32_t column = 0; column < 17; ++column) {
+        expectSame(vertices[row * 17 + column],
+                   terrain::tileVertexEcefMeters(ellipsoid, grid, row, column,
+                                                 block.surfaceHeightMetersAt(row, column)));
+      }
+    }
+  }
 }
 
 TEST(MeshVertexCache, NadirPointAndNormalAreTheGeodesyLibrarys) {
