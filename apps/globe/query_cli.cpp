@@ -3,6 +3,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "apps/globe/query_command.hpp"
 #include "apps/globe/subcommands.hpp"
@@ -15,6 +16,7 @@ struct QueryArguments {
   std::string mode = "qotcd";
   uint32_t level = 0;
   CLI::Option* levelOption = nullptr;  // count() > 0: --level was given
+  std::vector<std::string> tilesets;
 };
 
 int runQueryCommand(const QueryArguments& arguments, const CommandContext& context) {
@@ -23,6 +25,7 @@ int runQueryCommand(const QueryArguments& arguments, const CommandContext& conte
   options.globeModel = context.globeModel;
   options.sea = context.sea;
   options.network = context.network;
+  options.tilesets.assign(arguments.tilesets.begin(), arguments.tilesets.end());
   if (arguments.mode == "exact") {
     options.mode = collision::HeightMode::Exact;
   } else if (arguments.mode != "qotcd") {
@@ -52,6 +55,9 @@ Subcommand addQueryCommand(CLI::App& app, CommonArguments& common) {
       ->capture_default_str();
   arguments->levelOption = query->add_option("--level", arguments->level,
                                              "query this level (default: the finest there)");
+  query->add_option("--tileset", arguments->tilesets,
+                    "3D Tiles tileset (its tileset.json or folder): the height is the higher of "
+                    "the terrain and its finest content there; repeat for more");
   addGlobeOption(*query, common);
   addNetworkOptions(*query, common);
   addSeaFloorOption(*query, common);

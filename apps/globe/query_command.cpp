@@ -1,5 +1,6 @@
 #include "apps/globe/query_command.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <string>
@@ -8,6 +9,8 @@
 #include "geo/cartographic.hpp"
 #include "geo/tiling_scheme.hpp"
 #include "services/terrain_services.hpp"
+#include "tiles3d/tileset.hpp"
+#include "tiles3d/tileset_surface.hpp"
 
 namespace globe::app {
 namespace {
@@ -37,6 +40,23 @@ Result<std::pair<double, double>> parseLine(const std::string& line) {
                    geo::degreesToRadians(*lat)};
 }
 
+// Each tileset's surface, its warnings said once on `errors`.
+Result<std::vector<tiles3d::TilesetSurface>> loadTilesets(const QueryOptions& options,
+                                                          const geo::Ellipsoid& ellipsoid,
+                                                          std::FILE* errors) {
+  std::vector<tiles3d::TilesetSurface> surfaces;
+  for (const auto& path : options.tilesets) {
+    auto tileset = tiles3d::readTileset(path);
+    if (!tileset) return Error{tileset.error()};
+    auto surface = tiles3d::TilesetSurface::load(*tileset, ellipsoid);
+    if (!surface) return Error{surface.error()};
+    for (const std::string& w : surface->warnings())
+      std::fprintf(errors, "globe query: %s\n", w.c_str());
+    surfaces.push_back(std::move(*surface));
+  }
+  return surfaces;
+}
+
 }  // namespace
 
 Result<QueryReport> runQuery(const QueryOptions& options, std::istream& in, std::FILE* out,
@@ -49,6 +69,8 @@ Result<QueryReport> runQuery(const QueryOptions& options, std::istream& in, std:
                      ": the pyramid's levels are 0.." + std::to_string(maxLevel));
   }
   const geo::Ellipsoid ellipsoid = geo::ellipsoidFor(options.globeModel);
+  auto tilesets = loadTilesets(options, ellipsoid, errors);
+  if (!tilesets) return Error{tilesets.error()};
   std::map<geo::TileId, terrain::HeightBlock> blocks;
   QueryReport report;
   std::string line;
@@ -101,8 +123,13 @@ Result<QueryReport> runQuery(const QueryOptions& options, std::istream& in, std:
     const auto sample =
         collision::sampleHeight(array, ellipsoid, position->first, position->second, options.mode);
     if (!sample) return makeError("internal: no height in the tile that contains the point");
+    double heightMeters = sample->heightMeters;
+    for (const auto& tileset : *tilesets) {
+      heightMeters = std::max(
+          heightMeters, tileset.heightAt(position->first, position->second).value_or(heightMeters));
+    }
     std::fprintf(out, "%.9g,%.9g,%u,%.3f\n", geo::radiansToDegrees(position->first),
-                 geo::radiansToDegrees(position->second), sample->level, sample->heightMeters);
+                 geo::radiansToDegrees(position->second), sample->level, heightMeters);
     ++report.answered;
   }
   return report;

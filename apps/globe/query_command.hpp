@@ -1,5 +1,6 @@
 // `globe query`: a height service. Reads "lon,lat" lines (degrees), prints "lon,lat,level,height_m"
-// from the finest tile the pyramid has there (or a given level), by QOTCD or the exact surface.
+// from the finest tile the pyramid has there (or a given level), by QOTCD or the exact surface;
+// with tilesets, the higher of that and their drawn surface (tiles3d/tileset_surface.hpp).
 #pragma once
 
 #include <cstdio>
@@ -7,6 +8,7 @@
 #include <istream>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "collision/height_service.hpp"
 #include "core/result.hpp"
@@ -23,6 +25,7 @@ struct QueryOptions {
   geo::GlobeModel globeModel = geo::GlobeModel::Wgs84;
   terrain::SeaSurface sea = terrain::SeaSurface::Water;  // --sea-floor: SeaFloor
   std::shared_ptr<transport::Network> network;           // for an http(s) URL
+  std::vector<std::filesystem::path> tilesets;           // 3D Tiles: the higher surface wins
 };
 
 struct QueryReport {

@@ -1,0 +1,46 @@
+// A 3D tile's drawn surface seen from above: the highest point of its triangles in each cell of
+// a longitude/latitude grid over the rectangle they cover (none where no triangle lies), built
+// once where the content loads. Conservative: a cell never reads below a triangle that meets it
+// (the triangle's plane at the cell's corners, capped by its highest vertex), so QOTCD reading it
+// in O(1) keeps the camera above every roof it draws.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "geo/ellipsoid.hpp"
+#include "geo/globe_rectangle.hpp"
+#include "tiles3d/triangle_mesh.hpp"
+
+namespace globe::tiles3d {
+
+class HeightGrid {
+ public:
+  // Cells about `cellMeters` wide, at most `maxCellsPerSide` a side. An empty mesh: no cells.
+  static HeightGrid rasterize(const TriangleMesh& ecefTriangles, const geo::Ellipsoid& ellipsoid,
+                              double cellMeters, uint32_t maxCellsPerSide);
+
+  // The highest surface over the cell holding the point; nullopt off the grid or where no
+  // triangle lies.
+  std::optional<double> heightAt(double longitudeRadians, double latitudeRadians) const;
+
+  bool empty() const { return heightsMeters_.empty(); }
+  const geo::GlobeRectangle& rectangle() const { return rectangle_; }
+  uint32_t columns() const { return columns_; }
+  uint32_t rows() const { return rows_; }
+  double maximumHeightMeters() const { return maximumMeters_; }
+
+ private:
+  struct Corner {
+    double lon, lat, heightMeters;
+  };
+  void addTriangle(const Corner& a, const Corner& b, const Corner& c);
+
+  geo::GlobeRectangle rectangle_{0, 0, 0, 0};
+  uint32_t columns_ = 0, rows_ = 0;
+  double maximumMeters_ = 0;
+  std::vector<float> heightsMeters_;  // row-major from the south-west; NaN: none
+};
+
+}  // namespace globe::tiles3d

@@ -1,0 +1,66 @@
+#include "tiles3d/tileset_surface.hpp"
+
+#include <algorithm>
+
+#include "tiles3d/tile_content.hpp"
+#include "transport/atomic_file.hpp"
+
+namespace globe::tiles3d {
+namespace {
+
+constexpr uint64_t kMaxContentBytes = uint64_t{256} << 20;
+
+void keepHigher(std::optional<double>& best, const std::optional<double>& h) {
+  if (h && (!best || *h > *best)) best = h;
+}
+
+}  // namespace
+
+Result<TilesetSurface> TilesetSurface::load(const Tileset& tileset,
+                                            const geo::Ellipsoid& ellipsoid) {
+  TilesetSurface surface;
+  surface.warnings_ = tileset.warnings;
+  surface.root_ = surface.build(tileset.root, ellipsoid, 0);
+  return surface;
+}
+
+TilesetSurface::Node TilesetSurface::build(const TileNode& tile, const geo::Ellipsoid& ellipsoid,
+                                           int depth) {
+  Node node;
+  node.additive = tile.additive;
+  for (const auto& file : tile.contents) {
+    auto bytes = transport::readWholeFile(file, kMaxContentBytes);
+    auto mesh = bytes ? readTileContent(*bytes, tile.transform, ellipsoid, file.string())
+                      : Result<TriangleMesh>(Error{bytes.error()});
+    if (!mesh) {
+      warnings_.push_back(mesh.error() + " (its parent's content stands in)");
+      node.complete = false;
+      continue;
+    }
+    ++contentsRead_;
+    trianglesRead_ += mesh->triangleCount();
+    node.grids.push_back(
+        HeightGrid::rasterize(*mesh, ellipsoid, kHeightGridCellMeters, kMaxHeightGridCells));
+  }
+  for (const TileNode& child : tile.children)
+    node.children.push_back(build(child, ellipsoid, depth + 1));
+  return node;
+}
+
+std::optional<double> TilesetSurface::heightAt(double lon, double lat) const {
+  return heightAt(root_, lon, lat);
+}
+
+std::optional<double> TilesetSurface::heightAt(const Node& node, double lon, double lat) {
+  std::optional<double> own;
+  for (const HeightGrid& grid : node.grids) keepHigher(own, grid.heightAt(lon, lat));
+  if (node.children.empty()) return own;
+  const bool refinable = std::all_of(node.children.begin(), node.children.end(),
+                                     [](const Node& c) { return c.complete; });
+  if (!node.additive && !refinable) return own;
+  std::optional<double> best = node.additive ? own : std::nullopt;
+  for (const Node& child : node.children) keepHigher(best, heightAt(child, lon, lat));
+  return best;
+}
+
+}  // namespace globe::tiles3d

@@ -1,0 +1,51 @@
+// A tileset's highest drawn surface anywhere, at its finest levels, as `globe query --tileset`
+// answers and collision reads: every content read into a height grid (height_grid.hpp), then at
+// a point, by the refinement the tileset says: REPLACE, the children's surface where every
+// child's content could be read (else the parent's, as a viewer keeps drawing it); ADD, the
+// higher of the tile's own and its children's. A content that cannot be read is named in the
+// warnings and its coarser ancestor stands in.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/result.hpp"
+#include "geo/ellipsoid.hpp"
+#include "tiles3d/height_grid.hpp"
+#include "tiles3d/tileset.hpp"
+
+namespace globe::tiles3d {
+
+// Grid cells of about this size (m), at most this many a side.
+inline constexpr double kHeightGridCellMeters = 0.5;
+inline constexpr uint32_t kMaxHeightGridCells = 512;
+
+class TilesetSurface {
+ public:
+  static Result<TilesetSurface> load(const Tileset& tileset, const geo::Ellipsoid& ellipsoid);
+
+  // The highest drawn surface at a point (radians), nullopt where the tileset has none.
+  std::optional<double> heightAt(double longitudeRadians, double latitudeRadians) const;
+
+  const std::vector<std::string>& warnings() const { return warnings_; }
+  size_t contentsRead() const { return contentsRead_; }
+  size_t trianglesRead() const { return trianglesRead_; }
+
+ private:
+  struct Node {
+    bool additive = false;
+    bool complete = true;  // every content read
+    std::vector<HeightGrid> grids;
+    std::vector<Node> children;
+  };
+  Node build(const TileNode& tile, const geo::Ellipsoid& ellipsoid, int depth);
+  static std::optional<double> heightAt(const Node& node, double lon, double lat);
+
+  Node root_;
+  std::vector<std::string> warnings_;
+  size_t contentsRead_ = 0, trianglesRead_ = 0;
+};
+
+}  // namespace globe::tiles3d
