@@ -215,8 +215,13 @@ void CameraController::moveBy(const Move& move, double dtSeconds,
   // The glide lifts a moving camera's proposal over the ground ahead before the response tests
   // it; a jump starts afresh.
   if (settings_.glide.enabled && (kind == MotionKind::Linear || kind == MotionKind::Angular)) {
+    // The motion the proposal asks of the camera as it is lifted now: from the proposal less
+    // the lift the camera carries (else a held script reads as the lift's whole height each
+    // frame, thousands of m/s, and the speed margin holds a stopped camera 50 m up).
+    geo::Cartographic carried = to;
+    carried.heightMeters += glide_.liftMeters();
     const glm::dvec3 motion =
-        geo::cartographicToEcef(ellipsoid, to) - geo::cartographicToEcef(ellipsoid, from);
+        geo::cartographicToEcef(ellipsoid, carried) - geo::cartographicToEcef(ellipsoid, from);
     const GlideResult glide = glide_.update(array, ellipsoid, to, motion, move.ahead, dtSeconds,
                                             responseClearance(settings_.clearance).eyeMeters);
     to.heightMeters += glide.liftMeters;

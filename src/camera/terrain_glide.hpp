@@ -28,8 +28,8 @@ struct GlideSettings {
   double lookAheadSeconds = 3.0;  // how far ahead in time the ground is read
   int samples = 24;               // readings along the look-ahead (and one under the camera)
   double climbAccelerationMetersPerSecondSquared = 20.0;
-  double marginMeters = 3.0;         // aimed at above the eye clearance (room for the spring)
-  double speedMarginSeconds = 0.02;  // and this much more per m/s (250 m/s: 5 m)
+  double marginMeters = 3.0;        // aimed at above the eye clearance (room for the spring)
+  double speedMarginSeconds = 0.4;  // and this much more per m/s (30 m/s: 12 m; capped)
   double maximumMarginMeters = 50.0;
   double settleSeconds = 0.3;  // the spring's time constant (1/omega)
 };
