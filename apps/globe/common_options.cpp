@@ -7,6 +7,8 @@
 #include "services/terrain_services.hpp"
 #include "services/url_template.hpp"
 #include "sun/utc_time.hpp"
+#include "tiles3d/tileset.hpp"
+#include "tiles3d/tileset_surface.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -110,6 +112,11 @@ void addLayerOptions(CLI::App& command, CommonArguments& arguments) {
                   "polygons draped on the ground, placemarks with their icons and labels, "
                   "ground overlays; repeat for more")
       ->type_name("FILE");
+  command
+      .add_option("--tileset", arguments.tilesets,
+                  "3D Tiles tileset (its tileset.json or folder) drawn over the terrain at its "
+                  "finest levels, the camera kept above it as above the terrain; repeat for more")
+      ->type_name("DIR");
   command.add_flag("--overlay-hidden", arguments.overlayHidden,
                    "also draw what the overlay files hide (KML visibility 0), as if every item "
                    "were ticked");
@@ -133,11 +140,12 @@ void addLayerOptions(CLI::App& command, CommonArguments& arguments) {
   command.add_flag("--no-shadows", arguments.noShadows,
                    "with --time: no terrain shadows (they are computed on the CPU, ~5 ms a tile "
                    "at a low Sun)");
-  command.add_option("--time", arguments.time,
-                     "light the terrain by the real Sun at this instant, ISO-8601 with its zone "
-                     "(2024-06-21T06:30:00Z, 2024-06-21T08:30+02:00): slopes facing the Sun "
-                     "bright, the night side dark (`globe sun` says where the Sun stands); "
-                     "without it a light from the north-west follows the camera")
+  command
+      .add_option("--time", arguments.time,
+                  "light the terrain by the real Sun at this instant, ISO-8601 with its zone "
+                  "(2024-06-21T06:30:00Z, 2024-06-21T08:30+02:00): slopes facing the Sun "
+                  "bright, the night side dark (`globe sun` says where the Sun stands); "
+                  "without it a light from the north-west follows the camera")
       ->type_name("ISO-8601");
   command.add_flag("--nominal-lod", arguments.nominalLod,
                    "refine by each level's nominal error, not the tiler's measured one (more "
@@ -253,6 +261,20 @@ bool applySceneArguments(const char* command, const CommonArguments& arguments,
     if (arguments.overlayHidden) overlays::showEverything(*document);
     scene.overlays.push_back(
         std::make_shared<const overlays::OverlayDocument>(std::move(*document)));
+  }
+  for (const std::string& given : arguments.tilesets) {
+    auto tileset = tiles3d::readTileset(given);
+    auto surface =
+        tileset ? tiles3d::TilesetSurface::load(*tileset, geo::ellipsoidFor(scene.globeModel))
+                : Result<tiles3d::TilesetSurface>(Error{tileset.error()});
+    if (!surface) {
+      std::fprintf(stderr, "globe %s: --tileset %s\n", command, surface.error().c_str());
+      return false;
+    }
+    for (const std::string& warning : surface->warnings()) {
+      std::fprintf(stderr, "globe %s: warning: %s\n", command, warning.c_str());
+    }
+    scene.tilesets.push_back(std::make_shared<const tiles3d::TilesetSurface>(std::move(*surface)));
   }
   // A bare --lighting parses as "".
   const auto lighting = arguments.lighting.empty()

@@ -28,9 +28,10 @@ struct CommonArguments {
   std::vector<std::string> layerTexts;
   std::vector<std::string> nightLayerTexts;  // --night-layer
   std::string exposure = "auto";             // --exposure auto | off | K
-  std::vector<std::string> overlayFiles;  // --overlay
-  bool overlayHidden = false;             // --overlay-hidden
-  std::string lighting = "auto";          // --lighting auto | on | off; bare: on
+  std::vector<std::string> overlayFiles;     // --overlay
+  std::vector<std::string> tilesets;         // --tileset
+  bool overlayHidden = false;                // --overlay-hidden
+  std::string lighting = "auto";             // --lighting auto | on | off; bare: on
   bool nominalLod = false;
   bool noSky = false;
   int samples = scene::kDefaultSamples;  // --samples

@@ -1,6 +1,7 @@
 // The `globe play` frame loop: PlaybackStep (scripted pose → controller against the complete
 // drawn array → complete view for the corrected pose) → draw → frame, log row.
 #include "apps/globe/play_command.hpp"
+#include "apps/globe/model_drawing.hpp"
 
 #include "apps/globe/camera_track.hpp"
 
@@ -168,6 +169,8 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
   RendererGpu gpu(**renderer, options.scene);
   auto labels = OverlayDrawing::create(scene);
   if (!labels) return Error{labels.error()};
+  auto models = ModelDrawing::create(scene);
+  if (!models) return Error{models.error()};
   const int width = surface->widthPixels, height = surface->heightPixels;
   auto target = render::multisampleTargetFor(width, height, options.scene.samples);
   if (!target) return Error{target.error()};
@@ -196,6 +199,7 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
     const auto drawStart = Clock::now();
     if (*target) (*target)->bind();
     const render::FrameStats stats = gpu.draw(scene);
+    if (*models) (*models)->draw(scene);
     if (*labels) (*labels)->draw(scene);
     if (*target) (*target)->resolve();
     record.tilesDrawn = stats.tilesDrawn;
@@ -203,8 +207,8 @@ Result<PlayReport> runPlay(const PlayOptions& options) {
     char name[32];
     std::snprintf(name, sizeof name, "%05d.png", i);
     // A frame an interrupted run wrote (atomically: complete) is kept as it is.
-    const bool kept = options.writeFrames && options.resume &&
-                      std::filesystem::is_regular_file(partial / name);
+    const bool kept =
+        options.writeFrames && options.resume && std::filesystem::is_regular_file(partial / name);
     resumedFrames += kept ? 1 : 0;
     std::vector<uint8_t> pixels;
     if (options.writeFrames && !kept) {

@@ -150,13 +150,14 @@ Result<FrameRecord> PlaybackStep::frame(int frameIndex, double timeSeconds, doub
   // is a lift by the next view's ground a change of the ground under it (a pop). Ground the last
   // array did not hold there (the camera slid out of its view) is new, not changed.
   const camera::CameraPose moved = controller_.pose();
-  groundBefore_ = collision::exactSurfaceHeight(scene_.renderingTileArray(), ellipsoid,
-                                                moved.position.longitudeRadians,
-                                                moved.position.latitudeRadians)
-                      .has_value();
+  groundBefore_ =
+      collision::exactSurfaceHeight(scene_.renderingTileArray(), ellipsoid,
+                                    moved.position.longitudeRadians, moved.position.latitudeRadians)
+          .has_value();
   if (realTime_) {
     const auto start = Clock::now();
-    missingTiles_ = scene_.update(controller_.pose(), widthPixels_, heightPixels_, gpu_).missingTiles;
+    missingTiles_ =
+        scene_.update(controller_.pose(), widthPixels_, heightPixels_, gpu_).missingTiles;
     record.timings.selectMs += millisecondsSince(start);
     collide(0.0, record, true);
     return finishRecord(std::move(record));
@@ -210,6 +211,12 @@ Result<FrameRecord> PlaybackStep::finishRecord(FrameRecord record) {
                                               record.pose.position.latitudeRadians);
     if (!finest) return Error{finest.error()};
     record.terrainHeightMeters = *finest;
+  }
+  // The ground the camera is kept above: a tileset's roof where one stands higher (--tileset).
+  if (const terrain::SurfaceOverlay* overlay = scene_.renderingTileArray().overlay()) {
+    const auto roof = overlay->heightAt(record.pose.position.longitudeRadians,
+                                        record.pose.position.latitudeRadians);
+    if (roof) record.terrainHeightMeters = std::max(record.terrainHeightMeters, *roof);
   }
   record.clearanceMeters = record.pose.position.heightMeters - record.terrainHeightMeters;
   record.nearClearanceMeters = controller_.state().nearPlaneClearanceMeters;

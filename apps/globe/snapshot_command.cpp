@@ -1,4 +1,5 @@
 #include "apps/globe/snapshot_command.hpp"
+#include "apps/globe/model_drawing.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -77,6 +78,9 @@ Result<SnapshotReport> runSnapshot(const SnapshotOptions& options) {
   if (!frame) return Error{frame.error()};
   if (*target) (*target)->bind();
   const render::FrameStats stats = gpu.draw(**scene);
+  auto models = ModelDrawing::create(**scene);
+  if (!models) return Error{models.error()};
+  if (*models) (*models)->draw(**scene);
   auto labels = OverlayDrawing::create(**scene);
   if (!labels) return Error{labels.error()};
   if (*labels) (*labels)->draw(**scene);
@@ -101,7 +105,7 @@ Result<SnapshotReport> runSnapshot(const SnapshotOptions& options) {
   SnapshotReport report;
   report.frame = *frame;
   report.tilesDrawn = stats.tilesDrawn;
-  report.triangles = stats.triangles;
+  report.triangles = stats.triangles + (*models ? (*models)->triangleCount() : 0);
   report.tileLoads = (*scene)->loader().counters().completed;
   report.failures = frame->missingTiles;
   report.terrainData =

@@ -55,6 +55,9 @@ Result<void> openWindow(ViewSession& s) {
   auto labels = OverlayDrawing::create(*s.scene);
   if (!labels) return Error{labels.error()};
   s.labels = std::move(*labels);
+  auto models = ModelDrawing::create(*s.scene);
+  if (!models) return Error{models.error()};
+  s.models = std::move(*models);
   auto profilePanel = ProfilePanel::create();
   if (!profilePanel) return Error{profilePanel.error()};
   s.profilePanel = std::move(*profilePanel);

@@ -97,9 +97,9 @@ std::vector<render::HudItem> hudItems(std::vector<std::string> status, bool help
 }
 
 PlacemarkPanelPlace placemarkPanelPlace(const std::vector<render::HudItem>& items,
-                                               size_t textBlocks,
-                                               const std::pair<glm::dvec2, glm::dvec2>& compassBox,
-                                               int widthPixels) {
+                                        size_t textBlocks,
+                                        const std::pair<glm::dvec2, glm::dvec2>& compassBox,
+                                        int widthPixels) {
   float right = 0.0f, bottom = 0.0f;
   for (size_t k = 0; k < std::min(textBlocks, items.size()); ++k) {
     if (const auto* block = std::get_if<render::HudTextBlock>(&items[k])) {
@@ -213,8 +213,8 @@ HudState hudStateOf(ViewSession& s, const scene::FrameInfo& info,
   hudState.lighting = s.input.imagery.lighting;
   hudState.sunUnixSeconds = s.input.sunUnixSeconds;
   const geo::Cartographic& at = hudState.pose.position;
-  hudState.terrainData = terrainDataText(s.scene->store().manifest(), at.longitudeDegrees(),
-                                         at.latitudeDegrees());
+  hudState.terrainData =
+      terrainDataText(s.scene->store().manifest(), at.longitudeDegrees(), at.latitudeDegrees());
   hudState.selectedLayer = s.input.imagery.selected;
   for (uint32_t k = 0; k < s.input.imagery.layerCount; ++k) {
     hudState.layers.push_back({s.input.imagery.shown[k], s.input.imagery.opacity[k]});
@@ -234,6 +234,7 @@ void drawWorld(ViewSession& s, int width, int height) {
   }
   if (s.multisample) s.multisample->bind();
   s.gpu->draw(*s.scene);
+  if (s.models) s.models->draw(*s.scene);
   if (s.labels) s.labels->draw(*s.scene);
   if (s.multisample) s.multisample->resolve();
 }
@@ -269,11 +270,10 @@ void drawFrame(ViewSession& s, HudState& hudState, std::vector<std::string> hudK
   if (s.labels) s.labels->drawPanel(*s.scene, width, height, s.panelPlace);
   // Above the scale bar, in the bottom corner that hides less of the profiled path.
   const float chartMargin = 34.0f * hudScale(width, height);
-  s.profilePanel->draw(width, height, chartMargin,
-                       profileChartCorner(framebufferPixelsOf(s.scene->view(),
-                                                              s.profilePanel->groundPointsEcef()),
-                                          s.profilePanel->sizePixels(), width, height,
-                                          chartMargin));
+  s.profilePanel->draw(
+      width, height, chartMargin,
+      profileChartCorner(framebufferPixelsOf(s.scene->view(), s.profilePanel->groundPointsEcef()),
+                         s.profilePanel->sizePixels(), width, height, chartMargin));
   s.hud->draw(width, height);
   if (s.input.screenshotRequested) {
     s.input.screenshotRequested = false;
@@ -331,7 +331,7 @@ void waitForEvents(ViewSession& s, bool visible) {
     }
     if (s.shownMessage.empty()) {
       glfwWaitEvents();  // idle (or minimised): nothing moves until an event arrives
-    } else {  // a message to take down when its time is up
+    } else {             // a message to take down when its time is up
       const auto left = ViewSession::kMessageLifetime - (ViewClock::now() - s.shownMessageAt);
       glfwWaitEventsTimeout(std::max(0.01, std::chrono::duration<double>(left).count()));
     }

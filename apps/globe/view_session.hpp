@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "apps/globe/hud_text.hpp"
+#include "apps/globe/model_drawing.hpp"
 #include "apps/globe/overlay_drawing.hpp"
 #include "apps/globe/path_recorder.hpp"
 #include "apps/globe/profile_panel.hpp"
@@ -47,7 +48,8 @@ struct ViewSession {
   std::unique_ptr<RendererGpu> gpu;
   std::unique_ptr<render::HudRenderer> hud;
   std::unique_ptr<render::MultisampleTarget> multisample;  // --samples > 1: the frame's target
-  std::unique_ptr<OverlayDrawing> labels;  // null: no overlay to label
+  std::unique_ptr<OverlayDrawing> labels;                  // null: no overlay to label
+  std::unique_ptr<ModelDrawing> models;                    // null: no tileset
   std::unique_ptr<ProfilePanel> profilePanel;
 
   // The files given and opened, kept apart from the ruler's path (M) shown after them.
@@ -119,9 +121,9 @@ inline float hudScale(int widthPixels, int heightPixels) {
 // first `textBlocks` items) when at least kMinimumPanelWidth is left there, else under them too.
 inline constexpr float kMinimumPanelWidth = 200.0f;
 PlacemarkPanelPlace placemarkPanelPlace(const std::vector<render::HudItem>& items,
-                                               size_t textBlocks,
-                                               const std::pair<glm::dvec2, glm::dvec2>& compassBox,
-                                               int widthPixels);
+                                        size_t textBlocks,
+                                        const std::pair<glm::dvec2, glm::dvec2>& compassBox,
+                                        int widthPixels);
 
 // view_frame.cpp: the HUD's state for this frame; the frame drawn (terrain, overlays, panels,
 // HUD, a screenshot when asked); the wait for the next event or load.

@@ -29,6 +29,15 @@ double modelHeight(const ArrayTile& tile, const geo::Ellipsoid& ellipsoid, doubl
 
 }  // namespace
 
+namespace {
+
+// The overlay's surface (3D Tiles) at a point, where there is one.
+std::optional<double> overlayHeight(const RenderingTileArray& array, double lon, double lat) {
+  return array.overlay() != nullptr ? array.overlay()->heightAt(lon, lat) : std::nullopt;
+}
+
+}  // namespace
+
 SurfaceProbe probeSurface(const RenderingTileArray& array, const geo::Ellipsoid& ellipsoid,
                           const geo::Cartographic& point, double clearanceMeters,
                           SurfaceModel model) {
@@ -42,13 +51,20 @@ SurfaceProbe probeSurface(const RenderingTileArray& array, const geo::Ellipsoid&
   probe.tilesExamined = quick.tilesExamined;
   probe.surfaceHeightMeters = quick.terrainHeightMeters;
   if (quick.found) probe.tile = array.find(quick.tile);
-  if (!quick.collided) return probe;
+  // A roof over the point that the camera is within its clearance of: the ground there is the
+  // higher of it and the terrain.
+  const auto over = overlayHeight(array, quick.longitudeRadians, quick.latitudeRadians);
+  const bool overCollides = over && probe.position.heightMeters < *over + clearance;
+  if (!quick.collided && !overCollides) return probe;
   // Narrow phase: QOTCD read the block (no early-out), or no tile holds the point (sea level).
   probe.surfaceRead = true;
-  if (probe.tile != nullptr) {
+  if (!quick.collided) {
+    probe.surfaceHeightMeters = *over;  // above the terrain's upper bound QOTCD cleared
+  } else if (probe.tile != nullptr) {
     probe.surfaceHeightMeters =
         modelHeight(*probe.tile, ellipsoid, quick.longitudeRadians, quick.latitudeRadians, model);
   }
+  if (over) probe.surfaceHeightMeters = std::max(probe.surfaceHeightMeters, *over);
   probe.collided = probe.position.heightMeters < probe.surfaceHeightMeters + clearance;
   return probe;
 }
@@ -61,10 +77,13 @@ std::optional<SurfaceHeight> surfaceHeightAt(const RenderingTileArray& array,
   if (!point) return std::nullopt;
   SurfaceHeight height;
   height.tile = array.findIndexed(point->longitudeRadians, point->latitudeRadians);
-  if (height.tile == nullptr) return height;
-  height.found = true;
-  height.heightMeters =
-      modelHeight(*height.tile, ellipsoid, point->longitudeRadians, point->latitudeRadians, model);
+  if (height.tile != nullptr) {
+    height.found = true;
+    height.heightMeters = modelHeight(*height.tile, ellipsoid, point->longitudeRadians,
+                                      point->latitudeRadians, model);
+  }
+  const auto over = overlayHeight(array, point->longitudeRadians, point->latitudeRadians);
+  if (over) height.heightMeters = std::max(height.heightMeters, *over);
   return height;
 }
 
@@ -75,9 +94,12 @@ glm::dvec3 surfaceNormalAt(const RenderingTileArray& array, const geo::Ellipsoid
   const glm::dvec3 up = geo::geodeticSurfaceNormal(
       ellipsoid, geo::Cartographic{point->longitudeRadians, point->latitudeRadians, 0.0});
   const ArrayTile* tile = array.findIndexed(point->longitudeRadians, point->latitudeRadians);
+  const auto over = overlayHeight(array, point->longitudeRadians, point->latitudeRadians);
   if (tile == nullptr) return up;
   const SurfaceSample sample =
       exactTileSurfaceHeight(*tile, ellipsoid, point->longitudeRadians, point->latitudeRadians);
+  // Over a roof the ground is the roof, taken as level (its grid keeps heights, not slopes).
+  if (over && *over > sample.heightMeters) return up;
   auto facingUp = [&up](const std::array<glm::dvec3, 3>& p) {
     const glm::dvec3 normal = glm::cross(p[1] - p[0], p[2] - p[0]);
     const double length = glm::length(normal);
@@ -115,7 +137,8 @@ double vertexSpacingMeters(const ArrayTile& tile, const geo::Ellipsoid& ellipsoi
 }
 
 double maximumSurfaceHeightMeters(const RenderingTileArray& array) {
-  double highest = 0.0;
+  double highest =
+      array.overlay() != nullptr ? std::max(0.0, array.overlay()->maximumHeightMeters()) : 0.0;
   for (const ArrayTile& tile : array.tiles()) {
     highest = std::max(highest, static_cast<double>(tile.maximumHeightMeters));
   }

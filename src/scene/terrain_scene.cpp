@@ -11,6 +11,7 @@
 #include "geo/tiling_scheme.hpp"
 #include "overlays/overlay_imagery.hpp"
 #include "scene/native_resolution.hpp"
+#include "scene/tileset_overlay.hpp"
 #include "services/terrain_services.hpp"
 #include "sun/solar_position.hpp"
 #include "terrain/block_grid.hpp"
@@ -154,6 +155,8 @@ TerrainScene::TerrainScene(std::unique_ptr<streaming::TerrainSource> store,
       loader_(std::make_unique<streaming::TileLoader>(*store_, runner_, cache_)),
       morphs_(options.morphFrames, ellipsoid_) {
   if (store_->remote()) loader_->setMaxInFlight(transport::kRemoteLoadsInFlight);
+  if (!options.tilesets.empty())
+    array_.setOverlay(std::make_shared<TilesetOverlay>(options.tilesets));
 }
 
 TerrainScene::~TerrainScene() {
@@ -250,8 +253,8 @@ std::vector<terrain::ArrayTile> TerrainScene::drawSelected(const std::vector<geo
     const bool onGpu = gpu.hasTile(tile);
     auto loaded = loader_->get(tile);
     if (!loaded) continue;
-    auto [block, replace] = morphs_.blockFor(
-        tile, std::move(loaded), TileMorphs::isNear(tile, lon, lat, morphRadiusMeters));
+    auto [block, replace] = morphs_.blockFor(tile, std::move(loaded),
+                                             TileMorphs::isNear(tile, lon, lat, morphRadiusMeters));
     if (auto uploaded = uploadIfNeeded(tile, *block, gpu, replace); !uploaded) {
       // Each tile's failure once (it is tried again every frame): not a message per frame.
       if (failedUploads_.size() < kFailedUploadsReported && failedUploads_.insert(tile).second) {
@@ -384,9 +387,9 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
       }
       continue;
     }
-    const bool underCamera = geo::GeographicTilingScheme::positionToTile(
-                                 pose.position.longitudeRadians, pose.position.latitudeRadians,
-                                 r.tile.level) == r.tile;
+    const bool underCamera =
+        geo::GeographicTilingScheme::positionToTile(
+            pose.position.longitudeRadians, pose.position.latitudeRadians, r.tile.level) == r.tile;
     requests.push_back({r.tile, underCamera ? kNadirPriority : r.priority});
   }
   requestUnderCamera(pose, loadedUnderCamera, requests);
@@ -447,8 +450,7 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   info.requests = requests.size();
   info.arrived += packOpens_.takeFinished();
   info.complete = requests.empty() && info.upsampled == 0 && info.morphing == 0 &&
-                  info.shadowsPending == 0 &&
-                  loader_->counters().inFlight == 0 &&
+                  info.shadowsPending == 0 && loader_->counters().inFlight == 0 &&
                   notOpen.empty() && packOpens_.pending() == 0 && info.imagery.complete;
   return info;
 }
@@ -458,8 +460,8 @@ void TerrainScene::requestUnderCamera(const camera::CameraPose& pose, uint32_t r
   const double lon = pose.position.longitudeRadians, lat = pose.position.latitudeRadians;
   const uint32_t deepest = std::min(store_->manifest().maxLevel(), options_.maximumLoadLevel);
   terrain::TileSummary ignored;
-  for (uint32_t level = resident + 1;
-       level <= std::min(deepest, resident + kNadirLookaheadLevels); ++level) {
+  for (uint32_t level = resident + 1; level <= std::min(deepest, resident + kNadirLookaheadLevels);
+       ++level) {
     const auto tile = geo::GeographicTilingScheme::positionToTile(lon, lat, level);
     if (!tile) break;
     // Only tiles the pyramid holds: a local pack's index is read now (as the selection does); a
@@ -490,11 +492,11 @@ void TerrainScene::reportFailures(const std::vector<streaming::LoadError>& faile
   for (const streaming::LoadError& error : failedLoads) {
     // Said already: the store named this tile's pack (one message a pack, not one a tile).
     const std::string file = error.file.string();
-    const bool said = std::any_of(
-        reportedSourceErrors_.begin(), reportedSourceErrors_.end(), [&](const std::string& text) {
-          return (!file.empty() && text.starts_with(file)) ||
-                 error.message.find(text) != std::string::npos;
-        });
+    const bool said = std::any_of(reportedSourceErrors_.begin(), reportedSourceErrors_.end(),
+                                  [&](const std::string& text) {
+                                    return (!file.empty() && text.starts_with(file)) ||
+                                           error.message.find(text) != std::string::npos;
+                                  });
     if (said) continue;
     core::warn(options_.warnings, error.message + "; drawing its parent there");
   }

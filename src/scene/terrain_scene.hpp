@@ -21,8 +21,8 @@
 #include "scene/imagery_layers.hpp"
 #include "scene/overlay_points.hpp"
 #include "scene/tile_gpu.hpp"
-#include "scene/tile_sunlight.hpp"
 #include "scene/tile_morphs.hpp"
+#include "scene/tile_sunlight.hpp"
 #include "streaming/background_pack_opens.hpp"
 #include "streaming/block_cache.hpp"
 #include "streaming/terrain_source.hpp"
@@ -32,6 +32,7 @@
 #include "terrain/render_view.hpp"
 #include "terrain/rendering_tile_array.hpp"
 #include "terrain/tile_selection.hpp"
+#include "tiles3d/tileset_surface.hpp"
 #include "transport/network_settings.hpp"
 
 namespace globe::scene {
@@ -54,6 +55,8 @@ struct SceneOptions {
   // KML/KMZ, GeoJSON and GPX files read (--overlay): their lines, polygons and ground overlays
   // drawn as a layer over the imagery, their points placed each frame (pointMarks()).
   std::vector<std::shared_ptr<const overlays::OverlayDocument>> overlays;
+  // 3D Tiles tilesets read (--tileset): drawn over the terrain and collided with as ground.
+  std::vector<std::shared_ptr<const tiles3d::TilesetSurface>> tilesets;
   uint32_t maximumImageryLoadLevel = geo::kMaxLevel;  // imagery deeper than this is never loaded
   // --lighting: how much hill-shading the imagery takes (render::TerrainStyle::imageryLighting);
   // Auto: full where its texels are too coarse to carry the relief, gentle where they carry it.
@@ -98,12 +101,12 @@ struct FrameInfo {
   terrain::SelectionCounters selection;
   size_t upsampled = 0;  // blocks made from their parent's surface this frame
   size_t tilesSelected = 0;
-  size_t requests = 0;             // wanted and loadable
-  size_t arrived = 0;              // blocks that arrived this frame
-  size_t uploaded = 0;             // meshes built and uploaded this frame
-  bool complete = false;           // nothing loadable is missing: the image is final
-  size_t morphing = 0;             // tiles drawn on their way from a coarser surface
-  size_t shadowsPending = 0;       // drawn tiles whose shadows are not computed yet
+  size_t requests = 0;        // wanted and loadable
+  size_t arrived = 0;         // blocks that arrived this frame
+  size_t uploaded = 0;        // meshes built and uploaded this frame
+  bool complete = false;      // nothing loadable is missing: the image is final
+  size_t morphing = 0;        // tiles drawn on their way from a coarser surface
+  size_t shadowsPending = 0;  // drawn tiles whose shadows are not computed yet
   // Tiles (terrain and imagery) this view wanted whose load or pack failed: drawn coarser there.
   // What a complete view lacks (snapshot and play exit 1 on it unless --allow-missing).
   size_t missingTiles = 0;

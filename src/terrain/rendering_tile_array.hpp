@@ -5,11 +5,13 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "geo/tile_id.hpp"
 #include "terrain/height_block.hpp"
+#include "terrain/surface_overlay.hpp"
 
 namespace globe::terrain {
 
@@ -64,6 +66,9 @@ class RenderingTileArray {
   void assign(std::vector<ArrayTile> tiles);
 
   std::span<const ArrayTile> tiles() const { return tiles_; }
+  // What is drawn over the terrain and collided with as ground (3D Tiles); kept across assign().
+  void setOverlay(std::shared_ptr<const SurfaceOverlay> overlay) { overlay_ = std::move(overlay); }
+  const SurfaceOverlay* overlay() const { return overlay_.get(); }
   uint32_t rejectedTileCount() const { return rejected_; }
   // The levels present, finest first.
   std::span<const uint32_t> levelsFinestFirst() const { return levels_; }
@@ -88,6 +93,7 @@ class RenderingTileArray {
 
  private:
   std::vector<ArrayTile> tiles_;
+  std::shared_ptr<const SurfaceOverlay> overlay_;
   // The index: open addressing with linear probing over a power-of-two table (load <= 2/3) of
   // (quadtree key, position) slots, so a lookup is a mix, a mask and usually one cache line.
   static constexpr uint64_t kEmptyKey = UINT64_MAX;  // quadtree keys are < 2^62

@@ -41,6 +41,16 @@ TilesetSurface::Node TilesetSurface::build(const TileNode& tile, const geo::Elli
     trianglesRead_ += mesh->triangleCount();
     node.grids.push_back(
         HeightGrid::rasterize(*mesh, ellipsoid, kHeightGridCellMeters, kMaxHeightGridCells));
+    if (!node.grids.back().empty()) {
+      maximumMeters_ = std::max(maximumMeters_, node.grids.back().maximumHeightMeters());
+    }
+    DrawnContent drawn;
+    if (!mesh->positions.empty()) drawn.originEcefMeters = mesh->positions[0];
+    drawn.offsetsMeters.reserve(mesh->positions.size());
+    for (const glm::dvec3& p : mesh->positions) {
+      drawn.offsetsMeters.emplace_back(p - drawn.originEcefMeters);
+    }
+    node.drawn.push_back(std::move(drawn));
   }
   for (const TileNode& child : tile.children)
     node.children.push_back(build(child, ellipsoid, depth + 1));
@@ -51,13 +61,32 @@ std::optional<double> TilesetSurface::heightAt(double lon, double lat) const {
   return heightAt(root_, lon, lat);
 }
 
+// REPLACE refines where every child's content could be read (a viewer keeps drawing the parent
+// until its children are in); ADD always adds its children.
+bool TilesetSurface::refines(const Node& node) {
+  return !node.children.empty() &&
+         (node.additive || std::all_of(node.children.begin(), node.children.end(),
+                                       [](const Node& c) { return c.complete; }));
+}
+
+std::vector<const DrawnContent*> TilesetSurface::drawnContents() const {
+  std::vector<const DrawnContent*> out;
+  collectDrawn(root_, out);
+  return out;
+}
+
+void TilesetSurface::collectDrawn(const Node& node, std::vector<const DrawnContent*>& out) {
+  if (!refines(node) || node.additive) {
+    for (const DrawnContent& d : node.drawn) out.push_back(&d);
+  }
+  if (!refines(node)) return;
+  for (const Node& child : node.children) collectDrawn(child, out);
+}
+
 std::optional<double> TilesetSurface::heightAt(const Node& node, double lon, double lat) {
   std::optional<double> own;
   for (const HeightGrid& grid : node.grids) keepHigher(own, grid.heightAt(lon, lat));
-  if (node.children.empty()) return own;
-  const bool refinable = std::all_of(node.children.begin(), node.children.end(),
-                                     [](const Node& c) { return c.complete; });
-  if (!node.additive && !refinable) return own;
+  if (!refines(node)) return own;
   std::optional<double> best = node.additive ? own : std::nullopt;
   for (const Node& child : node.children) keepHigher(best, heightAt(child, lon, lat));
   return best;

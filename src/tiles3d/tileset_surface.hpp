@@ -6,10 +6,13 @@
 // warnings and its coarser ancestor stands in.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "core/result.hpp"
 #include "geo/ellipsoid.hpp"
@@ -22,12 +25,23 @@ namespace globe::tiles3d {
 inline constexpr double kHeightGridCellMeters = 0.5;
 inline constexpr uint32_t kMaxHeightGridCells = 512;
 
+// A content as drawn: float offsets from an origin of its own (its first vertex).
+struct DrawnContent {
+  glm::dvec3 originEcefMeters{0.0};
+  std::vector<glm::vec3> offsetsMeters;  // three per triangle
+};
+
 class TilesetSurface {
  public:
   static Result<TilesetSurface> load(const Tileset& tileset, const geo::Ellipsoid& ellipsoid);
 
   // The highest drawn surface at a point (radians), nullopt where the tileset has none.
   std::optional<double> heightAt(double longitudeRadians, double latitudeRadians) const;
+
+  // The contents drawn at the finest levels, by the same refinement rule as heightAt.
+  std::vector<const DrawnContent*> drawnContents() const;
+  // The highest surface anywhere in the tileset (metres), or -inf when it has none.
+  double maximumHeightMeters() const { return maximumMeters_; }
 
   const std::vector<std::string>& warnings() const { return warnings_; }
   size_t contentsRead() const { return contentsRead_; }
@@ -38,14 +52,18 @@ class TilesetSurface {
     bool additive = false;
     bool complete = true;  // every content read
     std::vector<HeightGrid> grids;
+    std::vector<DrawnContent> drawn;
     std::vector<Node> children;
   };
   Node build(const TileNode& tile, const geo::Ellipsoid& ellipsoid, int depth);
   static std::optional<double> heightAt(const Node& node, double lon, double lat);
+  static void collectDrawn(const Node& node, std::vector<const DrawnContent*>& out);
+  static bool refines(const Node& node);
 
   Node root_;
   std::vector<std::string> warnings_;
   size_t contentsRead_ = 0, trianglesRead_ = 0;
+  double maximumMeters_ = -std::numeric_limits<double>::infinity();
 };
 
 }  // namespace globe::tiles3d

@@ -3,8 +3,8 @@
 // overlays, the sky) drawn by `globe regress` and compared with tests/render/golden (24/255 per
 // channel on at most 0.5% of pixels, SSIM at least 0.98). One test per view (`--filter`), so CTest
 // runs them in parallel. The suite names its inputs relative to a folder this test fills with
-// links: pyramid, zion-pyramid, layers/{bm,zion,coast} (tiled once per CTest run), repo (the
-// checkout) and references (tests/render/golden). Regenerate (then look at them!) with:
+// links: pyramid, zion-pyramid, flat-pyramid, layers/{bm,zion,coast} (tiled once per CTest run),
+// repo (the checkout) and references (tests/render/golden). Regenerate (then look at them!) with:
 //   GLOBE_UPDATE_GOLDENS=1 ctest --test-dir build -R globe_golden_tests
 #include <gtest/gtest.h>
 
@@ -37,12 +37,20 @@ std::vector<std::string> viewNames() {
   return names;
 }
 
+// ETOPO20 with flat ground at 0.01 m around Philadelphia, where the 3D Tiles samples stand.
+fs::path flatPyramid() {
+  const std::string dem = std::string(GLOBE_SOURCE_DIR) + "/tests/data/dem/";
+  return globe::testing::sharedPyramid(
+      "flat-philadelphia", {dem + "gtopo30/ETOPO20.DEM", dem + "synthetic/flat-philadelphia.tif"});
+}
+
 // The folder the suite runs in: links to what its views name.
 fs::path suiteFolder() {
   const fs::path folder = globe::testing::freshTempDir("golden-suite");
   const std::pair<const char*, fs::path> links[] = {
       {"pyramid", globe::testing::bundledPyramid()},
       {"zion-pyramid", globe::testing::zionPyramid()},
+      {"flat-pyramid", flatPyramid()},
       {"layers/bm", globe::testing::blueMarbleLayer()},
       {"layers/zion", globe::testing::zionLayer()},
       {"layers/coast", globe::testing::coastMask()},

@@ -1,0 +1,50 @@
+// Draws 3D models placed on the globe (3D Tiles' contents): opaque triangles uploaded once,
+// each set around an origin of its own (float offsets from it, the origin's distance from the
+// camera taken in double each frame: centimetres stay centimetres anywhere on the globe), lit
+// by the frame's light with their faces' normals, depth-tested and written against the terrain
+// drawn before (the terrain's logarithmic depth).
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/result.hpp"
+#include "terrain/render_view.hpp"
+
+namespace globe::render {
+
+struct ModelMesh {
+  glm::dvec3 originEcefMeters{0.0};
+  std::vector<glm::vec3> offsetsMeters;  // from the origin, three per triangle
+  glm::vec3 rgb{0.82f, 0.80f, 0.76f};    // untextured: a light stone grey
+};
+
+// Needs a current GL 3.3 core context for its whole life, like TerrainRenderer.
+class ModelRenderer {
+ public:
+  // Loads <shaderDirectory>/model.vert and .frag (empty: the embedded ones).
+  static Result<std::unique_ptr<ModelRenderer>> create(
+      const std::filesystem::path& shaderDirectory);
+  ~ModelRenderer();
+  ModelRenderer(const ModelRenderer&) = delete;
+  ModelRenderer& operator=(const ModelRenderer&) = delete;
+
+  // Uploads a mesh (its triangles' flat normals made here); drawn by every draw() after.
+  void add(const ModelMesh& mesh);
+  size_t triangleCount() const;
+
+  // Every mesh added, with the view the terrain was drawn with. Leaves depth test and culling
+  // as TerrainRenderer does (enabled).
+  void draw(const terrain::RenderView& view);
+
+ private:
+  struct Impl;
+  explicit ModelRenderer(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace globe::render
