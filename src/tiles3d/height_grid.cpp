@@ -70,6 +70,7 @@ HeightGrid HeightGrid::rasterize(const TriangleMesh& mesh, const geo::Ellipsoid&
   grid.columns_ = cells(r.widthRadians(), cosLat);
   grid.rows_ = cells(r.heightRadians(), 1.0);
   grid.heightsMeters_.assign(size_t{grid.columns_} * grid.rows_, kNone);
+  grid.setScales();
   grid.maximumMeters_ = -std::numeric_limits<double>::infinity();
   for (size_t t = 0; t + 2 < corners.size(); t += 3) {
     grid.addTriangle(corners[t], corners[t + 1], corners[t + 2]);
@@ -123,19 +124,86 @@ void HeightGrid::addTriangle(const Corner& a, const Corner& b, const Corner& c) 
   }
 }
 
+HeightGrid HeightGrid::merge(std::span<const HeightGrid* const> grids, uint32_t maxCellsPerSide) {
+  HeightGrid merged;
+  geo::GlobeRectangle r{0, 0, 0, 0};
+  double cellWidth = 1e300, cellHeight = 1e300;
+  bool any = false;
+  for (const HeightGrid* g : grids) {
+    if (g->empty()) continue;
+    const geo::GlobeRectangle& b = g->rectangle_;
+    r = any ? geo::GlobeRectangle{std::min(r.westRadians, b.westRadians),
+                                  std::min(r.southRadians, b.southRadians),
+                                  std::max(r.eastRadians, b.eastRadians),
+                                  std::max(r.northRadians, b.northRadians)}
+            : b;
+    any = true;
+    if (b.widthRadians() > 0) cellWidth = std::min(cellWidth, b.widthRadians() / g->columns_);
+    if (b.heightRadians() > 0) cellHeight = std::min(cellHeight, b.heightRadians() / g->rows_);
+  }
+  if (!any || r.widthRadians() > std::numbers::pi) return merged;
+  auto cells = [&](double span, double cell) {
+    return static_cast<uint32_t>(
+        std::clamp(std::ceil(span / cell), 1.0, static_cast<double>(maxCellsPerSide)));
+  };
+  merged.rectangle_ = r;
+  merged.columns_ = cells(r.widthRadians(), cellWidth);
+  merged.rows_ = cells(r.heightRadians(), cellHeight);
+  merged.heightsMeters_.assign(size_t{merged.columns_} * merged.rows_, kNone);
+  merged.setScales();
+  merged.maximumMeters_ = -std::numeric_limits<double>::infinity();
+  const double mw = std::max(r.widthRadians() / merged.columns_, 1e-300);
+  const double mh = std::max(r.heightRadians() / merged.rows_, 1e-300);
+  auto range = [](double from, double to, double origin, double size, uint32_t count) {
+    const auto first = std::clamp(std::floor((from - origin) / size), 0.0, double(count - 1));
+    const auto last = std::clamp(std::ceil((to - origin) / size) - 1, first, double(count - 1));
+    return std::pair{static_cast<uint32_t>(first), static_cast<uint32_t>(last)};
+  };
+  for (const HeightGrid* g : grids) {
+    if (g->empty()) continue;
+    merged.maximumMeters_ = std::max(merged.maximumMeters_, g->maximumMeters_);
+    const geo::GlobeRectangle& b = g->rectangle_;
+    const double gw = b.widthRadians() / g->columns_, gh = b.heightRadians() / g->rows_;
+    for (uint32_t row = 0; row < g->rows_; ++row) {
+      const auto [r0, r1] = range(b.southRadians + row * gh, b.southRadians + (row + 1) * gh,
+                                  r.southRadians, mh, merged.rows_);
+      for (uint32_t column = 0; column < g->columns_; ++column) {
+        const float h = g->heightsMeters_[size_t{row} * g->columns_ + column];
+        if (std::isnan(h)) continue;
+        const auto [c0, c1] = range(b.westRadians + column * gw, b.westRadians + (column + 1) * gw,
+                                    r.westRadians, mw, merged.columns_);
+        for (uint32_t mr = r0; mr <= r1; ++mr) {
+          for (uint32_t mc = c0; mc <= c1; ++mc) {
+            float& cell = merged.heightsMeters_[size_t{mr} * merged.columns_ + mc];
+            if (!(cell >= h)) cell = h;
+          }
+        }
+      }
+    }
+  }
+  return merged;
+}
+
 std::optional<double> HeightGrid::heightAt(double lon, double lat) const {
   if (empty()) return std::nullopt;
-  if (lon < rectangle_.westRadians) lon += 2 * std::numbers::pi;
-  if (lon > rectangle_.eastRadians) lon -= 2 * std::numbers::pi;  // unwrapped across ±180°
-  if (!rectangle_.contains(lon, lat)) return std::nullopt;
-  auto index = [](double v, double origin, double size, uint32_t count) {
-    return size > 0 ? std::min(static_cast<uint32_t>((v - origin) / size * count), count - 1) : 0u;
-  };
-  const uint32_t column = index(lon, rectangle_.westRadians, rectangle_.widthRadians(), columns_);
-  const uint32_t row = index(lat, rectangle_.southRadians, rectangle_.heightRadians(), rows_);
+  // Comparisons and two multiplications: the per-frame probes read this (no wrapping calls).
+  double x = lon - rectangle_.westRadians;
+  if (x < 0) x += 2 * std::numbers::pi;  // a grid unwrapped across ±180°
+  const double y = lat - rectangle_.southRadians;
+  if (!(x <= rectangle_.widthRadians() && y >= 0 && y <= rectangle_.heightRadians())) {
+    return std::nullopt;
+  }
+  const uint32_t column = std::min(static_cast<uint32_t>(x * columnsPerRadian_), columns_ - 1);
+  const uint32_t row = std::min(static_cast<uint32_t>(y * rowsPerRadian_), rows_ - 1);
   const float h = heightsMeters_[size_t{row} * columns_ + column];
   if (std::isnan(h)) return std::nullopt;
   return h;
+}
+
+void HeightGrid::setScales() {
+  const double w = rectangle_.widthRadians(), h = rectangle_.heightRadians();
+  columnsPerRadian_ = w > 0 ? columns_ / w : 0.0;
+  rowsPerRadian_ = h > 0 ? rows_ / h : 0.0;
 }
 
 }  // namespace globe::tiles3d

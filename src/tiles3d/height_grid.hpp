@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "geo/ellipsoid.hpp"
@@ -20,6 +21,12 @@ class HeightGrid {
   // Cells about `cellMeters` wide, at most `maxCellsPerSide` a side. An empty mesh: no cells.
   static HeightGrid rasterize(const TriangleMesh& ecefTriangles, const geo::Ellipsoid& ellipsoid,
                               double cellMeters, uint32_t maxCellsPerSide);
+
+  // One grid holding the highest of several (a tileset's drawn contents), so a point reads one
+  // cell: over their rectangles' union with cells as fine as the finest of theirs (at most
+  // maxCellsPerSide a side), each cell the highest of every cell of theirs it overlaps (still
+  // never below). Empty when they are all empty or span more than half the globe.
+  static HeightGrid merge(std::span<const HeightGrid* const> grids, uint32_t maxCellsPerSide);
 
   // The highest surface over the cell holding the point; nullopt off the grid or where no
   // triangle lies.
@@ -36,9 +43,11 @@ class HeightGrid {
     double lon, lat, heightMeters;
   };
   void addTriangle(const Corner& a, const Corner& b, const Corner& c);
+  void setScales();
 
   geo::GlobeRectangle rectangle_{0, 0, 0, 0};
   uint32_t columns_ = 0, rows_ = 0;
+  double columnsPerRadian_ = 0, rowsPerRadian_ = 0;  // 0 across a rectangle without extent
   double maximumMeters_ = 0;
   std::vector<float> heightsMeters_;  // row-major from the south-west; NaN: none
 };

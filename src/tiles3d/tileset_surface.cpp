@@ -21,6 +21,9 @@ Result<TilesetSurface> TilesetSurface::load(const Tileset& tileset,
   TilesetSurface surface;
   surface.warnings_ = tileset.warnings;
   surface.root_ = surface.build(tileset.root, ellipsoid, 0);
+  std::vector<const HeightGrid*> drawn;
+  collectGrids(surface.root_, drawn);
+  surface.merged_ = HeightGrid::merge(drawn, kMaxMergedGridCells);
   return surface;
 }
 
@@ -58,7 +61,15 @@ TilesetSurface::Node TilesetSurface::build(const TileNode& tile, const geo::Elli
 }
 
 std::optional<double> TilesetSurface::heightAt(double lon, double lat) const {
-  return heightAt(root_, lon, lat);
+  return merged_.empty() ? heightAt(root_, lon, lat) : merged_.heightAt(lon, lat);
+}
+
+void TilesetSurface::collectGrids(const Node& node, std::vector<const HeightGrid*>& out) {
+  if (!refines(node) || node.additive) {
+    for (const HeightGrid& g : node.grids) out.push_back(&g);
+  }
+  if (!refines(node)) return;
+  for (const Node& child : node.children) collectGrids(child, out);
 }
 
 // REPLACE refines where every child's content could be read (a viewer keeps drawing the parent

@@ -24,6 +24,7 @@ namespace globe::tiles3d {
 // Grid cells of about this size (m), at most this many a side.
 inline constexpr double kHeightGridCellMeters = 0.5;
 inline constexpr uint32_t kMaxHeightGridCells = 512;
+inline constexpr uint32_t kMaxMergedGridCells = 2048;  // a side of a tileset's merged grid
 
 // A content as drawn: float offsets from an origin of its own (its first vertex).
 struct DrawnContent {
@@ -58,9 +59,12 @@ class TilesetSurface {
   Node build(const TileNode& tile, const geo::Ellipsoid& ellipsoid, int depth);
   static std::optional<double> heightAt(const Node& node, double lon, double lat);
   static void collectDrawn(const Node& node, std::vector<const DrawnContent*>& out);
+  static void collectGrids(const Node& node, std::vector<const HeightGrid*>& out);
   static bool refines(const Node& node);
 
   Node root_;
+  // The drawn contents' grids as one (heightAt reads one cell); empty: read the tree.
+  HeightGrid merged_;
   std::vector<std::string> warnings_;
   size_t contentsRead_ = 0, trianglesRead_ = 0;
   double maximumMeters_ = -std::numeric_limits<double>::infinity();

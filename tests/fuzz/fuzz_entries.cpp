@@ -9,9 +9,9 @@
 #include <string>
 
 #include "camera/camera_path_file.hpp"
+#include "compression/gzip_bytes.hpp"
 #include "core/big_endian.hpp"
 #include "core/crc32.hpp"
-#include "compression/gzip_bytes.hpp"
 #include "formats/image_io.hpp"
 #include "formats/image_pack.hpp"
 #include "formats/layer_manifest.hpp"
@@ -27,6 +27,8 @@
 #include "services/tms_tilemap.hpp"
 #include "services/wmts_capabilities.hpp"
 #include "services/xyz_elevation_source.hpp"
+#include "tiles3d/height_grid.hpp"
+#include "tiles3d/tile_content.hpp"
 #include "transport/http_client.hpp"
 
 namespace globe::fuzz {
@@ -199,6 +201,20 @@ void overlayFile(const uint8_t* data, size_t size) {
   }
 }
 
+void tileContent(const uint8_t* data, size_t size) {
+  const std::span<const std::byte> bytes(reinterpret_cast<const std::byte*>(data), size);
+  // Placed on the ground near Philadelphia, as the samples stand (an identity transform would
+  // put them at the geocentre, where nothing has a height).
+  glm::dmat4 transform(1.0);
+  transform[3] = glm::dvec4(1215107.76, -4736682.90, 4081926.10, 1.0);
+  const geo::Ellipsoid wgs84 = geo::Ellipsoid::wgs84();
+  auto mesh = tiles3d::readTileContent(bytes, transform, wgs84, "fuzz.b3dm");
+  if (!mesh) return;
+  const auto grid = tiles3d::HeightGrid::rasterize(*mesh, wgs84, 0.5, 64);
+  volatile double h = grid.empty() ? 0.0 : grid.maximumHeightMeters();
+  (void)h;
+}
+
 Entry entryNamed(std::string_view target) {
   if (target == "gtopo30_header") return gtopo30Header;
   if (target == "pack") return pack;
@@ -213,6 +229,7 @@ Entry entryNamed(std::string_view target) {
   if (target == "pmtiles") return pmtiles;
   if (target == "service_xml") return serviceXml;
   if (target == "overlay_file") return overlayFile;
+  if (target == "tile_content") return tileContent;
   return nullptr;
 }
 

@@ -36,6 +36,10 @@ void serviceXml(const uint8_t* data, size_t size);
 // An overlay file (overlays/overlay_file.hpp) saved as .kml, .geojson, .gpx and .kmz, each read.
 void overlayFile(const uint8_t* data, size_t size);
 
+// A 3D Tiles content (b3dm, i3dm, cmpt, pnts, glb, glTF JSON) read into triangles under a tile
+// transform and rasterised into its height grid (tiles3d/tile_content.hpp, height_grid.hpp).
+void tileContent(const uint8_t* data, size_t size);
+
 // The entry for a corpus folder name (gtopo30_header, pack, ...), or nullptr.
 using Entry = void (*)(const uint8_t*, size_t);
 Entry entryNamed(std::string_view target);
