@@ -86,17 +86,17 @@ void HeightGrid::addTriangle(const Corner& a, const Corner& b, const Corner& c) 
   maximumMeters_ = std::max(maximumMeters_, top);
   // The plane h = h0 + hx·lon + hy·lat through the three, unless they stand edge-on from above.
   const double det = (b.lon - a.lon) * (c.lat - a.lat) - (c.lon - a.lon) * (b.lat - a.lat);
-  const bool flat = std::fabs(det) > 1e-24;
-  const double hx = flat ? ((b.heightMeters - a.heightMeters) * (c.lat - a.lat) -
-                            (c.heightMeters - a.heightMeters) * (b.lat - a.lat)) /
-                               det
-                         : 0;
-  const double hy = flat ? ((c.heightMeters - a.heightMeters) * (b.lon - a.lon) -
-                            (b.heightMeters - a.heightMeters) * (c.lon - a.lon)) /
-                               det
-                         : 0;
+  const bool faceUp = std::fabs(det) > 1e-24;
+  const double hx = faceUp ? ((b.heightMeters - a.heightMeters) * (c.lat - a.lat) -
+                              (c.heightMeters - a.heightMeters) * (b.lat - a.lat)) /
+                                 det
+                           : 0;
+  const double hy = faceUp ? ((c.heightMeters - a.heightMeters) * (b.lon - a.lon) -
+                              (b.heightMeters - a.heightMeters) * (c.lon - a.lon)) /
+                                 det
+                           : 0;
   auto plane = [&](double lon, double lat) {
-    return flat ? std::min(top, a.heightMeters + hx * (lon - a.lon) + hy * (lat - a.lat)) : top;
+    return faceUp ? std::min(top, a.heightMeters + hx * (lon - a.lon) + hy * (lat - a.lat)) : top;
   };
   auto cellOf = [](double v, double origin, double size, uint32_t count) {
     return static_cast<uint32_t>(
