@@ -37,6 +37,7 @@ class HeightGrid {
   uint32_t columns() const { return columns_; }
   uint32_t rows() const { return rows_; }
   double maximumHeightMeters() const { return maximumMeters_; }
+  size_t sizeBytes() const { return heightsMeters_.size() * sizeof(float); }
 
  private:
   struct Corner {

@@ -2,12 +2,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "transport/atomic_file.hpp"
-
 namespace globe::tiles3d {
 namespace {
 
-constexpr uint64_t kMaxTilesetBytes = uint64_t{64} << 20;
 constexpr size_t kMaxTiles = 1'000'000;
 constexpr int kMaxDepth = 64;  // nested tiles and external tilesets together
 constexpr int kMaxExternalTilesets = 1000;
@@ -15,37 +12,41 @@ constexpr int kMaxExternalTilesets = 1000;
 namespace fs = std::filesystem;
 
 struct Reader {
-  fs::path root;  // the first tileset's folder: everything must lie under it
   Tileset& out;
+  const geo::Ellipsoid& ellipsoid;
   int externals = 0;
 
-  // A content URI as a file under the root, or the reason it is not read.
-  Result<fs::path> resolve(const fs::path& base, const std::string& uri) const {
+  // A content URI as a name in the source (relative to its folder), or why it is not read.
+  // `base`: the folder (in the source) of the tileset.json that names it.
+  static Result<std::string> resolve(const fs::path& base, const std::string& uri) {
     if (uri.rfind("data:", 0) == 0) return makeError("a data URI (not read)");
     if (uri.find("://") != std::string::npos) return makeError("a URL (not read from a folder)");
     const std::string plain = uri.substr(0, uri.find_first_of("?#"));
     const fs::path relative(plain);
-    if (relative.is_absolute()) return makeError("an absolute path");
+    if (plain.empty() || relative.has_root_path()) return makeError("an absolute path or none");
     const fs::path file = (base / relative).lexically_normal();
-    const auto inside = file.lexically_relative(root);
-    if (inside.empty() || *inside.begin() == "..") return makeError("outside the tileset's folder");
-    return file;
+    if (file.empty() || *file.begin() == ".." || file.has_root_path())
+      return makeError("outside the tileset's folder");
+    return file.generic_string();
   }
+  Result<nlohmann::json> parse(const std::string& name) const;
 
   Result<TileNode> tile(const nlohmann::json& j, const fs::path& base, const glm::dmat4& parent,
                         bool parentAdditive, int depth, const std::string& name);
-  Result<TileNode> external(const fs::path& file, const glm::dmat4& parent, bool additive,
+  Result<TileNode> external(const std::string& file, const glm::dmat4& parent, bool additive,
                             int depth);
 };
 
-Result<nlohmann::json> parseFile(const fs::path& file) {
-  auto bytes = transport::readWholeFile(file, kMaxTilesetBytes);
+Result<nlohmann::json> Reader::parse(const std::string& name) const {
+  auto bytes = out.source->readWhole(name, kMaxTilesetBytes);
+  const std::string where = out.source->locationOf(name);
   if (!bytes) return Error{bytes.error()};
+  if (!*bytes) return makeError(where + ": no such file");
   try {
-    const auto* text = reinterpret_cast<const char*>(bytes->data());
-    return nlohmann::json::parse(text, text + bytes->size());
+    const auto* text = reinterpret_cast<const char*>((*bytes)->data());
+    return nlohmann::json::parse(text, text + (*bytes)->size());
   } catch (const nlohmann::json::exception& e) {
-    return makeError(file.string() + ": not JSON (" + e.what() + ")");
+    return makeError(where + ": not JSON (" + e.what() + ")");
   }
 }
 
@@ -78,6 +79,10 @@ Result<TileNode> Reader::tile(const nlohmann::json& j, const fs::path& base,
   auto transform = transformOf(j, name);
   if (!transform) return Error{transform.error()};
   node.transform = parent * *transform;
+  auto bounds = boundingSphereOf(j.value("boundingVolume", nlohmann::json()), node.transform,
+                                 ellipsoid, name);
+  if (!bounds) return Error{bounds.error()};
+  node.bounds = *bounds;
   node.geometricErrorMeters = j.value("geometricError", 0.0);
   const std::string refine = j.value("refine", "");
   node.additive = refine.empty() ? parentAdditive : refine == "ADD" || refine == "add";
@@ -93,10 +98,13 @@ Result<TileNode> Reader::tile(const nlohmann::json& j, const fs::path& base,
       out.warnings.push_back(name + ": content '" + uri + "': " + file.error());
       continue;
     }
-    if (file->extension() == ".json") {
+    if (fs::path(*file).extension() == ".json") {
       auto sub = external(*file, node.transform, node.additive, depth + 1);
-      if (!sub) return sub;
-      node.children.push_back(std::move(*sub));
+      if (sub) {
+        node.children.push_back(std::move(*sub));
+      } else {  // drawn without it, as a content that is missing
+        out.warnings.push_back(sub.error() + " (read past: its tiles are not drawn)");
+      }
     } else {
       node.contents.push_back(*file);
     }
@@ -111,37 +119,53 @@ Result<TileNode> Reader::tile(const nlohmann::json& j, const fs::path& base,
   return node;
 }
 
-Result<TileNode> Reader::external(const fs::path& file, const glm::dmat4& parent, bool additive,
+Result<TileNode> Reader::external(const std::string& file, const glm::dmat4& parent, bool additive,
                                   int depth) {
-  if (++externals > kMaxExternalTilesets)
-    return makeError(file.string() + ": too many external tilesets");
-  auto j = parseFile(file);
+  const std::string where = out.source->locationOf(file);
+  if (++externals > kMaxExternalTilesets) return makeError(where + ": too many external tilesets");
+  auto j = parse(file);
   if (!j) return Error{j.error()};
   if (!j->is_object() || !j->contains("root"))
-    return makeError(file.string() + ": a tileset without a root");
-  return tile((*j)["root"], file.parent_path(), parent, additive, depth, file.string());
+    return makeError(where + ": a tileset without a root");
+  return tile((*j)["root"], fs::path(file).parent_path(), parent, additive, depth, where);
 }
 
 }  // namespace
 
-Result<Tileset> readTileset(const fs::path& path) {
+Result<Tileset> readTileset(std::shared_ptr<transport::ByteSource> source, const std::string& name,
+                            const geo::Ellipsoid& ellipsoid) {
   Tileset tileset;
-  tileset.file = fs::absolute(fs::is_directory(path) ? path / "tileset.json" : path);
-  auto j = parseFile(tileset.file);
+  tileset.source = std::move(source);
+  tileset.file = tileset.source->locationOf(name);
+  Reader reader{tileset, ellipsoid};
+  auto j = reader.parse(name);
   if (!j) return Error{j.error()};
-  const std::string name = tileset.file.string();
   if (!j->is_object() || !j->contains("asset") || !j->contains("root")) {
-    return makeError(name + ": not a 3D Tiles tileset (no asset or root)");
+    return makeError(tileset.file + ": not a 3D Tiles tileset (no asset or root)");
   }
   const std::string version = (*j)["asset"].is_object() ? (*j)["asset"].value("version", "") : "";
   if (version != "1.0" && version != "1.1" && version != "0.0") {
-    tileset.warnings.push_back(name + ": asset version '" + version + "' (read as 1.1)");
+    tileset.warnings.push_back(tileset.file + ": asset version '" + version + "' (read as 1.1)");
   }
-  Reader reader{tileset.file.parent_path().lexically_normal(), tileset};
-  auto root = reader.tile((*j)["root"], reader.root, glm::dmat4(1.0), false, 0, name);
+  auto root = reader.tile((*j)["root"], fs::path(name).parent_path(), glm::dmat4(1.0), false, 0,
+                          tileset.file);
   if (!root) return Error{root.error()};
   tileset.root = std::move(*root);
   return tileset;
+}
+
+Result<Tileset> readTileset(const fs::path& path, const geo::Ellipsoid& ellipsoid) {
+  const bool folder = fs::is_directory(path);
+  const fs::path dir = fs::absolute(folder ? path : path.parent_path()).lexically_normal();
+  return readTileset(transport::localByteSource(dir),
+                     folder ? "tileset.json" : path.filename().string(), ellipsoid);
+}
+
+Result<std::vector<std::byte>> readContentBytes(const Tileset& tileset, const std::string& name) {
+  auto bytes = tileset.source->readWhole(name, kMaxContentBytes);
+  if (!bytes) return Error{bytes.error()};
+  if (!*bytes) return makeError(tileset.source->locationOf(name) + ": no such file");
+  return std::move(**bytes);
 }
 
 }  // namespace globe::tiles3d

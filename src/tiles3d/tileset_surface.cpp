@@ -2,13 +2,8 @@
 
 #include <algorithm>
 
-#include "tiles3d/tile_content.hpp"
-#include "transport/atomic_file.hpp"
-
 namespace globe::tiles3d {
 namespace {
-
-constexpr uint64_t kMaxContentBytes = uint64_t{256} << 20;
 
 void keepHigher(std::optional<double>& best, const std::optional<double>& h) {
   if (h && (!best || *h > *best)) best = h;
@@ -20,43 +15,37 @@ Result<TilesetSurface> TilesetSurface::load(const Tileset& tileset,
                                             const geo::Ellipsoid& ellipsoid) {
   TilesetSurface surface;
   surface.warnings_ = tileset.warnings;
-  surface.root_ = surface.build(tileset.root, ellipsoid, 0);
+  surface.root_ = surface.build(tileset, tileset.root, ellipsoid);
   std::vector<const HeightGrid*> drawn;
   collectGrids(surface.root_, drawn);
   surface.merged_ = HeightGrid::merge(drawn, kMaxMergedGridCells);
   return surface;
 }
 
-TilesetSurface::Node TilesetSurface::build(const TileNode& tile, const geo::Ellipsoid& ellipsoid,
-                                           int depth) {
+TilesetSurface::Node TilesetSurface::build(const Tileset& tileset, const TileNode& tile,
+                                           const geo::Ellipsoid& ellipsoid) {
   Node node;
   node.additive = tile.additive;
-  for (const auto& file : tile.contents) {
-    auto bytes = transport::readWholeFile(file, kMaxContentBytes);
-    auto mesh = bytes ? readTileContent(*bytes, tile.transform, ellipsoid, file.string())
-                      : Result<TriangleMesh>(Error{bytes.error()});
-    if (!mesh) {
-      warnings_.push_back(mesh.error() + " (its parent's content stands in)");
+  for (const std::string& name : tile.contents) {
+    auto bytes = readContentBytes(tileset, name);
+    auto content =
+        bytes ? loadContent(*bytes, tile.transform, ellipsoid, tileset.source->locationOf(name))
+              : Result<LoadedContent>(Error{bytes.error()});
+    if (!content) {
+      warnings_.push_back(content.error() + " (its parent's content stands in)");
       node.complete = false;
       continue;
     }
     ++contentsRead_;
-    trianglesRead_ += mesh->triangleCount();
-    node.grids.push_back(
-        HeightGrid::rasterize(*mesh, ellipsoid, kHeightGridCellMeters, kMaxHeightGridCells));
-    if (!node.grids.back().empty()) {
-      maximumMeters_ = std::max(maximumMeters_, node.grids.back().maximumHeightMeters());
+    trianglesRead_ += content->triangleCount;
+    if (!content->grid.empty()) {
+      maximumMeters_ = std::max(maximumMeters_, content->grid.maximumHeightMeters());
     }
-    DrawnContent drawn;
-    if (!mesh->positions.empty()) drawn.originEcefMeters = mesh->positions[0];
-    drawn.offsetsMeters.reserve(mesh->positions.size());
-    for (const glm::dvec3& p : mesh->positions) {
-      drawn.offsetsMeters.emplace_back(p - drawn.originEcefMeters);
-    }
-    node.drawn.push_back(std::move(drawn));
+    node.grids.push_back(std::move(content->grid));
+    node.drawn.push_back(std::move(content->drawn));
   }
   for (const TileNode& child : tile.children)
-    node.children.push_back(build(child, ellipsoid, depth + 1));
+    node.children.push_back(build(tileset, child, ellipsoid));
   return node;
 }
 

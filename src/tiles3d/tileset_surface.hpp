@@ -17,20 +17,12 @@
 #include "core/result.hpp"
 #include "geo/ellipsoid.hpp"
 #include "tiles3d/height_grid.hpp"
+#include "tiles3d/loaded_content.hpp"
 #include "tiles3d/tileset.hpp"
 
 namespace globe::tiles3d {
 
-// Grid cells of about this size (m), at most this many a side.
-inline constexpr double kHeightGridCellMeters = 0.5;
-inline constexpr uint32_t kMaxHeightGridCells = 512;
 inline constexpr uint32_t kMaxMergedGridCells = 2048;  // a side of a tileset's merged grid
-
-// A content as drawn: float offsets from an origin of its own (its first vertex).
-struct DrawnContent {
-  glm::dvec3 originEcefMeters{0.0};
-  std::vector<glm::vec3> offsetsMeters;  // three per triangle
-};
 
 class TilesetSurface {
  public:
@@ -56,7 +48,7 @@ class TilesetSurface {
     std::vector<DrawnContent> drawn;
     std::vector<Node> children;
   };
-  Node build(const TileNode& tile, const geo::Ellipsoid& ellipsoid, int depth);
+  Node build(const Tileset& tileset, const TileNode& tile, const geo::Ellipsoid& ellipsoid);
   static std::optional<double> heightAt(const Node& node, double lon, double lat);
   static void collectDrawn(const Node& node, std::vector<const DrawnContent*>& out);
   static void collectGrids(const Node& node, std::vector<const HeightGrid*>& out);

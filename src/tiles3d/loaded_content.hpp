@@ -1,0 +1,41 @@
+// One 3D tile content as the viewer keeps it once loaded: its triangles as drawn (float offsets
+// from an origin of its own) and its highest surface as a height grid (height_grid.hpp) that
+// collision reads in O(1). Made on a loader thread; immutable after.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/result.hpp"
+#include "geo/ellipsoid.hpp"
+#include "tiles3d/height_grid.hpp"
+
+namespace globe::tiles3d {
+
+// Grid cells of about this size (m), at most this many a side.
+inline constexpr double kHeightGridCellMeters = 0.5;
+inline constexpr uint32_t kMaxHeightGridCells = 512;
+
+// A content as drawn: float offsets from an origin of its own (its first vertex).
+struct DrawnContent {
+  glm::dvec3 originEcefMeters{0.0};
+  std::vector<glm::vec3> offsetsMeters;  // three per triangle
+};
+
+struct LoadedContent {
+  DrawnContent drawn;
+  HeightGrid grid;
+  size_t triangleCount = 0;
+  size_t sizeBytes() const;  // what it holds in memory, for the cache's budget
+};
+
+// Errors name `name` (the file or URL) and say what is wrong.
+Result<LoadedContent> loadContent(std::span<const std::byte> bytes, const glm::dmat4& tileTransform,
+                                  const geo::Ellipsoid& ellipsoid, const std::string& name);
+
+}  // namespace globe::tiles3d
