@@ -20,5 +20,7 @@ int runExportImageryCommand(int argc, char** argv);
 int runImageryCommand(int argc, char** argv);
 // globe-tiler water-mask -o LAYER POLYGONS...: land polygons to a water-mask layer.
 int runWaterMaskCommand(int argc, char** argv);
+// globe-tiler buildings -o DIR FOOTPRINTS... --pyramid PYRAMID: footprints to a 3D Tiles tileset.
+int runBuildingsCommand(int argc, char** argv);
 
 }  // namespace globe::tiler_app
