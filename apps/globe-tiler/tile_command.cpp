@@ -81,6 +81,7 @@ int runTileCommand(int argc, char** argv, TileCommandKind kind) {
       "globe-tiler imagery -o LAYER_DIR INPUT... (imagery layers; see globe-tiler imagery --help)\n"
       "      globe-tiler export-imagery --format xyz|tms|pmtiles -o OUT LAYER_DIR (for web maps)\n"
       "      globe-tiler water-mask -o LAYER_DIR POLYGONS... (water masks from land polygons)\n"
+      "      globe-tiler buildings -o DIR FOOTPRINTS... --pyramid PYRAMID (3D Tiles buildings)\n"
       "      globe-tiler plan --shards N INPUT... (how the work splits; then on many machines "
       "globe-tiler --shard K/N -o OUT INPUT...)\n"
       "      globe-tiler merge -o OUT INPUT... (after the shards)",

@@ -1,5 +1,6 @@
 #include "buildings/footprint_reader.hpp"
 
+#include <cpl_error.h>
 #include <gdal_priv.h>
 #include <ogrsf_frmts.h>
 
@@ -8,10 +9,17 @@
 #include <optional>
 
 #include "buildings/building_height.hpp"
-#include "overlays/quiet_gdal.hpp"
 
 namespace globe::buildings {
 namespace {
+
+// GDAL prints its errors by default: a library stays quiet and returns them in its own.
+struct QuietGdal {
+  QuietGdal() { CPLPushErrorHandler(CPLQuietErrorHandler); }
+  ~QuietGdal() { CPLPopErrorHandler(); }
+  QuietGdal(const QuietGdal&) = delete;
+  QuietGdal& operator=(const QuietGdal&) = delete;
+};
 
 struct DatasetCloser {
   void operator()(GDALDataset* dataset) const { GDALClose(dataset); }
@@ -141,7 +149,7 @@ Result<void> readFeature(OGRFeature& feature, const std::string& where, LayerCon
 Result<void> readFootprints(const std::string& path, const FootprintOptions& options,
                             FootprintSet& into) {
   GDALAllRegister();
-  overlays::QuietGdal quiet;
+  QuietGdal quiet;
   std::unique_ptr<GDALDataset, DatasetCloser> dataset(GDALDataset::FromHandle(
       GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
   if (!dataset) {
