@@ -28,6 +28,7 @@
 #include "services/wmts_capabilities.hpp"
 #include "services/xyz_elevation_source.hpp"
 #include "tiles3d/height_grid.hpp"
+#include "tiles3d/implicit_tiling.hpp"
 #include "tiles3d/tile_content.hpp"
 #include "transport/http_client.hpp"
 
@@ -215,6 +216,23 @@ void tileContent(const uint8_t* data, size_t size) {
   (void)h;
 }
 
+void implicitSubtree(const uint8_t* data, size_t size) {
+  const std::vector<std::byte> bytes(reinterpret_cast<const std::byte*>(data),
+                                     reinterpret_cast<const std::byte*>(data) + size);
+  const auto tile = nlohmann::json::parse(
+      R"({"boundingVolume":{"box":[0,0,0,1,0,0,0,1,0,0,0,1]},"geometricError":8,"refine":"ADD",)"
+      R"("content":{"uri":"{level}_{x}_{y}.glb"},"implicitTiling":{"subdivisionScheme":)"
+      R"("QUADTREE","subtreeLevels":3,"availableLevels":6,"subtrees":{"uri":"{level}.{x}.{y}.st"}}})");
+  const tiles3d::ReadRelativeFile read =
+      [&](const std::string& uri) -> Result<std::optional<std::vector<std::byte>>> {
+    if (uri.size() > 3 && uri.compare(uri.size() - 3, 3, ".st") == 0) return std::optional(bytes);
+    return std::optional<std::vector<std::byte>>{};  // an external buffer: not there
+  };
+  auto expanded = tiles3d::expandImplicitTiling(tile, read, 4096, "fuzz/tileset.json");
+  volatile size_t n = expanded ? expanded->size() : 0;
+  (void)n;
+}
+
 Entry entryNamed(std::string_view target) {
   if (target == "gtopo30_header") return gtopo30Header;
   if (target == "pack") return pack;
@@ -230,6 +248,7 @@ Entry entryNamed(std::string_view target) {
   if (target == "service_xml") return serviceXml;
   if (target == "overlay_file") return overlayFile;
   if (target == "tile_content") return tileContent;
+  if (target == "implicit_subtree") return implicitSubtree;
   return nullptr;
 }
 

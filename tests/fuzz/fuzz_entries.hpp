@@ -39,6 +39,9 @@ void overlayFile(const uint8_t* data, size_t size);
 // A 3D Tiles content (b3dm, i3dm, cmpt, pnts, glb, glTF JSON) read into triangles under a tile
 // transform and rasterised into its height grid (tiles3d/tile_content.hpp, height_grid.hpp).
 void tileContent(const uint8_t* data, size_t size);
+// A 3D Tiles 1.1 implicit quadtree (6 levels, subtrees of 3) whose every subtree file is these
+// bytes, expanded into explicit tiles (tiles3d/implicit_tiling.hpp, subtree_file.hpp).
+void implicitSubtree(const uint8_t* data, size_t size);
 
 // The entry for a corpus folder name (gtopo30_header, pack, ...), or nullptr.
 using Entry = void (*)(const uint8_t*, size_t);

@@ -52,6 +52,7 @@ TEST(FuzzCorpus, Pmtiles) { EXPECT_GT(replay("pmtiles"), 0U); }
 TEST(FuzzCorpus, ServiceXml) { EXPECT_GT(replay("service_xml"), 0U); }
 TEST(FuzzCorpus, OverlayFile) { EXPECT_GT(replay("overlay_file"), 0U); }
 TEST(FuzzCorpus, TileContent) { EXPECT_GT(replay("tile_content"), 0U); }
+TEST(FuzzCorpus, ImplicitSubtree) { EXPECT_GT(replay("implicit_subtree"), 0U); }
 
 // The hand-made seeds are valid packs (version 2; 5 with its compressed index; 6 with compressed
 // blocks, written by tests/tools/pack_v6_from_v5.py, an encoder of its own); the version-1
