@@ -5,6 +5,7 @@
 //   1. A view of the Fujiyoshida buildings over the terrain: cesium-buildings.png, which must
 //      draw building tiles (the CesiumJS viewer starts on the terrain: started on the bare
 //      ellipsoid and switched, it drew neither terrain nor sky here).
+//   0. Every GLB through the Khronos glTF validator (npm gltf-validator): no error, no warning.
 //   2. Over the bare ellipsoid (the terrain stands above part of a roof on a slope: the base is
 //      the lowest ground), scene.sampleHeightMostDetailed inside every footprint against the
 //      expected roof, worked out here from the GeoJSON's attributes (height, else
@@ -12,8 +13,18 @@
 //      footprint's vertices and centre: within 1 m. And 20 m beside each building: nothing as
 //      high.
 import fs from 'node:fs';
+import { createRequire } from 'node:module';
 import path from 'node:path';
 import * as h from '../../tools/web/lib/harness.mjs';
+
+// The validator from tools/web/node_modules (beside the harness, not this folder).
+let validator;
+try {
+  validator = createRequire(path.join(h.webDir, 'package.json'))('gltf-validator');
+} catch {
+  console.log("SKIP: tools/web/node_modules/gltf-validator is missing: run 'bash tools/web/install.sh'");
+  process.exit(77);
+}
 
 h.watchdog(Number(process.env.GLOBE_WEB_TIMEOUT_S || 540), 'the CesiumJS buildings test');
 const WIDTH = 960;
@@ -82,6 +93,25 @@ const work = h.tempDir('cesium-buildings');
 const pyramid = h.bundledPyramid(work);
 const tiles = path.join(work, 'buildings');
 h.run(h.tilerExe(), ['buildings', '-o', tiles, FOOTPRINTS, '--pyramid', pyramid, '--tile-buildings', '3']);
+// 0. The GLBs through the Khronos validator.
+const glbs = [];
+const walk = (dir) => {
+  for (const e of fs.readdirSync(dir, { withFileTypes: true })) {
+    if (e.isDirectory()) walk(path.join(dir, e.name));
+    else if (e.name.endsWith('.glb')) glbs.push(path.join(dir, e.name));
+  }
+};
+walk(tiles);
+const validations = [];
+for (const f of glbs.sort()) {
+  const r = await validator.validateBytes(new Uint8Array(fs.readFileSync(f)));
+  validations.push({ file: path.relative(tiles, f), errors: r.issues.numErrors, warnings: r.issues.numWarnings,
+    first: r.issues.messages.slice(0, 3).map((m) => `${m.code} ${m.pointer || ''} ${m.message}`) });
+}
+h.log(`glTF validator ${validator.version()}: ${glbs.length} GLBs, ` +
+  `${validations.reduce((a, v) => a + v.errors, 0)} errors, ${validations.reduce((a, v) => a + v.warnings, 0)} warnings`);
+const invalid = validations.filter((v) => v.errors > 0 || v.warnings > 0);
+
 // The terrain for the picture: the world's coarse levels and the footprints' surroundings.
 const qm = path.join(work, 'qm');
 h.run(h.tilerExe(), ['export', '--format', 'quantized-mesh', '-o', qm, '--levels', '0-3', pyramid]);
@@ -109,6 +139,8 @@ for (const fp of fps) {
 }
 
 await finish(async () => {
+  check(glbs.length > 0 && invalid.length === 0, `the glTF validator finds no error or warning in ${glbs.length} GLBs` +
+    `${invalid.length ? ': ' + JSON.stringify(invalid.slice(0, 3)) : ''}`);
   const { page, refused } = await h.openPage(browser, server.url('/pages/cesium.html'));
   await page.evaluate((o) => window.globeTest.init(o), { terrainUrl: server.url('/qm/'), requestRenderMode: false });
   const loaded = await page.evaluate(async (url) => {
