@@ -8,7 +8,6 @@
 #include "services/url_template.hpp"
 #include "sun/utc_time.hpp"
 #include "tiles3d/tileset.hpp"
-#include "tiles3d/tileset_surface.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -114,9 +113,19 @@ void addLayerOptions(CLI::App& command, CommonArguments& arguments) {
       ->type_name("FILE");
   command
       .add_option("--tileset", arguments.tilesets,
-                  "3D Tiles tileset (its tileset.json or folder) drawn over the terrain at its "
-                  "finest levels, the camera kept above it as above the terrain; repeat for more")
-      ->type_name("DIR");
+                  "3D Tiles tileset (its tileset.json or folder, a path or http(s) URL) streamed "
+                  "over the terrain by screen-space error, the camera kept above what it draws "
+                  "as above the terrain; repeat for more")
+      ->type_name("DIR|URL");
+  command.add_flag("--tileset-clamp", arguments.tilesetClamp,
+                   "set each tileset on the terrain: moved along its centre's vertical so that "
+                   "height 0 there sits on the ground (for models made at height 0); without it, "
+                   "heights are above the ellipsoid as 3D Tiles says");
+  command
+      .add_option("--tileset-error", arguments.tilesetErrorPixels,
+                  "the screen-space error (pixels) past which a tileset's tiles refine")
+      ->check(CLI::Range(0.1, 1000.0))
+      ->type_name("PIXELS");
   command.add_flag("--overlay-hidden", arguments.overlayHidden,
                    "also draw what the overlay files hide (KML visibility 0), as if every item "
                    "were ticked");
@@ -263,19 +272,19 @@ bool applySceneArguments(const char* command, const CommonArguments& arguments,
         std::make_shared<const overlays::OverlayDocument>(std::move(*document)));
   }
   for (const std::string& given : arguments.tilesets) {
-    auto tileset = tiles3d::readTileset(given);
-    auto surface =
-        tileset ? tiles3d::TilesetSurface::load(*tileset, geo::ellipsoidFor(scene.globeModel))
-                : Result<tiles3d::TilesetSurface>(Error{tileset.error()});
-    if (!surface) {
-      std::fprintf(stderr, "globe %s: --tileset %s\n", command, surface.error().c_str());
+    auto tileset =
+        tiles3d::openTileset(given, scene.network.get(), geo::ellipsoidFor(scene.globeModel));
+    if (!tileset) {
+      std::fprintf(stderr, "globe %s: --tileset %s\n", command, tileset.error().c_str());
       return false;
     }
-    for (const std::string& warning : surface->warnings()) {
+    for (const std::string& warning : tileset->warnings) {
       std::fprintf(stderr, "globe %s: warning: %s\n", command, warning.c_str());
     }
-    scene.tilesets.push_back(std::make_shared<const tiles3d::TilesetSurface>(std::move(*surface)));
+    scene.tilesets.push_back(std::make_shared<const tiles3d::Tileset>(std::move(*tileset)));
   }
+  scene.clampTilesets = arguments.tilesetClamp;
+  scene.tilesetScreenSpaceErrorPixels = arguments.tilesetErrorPixels;
   // A bare --lighting parses as "".
   const auto lighting = arguments.lighting.empty()
                             ? terrain::ImageryLighting::On

@@ -30,6 +30,8 @@ struct CommonArguments {
   std::string exposure = "auto";             // --exposure auto | off | K
   std::vector<std::string> overlayFiles;     // --overlay
   std::vector<std::string> tilesets;         // --tileset
+  bool tilesetClamp = false;                 // --tileset-clamp
+  double tilesetErrorPixels = 16;            // --tileset-error
   bool overlayHidden = false;                // --overlay-hidden
   std::string lighting = "auto";             // --lighting auto | on | off; bare: on
   bool nominalLod = false;

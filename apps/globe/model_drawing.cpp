@@ -1,20 +1,37 @@
 #include "apps/globe/model_drawing.hpp"
 
+#include <vector>
+
 namespace globe::app {
 
 Result<std::unique_ptr<ModelDrawing>> ModelDrawing::create(const scene::TerrainScene& scene) {
   if (scene.options().tilesets.empty()) return std::unique_ptr<ModelDrawing>();
   auto renderer = render::ModelRenderer::create({});
   if (!renderer) return Error{renderer.error()};
-  for (const auto& tileset : scene.options().tilesets) {
-    for (const tiles3d::DrawnContent* content : tileset->drawnContents()) {
-      render::ModelMesh mesh;
-      mesh.originEcefMeters = content->originEcefMeters;
-      mesh.offsetsMeters = content->offsetsMeters;
-      (*renderer)->add(mesh);
+  return std::unique_ptr<ModelDrawing>(new ModelDrawing(std::move(*renderer)));
+}
+
+void ModelDrawing::draw(const scene::TerrainScene& scene) {
+  for (auto it = uploaded_.begin(); it != uploaded_.end();) {
+    if (it->second.expired()) {
+      renderer_->remove(it->first);
+      it = uploaded_.erase(it);
+    } else {
+      ++it;
     }
   }
-  return std::unique_ptr<ModelDrawing>(new ModelDrawing(std::move(*renderer)));
+  std::vector<uint64_t> ids;
+  ids.reserve(scene.drawnModels().size());
+  for (const tiles3d::DrawnItem& item : scene.drawnModels()) {
+    ids.push_back(item.id);
+    if (uploaded_.contains(item.id)) continue;
+    render::ModelMesh mesh;
+    mesh.originEcefMeters = item.content->drawn.originEcefMeters;
+    mesh.offsetsMeters = item.content->drawn.offsetsMeters;
+    renderer_->add(item.id, mesh);
+    uploaded_.emplace(item.id, item.content);
+  }
+  renderer_->draw(scene.view(), ids);
 }
 
 }  // namespace globe::app

@@ -105,7 +105,7 @@ Result<SnapshotReport> runSnapshot(const SnapshotOptions& options) {
   SnapshotReport report;
   report.frame = *frame;
   report.tilesDrawn = stats.tilesDrawn;
-  report.triangles = stats.triangles + (*models ? (*models)->triangleCount() : 0);
+  report.triangles = stats.triangles + (*models ? (*models)->trianglesDrawn() : 0);
   report.tileLoads = (*scene)->loader().counters().completed;
   report.failures = frame->missingTiles;
   report.terrainData =

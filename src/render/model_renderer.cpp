@@ -1,6 +1,7 @@
 #include "render/model_renderer.hpp"
 
 #include <cmath>
+#include <unordered_map>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -34,8 +35,8 @@ using model_detail::Vertex;
 struct ModelRenderer::Impl {
   ShaderProgram program;
   GLint originFromCamera = -1, view = -1, projection = -1, rgb = -1, sun = -1, logDepth = -1;
-  std::vector<Uploaded> sets;
-  size_t triangles = 0;
+  std::unordered_map<uint64_t, Uploaded> sets;
+  size_t triangles = 0, trianglesDrawn = 0;
 };
 
 ModelRenderer::ModelRenderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -63,7 +64,8 @@ Result<std::unique_ptr<ModelRenderer>> ModelRenderer::create(
   return std::unique_ptr<ModelRenderer>(new ModelRenderer(std::move(impl)));
 }
 
-void ModelRenderer::add(const ModelMesh& mesh) {
+void ModelRenderer::add(uint64_t id, const ModelMesh& mesh) {
+  remove(id);
   std::vector<Vertex> vertices;
   vertices.reserve(mesh.offsetsMeters.size());
   for (size_t t = 0; t + 2 < mesh.offsetsMeters.size(); t += 3) {
@@ -90,13 +92,24 @@ void ModelRenderer::add(const ModelMesh& mesh) {
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   impl_->triangles += vertices.size() / 3;
-  impl_->sets.push_back(std::move(set));
+  impl_->sets.emplace(id, std::move(set));
+}
+
+bool ModelRenderer::has(uint64_t id) const { return impl_->sets.contains(id); }
+
+void ModelRenderer::remove(uint64_t id) {
+  const auto it = impl_->sets.find(id);
+  if (it == impl_->sets.end()) return;
+  impl_->triangles -= static_cast<size_t>(it->second.vertexCount) / 3;
+  impl_->sets.erase(it);
 }
 
 size_t ModelRenderer::triangleCount() const { return impl_->triangles; }
+size_t ModelRenderer::trianglesDrawn() const { return impl_->trianglesDrawn; }
 
-void ModelRenderer::draw(const terrain::RenderView& view) {
-  if (impl_->sets.empty() || view.widthPixels <= 0 || view.heightPixels <= 0) return;
+void ModelRenderer::draw(const terrain::RenderView& view, std::span<const uint64_t> ids) {
+  impl_->trianglesDrawn = 0;
+  if (ids.empty() || view.widthPixels <= 0 || view.heightPixels <= 0) return;
   glm::dmat4 rotation = view.viewMatrix;
   rotation[3] = glm::dvec4(0.0, 0.0, 0.0, 1.0);  // positions are relative to the eye already
   const glm::mat4 viewFloat(rotation);
@@ -111,7 +124,11 @@ void ModelRenderer::draw(const terrain::RenderView& view) {
   const glm::vec3 sun(glm::normalize(view.sunDirectionEcef));
   glUniform3f(impl_->sun, sun.x, sun.y, sun.z);
   glUniform1f(impl_->logDepth, static_cast<float>(1.0 / std::log2(1.0 + view.farMeters)));
-  for (const Uploaded& set : impl_->sets) {
+  for (const uint64_t id : ids) {
+    const auto it = impl_->sets.find(id);
+    if (it == impl_->sets.end()) continue;
+    const Uploaded& set = it->second;
+    impl_->trianglesDrawn += static_cast<size_t>(set.vertexCount) / 3;
     const glm::vec3 origin(set.origin - view.cameraEcefMeters);
     glUniform3f(impl_->originFromCamera, origin.x, origin.y, origin.z);
     glUniform3f(impl_->rgb, set.rgb.r, set.rgb.g, set.rgb.b);

@@ -1,5 +1,6 @@
-// Draws 3D models placed on the globe (3D Tiles' contents): opaque triangles uploaded once,
-// each set around an origin of its own (float offsets from it, the origin's distance from the
+// Draws 3D models placed on the globe (3D Tiles' contents): opaque triangles uploaded once under
+// a number of the caller's (a streamed content's), drawn each frame by those numbers, each set
+// around an origin of its own (float offsets from it, the origin's distance from the
 // camera taken in double each frame: centimetres stay centimetres anywhere on the globe), lit
 // by the frame's light with their faces' normals, depth-tested and written against the terrain
 // drawn before (the terrain's logarithmic depth).
@@ -8,6 +9,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -33,13 +35,17 @@ class ModelRenderer {
   ModelRenderer(const ModelRenderer&) = delete;
   ModelRenderer& operator=(const ModelRenderer&) = delete;
 
-  // Uploads a mesh (its triangles' flat normals made here); drawn by every draw() after.
-  void add(const ModelMesh& mesh);
+  // Uploads a mesh under `id` (its triangles' flat normals made here), replacing any before.
+  void add(uint64_t id, const ModelMesh& mesh);
+  bool has(uint64_t id) const;
+  void remove(uint64_t id);
+  // Triangles uploaded, and drawn by the last draw().
   size_t triangleCount() const;
+  size_t trianglesDrawn() const;
 
-  // Every mesh added, with the view the terrain was drawn with. Leaves depth test and culling
-  // as TerrainRenderer does (enabled).
-  void draw(const terrain::RenderView& view);
+  // The meshes of these ids (those not uploaded are skipped), with the view the terrain was
+  // drawn with. Leaves depth test and culling as TerrainRenderer does (enabled).
+  void draw(const terrain::RenderView& view, std::span<const uint64_t> ids);
 
  private:
   struct Impl;

@@ -6,6 +6,8 @@
 #include <optional>
 #include <thread>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "geo/ecef.hpp"
 #include "geo/frustum.hpp"
 #include "geo/tiling_scheme.hpp"
@@ -155,13 +157,12 @@ TerrainScene::TerrainScene(std::unique_ptr<streaming::TerrainSource> store,
       loader_(std::make_unique<streaming::TileLoader>(*store_, runner_, cache_)),
       morphs_(options.morphFrames, ellipsoid_) {
   if (store_->remote()) loader_->setMaxInFlight(transport::kRemoteLoadsInFlight);
-  if (!options.tilesets.empty())
-    array_.setOverlay(std::make_shared<TilesetOverlay>(options.tilesets));
 }
 
 TerrainScene::~TerrainScene() {
   imagery_.reset();
-  loader_.reset();  // waits for running loads before the runner goes
+  tilesets_.clear();  // their loads still running find them gone
+  loader_.reset();    // waits for running loads before the runner goes
   runner_.shutdown();
 }
 
@@ -305,6 +306,12 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
       break;
     }
   }
+  // A roof under the camera (last frame's drawn tilesets) is ground for the near plane too.
+  if (const terrain::SurfaceOverlay* roofs = array_.overlay()) {
+    const auto roof =
+        roofs->heightAt(pose.position.longitudeRadians, pose.position.latitudeRadians);
+    if (roof) info.terrainHeightMeters = std::max(info.terrainHeightMeters, *roof);
+  }
   const camera::CameraFrame frame = camera::cameraFrame(ellipsoid_, pose);
   const double aspect = static_cast<double>(widthPixels) / std::max(heightPixels, 1);
   const auto projection = camera::projectionForHeight(
@@ -428,6 +435,7 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   }
   finishMorphs(gpu, info);
   updateImagery(frame.positionEcefMeters, gpu, info);
+  updateTilesets(selectionView.frustum, heightPixels, info);
   // Free GPU memory of tiles not drawn for a while, oldest first, once over the budget.
   if (gpuLastUsedFrame_.size() > options_.gpuTileBudget) {
     std::vector<std::pair<uint64_t, geo::TileId>> byAge;
@@ -451,8 +459,51 @@ FrameInfo TerrainScene::update(const camera::CameraPose& pose, int widthPixels, 
   info.arrived += packOpens_.takeFinished();
   info.complete = requests.empty() && info.upsampled == 0 && info.morphing == 0 &&
                   info.shadowsPending == 0 && loader_->counters().inFlight == 0 &&
-                  notOpen.empty() && packOpens_.pending() == 0 && info.imagery.complete;
+                  notOpen.empty() && packOpens_.pending() == 0 && info.imagery.complete &&
+                  info.modelsWanted == 0;
   return info;
+}
+
+void TerrainScene::openTilesets() {
+  for (auto tileset : options_.tilesets) {
+    const tiles3d::BoundingSphere& bounds = tileset->root.bounds;
+    const auto center = geo::ecefToCartographic(ellipsoid_, bounds.centerEcefMeters);
+    if (options_.clampTilesets && std::isfinite(bounds.radiusMeters) && center) {
+      auto ground = terrainHeightMeters(center->longitudeRadians, center->latitudeRadians);
+      if (ground) {
+        const glm::dvec3 up = geo::geodeticSurfaceNormal(ellipsoid_, *center);
+        auto placed = std::make_shared<tiles3d::Tileset>(*tileset);
+        tiles3d::placeTileset(*placed, glm::translate(glm::dmat4(1.0), up * *ground));
+        tileset = std::move(placed);
+      } else {
+        core::warn(options_.warnings, tileset->file + ": not clamped (" + ground.error() + ")");
+      }
+    }
+    tilesets_.push_back(std::make_unique<tiles3d::TilesetStream>(tileset, ellipsoid_, runner_,
+                                                                 options_.tilesetBudgetBytes));
+  }
+}
+
+void TerrainScene::updateTilesets(const geo::Frustum& frustum, int heightPixels, FrameInfo& info) {
+  if (options_.tilesets.empty()) return;
+  if (tilesets_.empty()) openTilesets();
+  tiles3d::TileSelectionView view;
+  view.cameraEcefMeters = view_.cameraEcefMeters;
+  view.frustum = frustum;
+  view.pixelsPerRadian = heightPixels / (2 * std::tan(options_.fovYRadians / 2));
+  view.maximumScreenSpaceErrorPixels = options_.tilesetScreenSpaceErrorPixels;
+  drawnModels_.clear();
+  std::vector<std::shared_ptr<const tiles3d::DrawnSurface>> surfaces;
+  for (const auto& stream : tilesets_) {
+    const tiles3d::StreamFrame frame = stream->update(view);
+    for (const std::string& warning : frame.warnings) core::warn(options_.warnings, warning);
+    info.modelsWanted += frame.wanted;
+    info.arrived += frame.arrived;
+    drawnModels_.insert(drawnModels_.end(), stream->drawn().begin(), stream->drawn().end());
+    surfaces.push_back(stream->surface());
+  }
+  info.modelsDrawn = drawnModels_.size();
+  array_.setOverlay(std::make_shared<TilesetOverlay>(std::move(surfaces)));
 }
 
 void TerrainScene::requestUnderCamera(const camera::CameraPose& pose, uint32_t resident,

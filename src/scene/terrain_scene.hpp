@@ -32,7 +32,8 @@
 #include "terrain/render_view.hpp"
 #include "terrain/rendering_tile_array.hpp"
 #include "terrain/tile_selection.hpp"
-#include "tiles3d/tileset_surface.hpp"
+#include "tiles3d/tileset.hpp"
+#include "tiles3d/tileset_stream.hpp"
 #include "transport/network_settings.hpp"
 
 namespace globe::scene {
@@ -55,8 +56,15 @@ struct SceneOptions {
   // KML/KMZ, GeoJSON and GPX files read (--overlay): their lines, polygons and ground overlays
   // drawn as a layer over the imagery, their points placed each frame (pointMarks()).
   std::vector<std::shared_ptr<const overlays::OverlayDocument>> overlays;
-  // 3D Tiles tilesets read (--tileset): drawn over the terrain and collided with as ground.
-  std::vector<std::shared_ptr<const tiles3d::TilesetSurface>> tilesets;
+  // 3D Tiles tilesets read (--tileset): streamed by screen-space error on the loader's threads,
+  // drawn over the terrain and collided with as ground (tiles3d/tileset_stream.hpp).
+  std::vector<std::shared_ptr<const tiles3d::Tileset>> tilesets;
+  double tilesetScreenSpaceErrorPixels = 16;  // CesiumJS's default for 3D Tiles
+  // --tileset-clamp: each tileset moved up or down its centre's vertical so that height 0 there
+  // (where most models stand) sits on the terrain; off: heights above the ellipsoid, as the
+  // 3D Tiles spec says.
+  bool clampTilesets = false;
+  size_t tilesetBudgetBytes = tiles3d::TilesetStream::kDefaultBudgetBytes;  // each tileset's
   uint32_t maximumImageryLoadLevel = geo::kMaxLevel;  // imagery deeper than this is never loaded
   // --lighting: how much hill-shading the imagery takes (render::TerrainStyle::imageryLighting);
   // Auto: full where its texels are too coarse to carry the relief, gentle where they carry it.
@@ -111,6 +119,8 @@ struct FrameInfo {
   // What a complete view lacks (snapshot and play exit 1 on it unless --allow-missing).
   size_t missingTiles = 0;
   double terrainHeightMeters = 0;  // under the camera, from the finest resident block
+  size_t modelsDrawn = 0;          // 3D tile contents drawn (drawnModels())
+  size_t modelsWanted = 0;         // 3D tiles this view wants and lacks
   ImageryFrame imagery;            // the layers' part of this frame (complete counts it)
 };
 
@@ -148,6 +158,8 @@ class TerrainScene {
   FrameInfo update(const camera::CameraPose& pose, int widthPixels, int heightPixels, TileGpu& gpu);
   const terrain::RenderView& view() const { return view_; }
   const std::vector<geo::TileId>& tiles() const { return tiles_; }
+  // The 3D tile contents this frame draws, every tileset's (ids unique across them).
+  const std::vector<tiles3d::DrawnItem>& drawnModels() const { return drawnModels_; }
   // Where the layers keep the terrain's nominal refinement (computed when the scene opens).
   std::span<const terrain::NominalErrorRegion> nominalErrorRegions() const {
     return nominalErrorRegions_;
@@ -171,6 +183,10 @@ class TerrainScene {
  private:
   TerrainScene(std::unique_ptr<streaming::TerrainSource> store, const SceneOptions& options);
   void updateImagery(const glm::dvec3& cameraEcefMeters, TileGpu& gpu, FrameInfo& info);
+  // The tilesets' streams, made at the first frame (clamped: on the terrain's finest height).
+  void openTilesets();
+  // Streams the tilesets for this view; their drawn surfaces become the array's overlay.
+  void updateTilesets(const geo::Frustum& frustum, int heightPixels, FrameInfo& info);
   void retryFailedLoadsWhenDue();
   // Says (to the warnings) the store's new errors and these failed loads, each once.
   void reportFailures(const std::vector<streaming::LoadError>& failedLoads);
@@ -219,6 +235,8 @@ class TerrainScene {
       blocks_;  // keep the array's blocks alive
   terrain::RenderingTileArray array_;
   TileMorphs morphs_;
+  std::vector<std::unique_ptr<tiles3d::TilesetStream>> tilesets_;
+  std::vector<tiles3d::DrawnItem> drawnModels_;
   TileSunlight sunlight_;
   // The store's errors said lately, so a failed load that repeats one is not said again.
   std::vector<std::string> reportedSourceErrors_;

@@ -184,22 +184,6 @@ HeightGrid HeightGrid::merge(std::span<const HeightGrid* const> grids, uint32_t 
   return merged;
 }
 
-std::optional<double> HeightGrid::heightAt(double lon, double lat) const {
-  if (empty()) return std::nullopt;
-  // Comparisons and two multiplications: the per-frame probes read this (no wrapping calls).
-  double x = lon - rectangle_.westRadians;
-  if (x < 0) x += 2 * std::numbers::pi;  // a grid unwrapped across ±180°
-  const double y = lat - rectangle_.southRadians;
-  if (!(x <= rectangle_.widthRadians() && y >= 0 && y <= rectangle_.heightRadians())) {
-    return std::nullopt;
-  }
-  const uint32_t column = std::min(static_cast<uint32_t>(x * columnsPerRadian_), columns_ - 1);
-  const uint32_t row = std::min(static_cast<uint32_t>(y * rowsPerRadian_), rows_ - 1);
-  const float h = heightsMeters_[size_t{row} * columns_ + column];
-  if (std::isnan(h)) return std::nullopt;
-  return h;
-}
-
 void HeightGrid::setScales() {
   const double w = rectangle_.widthRadians(), h = rectangle_.heightRadians();
   columnsPerRadian_ = w > 0 ? columns_ / w : 0.0;

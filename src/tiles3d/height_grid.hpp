@@ -5,7 +5,11 @@
 // in O(1) keeps the camera above every roof it draws.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
+#include <numbers>
 #include <optional>
 #include <span>
 #include <vector>
@@ -30,7 +34,23 @@ class HeightGrid {
 
   // The highest surface over the cell holding the point; nullopt off the grid or where no
   // triangle lies.
-  std::optional<double> heightAt(double longitudeRadians, double latitudeRadians) const;
+  std::optional<double> heightAt(double longitudeRadians, double latitudeRadians) const {
+    const float h = cellHeightMeters(longitudeRadians, latitudeRadians);
+    return std::isnan(h) ? std::nullopt : std::optional<double>(h);
+  }
+  // The same, NaN for none: inline, as the per-frame probes read it.
+  float cellHeightMeters(double longitudeRadians, double latitudeRadians) const {
+    if (heightsMeters_.empty()) return std::numeric_limits<float>::quiet_NaN();
+    double x = longitudeRadians - rectangle_.westRadians;
+    if (x < 0) x += 2 * std::numbers::pi;  // a grid unwrapped across ±180°
+    const double y = latitudeRadians - rectangle_.southRadians;
+    if (!(x <= rectangle_.widthRadians() && y >= 0 && y <= rectangle_.heightRadians())) {
+      return std::numeric_limits<float>::quiet_NaN();
+    }
+    const uint32_t column = std::min(static_cast<uint32_t>(x * columnsPerRadian_), columns_ - 1);
+    const uint32_t row = std::min(static_cast<uint32_t>(y * rowsPerRadian_), rows_ - 1);
+    return heightsMeters_[size_t{row} * columns_ + column];
+  }
 
   bool empty() const { return heightsMeters_.empty(); }
   const geo::GlobeRectangle& rectangle() const { return rectangle_; }

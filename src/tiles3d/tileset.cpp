@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tiles3d/implicit_tiling.hpp"
+
 namespace globe::tiles3d {
 namespace {
 
@@ -73,8 +75,17 @@ Result<TileNode> Reader::tile(const nlohmann::json& j, const fs::path& base,
     return makeError(name + ": tiles nested deeper than " + std::to_string(kMaxDepth));
   if (++out.tileCount > kMaxTiles)
     return makeError(name + ": more than " + std::to_string(kMaxTiles) + " tiles");
-  if (j.contains("implicitTiling"))
-    return makeError(name + ": implicit tiling (3D Tiles 1.1) is not read yet");
+  if (j.contains("implicitTiling")) {  // expanded into explicit tiles, read as those
+    const ReadRelativeFile read = [&](const std::string& uri) {
+      auto file = resolve(base, uri);
+      if (!file) return Result<std::optional<std::vector<std::byte>>>(Error{file.error()});
+      return out.source->readWhole(*file, kMaxTilesetBytes);
+    };
+    auto expanded = expandImplicitTiling(j, read, kMaxTiles - out.tileCount + 1, name);
+    if (!expanded) return Error{expanded.error()};
+    --out.tileCount;  // counted again as the expanded root
+    return tile(*expanded, base, parent, parentAdditive, depth, name);
+  }
   TileNode node;
   auto transform = transformOf(j, name);
   if (!transform) return Error{transform.error()};
@@ -159,6 +170,32 @@ Result<Tileset> readTileset(const fs::path& path, const geo::Ellipsoid& ellipsoi
   const fs::path dir = fs::absolute(folder ? path : path.parent_path()).lexically_normal();
   return readTileset(transport::localByteSource(dir),
                      folder ? "tileset.json" : path.filename().string(), ellipsoid);
+}
+
+Result<Tileset> openTileset(const std::string& location, transport::Network* network,
+                            const geo::Ellipsoid& ellipsoid) {
+  const bool url = location.find("://") != std::string::npos;
+  if (!url) return readTileset(fs::path(location), ellipsoid);
+  const std::string path = location.substr(0, location.find_first_of("?#"));
+  const bool file = path.size() > 5 && path.compare(path.size() - 5, 5, ".json") == 0;
+  const size_t slash = path.find_last_of('/');
+  const std::string dir = file ? path.substr(0, slash) : path;
+  const std::string name = file ? path.substr(slash + 1) : "tileset.json";
+  auto source = transport::openByteSource(dir, network);
+  if (!source) return Error{source.error()};
+  return readTileset(std::move(*source), name, ellipsoid);
+}
+
+void placeTileset(Tileset& tileset, const glm::dmat4& placement) {
+  std::vector<TileNode*> stack{&tileset.root};
+  while (!stack.empty()) {
+    TileNode* node = stack.back();
+    stack.pop_back();
+    node->transform = placement * node->transform;
+    node->bounds.centerEcefMeters =
+        glm::dvec3(placement * glm::dvec4(node->bounds.centerEcefMeters, 1.0));
+    for (TileNode& child : node->children) stack.push_back(&child);
+  }
 }
 
 Result<std::vector<std::byte>> readContentBytes(const Tileset& tileset, const std::string& name) {

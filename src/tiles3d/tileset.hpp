@@ -47,6 +47,13 @@ Result<Tileset> readTileset(std::shared_ptr<transport::ByteSource> source, const
 // `path`: a tileset.json or the folder holding one.
 Result<Tileset> readTileset(const std::filesystem::path& path,
                             const geo::Ellipsoid& ellipsoid = geo::Ellipsoid::wgs84());
+// `location`: a tileset.json or the folder holding one, as a path or an http(s) URL read through
+// `network` (without one, a URL is an error naming it).
+Result<Tileset> openTileset(const std::string& location, transport::Network* network,
+                            const geo::Ellipsoid& ellipsoid = geo::Ellipsoid::wgs84());
+// Moves a whole tileset by `placement` (applied after every tile's transform, its bounds with
+// it): a tileset lifted onto the terrain (--tileset-clamp), or one in a local frame placed.
+void placeTileset(Tileset& tileset, const glm::dmat4& placement);
 // A content's bytes, or an error naming it (a content that is not there is an error too).
 Result<std::vector<std::byte>> readContentBytes(const Tileset& tileset, const std::string& name);
 

@@ -17,7 +17,7 @@ Result<TilesetSurface> TilesetSurface::load(const Tileset& tileset,
   surface.warnings_ = tileset.warnings;
   surface.root_ = surface.build(tileset, tileset.root, ellipsoid);
   std::vector<const HeightGrid*> drawn;
-  collectGrids(surface.root_, drawn);
+  for (const auto& content : surface.drawnContents()) drawn.push_back(&content->grid);
   surface.merged_ = HeightGrid::merge(drawn, kMaxMergedGridCells);
   return surface;
 }
@@ -41,8 +41,7 @@ TilesetSurface::Node TilesetSurface::build(const Tileset& tileset, const TileNod
     if (!content->grid.empty()) {
       maximumMeters_ = std::max(maximumMeters_, content->grid.maximumHeightMeters());
     }
-    node.grids.push_back(std::move(content->grid));
-    node.drawn.push_back(std::move(content->drawn));
+    node.contents.push_back(std::make_shared<const LoadedContent>(std::move(*content)));
   }
   for (const TileNode& child : tile.children)
     node.children.push_back(build(tileset, child, ellipsoid));
@@ -53,14 +52,6 @@ std::optional<double> TilesetSurface::heightAt(double lon, double lat) const {
   return merged_.empty() ? heightAt(root_, lon, lat) : merged_.heightAt(lon, lat);
 }
 
-void TilesetSurface::collectGrids(const Node& node, std::vector<const HeightGrid*>& out) {
-  if (!refines(node) || node.additive) {
-    for (const HeightGrid& g : node.grids) out.push_back(&g);
-  }
-  if (!refines(node)) return;
-  for (const Node& child : node.children) collectGrids(child, out);
-}
-
 // REPLACE refines where every child's content could be read (a viewer keeps drawing the parent
 // until its children are in); ADD always adds its children.
 bool TilesetSurface::refines(const Node& node) {
@@ -69,23 +60,23 @@ bool TilesetSurface::refines(const Node& node) {
                                        [](const Node& c) { return c.complete; }));
 }
 
-std::vector<const DrawnContent*> TilesetSurface::drawnContents() const {
-  std::vector<const DrawnContent*> out;
+std::vector<std::shared_ptr<const LoadedContent>> TilesetSurface::drawnContents() const {
+  std::vector<std::shared_ptr<const LoadedContent>> out;
   collectDrawn(root_, out);
   return out;
 }
 
-void TilesetSurface::collectDrawn(const Node& node, std::vector<const DrawnContent*>& out) {
-  if (!refines(node) || node.additive) {
-    for (const DrawnContent& d : node.drawn) out.push_back(&d);
-  }
+void TilesetSurface::collectDrawn(const Node& node,
+                                  std::vector<std::shared_ptr<const LoadedContent>>& out) {
+  if (!refines(node) || node.additive)
+    out.insert(out.end(), node.contents.begin(), node.contents.end());
   if (!refines(node)) return;
   for (const Node& child : node.children) collectDrawn(child, out);
 }
 
 std::optional<double> TilesetSurface::heightAt(const Node& node, double lon, double lat) {
   std::optional<double> own;
-  for (const HeightGrid& grid : node.grids) keepHigher(own, grid.heightAt(lon, lat));
+  for (const auto& content : node.contents) keepHigher(own, content->grid.heightAt(lon, lat));
   if (!refines(node)) return own;
   std::optional<double> best = node.additive ? own : std::nullopt;
   for (const Node& child : node.children) keepHigher(best, heightAt(child, lon, lat));

@@ -32,7 +32,7 @@ class TilesetSurface {
   std::optional<double> heightAt(double longitudeRadians, double latitudeRadians) const;
 
   // The contents drawn at the finest levels, by the same refinement rule as heightAt.
-  std::vector<const DrawnContent*> drawnContents() const;
+  std::vector<std::shared_ptr<const LoadedContent>> drawnContents() const;
   // The highest surface anywhere in the tileset (metres), or -inf when it has none.
   double maximumHeightMeters() const { return maximumMeters_; }
 
@@ -44,14 +44,13 @@ class TilesetSurface {
   struct Node {
     bool additive = false;
     bool complete = true;  // every content read
-    std::vector<HeightGrid> grids;
-    std::vector<DrawnContent> drawn;
+    std::vector<std::shared_ptr<const LoadedContent>> contents;
     std::vector<Node> children;
   };
   Node build(const Tileset& tileset, const TileNode& tile, const geo::Ellipsoid& ellipsoid);
   static std::optional<double> heightAt(const Node& node, double lon, double lat);
-  static void collectDrawn(const Node& node, std::vector<const DrawnContent*>& out);
-  static void collectGrids(const Node& node, std::vector<const HeightGrid*>& out);
+  static void collectDrawn(const Node& node,
+                           std::vector<std::shared_ptr<const LoadedContent>>& out);
   static bool refines(const Node& node);
 
   Node root_;

@@ -19,7 +19,9 @@
 #include "scene/tileset_overlay.hpp"
 #include "terrain/rendering_tile_array.hpp"
 #include "tests/tiles3d/box_tileset.hpp"
+#include "tiles3d/drawn_surface.hpp"
 #include "tiles3d/tileset.hpp"
+#include "tiles3d/tileset_surface.hpp"
 
 namespace {
 
@@ -34,7 +36,8 @@ struct Fixture {
   std::vector<geo::Cartographic> points;
 };
 
-std::shared_ptr<const tiles3d::TilesetSurface> boxBlock() {
+// The six boxes as a frame draws them (tiles3d/drawn_surface.hpp): what collision reads.
+std::shared_ptr<const tiles3d::DrawnSurface> boxBlock() {
   const fs::path dir = fs::temp_directory_path() / "globe-bench-tileset-query";
   fs::remove_all(dir);
   const double boxes[6][3] = {{0, 0, 40},  {60, 0, 70},  {120, 0, 25},
@@ -58,7 +61,7 @@ std::shared_ptr<const tiles3d::TilesetSurface> boxBlock() {
   auto surface = tiles3d::TilesetSurface::load(*tileset, geo::Ellipsoid::wgs84());
   if (!surface) std::abort();
   fs::remove_all(dir);
-  return std::make_shared<const tiles3d::TilesetSurface>(std::move(*surface));
+  return std::make_shared<const tiles3d::DrawnSurface>(surface->drawnContents());
 }
 
 const Fixture& fixture() {
@@ -73,7 +76,7 @@ const Fixture& fixture() {
     f.terrainOnly.assign({terrain::makeArrayTile(*tile, *f.block)});
     f.withTileset.assign({terrain::makeArrayTile(*tile, *f.block)});
     f.withTileset.setOverlay(std::make_shared<scene::TilesetOverlay>(
-        std::vector<std::shared_ptr<const tiles3d::TilesetSurface>>{boxBlock()}));
+        std::vector<std::shared_ptr<const tiles3d::DrawnSurface>>{boxBlock()}));
     std::mt19937 random(5);
     std::uniform_real_distribution<double> east(-30, 150), north(-30, 90);
     for (int i = 0; i < 4096; ++i) {
