@@ -46,7 +46,7 @@ Result<std::vector<tiles3d::TilesetSurface>> loadTilesets(const QueryOptions& op
                                                           std::FILE* errors) {
   std::vector<tiles3d::TilesetSurface> surfaces;
   for (const auto& path : options.tilesets) {
-    auto tileset = tiles3d::readTileset(path);
+    auto tileset = tiles3d::openTileset(path, options.network.get(), ellipsoid);
     if (!tileset) return Error{tileset.error()};
     auto surface = tiles3d::TilesetSurface::load(*tileset, ellipsoid);
     if (!surface) return Error{surface.error()};

@@ -8,6 +8,7 @@
 #include <istream>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "collision/height_service.hpp"
@@ -25,7 +26,7 @@ struct QueryOptions {
   geo::GlobeModel globeModel = geo::GlobeModel::Wgs84;
   terrain::SeaSurface sea = terrain::SeaSurface::Water;  // --sea-floor: SeaFloor
   std::shared_ptr<transport::Network> network;           // for an http(s) URL
-  std::vector<std::filesystem::path> tilesets;           // 3D Tiles: the higher surface wins
+  std::vector<std::string> tilesets;  // 3D Tiles (paths or URLs): the higher surface wins
 };
 
 struct QueryReport {
