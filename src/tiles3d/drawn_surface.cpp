@@ -7,8 +7,6 @@
 namespace globe::tiles3d {
 namespace {
 
-constexpr double kTwoPi = 2 * std::numbers::pi;
-
 // The bin range [first, last] a span covers along one axis.
 std::pair<uint32_t, uint32_t> binSpan(double from, double to, double perRadian, uint32_t bins) {
   const auto clamp = [&](double v) {
@@ -58,26 +56,6 @@ DrawnSurface::DrawnSurface(std::vector<std::shared_ptr<const LoadedContent>> con
     for (const uint32_t i : bin) binGrids_.push_back(&contents_[i]->grid);
   }
   binStart_.push_back(static_cast<uint32_t>(binGrids_.size()));
-}
-
-std::optional<double> DrawnSurface::heightAt(double lon, double lat) const {
-  if (contents_.empty()) return std::nullopt;
-  double x = lon - rectangle_.westRadians;
-  if (x < 0) x += kTwoPi;  // the union unwrapped across ±180° as its grids are
-  const double y = lat - rectangle_.southRadians;
-  if (!(x <= rectangle_.widthRadians() && y >= 0 && y <= rectangle_.heightRadians())) {
-    return std::nullopt;
-  }
-  const uint32_t column = std::min(static_cast<uint32_t>(x * binsPerRadianX_), binsX_ - 1);
-  const uint32_t row = std::min(static_cast<uint32_t>(y * binsPerRadianY_), binsY_ - 1);
-  const size_t bin = size_t{row} * binsX_ + column;
-  float best = std::numeric_limits<float>::quiet_NaN();
-  for (uint32_t k = binStart_[bin]; k < binStart_[bin + 1]; ++k) {
-    const float h = binGrids_[k]->cellHeightMeters(lon, lat);
-    if (!(h <= best)) best = std::isnan(h) ? best : h;  // NaN: none there
-  }
-  if (std::isnan(best)) return std::nullopt;
-  return best;
 }
 
 }  // namespace globe::tiles3d

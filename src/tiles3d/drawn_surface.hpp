@@ -4,9 +4,12 @@
 // keeps its snapshot while the next frame's selection makes another.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <span>
 #include <vector>
@@ -22,7 +25,26 @@ class DrawnSurface {
   DrawnSurface() = default;
   explicit DrawnSurface(std::vector<std::shared_ptr<const LoadedContent>> contents);
 
-  std::optional<double> heightAt(double longitudeRadians, double latitudeRadians) const;
+  // Inline: collision's probes read it at every point they test.
+  std::optional<double> heightAt(double longitudeRadians, double latitudeRadians) const {
+    if (contents_.empty()) return std::nullopt;
+    double x = longitudeRadians - rectangle_.westRadians;
+    if (x < 0) x += 2 * std::numbers::pi;  // the union unwrapped across ±180° as its grids are
+    const double y = latitudeRadians - rectangle_.southRadians;
+    if (!(x <= rectangle_.widthRadians() && y >= 0 && y <= rectangle_.heightRadians())) {
+      return std::nullopt;
+    }
+    const uint32_t column = std::min(static_cast<uint32_t>(x * binsPerRadianX_), binsX_ - 1);
+    const uint32_t row = std::min(static_cast<uint32_t>(y * binsPerRadianY_), binsY_ - 1);
+    const size_t bin = size_t{row} * binsX_ + column;
+    float best = std::numeric_limits<float>::quiet_NaN();
+    for (uint32_t k = binStart_[bin]; k < binStart_[bin + 1]; ++k) {
+      const float h = binGrids_[k]->cellHeightMeters(longitudeRadians, latitudeRadians);
+      if (!(h <= best)) best = std::isnan(h) ? best : h;  // NaN: none there
+    }
+    if (std::isnan(best)) return std::nullopt;
+    return best;
+  }
   double maximumHeightMeters() const { return maximumMeters_; }
   size_t contentCount() const { return contents_.size(); }
 

@@ -8,6 +8,9 @@
 
 #include "geo/ecef.hpp"
 #include "tests/support/inline_runner.hpp"
+#include "tests/tiles3d/box_tileset.hpp"
+#include "tiles3d/drawn_surface.hpp"
+#include "tiles3d/loaded_content.hpp"
 #include "tiles3d/tileset.hpp"
 #include "tiles3d/tileset_stream.hpp"
 
@@ -128,6 +131,33 @@ TEST_F(DragonStream, NothingBehindTheCameraIsDrawnOrLoadedButWhatIsBesideIt) {
   const glm::dvec3 inside = kDragonEcef + 100.0 * glm::normalize(kDragonEcef);
   const StreamFrame beside = stream.update(viewFrom(inside, inside * 2.0));
   EXPECT_GT(beside.wanted, 0u);
+}
+
+std::shared_ptr<const LoadedContent> boxAt(double lonDeg, double latDeg, double heightMeters) {
+  auto content = loadContent(testing::boxGlb(10, 10, heightMeters),
+                             testing::eastNorthUp(lonDeg, latDeg, 0), kWgs84, "box");
+  EXPECT_TRUE(content) << content.error();
+  return std::make_shared<const LoadedContent>(std::move(*content));
+}
+
+// The surface collision reads from what a frame draws: each box's roof on it, the higher where
+// two overlap, nothing between; boxes either side of ±180° and near a pole each found.
+TEST(DrawnSurface, ReadsEachDrawnRoofAcrossTheAntimeridianAndNearThePole) {
+  const DrawnSurface surface({boxAt(179.9999, 10, 30), boxAt(-179.9999, 10, 40),
+                              boxAt(179.9999, 10, 25), boxAt(20, 89.99, 50)});
+  const auto at = [&](double lonDeg, double latDeg) {
+    return surface.heightAt(lonDeg * kDegree, latDeg * kDegree);
+  };
+  ASSERT_TRUE(at(179.9999, 10).has_value());
+  EXPECT_NEAR(*at(179.9999, 10), 30.0, 0.5);  // the higher of the two boxes there
+  ASSERT_TRUE(at(-179.9999, 10).has_value());
+  EXPECT_NEAR(*at(-179.9999, 10), 40.0, 0.5);
+  EXPECT_FALSE(at(180.0, 10).has_value());  // between them: 11 m of open ground
+  EXPECT_FALSE(at(0, 10).has_value());
+  ASSERT_TRUE(at(20, 89.99).has_value());
+  EXPECT_NEAR(*at(20, 89.99), 50.0, 0.5);
+  EXPECT_NEAR(surface.maximumHeightMeters(), 50.0, 1e-3);
+  EXPECT_FALSE(DrawnSurface().heightAt(0, 0).has_value());
 }
 
 }  // namespace
