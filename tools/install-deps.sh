@@ -18,7 +18,7 @@ PACKAGES=(
   libosmesa6-dev libgl-dev libgl1-mesa-dri libegl-dev libglfw3-dev libglew-dev libglm-dev
   libstb-dev libfreetype-dev libharfbuzz-dev fonts-dejavu-core libgdal-dev libjpeg-dev
   libdeflate-dev zlib1g-dev libwebp-dev libavif-dev libtomlplusplus-dev libgeographiclib-dev nlohmann-json3-dev
-  libtinygltf-dev libdraco-dev
+  libtinygltf-dev libdraco-dev libmeshoptimizer-dev
   libcli11-dev libfmt-dev libtinyxml2-dev libcairo2-dev libcurl4-openssl-dev ccache lld
   ninja-build python3-glad
 )
