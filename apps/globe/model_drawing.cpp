@@ -27,7 +27,16 @@ void ModelDrawing::draw(const scene::TerrainScene& scene) {
     if (uploaded_.contains(item.id)) continue;
     render::ModelMesh mesh;
     mesh.originEcefMeters = item.content->drawn.originEcefMeters;
-    mesh.offsetsMeters = item.content->drawn.offsetsMeters;
+    for (const tiles3d::DrawnPart& drawn : item.content->drawn.parts) {
+      render::ModelPart part{drawn.offsetsMeters, drawn.normals, drawn.uvs, drawn.surface.baseColor,
+                             drawn.surface.alphaCutoff};
+      if (const auto& texture = drawn.surface.texture) {
+        part.texturePixels = texture->rgba.data();
+        part.textureWidth = texture->widthPixels;
+        part.textureHeight = texture->heightPixels;
+      }
+      mesh.parts.push_back(std::move(part));
+    }
     renderer_->add(item.id, mesh);
     uploaded_.emplace(item.id, item.content);
   }

@@ -3,7 +3,8 @@
 // around an origin of its own (float offsets from it, the origin's distance from the
 // camera taken in double each frame: centimetres stay centimetres anywhere on the globe), lit
 // by the frame's light with their faces' normals, depth-tested and written against the terrain
-// drawn before (the terrain's logarithmic depth).
+// drawn before (the terrain's logarithmic depth). Textures are mipmapped; a model's white
+// (glTF's default colour) untextured is drawn a light stone grey.
 #pragma once
 
 #include <cstddef>
@@ -12,17 +13,30 @@
 #include <span>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "core/result.hpp"
 #include "terrain/render_view.hpp"
 
 namespace globe::render {
 
+// Triangles that wear one surface: a colour, times a texture where there is one.
+struct ModelPart {
+  std::vector<glm::vec3> offsetsMeters;  // from the mesh's origin, three per triangle
+  std::vector<glm::vec3> normals;        // per corner, unit; zero (or none): the triangle's own
+  std::vector<glm::vec2> uvs;            // per corner, with a texture
+  glm::vec4 rgba{1.0f};
+  float alphaCutoff = 0;  // fragments whose alpha falls below are not drawn; 0: opaque
+  // RGBA8 rows top-down ((0, 0) its top-left), borrowed for add(); null: untextured.
+  const uint8_t* texturePixels = nullptr;
+  int textureWidth = 0, textureHeight = 0;
+};
+
 struct ModelMesh {
   glm::dvec3 originEcefMeters{0.0};
-  std::vector<glm::vec3> offsetsMeters;  // from the origin, three per triangle
-  glm::vec3 rgb{0.82f, 0.80f, 0.76f};    // untextured: a light stone grey
+  std::vector<ModelPart> parts;
 };
 
 // Needs a current GL 3.3 core context for its whole life, like TerrainRenderer.

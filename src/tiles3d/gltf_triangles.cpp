@@ -10,6 +10,9 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat4x4.hpp>
 
+#include "formats/image_io.hpp"
+#include "tiles3d/gltf_load.hpp"
+
 namespace globe::tiles3d {
 namespace {
 
@@ -21,9 +24,24 @@ constexpr int kMaxNodeDepth = 64;
 // glTF's y-up turned to z-up (3D Tiles: a rotation of π/2 about x).
 const glm::dmat4 kYUpToZUp(1, 0, 0, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 1);
 
-// Images are neither decoded nor kept here: collision needs none.
-bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-               const unsigned char*, int, void*) {
+// Images decoded by the project's decoders (stb_image, libwebp), each at most 4096² a side; one
+// that will not decode (larger, KTX2/Basis) leaves its triangles in their base colour alone.
+struct DecodedImages {
+  std::vector<std::shared_ptr<const MeshTexture>> byIndex;
+};
+bool decodeImage(tinygltf::Image*, const int index, std::string*, std::string*, int, int,
+                 const unsigned char* bytes, int size, void* user) {
+  auto& images = static_cast<DecodedImages*>(user)->byIndex;
+  if (index < 0 || size <= 0) return true;
+  if (images.size() <= static_cast<size_t>(index)) images.resize(static_cast<size_t>(index) + 1);
+  auto decoded = formats::decodeImageRgba(
+      std::span(reinterpret_cast<const std::byte*>(bytes), static_cast<size_t>(size)), "image");
+  if (!decoded) return true;  // untextured, not fatal
+  auto texture = std::make_shared<MeshTexture>();
+  texture->widthPixels = decoded->widthPixels;
+  texture->heightPixels = decoded->heightPixels;
+  texture->rgba = std::move(decoded->pixels);
+  images[static_cast<size_t>(index)] = std::move(texture);
   return true;
 }
 
@@ -65,11 +83,13 @@ class Accessor {
     const size_t element = size_t(a.components_) * size_t(a.componentBytes_);
     a.stride_ = view.byteStride > 0 ? view.byteStride : element;
     const size_t start = view.byteOffset + a.accessor_->byteOffset;
+    // count from the JSON may be near 2^64: bounded by the view before it is multiplied.
+    const size_t count = a.accessor_->count;
+    const bool fits = count == 0 || (a.accessor_->byteOffset <= view.byteLength &&
+                                     count - 1 <= view.byteLength / a.stride_);
     const size_t needed =
-        a.accessor_->count == 0
-            ? 0
-            : a.accessor_->byteOffset + a.stride_ * (a.accessor_->count - 1) + element;
-    if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset ||
+        count == 0 || !fits ? 0 : a.accessor_->byteOffset + a.stride_ * (count - 1) + element;
+    if (!fits || view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset ||
         needed > view.byteLength) {
       return makeError(name + ": an accessor reaches past its buffer");
     }
@@ -152,8 +172,51 @@ void triangleCorners(int mode, size_t t, size_t out[3]) {
   }
 }
 
+// The primitive's surface: its material's base colour and texture, and which TEXCOORD it reads.
+struct PrimitiveSurface {
+  SurfacePart part;
+  std::string texcoord;  // "" when untextured
+};
+PrimitiveSurface surfaceOf(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+                           const DecodedImages& images) {
+  PrimitiveSurface surface;
+  if (primitive.material < 0 || static_cast<size_t>(primitive.material) >= model.materials.size())
+    return surface;
+  const auto& material = model.materials[static_cast<size_t>(primitive.material)];
+  const auto& pbr = material.pbrMetallicRoughness;
+  if (material.alphaMode == "MASK")
+    surface.part.alphaCutoff = static_cast<float>(material.alphaCutoff);
+  if (material.alphaMode == "BLEND") surface.part.alphaCutoff = 0.5f;
+  if (pbr.baseColorFactor.size() == 4) {
+    for (int c = 0; c < 4; ++c)
+      surface.part.baseColor[c] = static_cast<float>(pbr.baseColorFactor[static_cast<size_t>(c)]);
+  }
+  const int t = pbr.baseColorTexture.index;
+  if (t < 0 || static_cast<size_t>(t) >= model.textures.size()) return surface;
+  const int source = model.textures[static_cast<size_t>(t)].source;
+  if (source < 0 || static_cast<size_t>(source) >= images.byIndex.size()) return surface;
+  surface.part.texture = images.byIndex[static_cast<size_t>(source)];
+  if (surface.part.texture)
+    surface.texcoord = "TEXCOORD_" + std::to_string(std::max(pbr.baseColorTexture.texCoord, 0));
+  return surface;
+}
+
+// An optional attribute of `components` components, or nullopt when the primitive has none.
+Result<std::optional<Accessor>> attribute(const tinygltf::Model& model,
+                                          const tinygltf::Primitive& primitive,
+                                          const std::string& key, int components,
+                                          const std::string& name) {
+  const auto it = primitive.attributes.find(key);
+  if (key.empty() || it == primitive.attributes.end()) return std::optional<Accessor>();
+  auto opened = Accessor::open(model, it->second, name);
+  if (!opened) return Error{opened.error()};
+  if (opened->components() != components) return std::optional<Accessor>();  // read past
+  return std::optional<Accessor>(*opened);
+}
+
 Result<void> addPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
-                          const glm::dmat4& toModel, const std::string& name, TriangleMesh& mesh) {
+                          const glm::dmat4& toModel, const DecodedImages& images,
+                          const std::string& name, TriangleMesh& mesh) {
   const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
   const auto position = primitive.attributes.find("POSITION");
   if (mode < TINYGLTF_MODE_TRIANGLES || position == primitive.attributes.end()) {
@@ -176,6 +239,14 @@ Result<void> addPrimitive(const tinygltf::Model& model, const tinygltf::Primitiv
   if (mesh.triangleCount() + triangles > kMaxTriangles) {
     return makeError(name + ": more than " + std::to_string(kMaxTriangles) + " triangles");
   }
+  const PrimitiveSurface surface = surfaceOf(model, primitive, images);
+  auto normals = attribute(model, primitive, "NORMAL", 3, name);
+  auto uvs = attribute(model, primitive, surface.texcoord, 2, name);
+  if (!normals) return Error{normals.error()};
+  if (!uvs) return Error{uvs.error()};
+  const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(toModel)));
+  const auto part = static_cast<uint32_t>(mesh.parts.size());
+  mesh.parts.push_back(surface.part);
   for (size_t t = 0; t < triangles; ++t) {
     size_t c[3];
     triangleCorners(mode, t, c);
@@ -184,9 +255,16 @@ Result<void> addPrimitive(const tinygltf::Model& model, const tinygltf::Primitiv
       if (!(v >= 0 && v < static_cast<double>(positions->count()))) {
         return makeError(name + ": a vertex index past its positions");
       }
-      mesh.positions.push_back(
-          glm::dvec3(toModel * glm::dvec4(positions->vec3(static_cast<size_t>(v)), 1.0)));
+      const auto i = static_cast<size_t>(v);
+      mesh.positions.push_back(glm::dvec3(toModel * glm::dvec4(positions->vec3(i), 1.0)));
+      const bool hasNormal = *normals && i < (*normals)->count();
+      const glm::dvec3 n = hasNormal ? normalMatrix * (*normals)->vec3(i) : glm::dvec3(0.0);
+      mesh.normals.push_back(glm::length(n) > 0 ? glm::vec3(glm::normalize(n)) : glm::vec3(0.0f));
+      const bool hasUv = *uvs && i < (*uvs)->count();
+      mesh.uvs.push_back(hasUv ? glm::vec2((*uvs)->component(i, 0), (*uvs)->component(i, 1))
+                               : glm::vec2(0.0f));
     }
+    mesh.triangleParts.push_back(part);
   }
   return {};
 }
@@ -195,18 +273,12 @@ Result<void> addPrimitive(const tinygltf::Model& model, const tinygltf::Primitiv
 
 Result<TriangleMesh> readGltfTriangles(std::span<const std::byte> bytes, const std::string& name) {
   tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(skipImage, nullptr);
+  DecodedImages images;
+  loader.SetImageLoader(decodeImage, &images);
   loader.SetFsCallbacks({noFileExists, sameName, refuseRead, refuseWrite, nullptr});
   tinygltf::Model model;
-  std::string err, warn;
-  const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-  const bool binary = bytes.size() >= 4 && std::memcmp(data, "glTF", 4) == 0;
-  if (bytes.size() > 0xFFFFFFFFu) return makeError(name + ": a glTF over 4 GB");
-  const auto size = static_cast<unsigned>(bytes.size());
-  const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, size, "")
-                         : loader.LoadASCIIFromString(
-                               &model, &err, &warn, reinterpret_cast<const char*>(data), size, "");
-  if (!ok) return makeError(name + ": not a glTF 2.0 model (" + (err.empty() ? warn : err) + ")");
+  auto loaded = loadGltfModel(loader, bytes, name, model);
+  if (!loaded) return Error{loaded.error()};
   TriangleMesh mesh;
   const int sceneIndex = model.defaultScene >= 0 ? model.defaultScene : 0;
   std::vector<int> roots;
@@ -228,7 +300,7 @@ Result<TriangleMesh> readGltfTriangles(std::span<const std::byte> bytes, const s
         return makeError(name + ": a mesh index out of range");
       }
       for (const auto& primitive : model.meshes[static_cast<size_t>(node.mesh)].primitives) {
-        auto added = addPrimitive(model, primitive, toModel, name, mesh);
+        auto added = addPrimitive(model, primitive, toModel, images, name, mesh);
         if (!added) return added;
       }
     }

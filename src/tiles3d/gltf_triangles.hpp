@@ -2,7 +2,8 @@
 // TRIANGLE_STRIP and TRIANGLE_FAN primitive of its default scene through its nodes' transforms,
 // Draco-compressed ones decoded, turned from glTF's y-up to the z-up 3D Tiles expects. Extensions
 // it does not know are read past (EXT_mesh_features, CESIUM_primitive_outline: metadata and
-// outlines, no geometry); textures are not decoded here.
+// outlines, no geometry). Normals, the base colour and its texture (decoded) come along for
+// drawing.
 #pragma once
 
 #include <cstddef>

@@ -14,6 +14,7 @@
 #include "core/result.hpp"
 #include "geo/ellipsoid.hpp"
 #include "tiles3d/height_grid.hpp"
+#include "tiles3d/triangle_mesh.hpp"
 
 namespace globe::tiles3d {
 
@@ -21,10 +22,18 @@ namespace globe::tiles3d {
 inline constexpr double kHeightGridCellMeters = 0.5;
 inline constexpr uint32_t kMaxHeightGridCells = 512;
 
+// The triangles of a content that wear one surface (a base colour, a texture or none).
+struct DrawnPart {
+  std::vector<glm::vec3> offsetsMeters;  // three per triangle, from the content's origin
+  std::vector<glm::vec3> normals;        // per corner; zero: the triangle's own made where drawn
+  std::vector<glm::vec2> uvs;            // per corner (with a texture)
+  SurfacePart surface;
+};
+
 // A content as drawn: float offsets from an origin of its own (its first vertex).
 struct DrawnContent {
   glm::dvec3 originEcefMeters{0.0};
-  std::vector<glm::vec3> offsetsMeters;  // three per triangle
+  std::vector<DrawnPart> parts;
 };
 
 struct LoadedContent {

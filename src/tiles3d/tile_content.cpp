@@ -1,6 +1,8 @@
 #include "tiles3d/tile_content.hpp"
 
+#include <cmath>
 #include <cstring>
+#include <limits>
 #include <optional>
 
 #include <glm/ext/matrix_transform.hpp>
@@ -16,11 +18,20 @@ namespace {
 
 constexpr int kMaxCompositeDepth = 8;  // cmpt inside cmpt
 constexpr size_t kMaxInstancedTriangles = size_t{8} << 20;
+constexpr size_t kMaxInstances = size_t{1} << 24;
 
 uint32_t u32(std::span<const std::byte> bytes, size_t at) {
   uint32_t v;
   std::memcpy(&v, bytes.data() + at, 4);
   return v;
+}
+
+// A member that is a number, `fallback` when absent, NaN when something else (nlohmann's value()
+// throws on a wrong type: a string byteOffset ended the program).
+double numberOr(const nlohmann::json& o, const char* key, double fallback) {
+  const auto it = o.find(key);
+  if (it == o.end()) return fallback;
+  return it->is_number() ? it->get<double>() : std::numeric_limits<double>::quiet_NaN();
 }
 
 // A feature table: its JSON and binary body, read as the 3D Tiles spec lays them out.
@@ -42,9 +53,10 @@ struct FeatureTable {
         return makeError(name + ": " + key + " of a wrong length");
       return std::optional(out);
     }
-    const auto offset = it->is_object() ? it->value("byteOffset", -1.0) : -1.0;
+    const double offset = it->is_object() ? numberOr(*it, "byteOffset", -1.0) : -1.0;
     const size_t size = shorts ? 2 : 4;
-    if (!(offset >= 0) || count * components * size > binary.size() ||
+    if (!(offset >= 0 && offset <= static_cast<double>(binary.size())) ||
+        count * components * size > binary.size() ||
         static_cast<size_t>(offset) > binary.size() - count * components * size) {
       return makeError(name + ": " + key + " reaches past its feature table");
     }
@@ -96,9 +108,7 @@ Result<Sections> sectionsOf(std::span<const std::byte> bytes, size_t headerBytes
   return s;
 }
 
-void transformAll(TriangleMesh& mesh, const glm::dmat4& m) {
-  for (glm::dvec3& p : mesh.positions) p = glm::dvec3(m * glm::dvec4(p, 1.0));
-}
+void transformAll(TriangleMesh& mesh, const glm::dmat4& m) { mesh.transform(m); }
 
 Result<glm::dvec3> rtcCenter(const FeatureTable& table, const std::string& name) {
   auto rtc = table.numbers("RTC_CENTER", 1, 3, false, name);
@@ -158,7 +168,9 @@ Result<Orientations> orientationsOf(const FeatureTable& t, size_t n, const std::
       }
     }
   }
-  o.eastNorthUp = t.json.value("EAST_NORTH_UP", false);
+  const auto eastNorthUp = t.json.find("EAST_NORTH_UP");
+  o.eastNorthUp =
+      eastNorthUp != t.json.end() && eastNorthUp->is_boolean() && eastNorthUp->get<bool>();
   return o;
 }
 
@@ -212,7 +224,14 @@ Result<TriangleMesh> readInstanced(std::span<const std::byte> bytes,
   auto s = sectionsOf(bytes, 32, name);
   if (!s) return Error{s.error()};
   if (u32(bytes, 28) != 1) return makeError(name + ": an i3dm naming an external glTF (not read)");
-  const auto n = static_cast<size_t>(s->features.json.value("INSTANCES_LENGTH", 0.0));
+  // A whole number up to 2^24 (the triangle bound below stops far fewer instances of a model).
+  const double instances = numberOr(s->features.json, "INSTANCES_LENGTH", 0.0);
+  if (!(instances >= 0 && instances <= double(kMaxInstances) &&
+        std::floor(instances) == instances)) {
+    return makeError(name + ": INSTANCES_LENGTH is not a whole number in 0.." +
+                     std::to_string(kMaxInstances));
+  }
+  const auto n = static_cast<size_t>(instances);
   auto model = readGltfTriangles(s->payload, name);
   if (!model) return model;
   if (n * model->positions.size() / 3 > kMaxInstancedTriangles) {
@@ -227,7 +246,6 @@ Result<TriangleMesh> readInstanced(std::span<const std::byte> bytes,
   if (!orientations || !rtc || !scales || !nonUniform)
     return makeError(name + ": a malformed instance property");
   TriangleMesh mesh;
-  mesh.pointPrimitives = model->pointPrimitives;
   for (size_t k = 0; k < n; ++k) {
     glm::dvec3 scale(1.0);
     if (*scales) scale = glm::dvec3((**scales)[k]);
@@ -236,9 +254,9 @@ Result<TriangleMesh> readInstanced(std::span<const std::byte> bytes,
           glm::dvec3((**nonUniform)[3 * k], (**nonUniform)[3 * k + 1], (**nonUniform)[3 * k + 2]);
     const glm::dvec3 at = (*positions)[k] + *rtc;
     const glm::dmat4 m = instanceMatrix(at, *orientations, k, scale, ellipsoid);
-    for (const glm::dvec3& p : model->positions)
-      mesh.positions.push_back(glm::dvec3(m * glm::dvec4(p, 1.0)));
+    mesh.append(*model, m);
   }
+  mesh.pointPrimitives = model->pointPrimitives;
   return mesh;
 }
 
@@ -260,8 +278,7 @@ Result<TriangleMesh> readComposite(std::span<const std::byte> bytes,
     auto inner = readContent(bytes.subspan(at, length), ellipsoid,
                              name + " (inner tile " + std::to_string(t) + ")", depth + 1);
     if (!inner) return inner;
-    mesh.positions.insert(mesh.positions.end(), inner->positions.begin(), inner->positions.end());
-    mesh.pointPrimitives += inner->pointPrimitives;
+    mesh.append(*inner, glm::dmat4(1.0));
     if (mesh.triangleCount() > kMaxInstancedTriangles)
       return makeError(name + ": too many triangles");
     at += length;

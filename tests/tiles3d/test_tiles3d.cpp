@@ -95,6 +95,40 @@ TEST(TileContent, InstancedTreesStandEastNorthUpInTheirRegion) {
   EXPECT_GT(e.high, 5.0);
 }
 
+// What drawing needs comes along: the trees' leaf texture (512², its alpha: glTF's BLEND drawn
+// as a 0.5 cut), their texture coordinates in [0, 1], the trunks' brown, the models' normals
+// turned upright with each instance (unit length, pointing every way, not all up).
+TEST(TileContent, TexturesNormalsAndAlphaComeAlongForDrawing) {
+  auto mesh = readContentFile(kSamples / "TilesetWithTreeBillboards/tree.i3dm", glm::dmat4(1.0));
+  ASSERT_TRUE(mesh) << mesh.error();
+  ASSERT_EQ(mesh->normals.size(), mesh->positions.size());
+  ASSERT_EQ(mesh->uvs.size(), mesh->positions.size());
+  ASSERT_EQ(mesh->triangleParts.size(), mesh->triangleCount());
+  ASSERT_EQ(mesh->parts.size(), 2u * 25);  // trunk and leaves, each instance
+  const SurfacePart& trunk = mesh->parts[0];
+  const SurfacePart& leaves = mesh->parts[1];
+  EXPECT_FALSE(trunk.texture);
+  EXPECT_NEAR(trunk.baseColor.r, 0.1223, 1e-3);
+  EXPECT_EQ(trunk.alphaCutoff, 0.0f);
+  ASSERT_TRUE(leaves.texture);
+  EXPECT_EQ(leaves.texture->widthPixels, 512);
+  EXPECT_EQ(leaves.texture->rgba.size(), 512u * 512 * 4);
+  EXPECT_EQ(leaves.alphaCutoff, 0.5f);
+  size_t textured = 0;
+  glm::dvec3 sum(0.0);
+  for (size_t k = 0; k < mesh->positions.size(); ++k) {
+    EXPECT_NEAR(glm::length(mesh->normals[k]), 1.0, 1e-4);
+    sum += glm::dvec3(mesh->normals[k]);
+    if (mesh->parts[mesh->triangleParts[k / 3]].texture) {
+      ++textured;
+      EXPECT_GE(mesh->uvs[k].x, 0.0f);
+      EXPECT_LE(mesh->uvs[k].y, 1.0f);
+    }
+  }
+  EXPECT_GT(textured, 0u);
+  EXPECT_LT(glm::length(sum) / static_cast<double>(mesh->positions.size()), 0.9);
+}
+
 TEST(TileContent, BadBytesAreClearErrorsNamingTheFile) {
   const auto bytes = [](const std::string& s) {
     std::vector<std::byte> b(s.size());
