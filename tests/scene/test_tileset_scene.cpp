@@ -51,7 +51,9 @@ std::optional<double> roofSeen(bool clamp, double* groundMeters) {
   pose.pitchRadians = geo::degreesToRadians(-90);
   auto frame = (*scene)->updateUntilComplete(pose, 640, 360, gpu, std::chrono::seconds(60));
   EXPECT_TRUE(frame) << frame.error();
-  if (frame) EXPECT_EQ(frame->modelsDrawn, 1u);
+  if (frame) {
+    EXPECT_EQ(frame->modelsDrawn, 1u);
+  }
   const terrain::SurfaceOverlay* overlay = (*scene)->renderingTileArray().overlay();
   EXPECT_NE(overlay, nullptr);
   auto roof = overlay != nullptr ? overlay->heightAt(lon, lat) : std::nullopt;
