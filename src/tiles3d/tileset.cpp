@@ -143,8 +143,10 @@ Result<TileNode> Reader::external(const std::string& file, const glm::dmat4& par
 
 }  // namespace
 
-Result<Tileset> readTileset(std::shared_ptr<transport::ByteSource> source, const std::string& name,
-                            const geo::Ellipsoid& ellipsoid) {
+namespace {
+
+Result<Tileset> readTilesetJson(std::shared_ptr<transport::ByteSource> source,
+                                const std::string& name, const geo::Ellipsoid& ellipsoid) {
   Tileset tileset;
   tileset.source = std::move(source);
   tileset.file = tileset.source->locationOf(name);
@@ -163,6 +165,18 @@ Result<Tileset> readTileset(std::shared_ptr<transport::ByteSource> source, const
   if (!root) return Error{root.error()};
   tileset.root = std::move(*root);
   return tileset;
+}
+
+}  // namespace
+
+Result<Tileset> readTileset(std::shared_ptr<transport::ByteSource> source, const std::string& name,
+                            const geo::Ellipsoid& ellipsoid) {
+  const std::string where = source->locationOf(name);
+  try {  // a field of the wrong type (a "geometricError" that is a string) throws in the reader
+    return readTilesetJson(std::move(source), name, ellipsoid);
+  } catch (const nlohmann::json::exception& e) {
+    return makeError(where + ": a field of the wrong type (" + e.what() + ")");
+  }
 }
 
 Result<Tileset> readTileset(const fs::path& path, const geo::Ellipsoid& ellipsoid) {

@@ -290,6 +290,18 @@ TEST(Tileset, FilesOutsideItsFolderAreNeverRead) {
   auto bad = readTileset(dir);
   ASSERT_FALSE(bad);
   EXPECT_NE(bad.error().find("not a 3D Tiles tileset"), std::string::npos) << bad.error();
+  // Fields of the wrong type, in the tileset or an implicit tile: clear errors, never a throw.
+  for (
+      const std::string& wrongRoot :
+      {std::string(R"({"geometricError":"far","content":{"uri":"a.glb"}})"),
+       std::string(R"({"geometricError":1,"refine":7})"),
+       std::string(
+           R"({"geometricError":1,"implicitTiling":{"subdivisionScheme":4,"subtreeLevels":"x"}})")}) {
+    writeTileset(dir, wrongRoot);
+    auto wrong = readTileset(dir);
+    ASSERT_FALSE(wrong) << wrongRoot;
+    EXPECT_NE(wrong.error().find("tileset.json"), std::string::npos) << wrong.error();
+  }
   writeTileset(dir, R"({"geometricError":1,"content":{"uri":"tileset.json"}})");
   // A tileset naming itself: read to the depth bound, then read past with a warning.
   auto loop = readTileset(dir);
