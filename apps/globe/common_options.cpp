@@ -1,13 +1,13 @@
 #include "apps/globe/common_options.hpp"
 #include "apps/globe/layer_argument.hpp"
 #include "apps/globe/stderr_warnings.hpp"
+#include "apps/globe/tileset_options.hpp"
 #include "apps/globe/wrong_kind_hint.hpp"
 #include "overlays/overlay_file.hpp"
 #include "services/imagery_services.hpp"
 #include "services/terrain_services.hpp"
 #include "services/url_template.hpp"
 #include "sun/utc_time.hpp"
-#include "tiles3d/tileset.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -111,21 +111,7 @@ void addLayerOptions(CLI::App& command, CommonArguments& arguments) {
                   "polygons draped on the ground, placemarks with their icons and labels, "
                   "ground overlays; repeat for more")
       ->type_name("FILE");
-  command
-      .add_option("--tileset", arguments.tilesets,
-                  "3D Tiles tileset (its tileset.json or folder, a path or http(s) URL) streamed "
-                  "over the terrain by screen-space error, the camera kept above what it draws "
-                  "as above the terrain; repeat for more")
-      ->type_name("DIR|URL");
-  command.add_flag("--tileset-clamp", arguments.tilesetClamp,
-                   "set each tileset on the terrain: moved along its centre's vertical so that "
-                   "height 0 there sits on the ground (for models made at height 0); without it, "
-                   "heights are above the ellipsoid as 3D Tiles says");
-  command
-      .add_option("--tileset-error", arguments.tilesetErrorPixels,
-                  "the screen-space error (pixels) past which a tileset's tiles refine")
-      ->check(CLI::Range(0.1, 1000.0))
-      ->type_name("PIXELS");
+  addTilesetOptions(command, arguments);
   command.add_flag("--overlay-hidden", arguments.overlayHidden,
                    "also draw what the overlay files hide (KML visibility 0), as if every item "
                    "were ticked");
@@ -271,20 +257,7 @@ bool applySceneArguments(const char* command, const CommonArguments& arguments,
     scene.overlays.push_back(
         std::make_shared<const overlays::OverlayDocument>(std::move(*document)));
   }
-  for (const std::string& given : arguments.tilesets) {
-    auto tileset =
-        tiles3d::openTileset(given, scene.network.get(), geo::ellipsoidFor(scene.globeModel));
-    if (!tileset) {
-      std::fprintf(stderr, "globe %s: --tileset %s\n", command, tileset.error().c_str());
-      return false;
-    }
-    for (const std::string& warning : tileset->warnings) {
-      std::fprintf(stderr, "globe %s: warning: %s\n", command, warning.c_str());
-    }
-    scene.tilesets.push_back(std::make_shared<const tiles3d::Tileset>(std::move(*tileset)));
-  }
-  scene.clampTilesets = arguments.tilesetClamp;
-  scene.tilesetScreenSpaceErrorPixels = arguments.tilesetErrorPixels;
+  if (!applyTilesetArguments(command, arguments, scene)) return false;
   // A bare --lighting parses as "".
   const auto lighting = arguments.lighting.empty()
                             ? terrain::ImageryLighting::On

@@ -30,6 +30,7 @@ struct CommonArguments {
   std::string exposure = "auto";             // --exposure auto | off | K
   std::vector<std::string> overlayFiles;     // --overlay
   std::vector<std::string> tilesets;         // --tileset
+  std::string tilesetAt;                     // --tileset-at LON,LAT,H[,SCALE]
   bool tilesetClamp = false;                 // --tileset-clamp
   double tilesetErrorPixels = 16;            // --tileset-error
   bool overlayHidden = false;                // --overlay-hidden

@@ -1,5 +1,8 @@
 #include "tiles3d/tileset.hpp"
 
+#include <algorithm>
+
+#include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include "tiles3d/implicit_tiling.hpp"
@@ -52,6 +55,11 @@ Result<nlohmann::json> Reader::parse(const std::string& name) const {
   }
 }
 
+double largestStretch(const glm::dmat4& m) {
+  return std::max({glm::length(glm::dvec3(m[0])), glm::length(glm::dvec3(m[1])),
+                   glm::length(glm::dvec3(m[2]))});
+}
+
 Result<glm::dmat4> transformOf(const nlohmann::json& j, const std::string& name) {
   glm::dmat4 m(1.0);
   const auto t = j.find("transform");
@@ -94,7 +102,9 @@ Result<TileNode> Reader::tile(const nlohmann::json& j, const fs::path& base,
                                  ellipsoid, name);
   if (!bounds) return Error{bounds.error()};
   node.bounds = *bounds;
-  node.geometricErrorMeters = j.value("geometricError", 0.0);
+  // In the tile's frame: scaled by its transform's largest stretch, as CesiumJS does
+  // (Cesium3DTile.updateGeometricErrorScale), so a model scaled up refines as it looks.
+  node.geometricErrorMeters = j.value("geometricError", 0.0) * largestStretch(node.transform);
   const std::string refine = j.value("refine", "");
   node.additive = refine.empty() ? parentAdditive : refine == "ADD" || refine == "add";
   std::vector<nlohmann::json> contents;
@@ -201,6 +211,8 @@ Result<Tileset> openTileset(const std::string& location, transport::Network* net
 }
 
 void placeTileset(Tileset& tileset, const glm::dmat4& placement) {
+  // A sphere and a geometric error through a scaling placement: by its largest stretch.
+  const double scale = largestStretch(placement);
   std::vector<TileNode*> stack{&tileset.root};
   while (!stack.empty()) {
     TileNode* node = stack.back();
@@ -208,6 +220,8 @@ void placeTileset(Tileset& tileset, const glm::dmat4& placement) {
     node->transform = placement * node->transform;
     node->bounds.centerEcefMeters =
         glm::dvec3(placement * glm::dvec4(node->bounds.centerEcefMeters, 1.0));
+    node->bounds.radiusMeters *= scale;
+    node->geometricErrorMeters *= scale;
     for (TileNode& child : node->children) stack.push_back(&child);
   }
 }
