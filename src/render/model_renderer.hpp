@@ -22,14 +22,15 @@
 
 namespace globe::render {
 
-// Triangles that wear one surface: a colour, times a texture where there is one.
+// Triangles that wear one surface: a colour, times a texture where there is one. Everything is
+// borrowed for add() (copied to the GPU there, never kept).
 struct ModelPart {
-  std::vector<glm::vec3> offsetsMeters;  // from the mesh's origin, three per triangle
-  std::vector<glm::vec3> normals;        // per corner, unit; zero (or none): the triangle's own
-  std::vector<glm::vec2> uvs;            // per corner, with a texture
+  std::span<const glm::vec3> offsetsMeters;  // from the mesh's origin, three per triangle
+  std::span<const glm::vec3> normals;        // per corner, unit; zero (or none): the triangle's own
+  std::span<const glm::vec2> uvs;            // per corner, with a texture
   glm::vec4 rgba{1.0f};
   float alphaCutoff = 0;  // fragments whose alpha falls below are not drawn; 0: opaque
-  // RGBA8 rows top-down ((0, 0) its top-left), borrowed for add(); null: untextured.
+  // RGBA8 rows top-down ((0, 0) its top-left); null: untextured.
   const uint8_t* texturePixels = nullptr;
   int textureWidth = 0, textureHeight = 0;
 };

@@ -61,4 +61,11 @@ Result<LoadedContent> loadContent(std::span<const std::byte> bytes, const glm::d
   return content;
 }
 
+Result<LoadedContent> loadTileContent(const Tileset& tileset, const TileNode& tile,
+                                      const std::string& name, const geo::Ellipsoid& ellipsoid) {
+  auto bytes = readContentBytes(tileset, name);
+  if (!bytes) return Error{bytes.error()};
+  return loadContent(*bytes, tile.transform, ellipsoid, tileset.source->locationOf(name));
+}
+
 }  // namespace globe::tiles3d

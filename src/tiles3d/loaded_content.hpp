@@ -14,6 +14,7 @@
 #include "core/result.hpp"
 #include "geo/ellipsoid.hpp"
 #include "tiles3d/height_grid.hpp"
+#include "tiles3d/tileset.hpp"
 #include "tiles3d/triangle_mesh.hpp"
 
 namespace globe::tiles3d {
@@ -46,5 +47,10 @@ struct LoadedContent {
 // Errors name `name` (the file or URL) and say what is wrong.
 Result<LoadedContent> loadContent(std::span<const std::byte> bytes, const glm::dmat4& tileTransform,
                                   const geo::Ellipsoid& ellipsoid, const std::string& name);
+
+// A tile's content `name` read from its tileset's source and loaded as above; errors name its
+// file or URL.
+Result<LoadedContent> loadTileContent(const Tileset& tileset, const TileNode& tile,
+                                      const std::string& name, const geo::Ellipsoid& ellipsoid);
 
 }  // namespace globe::tiles3d

@@ -108,8 +108,6 @@ Result<Sections> sectionsOf(std::span<const std::byte> bytes, size_t headerBytes
   return s;
 }
 
-void transformAll(TriangleMesh& mesh, const glm::dmat4& m) { mesh.transform(m); }
-
 Result<glm::dvec3> rtcCenter(const FeatureTable& table, const std::string& name) {
   auto rtc = table.numbers("RTC_CENTER", 1, 3, false, name);
   if (!rtc) return Error{rtc.error()};
@@ -138,7 +136,7 @@ Result<TriangleMesh> readBatched(std::span<const std::byte> bytes, const std::st
   if (!mesh) return mesh;
   auto rtc = rtcCenter(s->features, name);
   if (!rtc) return Error{rtc.error()};
-  transformAll(*mesh, glm::translate(glm::dmat4(1.0), *rtc));
+  mesh->transform(glm::translate(glm::dmat4(1.0), *rtc));
   return mesh;
 }
 
@@ -313,7 +311,7 @@ Result<TriangleMesh> readTileContent(std::span<const std::byte> bytes,
   // world's where, as usual with them, the tile has no transform.)
   auto mesh = readContent(bytes, ellipsoid, name, 0);
   if (!mesh) return mesh;
-  transformAll(*mesh, tileTransform);
+  mesh->transform(tileTransform);
   return mesh;
 }
 

@@ -128,10 +128,7 @@ void TilesetStream::startLoads(const std::vector<TileWish>& wanted, StreamFrame&
                   ellipsoid = ellipsoid_, tile = wish.tile] {
       Inbox::Arrival arrival{tile, {}, {}};
       for (const std::string& name : node->contents) {
-        auto bytes = readContentBytes(*tileset, name);
-        auto content = bytes ? loadContent(*bytes, node->transform, ellipsoid,
-                                           tileset->source->locationOf(name))
-                             : Result<LoadedContent>(Error{bytes.error()});
+        auto content = loadTileContent(*tileset, *node, name, ellipsoid);
         if (!content) {
           arrival.error = content.error();
           arrival.contents.clear();

@@ -27,10 +27,7 @@ TilesetSurface::Node TilesetSurface::build(const Tileset& tileset, const TileNod
   Node node;
   node.additive = tile.additive;
   for (const std::string& name : tile.contents) {
-    auto bytes = readContentBytes(tileset, name);
-    auto content =
-        bytes ? loadContent(*bytes, tile.transform, ellipsoid, tileset.source->locationOf(name))
-              : Result<LoadedContent>(Error{bytes.error()});
+    auto content = loadTileContent(tileset, tile, name, ellipsoid);
     if (!content) {
       warnings_.push_back(content.error() + " (its parent's content stands in)");
       node.complete = false;
